@@ -1,0 +1,185 @@
+import type { Point } from './vec';
+
+// Input checks shared by every maths function. Each throws a RangeError whose
+// message names the function, the argument, what was wrong and what is allowed,
+// so a student who drags a point somewhere odd reads a sentence, not NaN.
+// They are single passes over the input with no allocation: they run on every
+// call, inside animation frames.
+
+function describe(value: unknown): string {
+  if (typeof value === 'number') return String(value);
+  if (value === null) return 'null';
+  if (value === undefined) return 'undefined';
+  if (Array.isArray(value)) return 'an array';
+  return `a ${typeof value}`;
+}
+
+/** Throws unless `value` is a finite number; returns it. */
+export function checkNumber(caller: string, name: string, value: number): number {
+  if (typeof value !== 'number' || !Number.isFinite(value)) {
+    throw new RangeError(`${caller}: ${name} is ${describe(value)}; it must be a finite number.`);
+  }
+  return value;
+}
+
+/** Throws unless `value` is an integer ≥ `minimum`; returns it. */
+export function checkInteger(caller: string, name: string, value: number, minimum: number): number {
+  if (!Number.isSafeInteger(value) || value < minimum) {
+    throw new RangeError(
+      `${caller}: ${name} is ${describe(value)}; it must be a whole number ≥ ${minimum}.`,
+    );
+  }
+  return value;
+}
+
+/** Throws unless `low ≤ value ≤ high` (a closed range); returns `value`. */
+export function checkParameter(
+  caller: string,
+  name: string,
+  value: number,
+  low: number,
+  high: number,
+): number {
+  if (typeof value !== 'number' || !(value >= low && value <= high)) {
+    throw new RangeError(
+      `${caller}: ${name} = ${describe(value)} is outside the allowed range [${low}, ${high}].`,
+    );
+  }
+  return value;
+}
+
+/** Throws unless `low < value < high` (an open range); returns `value`. */
+export function checkOpenParameter(
+  caller: string,
+  name: string,
+  value: number,
+  low: number,
+  high: number,
+): number {
+  if (typeof value !== 'number' || !(value > low && value < high)) {
+    throw new RangeError(
+      `${caller}: ${name} = ${describe(value)} is outside the allowed range (${low}, ${high}), ends excluded.`,
+    );
+  }
+  return value;
+}
+
+/**
+ * Throws unless `point` is an array of finite numbers with at least one
+ * coordinate, and exactly `dimension` of them when `dimension` is given.
+ * Returns the dimension.
+ */
+export function checkPoint(caller: string, name: string, point: Point, dimension?: number): number {
+  if (!Array.isArray(point)) {
+    throw new RangeError(
+      `${caller}: ${name} is ${describe(point)}; a point must be an array of coordinates such as [x, y].`,
+    );
+  }
+  const length = point.length;
+  if (dimension === undefined) {
+    if (length === 0) {
+      throw new RangeError(`${caller}: ${name} has no coordinates; a point needs at least one.`);
+    }
+  } else if (length !== dimension) {
+    throw new RangeError(
+      `${caller}: ${name} has ${length} coordinates but ${dimension} are expected; every point must have the same dimension.`,
+    );
+  }
+  for (let d = 0; d < length; d++) {
+    const coordinate = point[d];
+    if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) {
+      throw new RangeError(
+        `${caller}: ${name}[${d}] is ${describe(coordinate)}; every coordinate must be a finite number.`,
+      );
+    }
+  }
+  return length;
+}
+
+/**
+ * Throws unless `points` is an array of at least `minimum` points, all with the
+ * same dimension (that of `dimension` when given) and finite coordinates.
+ * Returns the dimension (0 for an empty array when `minimum` is 0).
+ */
+export function checkPoints(
+  caller: string,
+  name: string,
+  points: readonly Point[],
+  minimum: number,
+  dimension?: number,
+): number {
+  if (!Array.isArray(points)) {
+    throw new RangeError(
+      `${caller}: ${name} is ${describe(points)}; it must be an array of points.`,
+    );
+  }
+  if (points.length < minimum) {
+    throw new RangeError(
+      `${caller}: ${name} needs at least ${minimum} point${minimum === 1 ? '' : 's'}, but got ${points.length}.`,
+    );
+  }
+  if (points.length === 0) return dimension ?? 0;
+  const first = checkPoint(caller, `${name}[0]`, points[0], dimension);
+  for (let i = 1; i < points.length; i++) {
+    const point = points[i];
+    // The common case (right length, all finite) costs one loop and no strings.
+    if (Array.isArray(point) && point.length === first && allFinite(point)) continue;
+    if (Array.isArray(point) && point.length !== first) {
+      throw new RangeError(
+        `${caller}: ${name}[${i}] has ${point.length} coordinates but ${name}[0] has ${first}; every point must have the same dimension.`,
+      );
+    }
+    checkPoint(caller, `${name}[${i}]`, point, first);
+  }
+  return first;
+}
+
+/** Throws unless `values` is an array of at least `minimum` finite numbers. */
+export function checkNumbers(
+  caller: string,
+  name: string,
+  values: ArrayLike<number>,
+  minimum: number,
+): void {
+  if (values === null || typeof values !== 'object' || typeof values.length !== 'number') {
+    throw new RangeError(
+      `${caller}: ${name} is ${describe(values)}; it must be an array of numbers.`,
+    );
+  }
+  if (values.length < minimum) {
+    throw new RangeError(
+      `${caller}: ${name} needs at least ${minimum} value${minimum === 1 ? '' : 's'}, but got ${values.length}.`,
+    );
+  }
+  for (let i = 0; i < values.length; i++) {
+    const value = values[i];
+    if (typeof value !== 'number' || !Number.isFinite(value)) {
+      throw new RangeError(
+        `${caller}: ${name}[${i}] is ${describe(value)}; every value must be a finite number.`,
+      );
+    }
+  }
+}
+
+/** Throws unless the two arrays have the same length. */
+export function checkSameLength(
+  caller: string,
+  name: string,
+  values: ArrayLike<unknown>,
+  otherName: string,
+  other: ArrayLike<unknown>,
+): void {
+  if (values.length !== other.length) {
+    throw new RangeError(
+      `${caller}: ${name} has ${values.length} entries but ${otherName} has ${other.length}; they must match one for one.`,
+    );
+  }
+}
+
+function allFinite(point: Point): boolean {
+  for (let d = 0; d < point.length; d++) {
+    const coordinate = point[d];
+    if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) return false;
+  }
+  return true;
+}
