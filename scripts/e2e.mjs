@@ -1,0 +1,54 @@
+// Runs the browser tests against the production build in a real Chromium.
+// Finds a browser in this order: $CHROMIUM_PATH, /usr/bin/chromium,
+// Playwright's own build; if none and we are root on Debian/Ubuntu, installs
+// Debian's `chromium` package; otherwise says in one line how to get one.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { chromium } from '@playwright/test';
+
+function findBrowser() {
+  const candidates = [
+    process.env.CHROMIUM_PATH,
+    '/usr/bin/chromium',
+    safe(() => chromium.executablePath()),
+  ];
+  return candidates.find((path) => path && existsSync(path)) ?? null;
+}
+
+function safe(f) {
+  try {
+    return f();
+  } catch {
+    return null;
+  }
+}
+
+let browser = findBrowser();
+if (!browser) {
+  const root = typeof process.getuid === 'function' && process.getuid() === 0;
+  const debian = existsSync('/etc/debian_version') && existsSync('/usr/bin/apt-get');
+  if (root && debian) {
+    console.log("No Chromium found: installing Debian's chromium package with apt-get…");
+    const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
+    execFileSync('apt-get', ['update', '-qq'], { stdio: 'inherit', env });
+    execFileSync('apt-get', ['install', '-y', '-qq', 'chromium'], { stdio: 'inherit', env });
+    browser = findBrowser();
+  }
+}
+if (!browser) {
+  console.error(
+    'No Chromium to run the browser tests: install one (Debian/Ubuntu: sudo apt-get install chromium) or set CHROMIUM_PATH to its executable.',
+  );
+  process.exit(1);
+}
+
+const run = (cmd, args, env = process.env) => {
+  const result = spawnSync(cmd, args, { stdio: 'inherit', env });
+  if (result.status !== 0) process.exit(result.status ?? 1);
+};
+
+run('npx', ['vite', 'build', '--logLevel', 'warn']);
+run('npx', ['playwright', 'test', ...process.argv.slice(2)], {
+  ...process.env,
+  CHROMIUM_PATH: browser,
+});

@@ -1,0 +1,188 @@
+import '../styles.css';
+import { h, setChildren } from './dom';
+import { buildGallery } from './gallery';
+import { LessonPage } from './lessonPage';
+import { loadState } from './lessonState';
+import { findLesson, lessons } from './registry';
+import { parseHash } from './router';
+import { applySettings, loadSettings, saveSettings } from './settings';
+import { helpDialog } from './help';
+
+const settings = loadSettings();
+let theme = applySettings(settings);
+let page: LessonPage<unknown> | null = null;
+
+const main = h('main', { id: 'main', tabindex: '-1' });
+const notices = h('div', { class: 'notices', role: 'status', 'aria-live': 'polite' });
+const announcer = h('div', {
+  class: 'visually-hidden',
+  'aria-live': 'polite',
+  'data-announcer': '',
+});
+const help = helpDialog();
+
+function button(
+  label: string,
+  title: string,
+  action: () => void,
+  pressed?: boolean,
+): HTMLButtonElement {
+  return h(
+    'button',
+    {
+      type: 'button',
+      title,
+      'aria-pressed': pressed === undefined ? undefined : String(pressed),
+      onclick: action,
+    },
+    label,
+  );
+}
+
+const projectorButton = button(
+  'Projector',
+  'Projector mode: big strokes and labels, high contrast (P)',
+  () => toggleProjector(),
+  settings.projector,
+);
+const darkButton = button('Dark', 'Dark theme (D)', () => toggleDark(), settings.dark);
+const topBar = h(
+  'header',
+  { class: 'top-bar' },
+  h('a', { class: 'brand', href: '#/' }, 'Spline Lab'),
+  h(
+    'nav',
+    { class: 'app-tools', 'aria-label': 'Display' },
+    projectorButton,
+    darkButton,
+    button('Full screen', 'Full screen (F)', () => toggleFullscreen()),
+    button('?', 'Keyboard shortcuts (?)', () => help.showModal()),
+  ),
+);
+document.body.append(
+  h(
+    'a',
+    {
+      class: 'skip',
+      href: '#main',
+      onclick: (e: Event) => {
+        e.preventDefault();
+        main.focus();
+      },
+    },
+    'Skip to content',
+  ),
+  topBar,
+  notices,
+  main,
+  announcer,
+  help,
+);
+
+export function notice(message: string): void {
+  const close = h(
+    'button',
+    { type: 'button', class: 'notice-close', 'aria-label': 'Dismiss notice' },
+    '×',
+  );
+  const item = h('div', { class: 'notice' }, h('span', {}, message), close);
+  close.addEventListener('click', () => item.remove());
+  notices.append(item);
+  while (notices.childElementCount > 4) notices.firstElementChild?.remove();
+}
+
+function announce(message: string): void {
+  announcer.textContent = message;
+}
+
+function rerender(): void {
+  theme = applySettings(settings);
+  saveSettings(settings);
+  projectorButton.setAttribute('aria-pressed', String(settings.projector));
+  darkButton.setAttribute('aria-pressed', String(settings.dark));
+  if (page) page.requestDraw();
+  else route();
+}
+
+function toggleProjector(): void {
+  settings.projector = !settings.projector;
+  rerender();
+}
+
+function toggleDark(): void {
+  settings.dark = !settings.dark;
+  rerender();
+}
+
+function toggleFullscreen(): void {
+  if (document.fullscreenElement) void document.exitFullscreen();
+  else
+    void document.documentElement
+      .requestFullscreen?.()
+      .catch(() => notice('This browser did not allow full screen here.'));
+}
+
+function route(): void {
+  const { slug, query } = parseHash(location.hash);
+  if (slug !== null && page && page.lesson.slug === slug) {
+    // Same lesson, new state (typed into the address bar, or back/forward).
+    page.applyQuery(loadState(page.lesson, query, null));
+    return;
+  }
+  page?.destroy();
+  page = null;
+  notices.replaceChildren();
+  const lesson = slug === null ? undefined : findLesson(slug);
+  if (slug !== null && !lesson) {
+    notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
+  }
+  if (!lesson) {
+    document.title = 'Spline Lab';
+    setChildren(main, buildGallery(lessons, theme));
+    return;
+  }
+  let storage: Storage | null = null;
+  try {
+    storage = localStorage;
+  } catch {
+    storage = null;
+  }
+  page = new LessonPage(lesson, loadState(lesson, query, storage), {
+    theme: () => theme,
+    notice,
+    announce,
+  });
+  document.title = `${lesson.title} · Spline Lab`;
+  setChildren(main, page.element);
+}
+
+window.addEventListener('hashchange', route);
+window.addEventListener('keydown', (e) => {
+  if (help.open) return;
+  if (page?.handleKey(e)) {
+    e.preventDefault();
+    return;
+  }
+  const target = e.target as HTMLElement | null;
+  if (
+    e.ctrlKey ||
+    e.metaKey ||
+    e.altKey ||
+    (target && /^(INPUT|TEXTAREA|SELECT)$/.test(target.tagName))
+  )
+    return;
+  if (e.key === 'p' || e.key === 'P') toggleProjector();
+  else if (e.key === 'f' || e.key === 'F') toggleFullscreen();
+  else if (e.key === 'd' || e.key === 'D') toggleDark();
+  else if (e.key === '?') help.showModal();
+  else if (e.key === 'g' || e.key === 'G') location.hash = '#/';
+  else return;
+  e.preventDefault();
+});
+window.addEventListener('pagehide', () => page?.writeUrl());
+route();
+
+if (import.meta.env.PROD && 'serviceWorker' in navigator) {
+  // Offline once loaded: the worker keeps a copy of every file the app fetched.
+  navigator.serviceWorker.register('./sw.js').catch(() => undefined);
+}

@@ -1,0 +1,165 @@
+/**
+ * Pointer input on one canvas: mouse, touch and pen through pointer events.
+ * It decides what a gesture means (drag a handle, pan, pinch-zoom, add a
+ * point by double-click or long-press, remove by context action) and reports
+ * it in screen pixels; it changes no state itself (mafs: drag logic apart
+ * from the view).
+ */
+export type Screen = readonly [number, number];
+
+export interface PointerCallbacks {
+  /** The handle under `at`, if any, within a tolerance suited to the pointer type. */
+  pick(at: Screen, pointerType: string): string | null;
+  dragStart(id: string, at: Screen): void;
+  dragMove(id: string, at: Screen): void;
+  dragEnd(id: string): void;
+  hover(at: Screen | null): void;
+  /** Pan by a screen offset; absent for fixed figures. */
+  pan?(dx: number, dy: number): void;
+  zoom?(at: Screen, factor: number): void;
+  add?(at: Screen): void;
+  remove?(id: string): void;
+}
+
+/** Slack for a finger versus a mouse: a fingertip is about 9 mm wide. */
+export function hitTolerance(pointerType: string): number {
+  return pointerType === 'mouse' ? 10 : 22;
+}
+
+const LONG_PRESS_MS = 550;
+const MOVE_SLOP = 8;
+
+export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => void {
+  const pointers = new Map<number, Screen>();
+  let dragging: { id: string; pointer: number } | null = null;
+  let pinchStart: { distance: number; mid: Screen } | null = null;
+  let longPress: { timer: number; at: Screen; pointer: number } | null = null;
+
+  const local = (e: PointerEvent | MouseEvent | WheelEvent): Screen => {
+    const r = canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top];
+  };
+
+  const cancelLongPress = () => {
+    if (longPress) window.clearTimeout(longPress.timer);
+    longPress = null;
+  };
+
+  const onDown = (e: PointerEvent) => {
+    if (e.button !== 0 && e.pointerType === 'mouse') return;
+    const at = local(e);
+    pointers.set(e.pointerId, at);
+    canvas.setPointerCapture?.(e.pointerId);
+    if (pointers.size === 2) {
+      // A second finger: pinch instead of whatever the first one started.
+      cancelLongPress();
+      if (dragging) {
+        cb.dragEnd(dragging.id);
+        dragging = null;
+      }
+      const [a, b] = [...pointers.values()];
+      pinchStart = {
+        distance: Math.hypot(a[0] - b[0], a[1] - b[1]),
+        mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2],
+      };
+      return;
+    }
+    const id = cb.pick(at, e.pointerType);
+    if (id !== null) {
+      e.preventDefault();
+      dragging = { id, pointer: e.pointerId };
+      cb.dragStart(id, at);
+      return;
+    }
+    if (e.pointerType !== 'mouse' && cb.add) {
+      longPress = {
+        at,
+        pointer: e.pointerId,
+        timer: window.setTimeout(() => {
+          if (longPress) cb.add?.(longPress.at);
+          longPress = null;
+        }, LONG_PRESS_MS),
+      };
+    }
+  };
+
+  const onMove = (e: PointerEvent) => {
+    const at = local(e);
+    const previous = pointers.get(e.pointerId);
+    if (!previous) {
+      cb.hover(at);
+      return;
+    }
+    pointers.set(e.pointerId, at);
+    if (longPress && Math.hypot(at[0] - longPress.at[0], at[1] - longPress.at[1]) > MOVE_SLOP)
+      cancelLongPress();
+    if (dragging && dragging.pointer === e.pointerId) {
+      cb.dragMove(dragging.id, at);
+      return;
+    }
+    if (pointers.size === 2 && pinchStart && cb.zoom && cb.pan) {
+      const [a, b] = [...pointers.values()];
+      const distance = Math.hypot(a[0] - b[0], a[1] - b[1]);
+      const mid: Screen = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+      cb.pan(mid[0] - pinchStart.mid[0], mid[1] - pinchStart.mid[1]);
+      if (pinchStart.distance > 1) cb.zoom(mid, distance / pinchStart.distance);
+      pinchStart = { distance, mid };
+      return;
+    }
+    if (pointers.size === 1 && cb.pan) cb.pan(at[0] - previous[0], at[1] - previous[1]);
+  };
+
+  const onUp = (e: PointerEvent) => {
+    pointers.delete(e.pointerId);
+    if (longPress?.pointer === e.pointerId) cancelLongPress();
+    if (dragging && dragging.pointer === e.pointerId) {
+      cb.dragEnd(dragging.id);
+      dragging = null;
+    }
+    if (pointers.size < 2) pinchStart = null;
+    if (e.pointerType !== 'mouse') cb.hover(null);
+  };
+
+  const onLeave = () => {
+    if (!dragging) cb.hover(null);
+  };
+
+  const onDoubleClick = (e: MouseEvent) => {
+    const at = local(e);
+    if (cb.add && cb.pick(at, 'mouse') === null) cb.add(at);
+  };
+
+  const onContextMenu = (e: MouseEvent) => {
+    const id = cb.pick(local(e), 'mouse');
+    if (id !== null && cb.remove) {
+      e.preventDefault();
+      cb.remove(id);
+    }
+  };
+
+  const onWheel = (e: WheelEvent) => {
+    if (!cb.zoom) return;
+    e.preventDefault();
+    cb.zoom(local(e), Math.exp(-e.deltaY * 0.0015));
+  };
+
+  canvas.addEventListener('pointerdown', onDown);
+  canvas.addEventListener('pointermove', onMove);
+  canvas.addEventListener('pointerup', onUp);
+  canvas.addEventListener('pointercancel', onUp);
+  canvas.addEventListener('pointerleave', onLeave);
+  canvas.addEventListener('dblclick', onDoubleClick);
+  canvas.addEventListener('contextmenu', onContextMenu);
+  canvas.addEventListener('wheel', onWheel, { passive: false });
+  return () => {
+    cancelLongPress();
+    canvas.removeEventListener('pointerdown', onDown);
+    canvas.removeEventListener('pointermove', onMove);
+    canvas.removeEventListener('pointerup', onUp);
+    canvas.removeEventListener('pointercancel', onUp);
+    canvas.removeEventListener('pointerleave', onLeave);
+    canvas.removeEventListener('dblclick', onDoubleClick);
+    canvas.removeEventListener('contextmenu', onContextMenu);
+    canvas.removeEventListener('wheel', onWheel);
+  };
+}

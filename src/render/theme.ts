@@ -1,0 +1,135 @@
+/**
+ * Colours and sizes. Projector mode is a theme, not a special case: thick
+ * strokes, large labels and handles, and a high-contrast palette that reads
+ * from the back of a lecture hall. Series colours follow Okabe & Ito's
+ * colour-blind-safe palette.
+ */
+export interface Sizes {
+  /** Main curve stroke (px). */
+  curve: number;
+  /** Construction lines, polygons. */
+  line: number;
+  /** Faint helper lines. */
+  thin: number;
+  /** Radius of a movable point. */
+  handle: number;
+  /** Radius of a constructed (non-movable) point. */
+  point: number;
+  /** Label font size (px). */
+  label: number;
+  /** Small text: axis numbers. */
+  small: number;
+}
+
+export interface Theme {
+  dark: boolean;
+  projector: boolean;
+  background: string;
+  ink: string;
+  muted: string;
+  grid: string;
+  axis: string;
+  curve: string;
+  curveFaint: string;
+  polygon: string;
+  accent: string;
+  handleFill: string;
+  handleStroke: string;
+  focus: string;
+  labelHalo: string;
+  /** Colours for series: construction levels, basis functions, methods. */
+  palette: readonly string[];
+  fontFamily: string;
+  sizes: Sizes;
+}
+
+const FONT = 'system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", sans-serif';
+
+const LIGHT = [
+  '#0072B2',
+  '#D55E00',
+  '#009E73',
+  '#CC79A7',
+  '#E69F00',
+  '#56B4E9',
+  '#7A5195',
+  '#8C6D31',
+];
+const DARK = [
+  '#56B4E9',
+  '#FF8F4D',
+  '#2BD1A0',
+  '#F09ACB',
+  '#F5B82E',
+  '#8FD3FF',
+  '#C39BFF',
+  '#D9B56A',
+];
+const LIGHT_STRONG = [
+  '#0050A0',
+  '#C04000',
+  '#007A55',
+  '#A02C80',
+  '#B36B00',
+  '#1A7FC1',
+  '#5A2D91',
+  '#6B4F12',
+];
+const DARK_STRONG = [
+  '#6CC6FF',
+  '#FF9A5C',
+  '#3BF0B5',
+  '#FFA8DC',
+  '#FFD23F',
+  '#A8E0FF',
+  '#D3B0FF',
+  '#F0CC80',
+];
+
+export function makeTheme(dark: boolean, projector: boolean): Theme {
+  const sizes: Sizes = projector
+    ? { curve: 6, line: 3.5, thin: 2, handle: 13, point: 8, label: 26, small: 20 }
+    : { curve: 3, line: 1.75, thin: 1, handle: 8, point: 5, label: 15, small: 12 };
+  if (dark) {
+    return {
+      dark,
+      projector,
+      background: projector ? '#000000' : '#12151f',
+      ink: projector ? '#ffffff' : '#e8eaf2',
+      muted: projector ? '#d0d0d0' : '#9aa3b8',
+      grid: projector ? '#2a2a2a' : '#1f2433',
+      axis: projector ? '#bbbbbb' : '#5d6680',
+      curve: projector ? '#ffffff' : '#f2f4fa',
+      curveFaint: projector ? '#777777' : '#4a5168',
+      polygon: projector ? '#bbbbbb' : '#7d869e',
+      accent: projector ? '#FFD23F' : '#F5B82E',
+      handleFill: projector ? '#000000' : '#12151f',
+      handleStroke: projector ? '#ffffff' : '#e8eaf2',
+      focus: '#FFD23F',
+      labelHalo: projector ? '#000000' : '#12151f',
+      palette: projector ? DARK_STRONG : DARK,
+      fontFamily: FONT,
+      sizes,
+    };
+  }
+  return {
+    dark,
+    projector,
+    background: '#ffffff',
+    ink: projector ? '#000000' : '#1b1f2b',
+    muted: projector ? '#333333' : '#5f6677',
+    grid: projector ? '#d8d8d8' : '#eceef3',
+    axis: projector ? '#555555' : '#a3a9b8',
+    curve: projector ? '#000000' : '#1b1f2b',
+    curveFaint: projector ? '#999999' : '#c3c8d4',
+    polygon: projector ? '#444444' : '#8a91a3',
+    accent: projector ? '#C04000' : '#D55E00',
+    handleFill: '#ffffff',
+    handleStroke: projector ? '#000000' : '#1b1f2b',
+    focus: '#0072B2',
+    labelHalo: '#ffffff',
+    palette: projector ? LIGHT_STRONG : LIGHT,
+    fontFamily: FONT,
+    sizes,
+  };
+}

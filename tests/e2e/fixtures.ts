@@ -1,0 +1,58 @@
+import { test as base, expect, type Page } from '@playwright/test';
+import { mkdirSync } from 'node:fs';
+
+/**
+ * Every browser test runs under watch: a console error, an uncaught exception
+ * or a request to anywhere but the page's own origin fails it.
+ */
+export const test = base.extend<{ watch: { errors: string[]; foreign: string[] } }>({
+  watch: [
+    async ({ page, baseURL }, use) => {
+      const errors: string[] = [];
+      const foreign: string[] = [];
+      const origin = new URL(baseURL ?? 'http://127.0.0.1').origin;
+      page.on('console', (message) => {
+        if (message.type() === 'error') errors.push(message.text());
+      });
+      page.on('pageerror', (error) => errors.push(`uncaught: ${error.message}`));
+      page.on('request', (request) => {
+        const url = request.url();
+        if (/^(data|blob):/.test(url)) return;
+        if (new URL(url).origin !== origin) foreign.push(url);
+      });
+      await use({ errors, foreign });
+      expect(errors, 'console errors').toEqual([]);
+      expect(foreign, 'requests outside the origin').toEqual([]);
+    },
+    { auto: true },
+  ],
+});
+
+export { expect };
+
+/** Saves a screenshot as a test artifact under artifacts/screenshots/. */
+export async function snapshot(page: Page, name: string): Promise<void> {
+  mkdirSync('artifacts/screenshots', { recursive: true });
+  await page.screenshot({ path: `artifacts/screenshots/${name}.png` });
+}
+
+/** The lesson's state from the URL hash, as key → raw value. */
+export function hashState(page: Page): Record<string, string> {
+  const hash = new URL(page.url()).hash;
+  const query = hash.includes('?') ? hash.slice(hash.indexOf('?') + 1) : '';
+  return Object.fromEntries(
+    query
+      .split('&')
+      .filter(Boolean)
+      .map((part) => part.split('=') as [string, string]),
+  );
+}
+
+/** Waits until the URL hash carries `key`=`value` (the URL is written shortly after a change). */
+export async function expectHash(
+  page: Page,
+  key: string,
+  matcher: (value: string) => boolean,
+): Promise<void> {
+  await expect.poll(() => matcher(hashState(page)[key] ?? '')).toBe(true);
+}

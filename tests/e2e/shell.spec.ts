@@ -1,0 +1,101 @@
+import { readFileSync } from 'node:fs';
+import { expect, snapshot, test } from './fixtures';
+
+test('the gallery lists the lessons by chapter and opens one', async ({ page }) => {
+  await page.goto('./');
+  await expect(page.getByRole('heading', { name: 'Spline Lab', level: 1 })).toBeVisible();
+  await expect(page.getByRole('heading', { name: 'Bézier curves' })).toBeVisible();
+  const card = page.getByRole('link', { name: /The de Casteljau construction/ });
+  await expect(card).toBeVisible();
+  await page.waitForTimeout(100);
+  await snapshot(page, 'gallery');
+  await card.click();
+  await expect(page).toHaveURL(/#\/de-casteljau/);
+  await expect(
+    page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
+  ).toBeVisible();
+  // Back returns to the gallery, forward to the lesson.
+  await page.goBack();
+  await expect(page.getByRole('heading', { name: 'Spline Lab', level: 1 })).toBeVisible();
+  await page.goForward();
+  await expect(
+    page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
+  ).toBeVisible();
+});
+
+test('an unknown lesson shows the gallery with a notice', async ({ page }) => {
+  await page.goto('./#/no-such-lesson');
+  await expect(
+    page.getByRole('status').getByText(/There is no lesson called “no-such-lesson”/),
+  ).toBeVisible();
+  await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
+});
+
+test('projector mode and the dark theme toggle by key and by button', async ({ page }) => {
+  await page.goto('./#/de-casteljau');
+  const root = page.locator('html');
+  await expect(root).not.toHaveClass(/projector/);
+  await page.keyboard.press('p');
+  await expect(root).toHaveClass(/projector/);
+  await expect(page.getByRole('button', { name: 'Projector' })).toHaveAttribute(
+    'aria-pressed',
+    'true',
+  );
+  await snapshot(page, 'de-casteljau-projector');
+  await page.getByRole('button', { name: 'Dark' }).click();
+  await expect(root).toHaveAttribute('data-theme', 'dark');
+  await snapshot(page, 'de-casteljau-projector-dark');
+  await page.keyboard.press('d');
+  await expect(root).toHaveAttribute('data-theme', 'light');
+  await page.getByRole('button', { name: 'Projector' }).click();
+  await expect(root).not.toHaveClass(/projector/);
+  // The setting is kept across a reload.
+  await page.keyboard.press('p');
+  await page.reload();
+  await expect(root).toHaveClass(/projector/);
+});
+
+test('the key help opens with ? and closes with Escape', async ({ page }) => {
+  await page.goto('./#/de-casteljau');
+  await page.keyboard.press('?');
+  const dialog = page.getByRole('dialog', { name: 'Keys and gestures' });
+  await expect(dialog).toBeVisible();
+  await expect(dialog.getByText('Projector mode')).toBeVisible();
+  await page.keyboard.press('Escape');
+  await expect(dialog).toBeHidden();
+});
+
+test('PNG and SVG export produce real files of the figure', async ({ page }) => {
+  await page.goto('./#/de-casteljau');
+  const [png] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'PNG' }).click(),
+  ]);
+  expect(png.suggestedFilename()).toBe('spline-lab-de-casteljau.png');
+  const pngBytes = readFileSync((await png.path())!);
+  expect([...pngBytes.subarray(1, 4)].map((b) => String.fromCharCode(b)).join('')).toBe('PNG');
+  expect(pngBytes.length).toBeGreaterThan(5000);
+
+  const [svg] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'SVG' }).click(),
+  ]);
+  expect(svg.suggestedFilename()).toBe('spline-lab-de-casteljau.svg');
+  const text = readFileSync((await svg.path())!, 'utf8');
+  expect(text.startsWith('<svg xmlns="http://www.w3.org/2000/svg"')).toBe(true);
+  // Vector paths and the lecture's labels, not a bitmap.
+  expect(text).not.toContain('<image');
+  expect((text.match(/<path /g) ?? []).length).toBeGreaterThan(10);
+  expect(text).toContain('>P</text>');
+});
+
+test('the built app is served with a Content-Security-Policy against foreign scripts', async ({
+  page,
+}) => {
+  await page.goto('./');
+  const csp = await page
+    .locator('meta[http-equiv="Content-Security-Policy"]')
+    .getAttribute('content');
+  expect(csp).toContain("script-src 'self'");
+  expect(csp).toContain("default-src 'self'");
+});
