@@ -1,5 +1,5 @@
 // The maths of Spline Lab: pure functions, numbers in, fresh numbers out.
-// The contract is /shared/spec/math-api.md; everything else here is for lessons.
+// The contract is shared/spec/math-api.md; everything else here is for lessons.
 
 export type { Point } from './vec';
 export { add, subtract, scale, pointBetween, dot, norm, distance, cross, zeroVector } from './vec';
@@ -12,7 +12,10 @@ export {
   checkPoints,
   checkNumbers,
   checkSameLength,
+  checkCoordinateArrays,
 } from './validate';
+
+// Bézier curves
 export { binomial } from './binomial';
 export { bernstein, bernsteinBasis } from './bernstein';
 export {
@@ -24,3 +27,78 @@ export {
   sampleBezier,
 } from './bezier';
 export { bezierBasisMatrix, bezierToPowerBasis, powerBasisToBezier } from './powerBasis';
+
+// Interpolation through points
+export { parabolaThrough, parametricQuadratic, parametricQuadraticPoint } from './parabola';
+export { chordLengthMu, centripetalMu, parameterValues } from './parameterisation';
+export { lagrangeBasis, lagrangePoint } from './lagrange';
+export {
+  hermiteMatrix,
+  hermiteBasis,
+  hermiteBasisDerivatives,
+  hermiteCoefficients,
+  hermitePoint,
+  hermiteToBezier,
+  bezierToHermite,
+} from './hermite';
+
+// Splines through the villages
+export type { TridiagonalSystem, TridiagonalTrace } from './tridiagonal';
+export { solveTridiagonal, traceTridiagonal } from './tridiagonal';
+export { solveCyclicTridiagonal } from './cyclicTridiagonal';
+export {
+  naturalCubicSystem,
+  clampedCubicSystem,
+  naturalCubicDerivatives,
+  clampedCubicDerivatives,
+  naturalCubicTangents,
+  clampedCubicTangents,
+  naturalCubicCoefficients,
+  sampleNaturalCubicSpline,
+} from './naturalCubic';
+export {
+  closedCubicSystem,
+  naturalCubicDerivativesClosed,
+  closedCubicTangents,
+} from './closedCubic';
+export type { CubicBezierControls } from './naturalCubicBatch';
+export { naturalCubicDerivativesBatch, naturalCubicBezierBatch } from './naturalCubicBatch';
+export {
+  cubicSplinePoint,
+  closedCubicSplinePoint,
+  cubicSplineSegments,
+  cubicSplineCoefficients,
+  sampleCubicSpline,
+} from './cubicSpline';
+export { catmullRomTangents, catmullRomSegments, catmullRomPoint } from './catmullRom';
+export { quadraticSplineC1, cubicSplineC2, bezierSplinePoint } from './bezierSpline';
+
+// B-splines and NURBS
+export type { BSplineBezierControls } from './uniformBSpline';
+export {
+  uniformBSplineMatrix,
+  uniformBSplineBasis,
+  uniformBSplinePoint,
+  uniformBSplineToBezier,
+  bezierToUniformBSpline,
+  uniformBSplineSegments,
+  sampleUniformBSpline,
+  uniformBSplineBezierBatch,
+} from './uniformBSpline';
+export { bsplineBasis, clampedUniformKnots, uniformKnots } from './bsplineBasis';
+export type { NurbsCurve } from './nurbs';
+export { nurbsPoint, nurbsCircle } from './nurbs';
+
+// Surfaces, geometry, drawing
+export type { SurfaceJet } from './surface';
+export { bezierSurfacePoint, bezierSurfaceDerivatives, bezierSurfaceNormal } from './surface';
+export { bezierTangent, bezierCurvature } from './curvature';
+export type { FrenetFrame } from './frenetFrame';
+export { bezierFrenetFrame, bezierNormal } from './frenetFrame';
+export type { Circle } from './osculatingCircle';
+export { osculatingCircle } from './osculatingCircle';
+export type { Continuity } from './continuity';
+export { bezierJointContinuity } from './continuity';
+export { bezierArcLength } from './arcLength';
+export { convexHull, convexHullContains } from './convexHull';
+export { flattenBezier } from './flatten';

@@ -1,0 +1,239 @@
+import { cubicSplineCoefficients, sampleCubicSpline } from './cubicSpline';
+import { thomas, type TridiagonalSystem } from './tridiagonal';
+import { checkNumber, checkNumbers, checkPoint, checkPoints } from './validate';
+import type { Point } from './vec';
+
+// The natural cubic spline through y0 … ym with uniform local parameter
+// (lecture notes, "splines through the villages"): its gradients D0 … Dm solve
+//   2D0 + D1 = 3(y1 − y0)
+//   D(i−1) + 4Di + D(i+1) = 3(y(i+1) − y(i−1))      0 < i < m
+//   D(m−1) + 2Dm = 3(ym − y(m−1))
+// (second derivative zero at both ends). The clamped spline replaces the end
+// rows by given D0 and Dm.
+
+/**
+ * The natural spline's tridiagonal system for scalar values ys (at least 2), so
+ * a lesson can display the matrix: rows `[2 1]`, `[1 4 1]` …, `[1 2]`, right
+ * side `3(y1−y0)`, `3(y(i+1)−y(i−1))`, `3(ym−y(m−1))`. `sub[0]` and `sup[m]` are 0.
+ */
+export function naturalCubicSystem(ys: readonly number[]): TridiagonalSystem {
+  checkNumbers('naturalCubicSystem', 'ys', ys, 2);
+  const n = ys.length;
+  const m = n - 1;
+  const sub = new Array<number>(n).fill(1);
+  const diag = new Array<number>(n).fill(4);
+  const sup = new Array<number>(n).fill(1);
+  const rhs = new Array<number>(n);
+  sub[0] = 0;
+  sup[m] = 0;
+  diag[0] = 2;
+  diag[m] = 2;
+  rhs[0] = 3 * (ys[1] - ys[0]);
+  for (let i = 1; i < m; i++) rhs[i] = 3 * (ys[i + 1] - ys[i - 1]);
+  rhs[m] = 3 * (ys[m] - ys[m - 1]);
+  return { sub, diag, sup, rhs };
+}
+
+/**
+ * The clamped spline's system: the natural system with its first and last rows
+ * replaced by `[1 | d0]` and `[1 | dm]` (the given end gradients).
+ */
+export function clampedCubicSystem(
+  ys: readonly number[],
+  d0: number,
+  dm: number,
+): TridiagonalSystem {
+  checkNumbers('clampedCubicSystem', 'ys', ys, 2);
+  checkNumber('clampedCubicSystem', 'd0', d0);
+  checkNumber('clampedCubicSystem', 'dm', dm);
+  return clampedSystem(ys, d0, dm);
+}
+
+/**
+ * The gradients `D0 … Dm` of the natural cubic spline through the scalar values
+ * ys (one value gives `[0]`), by the Thomas algorithm in O(m).
+ */
+export function naturalCubicDerivatives(ys: readonly number[]): number[] {
+  checkNumbers('naturalCubicDerivatives', 'ys', ys, 1);
+  const derivatives = new Array<number>(ys.length);
+  fillNaturalDerivatives(ys, derivatives);
+  return derivatives;
+}
+
+/**
+ * The gradients `D0 … Dm` of the clamped cubic spline through ys (at least 2
+ * values) with the given end gradients `D0 = d0`, `Dm = dm`.
+ */
+export function clampedCubicDerivatives(ys: readonly number[], d0: number, dm: number): number[] {
+  checkNumbers('clampedCubicDerivatives', 'ys', ys, 2);
+  checkNumber('clampedCubicDerivatives', 'd0', d0);
+  checkNumber('clampedCubicDerivatives', 'dm', dm);
+  const { sub, diag, sup, rhs } = clampedSystem(ys, d0, dm);
+  const derivatives = new Array<number>(ys.length);
+  thomas('clampedCubicDerivatives', sub, diag, sup, rhs, new Float64Array(ys.length), derivatives);
+  return derivatives;
+}
+
+/**
+ * The natural spline's gradient vectors at each of the points (per coordinate),
+ * ready for `cubicSplinePoint(points, tangents, s)`.
+ */
+export function naturalCubicTangents(points: readonly Point[]): Point[] {
+  const dimension = checkPoints('naturalCubicTangents', 'points', points, 1);
+  const n = points.length;
+  const values = new Float64Array(n);
+  const derivatives = new Float64Array(n);
+  const tangents = emptyPoints(n, dimension);
+  for (let d = 0; d < dimension; d++) {
+    for (let i = 0; i < n; i++) values[i] = points[i][d];
+    fillNaturalDerivatives(values, derivatives);
+    for (let i = 0; i < n; i++) tangents[i][d] = derivatives[i];
+  }
+  return tangents;
+}
+
+/**
+ * The clamped spline's gradient vectors (per coordinate) with the given
+ * gradients at the first and last point; at least 2 points.
+ */
+export function clampedCubicTangents(
+  points: readonly Point[],
+  startTangent: Point,
+  endTangent: Point,
+): Point[] {
+  const caller = 'clampedCubicTangents';
+  const dimension = checkPoints(caller, 'points', points, 2);
+  checkPoint(caller, 'startTangent', startTangent, dimension);
+  checkPoint(caller, 'endTangent', endTangent, dimension);
+  const n = points.length;
+  const values = new Array<number>(n);
+  const gamma = new Float64Array(n);
+  const derivatives = new Float64Array(n);
+  const tangents = emptyPoints(n, dimension);
+  for (let d = 0; d < dimension; d++) {
+    for (let i = 0; i < n; i++) values[i] = points[i][d];
+    const { sub, diag, sup, rhs } = clampedSystem(values, startTangent[d], endTangent[d]);
+    thomas(caller, sub, diag, sup, rhs, gamma, derivatives);
+    for (let i = 0; i < n; i++) tangents[i][d] = derivatives[i];
+  }
+  return tangents;
+}
+
+// γi of the natural system depend only on i: γ0 = 1/2 and γi = 1/(4 − γ(i−1))
+// for interior rows, converging to 2 − √3. Once a value repeats exactly it is a
+// fixed point of the floating-point recurrence, so tabulating the values up to
+// there and using the limit afterwards is bit-for-bit the full recurrence.
+const naturalGamma: number[] = [0.5];
+for (;;) {
+  const next = 1 / (4 - naturalGamma[naturalGamma.length - 1]);
+  if (next === naturalGamma[naturalGamma.length - 1]) break;
+  naturalGamma.push(next);
+}
+const gammaTable = Float64Array.from(naturalGamma);
+const gammaCount = gammaTable.length;
+const gammaLimit = gammaTable[gammaCount - 1];
+
+/**
+ * Forward sweep of the Thomas algorithm for the natural system, with the
+ * right-hand side formed on the fly: writes Γ0 … Γ(m−1) into `Gamma` and
+ * returns Γm. Needs m ≥ 1. Internal.
+ */
+export function naturalForwardSweep(
+  ys: ArrayLike<number>,
+  Gamma: { [index: number]: number },
+): number {
+  const m = ys.length - 1;
+  let previous = 1.5 * (ys[1] - ys[0]); // Γ0 = 3(y1 − y0) / 2
+  Gamma[0] = previous;
+  const tableEnd = Math.min(m, gammaCount);
+  let i = 1;
+  // Γi = (3(y(i+1) − y(i−1)) − Γ(i−1)) · γi, since ai = ci = 1 and γi = 1/pivot.
+  for (; i < tableEnd; i++) {
+    previous = (3 * (ys[i + 1] - ys[i - 1]) - previous) * gammaTable[i];
+    Gamma[i] = previous;
+  }
+  for (; i < m; i++) {
+    previous = (3 * (ys[i + 1] - ys[i - 1]) - previous) * gammaLimit;
+    Gamma[i] = previous;
+  }
+  return (3 * (ys[m] - ys[m - 1]) - previous) / (2 - naturalGammaAt(m - 1));
+}
+
+/** γi of the natural system (Internal). */
+export function naturalGammaAt(i: number): number {
+  return i < gammaCount ? gammaTable[i] : gammaLimit;
+}
+
+/**
+ * Writes the natural-spline gradients of ys into `out` (length ys.length),
+ * without argument checks. Internal: shared by every natural-spline entry point.
+ */
+export function fillNaturalDerivatives(
+  ys: ArrayLike<number>,
+  out: { [index: number]: number },
+): void {
+  const m = ys.length - 1;
+  if (m === 0) {
+    out[0] = 0;
+    return;
+  }
+  let next = naturalForwardSweep(ys, out);
+  out[m] = next;
+  const tableEnd = Math.min(m, gammaCount);
+  let i = m - 1;
+  for (; i >= tableEnd; i--) {
+    next = out[i] - gammaLimit * next;
+    out[i] = next;
+  }
+  for (; i >= 0; i--) {
+    next = out[i] - gammaTable[i] * next;
+    out[i] = next;
+  }
+}
+
+function clampedSystem(ys: ArrayLike<number>, d0: number, dm: number): TridiagonalSystem {
+  const n = ys.length;
+  const m = n - 1;
+  const sub = new Array<number>(n).fill(1);
+  const diag = new Array<number>(n).fill(4);
+  const sup = new Array<number>(n).fill(1);
+  const rhs = new Array<number>(n);
+  sub[0] = 0;
+  sup[0] = 0;
+  diag[0] = 1;
+  rhs[0] = d0;
+  for (let i = 1; i < m; i++) rhs[i] = 3 * (ys[i + 1] - ys[i - 1]);
+  sub[m] = 0;
+  sup[m] = 0;
+  diag[m] = 1;
+  rhs[m] = dm;
+  return { sub, diag, sup, rhs };
+}
+
+function emptyPoints(count: number, dimension: number): number[][] {
+  const points = new Array<number[]>(count);
+  for (let i = 0; i < count; i++) points[i] = new Array<number>(dimension);
+  return points;
+}
+
+/**
+ * The power-form coefficients `[a, b, c, d]` of each segment of the natural
+ * cubic spline through ys, `y(t) = a + b·t + c·t² + d·t³` (for display).
+ */
+export function naturalCubicCoefficients(
+  ys: readonly number[],
+): [number, number, number, number][] {
+  return cubicSplineCoefficients(ys, naturalCubicDerivatives(ys));
+}
+
+/**
+ * Samples the natural cubic spline through points at `samplesPerSegment` steps
+ * per segment into an interleaved Float64Array (see `sampleCubicSpline`).
+ */
+export function sampleNaturalCubicSpline(
+  points: readonly Point[],
+  samplesPerSegment: number,
+  out?: Float64Array,
+): Float64Array {
+  return sampleCubicSpline(points, naturalCubicTangents(points), samplesPerSegment, out);
+}
