@@ -49,7 +49,11 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     if (e.button !== 0 && e.pointerType === 'mouse') return;
     const at = local(e);
     pointers.set(e.pointerId, at);
-    canvas.setPointerCapture?.(e.pointerId);
+    try {
+      canvas.setPointerCapture(e.pointerId);
+    } catch {
+      // The pointer is already gone (or was never a real one): drag without capture.
+    }
     if (pointers.size === 2) {
       // A second finger: pinch instead of whatever the first one started.
       cancelLongPress();

@@ -1,0 +1,91 @@
+import { createServer, type Server } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { extname, join, normalize } from 'node:path';
+import { expect, test } from './fixtures';
+
+// dist/ must work from any static host, also below a sub-path.
+const PREFIX = '/courses/graphics/spline-lab/';
+const TYPES: Record<string, string> = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.svg': 'image/svg+xml',
+  '.woff2': 'font/woff2',
+  '.woff': 'font/woff',
+  '.ttf': 'font/ttf',
+};
+
+let server: Server;
+let base = '';
+
+test.beforeAll(async () => {
+  server = createServer(async (request, response) => {
+    const path = new URL(request.url ?? '/', 'http://x').pathname;
+    if (!path.startsWith(PREFIX)) {
+      response.writeHead(404).end();
+      return;
+    }
+    const file = normalize(join('dist', path.slice(PREFIX.length) || 'index.html'));
+    if (!file.startsWith('dist')) {
+      response.writeHead(403).end();
+      return;
+    }
+    try {
+      const body = await readFile(
+        file.endsWith('/') || file === 'dist' ? join(file, 'index.html') : file,
+      );
+      response
+        .writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' })
+        .end(body);
+    } catch {
+      response.writeHead(404).end();
+    }
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const address = server.address();
+  if (address === null || typeof address === 'string') throw new Error('no port');
+  base = `http://127.0.0.1:${address.port}${PREFIX}`;
+});
+
+test.afterAll(() => new Promise<void>((resolve) => server.close(() => resolve())));
+
+test('the built app works from a sub-path of a plain static host', async ({ browser }) => {
+  const context = await browser.newContext();
+  const page = await context.newPage();
+  const failed: string[] = [];
+  page.on('response', (r) => {
+    if (r.status() >= 400) failed.push(r.url());
+  });
+  await page.goto(`${base}#/de-casteljau`);
+  await expect(
+    page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
+  ).toBeVisible();
+  // KaTeX's fonts and styles come from the same sub-path.
+  await expect(page.locator('.katex').first()).toBeVisible();
+  await page.evaluate(() => document.fonts.ready);
+  expect(failed).toEqual([]);
+  await context.close();
+});
+
+test('once loaded, the app works offline', async ({ page, context }) => {
+  await page.goto('./#/de-casteljau');
+  // The service worker takes over after the first visit.
+  await page.evaluate(async () => {
+    await navigator.serviceWorker.ready;
+  });
+  await page.reload();
+  await expect
+    .poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null))
+    .toBe(true);
+  await page.getByRole('heading', { name: 'The de Casteljau construction' }).waitFor();
+  await page.evaluate(() => document.fonts.ready);
+  await context.setOffline(true);
+  await page.reload();
+  await expect(
+    page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
+  ).toBeVisible();
+  await expect(page.getByRole('row', { name: /^P3,0 / })).toContainText('1.5520');
+  await page.goto('./#/');
+  await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
+  await context.setOffline(false);
+});

@@ -1,0 +1,132 @@
+import type { Locator, Page } from '@playwright/test';
+import { expect, expectHash, hashState, test } from './fixtures';
+
+const figure = (page: Page) => page.locator('canvas[data-figure="construction"]');
+
+async function centre(locator: Locator): Promise<[number, number]> {
+  const box = (await locator.boundingBox())!;
+  return [box.x + box.width / 2, box.y + box.height / 2];
+}
+
+/**
+ * A gesture as a finger or a pen makes it, sent through Chromium's own input
+ * pipeline (DevTools protocol), so the page sees real touch/pen pointer events.
+ */
+async function gesture(page: Page, type: 'touch' | 'pen', path: [number, number][], holdMs = 0) {
+  const cdp = await page.context().newCDPSession(page);
+  const [first, ...rest] = path;
+  const last = path[path.length - 1];
+  if (type === 'touch') {
+    const touch = (t: string, [x, y]: [number, number]) =>
+      cdp.send('Input.dispatchTouchEvent', {
+        type: t,
+        touchPoints: t === 'touchEnd' ? [] : [{ x, y }],
+      });
+    await touch('touchStart', first);
+    if (holdMs) await page.waitForTimeout(holdMs);
+    for (const point of rest) await touch('touchMove', point);
+    await touch('touchEnd', last);
+  } else {
+    const pen = (t: string, [x, y]: [number, number], buttons: number) =>
+      cdp.send('Input.dispatchMouseEvent', {
+        type: t,
+        x,
+        y,
+        button: 'left',
+        buttons,
+        clickCount: 1,
+        pointerType: 'pen',
+      });
+    await pen('mousePressed', first, 1);
+    if (holdMs) await page.waitForTimeout(holdMs);
+    for (const point of rest) await pen('mouseMoved', point, 1);
+    await pen('mouseReleased', last, 0);
+  }
+  await cdp.detach();
+}
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/de-casteljau');
+  await expect(figure(page)).toBeVisible();
+  await expectHash(page, 'p', (v) => v === '0,0;1,2;3,2;4,0');
+});
+
+for (const type of ['touch', 'pen'] as const) {
+  test(`a ${type} drags a point, with a finger-sized reach`, async ({ page }) => {
+    const [x, y] = await centre(page.getByRole('button', { name: /^P1 at/ }));
+    // Land 24 px off the point: beyond a mouse's reach (handle radius 8 + 10 px),
+    // within a finger's or a pen's (8 + 22 px).
+    await gesture(page, type, [
+      [x + 24, y],
+      [x + 44, y + 20],
+      [x + 64, y + 40],
+    ]);
+    await expectHash(page, 'p', (v) => v.split(';')[1] !== '1,2');
+    const [px, py] = hashState(page).p.split(';')[1].split(',').map(Number);
+    expect(px).toBeGreaterThan(1);
+    expect(py).toBeLessThan(2);
+  });
+}
+
+test('a mouse 24 px from a point pans instead of grabbing it', async ({ page }) => {
+  const p1 = page.getByRole('button', { name: /^P1 at/ });
+  const [x, y] = await centre(p1);
+  await page.mouse.move(x + 24, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 64, y + 40, { steps: 4 });
+  await page.mouse.up();
+  await expect.poll(async () => (await centre(p1))[0]).toBeCloseTo(x + 40, 0);
+  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+});
+
+test('a long press on empty space adds a point; a short one does not', async ({ page }) => {
+  const box = (await figure(page).boundingBox())!;
+  const spot: [number, number] = [box.x + box.width / 2, box.y + box.height - 40];
+  await gesture(page, 'touch', [spot], 100);
+  await page.waitForTimeout(700);
+  expect(hashState(page).p.split(';')).toHaveLength(4);
+  await gesture(page, 'touch', [spot], 800);
+  await expectHash(page, 'p', (v) => v.split(';').length === 5);
+});
+
+test('dragging empty space pans the view and the wheel zooms it, without touching the state', async ({
+  page,
+}) => {
+  const p1 = page.getByRole('button', { name: /^P1 at/ });
+  const [x0, y0] = await centre(p1);
+  const box = (await figure(page).boundingBox())!;
+  await page.mouse.move(box.x + 30, box.y + 30);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 130, box.y + 80, { steps: 4 });
+  await page.mouse.up();
+  await expect.poll(async () => (await centre(p1))[0]).toBeCloseTo(x0 + 100, 0);
+  const [x1, y1] = await centre(p1);
+  expect(y1).toBeCloseTo(y0 + 50, 0);
+  await page.mouse.move(x1, y1);
+  await page.mouse.wheel(0, -400);
+  // Zooming about the pointer keeps the point under it.
+  await expect
+    .poll(async () => Math.hypot(...(await centre(p1)).map((v, i) => v - [x1, y1][i])))
+    .toBeLessThan(2);
+  const p2 = page.getByRole('button', { name: /^P2 at/ });
+  const before = await centre(p2);
+  await page.keyboard.press('0');
+  await expect.poll(async () => (await centre(p2))[0]).not.toBeCloseTo(before[0], 0);
+  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+});
+
+test('moving a point by keyboard is announced to screen readers', async ({ page }) => {
+  await page.getByRole('button', { name: /^P3 at/ }).focus();
+  await page.keyboard.press('ArrowLeft');
+  await expect(page.locator('[data-announcer]')).toHaveText('P3 at (3.95, 0.00)');
+  await expect(page.getByRole('button', { name: 'P3 at (3.95, 0.00)' })).toBeFocused();
+});
+
+test('Play animates t and respects reduced motion with calm jumps', async ({ page }) => {
+  await page.getByRole('button', { name: 'Play' }).click();
+  await expectHash(page, 't', (v) => v === '0.5');
+  await page.getByRole('button', { name: 'Pause' }).click();
+  const t = hashState(page).t;
+  await page.waitForTimeout(1200);
+  expect(hashState(page).t).toBe(t);
+});
