@@ -115,6 +115,35 @@ test('dragging empty space pans the view and the wheel zooms it, without touchin
   expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
 });
 
+test('two fingers pinch to zoom the figure', async ({ page }) => {
+  const p0 = page.getByRole('button', { name: /^P0 at/ });
+  const p3 = page.getByRole('button', { name: /^P3 at/ });
+  const span = async () => (await centre(p3))[0] - (await centre(p0))[0];
+  const before = await span();
+  const box = (await figure(page).boundingBox())!;
+  const cx = box.x + box.width / 2;
+  const cy = box.y + box.height / 2;
+  const cdp = await page.context().newCDPSession(page);
+  const fingers = (type: string, d: number) =>
+    cdp.send('Input.dispatchTouchEvent', {
+      type,
+      touchPoints:
+        type === 'touchEnd'
+          ? []
+          : [
+              { x: cx - d, y: cy, id: 1 },
+              { x: cx + d, y: cy, id: 2 },
+            ],
+    });
+  await fingers('touchStart', 40);
+  for (const d of [50, 60, 70, 80]) await fingers('touchMove', d);
+  await fingers('touchEnd', 80);
+  await cdp.detach();
+  // Fingers twice as far apart: the figure twice as large.
+  await expect.poll(span).toBeCloseTo(before * 2, -1);
+  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+});
+
 test('moving a point by keyboard is announced to screen readers', async ({ page }) => {
   await page.getByRole('button', { name: /^P3 at/ }).focus();
   await page.keyboard.press('ArrowLeft');
