@@ -102,3 +102,11 @@ export { bezierJointContinuity } from './continuity';
 export { bezierArcLength } from './arcLength';
 export { convexHull, convexHullContains } from './convexHull';
 export { flattenBezier } from './flatten';
+
+// Cost of solving the spline's system, and the counting argument
+export type { ConstraintCount } from './solveCost';
+export {
+  thomasOperationCount,
+  gaussianEliminationOperationCount,
+  constraintCount,
+} from './solveCost';
