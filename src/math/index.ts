@@ -110,3 +110,9 @@ export {
   gaussianEliminationOperationCount,
   constraintCount,
 } from './solveCost';
+export { cubicInflections } from './cubicInflections';
+export { cubicSelfIntersection } from './cubicSelfIntersection';
+export { projectiveMap } from './projectiveMap';
+export type { Deviation } from './curveDeviation';
+export { bezierDeviation, sampledDeviation } from './curveDeviation';
+export { controlPolygonGap } from './controlPolygonGap';
