@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { elevateDegree, splitBezier } from './bezier';
 import { controlPolygonGap } from './controlPolygonGap';
+import type { Point } from './vec';
 
-const cubic = [
+const cubic: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2],
