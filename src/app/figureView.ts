@@ -200,6 +200,9 @@ export class FigureView<S> {
         bestDistance = d;
       }
     }
+    if (best === null && this.spec.pickAt) {
+      best = this.spec.pickAt(this.host.get(), this.view.toWorld(at), this.view.worldLength(reach));
+    }
     return best;
   }
 

@@ -50,6 +50,11 @@ export interface FigureSpec<S> {
   addPoint?(state: S, at: Point2): S | null;
   /** Delete key / context action on a handle; null if not allowed now. */
   removeHandle?(state: S, id: string): S | null;
+  /**
+   * A handle grabbed away from its dot (e.g. anywhere along a plot's cursor
+   * line): the id to drag, or null. Asked only when no handle is within reach.
+   */
+  pickAt?(state: S, at: Point2, tolerance: number): string | null;
   /** Something other than a handle under the pointer (e.g. a basis curve), for linked highlighting. */
   hoverAt?(state: S, at: Point2, tolerance: number): string | null;
   /** Relative size in the layout (default 1). */

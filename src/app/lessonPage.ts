@@ -283,6 +283,8 @@ export class LessonPage<S> {
     if (steps && c.back && c.forward && c.status) {
       const k = (state as Record<string, number>)[steps.key];
       const count = steps.count(state);
+      // A lesson whose current figure has nothing to step hides the buttons.
+      if (c.back.parentElement) c.back.parentElement.style.display = count === 0 ? 'none' : '';
       c.back.disabled = k <= 0;
       c.forward.disabled = k >= count;
       c.status.textContent = steps.describe(state, k);
