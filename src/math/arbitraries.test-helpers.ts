@@ -45,3 +45,8 @@ export function expectClose(actual: Point, expected: Point, tolerance = 1e-9): v
     }
   }
 }
+
+/** The numbers with −0 turned into +0, for exact comparisons where the sign of zero is noise. */
+export function plain(values: readonly number[]): number[] {
+  return values.map((value) => value + 0);
+}
