@@ -268,6 +268,46 @@ export class Painter {
     this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), style);
   }
 
+  /**
+   * A boxed message across the top of the figure, word-wrapped to its width:
+   * says on the figure why something is not drawn (coincident points, a
+   * parabola that cannot turn back). Returns the y (pixels) below the box, to
+   * stack a second note there with `top`.
+   */
+  note(text: string, style: { color?: string; top?: number } = {}): number {
+    const c = this.ctx;
+    const size = this.sizes.label;
+    const pad = size * 0.5;
+    const maxWidth = Math.max(size * 6, this.view.width - 4 * pad);
+    c.save();
+    c.font = `${size}px ${this.theme.fontFamily}`;
+    const lines: string[] = [];
+    for (const word of text.split(/\s+/).filter(Boolean)) {
+      const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+      if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;
+      else lines.push(word);
+    }
+    const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
+    const lineHeight = size * 1.3;
+    const top = style.top ?? pad;
+    c.setLineDash([]);
+    c.globalAlpha = 0.94;
+    c.fillStyle = this.theme.labelHalo;
+    c.fillRect(pad, top, width + 2 * pad, lines.length * lineHeight + pad);
+    c.globalAlpha = 1;
+    c.strokeStyle = style.color ?? this.theme.accent;
+    c.lineWidth = Math.max(2, this.sizes.line);
+    c.beginPath();
+    c.rect(pad, top, width + 2 * pad, lines.length * lineHeight + pad);
+    c.stroke();
+    c.fillStyle = this.theme.ink;
+    c.textAlign = 'left';
+    c.textBaseline = 'middle';
+    lines.forEach((line, i) => c.fillText(line, 2 * pad, top + pad / 2 + (i + 0.5) * lineHeight));
+    c.restore();
+    return top + lines.length * lineHeight + 2 * pad;
+  }
+
   /** A label at screen coordinates (pixels): legends, captions. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
     const c = this.ctx;
