@@ -1,8 +1,9 @@
 import type { AnyLesson } from './lesson';
 import { deCasteljau } from '../lessons/de-casteljau/lesson';
+import { quadratic } from '../lessons/quadratic/lesson';
 
 /** Every lesson, in course order. Adding a lesson: its folder, and one line here. */
-export const lessons: AnyLesson[] = [deCasteljau];
+export const lessons: AnyLesson[] = [quadratic, deCasteljau];
 
 export function findLesson(slug: string): AnyLesson | undefined {
   return lessons.find((l) => l.slug === slug);
