@@ -1,9 +1,10 @@
 import type { AnyLesson } from './lesson';
 import { deCasteljau } from '../lessons/de-casteljau/lesson';
+import { blending } from '../lessons/blending/lesson';
 import { quadratic } from '../lessons/quadratic/lesson';
 
 /** Every lesson, in course order. Adding a lesson: its folder, and one line here. */
-export const lessons: AnyLesson[] = [quadratic, deCasteljau];
+export const lessons: AnyLesson[] = [quadratic, deCasteljau, blending];
 
 export function findLesson(slug: string): AnyLesson | undefined {
   return lessons.find((l) => l.slug === slug);
