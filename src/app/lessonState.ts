@@ -48,7 +48,8 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
     if (decoded.issues.length === 0)
       return { state: normalizeState(lesson, decoded.state).state as S, issues: [] };
   }
-  return { state: defaultsOf<S>(lesson.schema), issues: [] };
+  // Defaults go through the same rules, so a lesson may default a step to "the end".
+  return { state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state, issues: [] };
 }
 
 function readStorage(storage: Storage | null, key: string): string | null {

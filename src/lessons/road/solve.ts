@@ -1,0 +1,94 @@
+import {
+  type Point,
+  type TridiagonalSystem,
+  type TridiagonalTrace,
+  clampedCubicSystem,
+  cubicSplineSegments,
+  naturalCubicSystem,
+  traceTridiagonal,
+} from '../../math';
+import { endGradient, startGradient } from './roads';
+import { type RoadState, hasSolve } from './state';
+
+/**
+ * The spline's system for both coordinates: one matrix (it depends only on the
+ * number of villages and the end conditions) and two right-hand sides, each
+ * solved by the Thomas algorithm with every γi, Γi and Di recorded.
+ */
+export interface RoadSolve {
+  /** The matrix: a_i, b_i, c_i of row i (sub[0] and sup[n−1] are outside it). */
+  matrix: TridiagonalSystem;
+  /** Right-hand sides for x and for y. */
+  rhs: [number[], number[]];
+  /** The Thomas algorithm on x and on y. */
+  trace: [TridiagonalTrace, TridiagonalTrace];
+  /** Rows (= villages, m + 1). */
+  n: number;
+}
+
+export function buildSolve(state: RoadState): RoadSolve | null {
+  if (!hasSolve(state)) return null;
+  const xs = state.v.map((p) => p[0]);
+  const ys = state.v.map((p) => p[1]);
+  const systems =
+    state.road === 'clamped'
+      ? [
+          clampedCubicSystem(xs, startGradient(state)[0], endGradient(state)[0]),
+          clampedCubicSystem(ys, startGradient(state)[1], endGradient(state)[1]),
+        ]
+      : [naturalCubicSystem(xs), naturalCubicSystem(ys)];
+  const trace = systems.map((s) => traceTridiagonal(s.sub, s.diag, s.sup, s.rhs)) as [
+    TridiagonalTrace,
+    TridiagonalTrace,
+  ];
+  return {
+    matrix: systems[0],
+    rhs: [systems[0].rhs.slice(), systems[1].rhs.slice()],
+    trace,
+    n: xs.length,
+  };
+}
+
+/** Where step k of the solve is: rows swept so far, and gradients fixed by back substitution. */
+export interface SolveProgress {
+  /** Rows 0 … swept−1 have become [1 γi | Γi]. */
+  swept: number;
+  /** D(n−1), D(n−2), …, D(n−fixed) are known. */
+  fixed: number;
+  /** The row this step worked on, or null at step 0. */
+  row: number | null;
+}
+
+export function solveProgress(n: number, step: number): SolveProgress {
+  const swept = Math.min(step, n);
+  const fixed = Math.max(0, Math.min(step - n, n));
+  const row = step === 0 ? null : step <= n ? step - 1 : n - fixed;
+  return { swept, fixed, row };
+}
+
+/** Is D_i known at this point of the solve? */
+export const isFixed = (n: number, progress: SolveProgress, i: number) => i >= n - progress.fixed;
+
+/** The pieces of road whose two end gradients are known: segments n−fixed … n−2. */
+export function builtPieces(
+  state: RoadState,
+  solve: RoadSolve,
+  progress: SolveProgress,
+): Point[][] {
+  const from = solve.n - progress.fixed;
+  if (progress.fixed < 2) return [];
+  const tangents = state.v
+    .slice(from)
+    .map((_, k) => [solve.trace[0].solution[from + k], solve.trace[1].solution[from + k]]);
+  return cubicSplineSegments(state.v.slice(from), tangents);
+}
+
+/** Text for the step status: what step k shows. */
+export function describeStep(state: RoadState, k: number): string {
+  const n = state.v.length;
+  if (!hasSolve(state)) return 'The steps walk through the solve of the natural or clamped spline';
+  const progress = solveProgress(n, k);
+  if (progress.row === null) return `Step 0 of ${2 * n}: the system`;
+  if (k <= n) return `Step ${k} of ${2 * n}: sweep row ${progress.row}`;
+  return `Step ${k} of ${2 * n}: D${progress.row} fixed`;
+}
