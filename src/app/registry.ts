@@ -1,11 +1,12 @@
 import type { AnyLesson } from './lesson';
 import { deCasteljau } from '../lessons/de-casteljau/lesson';
+import { lagrange } from '../lessons/lagrange/lesson';
 import { blending } from '../lessons/blending/lesson';
 import { quadratic } from '../lessons/quadratic/lesson';
 import { road } from '../lessons/road/lesson';
 
 /** Every lesson, in course order. Adding a lesson: its folder, and one line here. */
-export const lessons: AnyLesson[] = [quadratic, deCasteljau, blending, road];
+export const lessons: AnyLesson[] = [quadratic, lagrange, deCasteljau, blending, road];
 
 export function findLesson(slug: string): AnyLesson | undefined {
   return lessons.find((l) => l.slug === slug);

@@ -1,0 +1,61 @@
+import { defineLesson, type Point2 } from '../../app/lesson';
+import { basisFigure } from './basisFigure';
+import { curveFigure } from './figure';
+import { lagrangePanel } from './panel';
+import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, type Spacing, schema } from './state';
+
+const preset = (
+  id: string,
+  label: string,
+  p: Point2[],
+  options: { spacing?: Spacing; spline?: boolean; t?: number } = {},
+) => ({
+  id,
+  label,
+  apply: (s: LagrangeState): LagrangeState => ({
+    ...s,
+    p,
+    spacing: options.spacing ?? 'uniform',
+    spline: options.spline ?? false,
+    t: options.t ?? 0.4,
+  }),
+});
+
+export const lagrange = defineLesson<LagrangeState>({
+  slug: 'lagrange',
+  title: 'One polynomial through n + 1 points: Lagrange interpolation',
+  summary:
+    'The Lagrange polynomial through any number of points, its basis, and why it wiggles (Runge).',
+  group: 'interpolation',
+  schema,
+  figures: [curveFigure, basisFigure],
+  layout: 'column',
+  parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
+  presets: [
+    preset('five', 'Five points', DEFAULT_POINTS),
+    preset(
+      'uneven',
+      'Uneven spacing',
+      [
+        [0, 0],
+        [0.5, 0.8],
+        [1, 1],
+        [5, 1.5],
+        [6, 0],
+      ],
+      { spacing: 'uniform' },
+    ),
+    preset('runge', 'Runge: 12 nearly collinear points', RUNGE_POINTS, { t: 0.05 }),
+    preset('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
+    preset(
+      'line',
+      'Two points: a line',
+      [
+        [0, 0],
+        [3, 2],
+      ],
+      { t: 0.5 },
+    ),
+  ],
+  panel: lagrangePanel,
+});

@@ -1,0 +1,132 @@
+import type { Page } from '@playwright/test';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
+const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');
+const pixels = (page: Page) =>
+  Promise.all(
+    [curve(page), basis(page)].map((c) => c.evaluate((e: HTMLCanvasElement) => e.toDataURL())),
+  ).then((all) => all.join('|'));
+const weightsTable = (page: Page) => page.getByRole('table', { name: 'Weights at t' });
+
+/** L_k(t) by the product formula, computed here independently of the app. */
+const lagrangeWeight = (ts: number[], k: number, t: number) =>
+  ts.reduce((w, tj, j) => (j === k ? w : (w * (t - tj)) / (ts[k] - tj)), 1);
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/lagrange');
+  await expect(curve(page)).toBeVisible();
+});
+
+test('the table shows L_k(t) of the product formula, and they add up to 1', async ({ page }) => {
+  const ts = [0, 0.25, 0.5, 0.75, 1];
+  for (const k of ts.keys()) {
+    const row = weightsTable(page).getByRole('row', { name: new RegExp(`^L${k} `) });
+    await expect(row).toContainText(ts[k].toFixed(4));
+    await expect(row).toContainText(lagrangeWeight(ts, k, 0.4).toFixed(4));
+  }
+  await expect(page.getByText(/The weights add up to 1\.000000/)).toBeVisible();
+  // Moving t with the slider moves the weights.
+  await page.getByRole('slider', { name: 't' }).fill('0.9');
+  await expectHash(page, 't', (v) => v === '0.9');
+  await expect(weightsTable(page).getByRole('row', { name: /^L4 / })).toContainText(
+    lagrangeWeight(ts, 4, 0.9).toFixed(4),
+  );
+});
+
+test('chord-length spacing gives t_k by the lengths of the polygon', async ({ page }) => {
+  await page.getByRole('button', { name: 'Uneven spacing' }).click();
+  const before = await pixels(page);
+  await page.getByLabel(/^Chord length/).check();
+  await expectHash(page, 'spacing', (v) => v === 'chord');
+  const p = hashState(page)
+    .p.split(';')
+    .map((q) => q.split(',').map(Number));
+  const gaps = p.slice(1).map((q, i) => Math.hypot(q[0] - p[i][0], q[1] - p[i][1]));
+  const total = gaps.reduce((a, b) => a + b, 0);
+  const t2 = (gaps[0] + gaps[1]) / total;
+  await expect(weightsTable(page).getByRole('row', { name: /^L2 / })).toContainText(t2.toFixed(4));
+  expect(await pixels(page)).not.toBe(before);
+  await snapshot(page, 'lagrange-chord');
+});
+
+test('two equal neighbours with chord length: it says why and falls back to equal spacing', async ({
+  page,
+}) => {
+  await page.goto('./#/lagrange?p=0,0;1,2;1,2;4,1&spacing=chord');
+  await expect(page.getByText(/P1 and P2 are the same point, so chord length/)).toBeVisible();
+  await expect(weightsTable(page).getByRole('row', { name: /^L1 / })).toContainText('0.3333');
+  await snapshot(page, 'lagrange-coincident-chord');
+});
+
+test('Runge: the weights swing far past 1, and a spline can be switched on beside it', async ({
+  page,
+}) => {
+  const calm = Number(
+    (await page.getByText(/Σ\|Lₖ\(t\)\| reaches/).innerText()).match(/reaches ([\d.]+)/)![1],
+  );
+  expect(calm).toBeLessThan(3);
+  await page.getByRole('button', { name: 'Runge: 12 nearly collinear points' }).click();
+  await expectHash(page, 'p', (v) => v.split(';').length === 12);
+  const wild = Number(
+    (await page.getByText(/Σ\|Lₖ\(t\)\| reaches/).innerText()).match(/reaches ([\d.]+)/)![1],
+  );
+  expect(wild).toBeGreaterThan(30);
+  const before = await pixels(page);
+  await page.getByLabel(/Compare with a natural cubic spline/).check();
+  await expectHash(page, 'spline', (v) => v === '1');
+  expect(await pixels(page)).not.toBe(before);
+  await snapshot(page, 'lagrange-runge-spline');
+  await page.keyboard.press('p');
+  await snapshot(page, 'lagrange-projector-runge-spline');
+});
+
+test('the cursor in the basis plot moves t, by keyboard and by dragging its line', async ({
+  page,
+}) => {
+  const cursor = page.getByRole('button', { name: /^t at/ });
+  await cursor.focus();
+  await page.keyboard.press('ArrowRight');
+  await expectHash(page, 't', (v) => Number(v) > 0.4);
+  const box = (await basis(page).boundingBox())!;
+  const handle = (await cursor.boundingBox())!;
+  const x = handle.x + handle.width / 2;
+  // Grab the cursor line half way up the plot, away from its handle.
+  await page.mouse.move(x, box.y + box.height * 0.4);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.85, box.y + box.height * 0.4, { steps: 5 });
+  await page.mouse.up();
+  await expectHash(page, 't', (v) => Number(v) > 0.7);
+});
+
+test('points can be added and removed; two points give a line', async ({ page }) => {
+  await page.getByRole('button', { name: 'Add a point' }).click();
+  await expectHash(page, 'p', (v) => v.split(';').length === 6);
+  await expect(page.getByRole('heading', { name: /^Degree 5,/ })).toBeVisible();
+  await page.getByRole('button', { name: /^P5 at/ }).focus();
+  await page.keyboard.press('Delete');
+  await expectHash(page, 'p', (v) => v.split(';').length === 5);
+  await page.getByRole('button', { name: 'Two points: a line' }).click();
+  await expect(page.getByRole('heading', { name: /^Degree 1,/ })).toBeVisible();
+  await expect(page.getByRole('button', { name: 'Remove the last point' })).toBeDisabled();
+  // At t = 0.5 both points weigh one half: P(0.5) is the midpoint.
+  await expect(weightsTable(page).getByRole('row', { name: /^L0 / })).toContainText('0.5000');
+  await expect(weightsTable(page).getByRole('row', { name: /^L1 / })).toContainText('0.5000');
+});
+
+test('every preset draws, in normal and projector mode', async ({ page }) => {
+  const presets = page.getByRole('group', { name: 'Presets' }).getByRole('button');
+  expect(await presets.count()).toBe(5);
+  for (const projector of [false, true]) {
+    if (projector) await page.keyboard.press('p');
+    let previous = await pixels(page);
+    for (let i = 0; i < 5; i++) {
+      const preset = presets.nth(i);
+      const id = await preset.getAttribute('data-preset');
+      await preset.click();
+      if (i > 0) await expect.poll(() => pixels(page)).not.toBe(previous);
+      previous = await pixels(page);
+      await snapshot(page, `lagrange-${projector ? 'projector' : 'normal'}-${id}`);
+    }
+  }
+});
