@@ -22,9 +22,9 @@ export function bernstein(n: number, i: number, t: number): number {
 export function bernsteinBasis(n: number, t: number): number[] {
   checkInteger('bernsteinBasis', 'n', n, 0);
   checkParameter('bernsteinBasis', 't', t, 0, 1);
-  const values = new Array<number>(n + 1);
+  const values = new Float64Array(n + 1);
   fillBernstein(n, t, values);
-  return values;
+  return Array.from(values);
 }
 
 /**
@@ -33,7 +33,7 @@ export function bernsteinBasis(n: number, t: number): number[] {
  * every step is a convex combination, so values stay in [0, 1], sum to 1 to
  * rounding and are exact at the ends. Internal: no argument checks.
  */
-export function fillBernstein(n: number, t: number, out: { [index: number]: number }): void {
+export function fillBernstein(n: number, t: number, out: Float64Array): void {
   const s = 1 - t;
   out[0] = 1;
   for (let r = 1; r <= n; r++) {

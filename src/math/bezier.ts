@@ -1,4 +1,3 @@
-import { fillBernstein } from './bernstein';
 import { checkInteger, checkParameter, checkPoints } from './validate';
 import type { Point } from './vec';
 
@@ -45,10 +44,25 @@ export function bezierPoint(points: readonly Point[], t: number): Point {
 /** de Casteljau without checks, for callers that have already validated. */
 export function evaluateBezier(points: readonly Point[], dimension: number, t: number): Point {
   const count = points.length;
-  if (scratch.length < count) scratch = new Float64Array(2 * count);
-  const row = scratch;
   const s = 1 - t;
   const result = new Array<number>(dimension);
+  if (count === 4) {
+    // The cubic, the lessons' everyday curve, unrolled: the same six
+    // interpolations as the general loop, without the scratch row.
+    const p0 = points[0];
+    const p1 = points[1];
+    const p2 = points[2];
+    const p3 = points[3];
+    for (let d = 0; d < dimension; d++) {
+      const a = s * p0[d] + t * p1[d];
+      const b = s * p1[d] + t * p2[d];
+      const c = s * p2[d] + t * p3[d];
+      result[d] = s * (s * a + t * b) + t * (s * b + t * c);
+    }
+    return result;
+  }
+  if (scratch.length < count) scratch = new Float64Array(2 * count);
+  const row = scratch;
   // One coordinate at a time keeps the scratch row one-dimensional.
   for (let d = 0; d < dimension; d++) {
     for (let i = 0; i < count; i++) row[i] = points[i][d];
@@ -134,21 +148,39 @@ export function sampleBezier(
   const length = (segments + 1) * dimension;
   const result = out && out.length >= length ? out : new Float64Array(length);
   const count = points.length;
-  const weights = new Float64Array(count);
-  // Flatten the control points once so the inner loop reads a typed array.
+  // Control points flattened coordinate by coordinate, so the loops read a typed array.
   const flat = new Float64Array(count * dimension);
   for (let i = 0; i < count; i++) {
-    for (let d = 0; d < dimension; d++) flat[i * dimension + d] = points[i][d];
+    for (let d = 0; d < dimension; d++) flat[d * count + i] = points[i][d];
   }
-  for (let sample = 0; sample <= segments; sample++) {
-    // Bernstein weights are non-negative and sum to one: a convex combination,
-    // as stable as de Casteljau, at O(n) per coordinate.
-    fillBernstein(count - 1, sample / segments, weights);
-    const offset = sample * dimension;
+  if (count === 4) {
+    // The cubic unrolled: de Casteljau's six interpolations per coordinate.
     for (let d = 0; d < dimension; d++) {
-      let sum = 0;
-      for (let i = 0; i < count; i++) sum += weights[i] * flat[i * dimension + d];
-      result[offset + d] = sum;
+      const p0 = flat[4 * d];
+      const p1 = flat[4 * d + 1];
+      const p2 = flat[4 * d + 2];
+      const p3 = flat[4 * d + 3];
+      for (let sample = 0, offset = d; sample <= segments; sample++, offset += dimension) {
+        const t = sample / segments;
+        const s = 1 - t;
+        const a = s * p0 + t * p1;
+        const b = s * p1 + t * p2;
+        const c = s * p2 + t * p3;
+        result[offset] = s * (s * a + t * b) + t * (s * b + t * c);
+      }
+    }
+    return result;
+  }
+  const row = new Float64Array(count);
+  for (let sample = 0; sample <= segments; sample++) {
+    const t = sample / segments;
+    const s = 1 - t;
+    for (let d = 0; d < dimension; d++) {
+      row.set(flat.subarray(d * count, (d + 1) * count));
+      for (let r = count - 1; r > 0; r--) {
+        for (let i = 0; i < r; i++) row[i] = s * row[i] + t * row[i + 1];
+      }
+      result[sample * dimension + d] = row[0];
     }
   }
   return result;

@@ -122,13 +122,16 @@ describe('flattenBezier', () => {
   });
 
   it('terminates for a tolerance below the precision of large coordinates', () => {
+    // Near 1e12 doubles are 1.2e-4 apart, so rounding noise in the second
+    // differences exceeds a tolerance of 1e-5: the depth cap must stop it.
     const points: Point[] = [
-      [1e9, 1e9],
-      [1e9 + 1, 1e9 + 3],
-      [1e9 + 3, 1e9 - 2],
-      [1e9 + 4, 1e9],
+      [1e12, 1e12],
+      [1e12 + 1, 1e12 + 3],
+      [1e12 + 3, 1e12 - 2],
+      [1e12 + 4, 1e12],
     ];
-    const polyline = flattenBezier(points, 1e-12);
-    expect(polyline.length).toBeLessThanOrEqual(4 * uniformCount(points, 1e-12) + 16);
+    const polyline = flattenBezier(points, 1e-5);
+    expect(polyline.length).toBeLessThanOrEqual(4 * uniformCount(points, 1e-5) + 16);
+    expect(polyline[polyline.length - 1]).toEqual(points[3]);
   });
 });

@@ -403,3 +403,17 @@ describe('sampleNaturalCubicSpline', () => {
     );
   });
 });
+
+describe('batch output buffers', () => {
+  it('are reused when given, and checked', () => {
+    const xs = Float64Array.of(0, 1, 2, 3);
+    const ys = Float64Array.of(0, 1, 0, 1);
+    const out = naturalCubicBezierBatch([xs, ys]);
+    const again = naturalCubicBezierBatch([xs, ys], out);
+    expect(again).toBe(out);
+    expect(again.firstControl[1][0]).toBeCloseTo(5 / 9, 14);
+    expect(() =>
+      naturalCubicBezierBatch([xs, ys], { firstControl: [new Float64Array(3)], secondControl: [] }),
+    ).toThrow(/out must hold 2 Float64Arrays/);
+  });
+});

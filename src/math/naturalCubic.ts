@@ -1,4 +1,5 @@
 import { cubicSplineCoefficients, sampleCubicSpline } from './cubicSpline';
+import { fillNaturalDerivatives } from './naturalSolver';
 import { thomas, type TridiagonalSystem } from './tridiagonal';
 import { checkNumber, checkNumbers, checkPoint, checkPoints } from './validate';
 import type { Point } from './vec';
@@ -55,9 +56,10 @@ export function clampedCubicSystem(
  */
 export function naturalCubicDerivatives(ys: readonly number[]): number[] {
   checkNumbers('naturalCubicDerivatives', 'ys', ys, 1);
-  const derivatives = new Array<number>(ys.length);
-  fillNaturalDerivatives(ys, derivatives);
-  return derivatives;
+  // The solver works on Float64Arrays only, so its loops stay monomorphic.
+  const derivatives = new Float64Array(ys.length);
+  fillNaturalDerivatives(Float64Array.from(ys), derivatives);
+  return Array.from(derivatives);
 }
 
 /**
@@ -117,78 +119,6 @@ export function clampedCubicTangents(
     for (let i = 0; i < n; i++) tangents[i][d] = derivatives[i];
   }
   return tangents;
-}
-
-// γi of the natural system depend only on i: γ0 = 1/2 and γi = 1/(4 − γ(i−1))
-// for interior rows, converging to 2 − √3. Once a value repeats exactly it is a
-// fixed point of the floating-point recurrence, so tabulating the values up to
-// there and using the limit afterwards is bit-for-bit the full recurrence.
-const naturalGamma: number[] = [0.5];
-for (;;) {
-  const next = 1 / (4 - naturalGamma[naturalGamma.length - 1]);
-  if (next === naturalGamma[naturalGamma.length - 1]) break;
-  naturalGamma.push(next);
-}
-const gammaTable = Float64Array.from(naturalGamma);
-const gammaCount = gammaTable.length;
-const gammaLimit = gammaTable[gammaCount - 1];
-
-/**
- * Forward sweep of the Thomas algorithm for the natural system, with the
- * right-hand side formed on the fly: writes Γ0 … Γ(m−1) into `Gamma` and
- * returns Γm. Needs m ≥ 1. Internal.
- */
-export function naturalForwardSweep(
-  ys: ArrayLike<number>,
-  Gamma: { [index: number]: number },
-): number {
-  const m = ys.length - 1;
-  let previous = 1.5 * (ys[1] - ys[0]); // Γ0 = 3(y1 − y0) / 2
-  Gamma[0] = previous;
-  const tableEnd = Math.min(m, gammaCount);
-  let i = 1;
-  // Γi = (3(y(i+1) − y(i−1)) − Γ(i−1)) · γi, since ai = ci = 1 and γi = 1/pivot.
-  for (; i < tableEnd; i++) {
-    previous = (3 * (ys[i + 1] - ys[i - 1]) - previous) * gammaTable[i];
-    Gamma[i] = previous;
-  }
-  for (; i < m; i++) {
-    previous = (3 * (ys[i + 1] - ys[i - 1]) - previous) * gammaLimit;
-    Gamma[i] = previous;
-  }
-  return (3 * (ys[m] - ys[m - 1]) - previous) / (2 - naturalGammaAt(m - 1));
-}
-
-/** γi of the natural system (Internal). */
-export function naturalGammaAt(i: number): number {
-  return i < gammaCount ? gammaTable[i] : gammaLimit;
-}
-
-/**
- * Writes the natural-spline gradients of ys into `out` (length ys.length),
- * without argument checks. Internal: shared by every natural-spline entry point.
- */
-export function fillNaturalDerivatives(
-  ys: ArrayLike<number>,
-  out: { [index: number]: number },
-): void {
-  const m = ys.length - 1;
-  if (m === 0) {
-    out[0] = 0;
-    return;
-  }
-  let next = naturalForwardSweep(ys, out);
-  out[m] = next;
-  const tableEnd = Math.min(m, gammaCount);
-  let i = m - 1;
-  for (; i >= tableEnd; i--) {
-    next = out[i] - gammaLimit * next;
-    out[i] = next;
-  }
-  for (; i >= 0; i--) {
-    next = out[i] - gammaTable[i] * next;
-    out[i] = next;
-  }
 }
 
 function clampedSystem(ys: ArrayLike<number>, d0: number, dm: number): TridiagonalSystem {

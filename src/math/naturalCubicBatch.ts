@@ -1,10 +1,14 @@
-import { fillNaturalDerivatives, naturalForwardSweep, naturalGammaAt } from './naturalCubic';
+import {
+  fillNaturalDerivatives,
+  naturalBackSubstitution,
+  naturalForwardSweep,
+} from './naturalSolver';
 import { checkCoordinateArrays, nonFiniteError } from './validate';
 
 // The natural cubic spline for very many points (10^5 – 10^6): typed arrays
-// in, typed arrays out, no per-point objects. The same Thomas sweep as
+// in, typed arrays out, no per-point objects; the same solver as
 // naturalCubicDerivatives. Input checks are folded into the solve: a NaN or
-// ±Infinity anywhere makes the last gradient non-finite, so the happy path
+// ±Infinity anywhere makes the end gradients non-finite, so the happy path
 // pays nothing extra and only a failing call scans the input to name the culprit.
 
 /** Bézier control points of every segment, one Float64Array per coordinate. */
@@ -25,7 +29,7 @@ export function naturalCubicDerivativesBatch(
 ): Float64Array {
   const caller = 'naturalCubicDerivativesBatch';
   checkCoordinateArrays(caller, [values], 1);
-  if (out.length < values.length || out === values) {
+  if (!(out instanceof Float64Array) || out.length < values.length || out === values) {
     throw new RangeError(
       `${caller}: out must be a separate Float64Array with at least ${values.length} entries.`,
     );
@@ -41,47 +45,56 @@ export function naturalCubicDerivativesBatch(
  * The natural C² cubic spline through the points whose coordinates are given as
  * parallel arrays (`[xs, ys]` or `[xs, ys, zs]`), as Bézier control points of
  * each of the m segments: segment i is `[Pi, Bi, Ci, P(i+1)]`. The same curve
- * as `cubicSplineC2`, for 10^6 points.
+ * as `cubicSplineC2`, for 10^6 points. Pass `out` (arrays of at least m
+ * entries) to reuse buffers from frame to frame.
  */
-export function naturalCubicBezierBatch(coordinates: readonly Float64Array[]): CubicBezierControls {
+export function naturalCubicBezierBatch(
+  coordinates: readonly Float64Array[],
+  out?: CubicBezierControls,
+): CubicBezierControls {
   const caller = 'naturalCubicBezierBatch';
   const n = checkCoordinateArrays(caller, coordinates, 1);
   const m = n - 1;
-  const firstControl = coordinates.map(() => new Float64Array(m));
-  const secondControl = coordinates.map(() => new Float64Array(m));
-  if (m === 0) {
-    for (let c = 0; c < coordinates.length; c++) {
-      if (!Number.isFinite(coordinates[c][0]))
-        throw nonFiniteError(caller, `coordinates[${c}]`, coordinates[c]);
-    }
-    return { firstControl, secondControl };
-  }
+  const result = out ?? {
+    firstControl: coordinates.map(() => new Float64Array(m)),
+    secondControl: coordinates.map(() => new Float64Array(m)),
+  };
+  checkOutput(caller, result, coordinates.length, m);
   for (let c = 0; c < coordinates.length; c++) {
-    controlPoints(caller, coordinates[c], firstControl[c], secondControl[c], `coordinates[${c}]`);
+    const values = coordinates[c];
+    if (m === 0) {
+      if (!Number.isFinite(values[0])) throw nonFiniteError(caller, `coordinates[${c}]`, values);
+      continue;
+    }
+    const first = result.firstControl[c];
+    const second = result.secondControl[c];
+    // Γ0 … Γ(m−1) then D0 … D(m−1) live in `first`, Dm in a local: no scratch array.
+    const last = naturalForwardSweep(values, first);
+    naturalBackSubstitution(first, m, last);
+    if (!Number.isFinite(first[0]) || !Number.isFinite(last)) {
+      throw nonFiniteError(caller, `coordinates[${c}]`, values);
+    }
+    const third = 1 / 3;
+    for (let i = 0; i < m - 1; i++) {
+      second[i] = values[i + 1] - first[i + 1] * third;
+      first[i] = values[i] + first[i] * third;
+    }
+    second[m - 1] = values[m] - last * third;
+    first[m - 1] = values[m - 1] + first[m - 1] * third;
   }
-  return { firstControl, secondControl };
+  return result;
 }
 
-/**
- * One coordinate: the forward sweep leaves Γ0 … Γ(m−1) in `first`, then a single
- * backward pass turns each Γi into Di and writes both control points, so no
- * scratch array is needed.
- */
-function controlPoints(
-  caller: string,
-  ys: Float64Array,
-  first: Float64Array,
-  second: Float64Array,
-  name: string,
-): void {
-  const m = ys.length - 1;
-  let next = naturalForwardSweep(ys, first); // Dm = Γm
-  if (!Number.isFinite(next)) throw nonFiniteError(caller, name, ys);
-  const third = 1 / 3;
-  for (let i = m - 1; i >= 0; i--) {
-    second[i] = ys[i + 1] - next * third;
-    next = first[i] - naturalGammaAt(i) * next;
-    first[i] = ys[i] + next * third;
+function checkOutput(caller: string, out: CubicBezierControls, dimension: number, m: number): void {
+  for (const arrays of [out.firstControl, out.secondControl]) {
+    if (
+      !Array.isArray(arrays) ||
+      arrays.length !== dimension ||
+      arrays.some((array) => !(array instanceof Float64Array) || array.length < m)
+    ) {
+      throw new RangeError(
+        `${caller}: out must hold ${dimension} Float64Arrays of at least ${m} entries in firstControl and in secondControl.`,
+      );
+    }
   }
-  if (!Number.isFinite(next)) throw nonFiniteError(caller, name, ys);
 }

@@ -105,8 +105,8 @@ function surfaceJet(
 function weightedSum(
   grid: readonly (readonly Point[])[],
   dimension: number,
-  wu: readonly number[],
-  wv: readonly number[],
+  wu: Float64Array,
+  wv: Float64Array,
   stepU: number,
   stepV: number,
 ): number[] {
@@ -125,8 +125,8 @@ function weightedSum(
   return result;
 }
 
-function bernsteinValues(n: number, t: number): number[] {
-  const values = new Array<number>(n + 1);
+function bernsteinValues(n: number, t: number): Float64Array {
+  const values = new Float64Array(n + 1);
   fillBernstein(n, t, values);
   return values;
 }

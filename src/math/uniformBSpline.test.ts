@@ -246,3 +246,20 @@ describe('batch B-spline helpers', () => {
     expect(() => uniformBSplineBezierBatch([xs.subarray(0, 3)])).toThrow(/at least 4 points/);
   });
 });
+
+describe('uniformBSplineBezierBatch output buffers', () => {
+  it('are reused when given, and checked', () => {
+    const xs = Float64Array.of(0, 6, 6, 0, 0);
+    const out = uniformBSplineBezierBatch([xs]);
+    expect(uniformBSplineBezierBatch([xs], out)).toBe(out);
+    // Joints (P(i) + 4P(i+1) + P(i+2))/6: (0 + 24 + 6)/6, (6 + 24 + 0)/6, (6 + 0 + 0)/6.
+    expect(Array.from(out.joints[0])).toEqual([5, 5, 1]);
+    expect(() =>
+      uniformBSplineBezierBatch([xs], {
+        joints: [new Float64Array(1)],
+        firstControl: [],
+        secondControl: [],
+      }),
+    ).toThrow(/out must hold 1 Float64Arrays per field/);
+  });
+});

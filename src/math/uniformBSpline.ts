@@ -164,40 +164,88 @@ export interface BSplineBezierControls {
 /**
  * The uniform cubic B-spline with control points given as parallel coordinate
  * arrays (at least 4 points), as Bézier segments
- * `[joints[i], firstControl[i], secondControl[i], joints[i+1]]`, in typed arrays.
+ * `[joints[i], firstControl[i], secondControl[i], joints[i+1]]`, in typed
+ * arrays. Pass `out` (arrays of at least m − 1, m − 2, m − 2 entries) to reuse
+ * buffers from frame to frame.
  */
 export function uniformBSplineBezierBatch(
   coordinates: readonly Float64Array[],
+  out?: BSplineBezierControls,
 ): BSplineBezierControls {
   const caller = 'uniformBSplineBezierBatch';
   const n = checkCoordinateArrays(caller, coordinates, 4);
   const segments = n - 3;
-  const joints = coordinates.map(() => new Float64Array(segments + 1));
-  const firstControl = coordinates.map(() => new Float64Array(segments));
-  const secondControl = coordinates.map(() => new Float64Array(segments));
+  const result = out ?? {
+    joints: coordinates.map(() => new Float64Array(segments + 1)),
+    firstControl: coordinates.map(() => new Float64Array(segments)),
+    secondControl: coordinates.map(() => new Float64Array(segments)),
+  };
+  checkBezierOutput(caller, result, coordinates.length, segments);
   for (let c = 0; c < coordinates.length; c++) {
     const values = coordinates[c];
-    const joint = joints[c];
-    const first = firstControl[c];
-    const second = secondControl[c];
-    let a = values[0];
-    let b = values[1];
-    // NaN or ±Infinity times zero is NaN: one running sum checks every input.
-    let check = a * 0 + b * 0;
-    for (let i = 0; i <= segments; i++) {
-      const next = values[i + 2];
-      check += next * 0;
-      joint[i] = (a + 4 * b + next) / 6;
-      if (i < segments) {
-        first[i] = (2 * b + next) / 3;
-        second[i] = (b + 2 * next) / 3;
-      }
-      a = b;
-      b = next;
-    }
+    const check = coordinateControls(
+      values,
+      result.joints[c],
+      result.firstControl[c],
+      result.secondControl[c],
+    );
     if (check !== 0) throw nonFiniteError(caller, `coordinates[${c}]`, values);
   }
-  return { joints, firstControl, secondControl };
+  return result;
+}
+
+/**
+ * One coordinate of uniformBSplineBezierBatch. Returns Σ value·0, which is 0
+ * unless some value is NaN or ±Infinity (then NaN): the check rides along.
+ */
+function coordinateControls(
+  values: Float64Array,
+  joint: Float64Array,
+  first: Float64Array,
+  second: Float64Array,
+): number {
+  const segments = values.length - 3;
+  const third = 1 / 3;
+  const sixth = 1 / 6;
+  let a = values[0];
+  let b = values[1];
+  let check = a * 0 + b * 0;
+  for (let i = 0; i < segments; i++) {
+    const next = values[i + 2];
+    check += next * 0;
+    joint[i] = (a + 4 * b + next) * sixth;
+    first[i] = (2 * b + next) * third;
+    second[i] = (b + 2 * next) * third;
+    a = b;
+    b = next;
+  }
+  const last = values[segments + 2];
+  joint[segments] = (a + 4 * b + last) * sixth;
+  return check + last * 0;
+}
+
+function checkBezierOutput(
+  caller: string,
+  out: BSplineBezierControls,
+  dimension: number,
+  segments: number,
+): void {
+  const lengths: [Float64Array[], number][] = [
+    [out.joints, segments + 1],
+    [out.firstControl, segments],
+    [out.secondControl, segments],
+  ];
+  for (const [arrays, length] of lengths) {
+    if (
+      !Array.isArray(arrays) ||
+      arrays.length !== dimension ||
+      arrays.some((array) => !(array instanceof Float64Array) || array.length < length)
+    ) {
+      throw new RangeError(
+        `${caller}: out must hold ${dimension} Float64Arrays per field, with at least ${segments + 1} joints and ${segments} of each control point.`,
+      );
+    }
+  }
 }
 
 function checkFour(caller: string, points: readonly Point[]): number {

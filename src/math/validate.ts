@@ -108,6 +108,40 @@ export function checkPoints(
   minimum: number,
   dimension?: number,
 ): number {
+  // The common case is one tight loop with no strings built; only a failure
+  // goes through the slow path that words the message.
+  if (!Array.isArray(points) || points.length < minimum) {
+    return explainPoints(caller, name, points, minimum, dimension);
+  }
+  if (points.length === 0) return dimension ?? 0;
+  const first = points[0];
+  const size = Array.isArray(first) ? first.length : 0;
+  if (size === 0 || (dimension !== undefined && size !== dimension)) {
+    return explainPoints(caller, name, points, minimum, dimension);
+  }
+  for (let i = 0; i < points.length; i++) {
+    const point = points[i];
+    if (!Array.isArray(point) || point.length !== size) {
+      return explainPoints(caller, name, points, minimum, dimension);
+    }
+    for (let d = 0; d < size; d++) {
+      const coordinate = point[d];
+      if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) {
+        return explainPoints(caller, name, points, minimum, dimension);
+      }
+    }
+  }
+  return size;
+}
+
+/** The slow path of checkPoints: finds the first problem and throws it in words. */
+function explainPoints(
+  caller: string,
+  name: string,
+  points: readonly Point[],
+  minimum: number,
+  dimension?: number,
+): number {
   if (!Array.isArray(points)) {
     throw new RangeError(
       `${caller}: ${name} is ${describe(points)}; it must be an array of points.`,
@@ -118,12 +152,9 @@ export function checkPoints(
       `${caller}: ${name} needs at least ${minimum} point${minimum === 1 ? '' : 's'}, but got ${points.length}.`,
     );
   }
-  if (points.length === 0) return dimension ?? 0;
   const first = checkPoint(caller, `${name}[0]`, points[0], dimension);
   for (let i = 1; i < points.length; i++) {
     const point = points[i];
-    // The common case (right length, all finite) costs one loop and no strings.
-    if (Array.isArray(point) && point.length === first && allFinite(point)) continue;
     if (Array.isArray(point) && point.length !== first) {
       throw new RangeError(
         `${caller}: ${name}[${i}] has ${point.length} coordinates but ${name}[0] has ${first}; every point must have the same dimension.`,
@@ -174,14 +205,6 @@ export function checkSameLength(
       `${caller}: ${name} has ${values.length} entries but ${otherName} has ${other.length}; they must match one for one.`,
     );
   }
-}
-
-function allFinite(point: Point): boolean {
-  for (let d = 0; d < point.length; d++) {
-    const coordinate = point[d];
-    if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) return false;
-  }
-  return true;
 }
 
 /**
