@@ -159,6 +159,8 @@ export class FigureView<S> {
         color: handle.color,
         shape: handle.shape,
         state: stateName,
+        // A small handle grows to full size while it is held, hovered or focused.
+        radius: handle.small && stateName === 'idle' ? theme.sizes.handle * 0.5 : undefined,
       });
       if (handle.showLabel !== false) {
         painter.label(handle.label, handle.position, {

@@ -26,6 +26,8 @@ export interface Handle {
   shape?: 'circle' | 'square' | 'diamond';
   /** Draw the label beside the handle (default true). */
   showLabel?: boolean;
+  /** Draw it at half size, so hundreds of points do not hide what they shape (it is picked as usual). */
+  small?: boolean;
 }
 
 export interface DrawInfo {

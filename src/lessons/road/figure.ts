@@ -75,7 +75,13 @@ export const mapFigure: FigureSpec<RoadState> = {
   bounds(state) {
     const points: Point[] = [...state.v];
     if (usesQuadraticHandle(state)) points.push(quadraticControl(state));
-    if (usesEndGradients(state)) points.push(...endHandlePositions(state));
+    if (usesEndGradients(state)) points.push(...endHandlePositions(state), ...otherRoadEnds(state));
+    // A cubic road stays within its control points: fit them too (the ring road bulges out).
+    // The quadratic's may fly far off: its swings are the lesson, shown to the edge of the map.
+    if (!state.overlay && state.road !== 'quadratic' && state.road !== 'roman') {
+      const road = buildRoad(state.road, state);
+      if (road.kind === 'pieces' && road.pieces.length <= 100) points.push(...road.pieces.flat());
+    }
     return boundsOf(points);
   },
   draw(painter, state, info) {
@@ -143,9 +149,15 @@ export const mapFigure: FigureSpec<RoadState> = {
         showLabel: false,
       });
     }
-    const showLabel = state.v.length <= LABEL_VILLAGES;
+    const few = state.v.length <= LABEL_VILLAGES;
     state.v.forEach((village, i) =>
-      handles.push({ id: `p${i}`, label: `P_${i}`, position: village, showLabel }),
+      handles.push({
+        id: `p${i}`,
+        label: `P_${i}`,
+        position: village,
+        showLabel: few,
+        small: !few,
+      }),
     );
     return handles;
   },
@@ -247,19 +259,31 @@ const shorten = (text: string) => {
   return first.length > 90 ? `${first.slice(0, 88)}…` : first;
 };
 
-/** The roads the new one must join at P0 and Pm, leaving along the chosen gradients. */
-function drawOtherRoads(painter: Painter, state: RoadState): void {
+/** Where the existing roads at P0 and Pm start and end: a quarter of the map along ∓D0, ±Dm. */
+function otherRoadEnds(state: RoadState): [Point2, Point2] {
   const v = state.v;
   const a = startGradient(state);
   const b = endGradient(state);
-  const stub = (g: Point) => 0.8 / Math.max(1e-9, Math.hypot(g[0], g[1]));
-  const size = Math.max(...boundsSpan(v), 1) * 0.18;
-  drawRoadway(painter, [[plus(v[0], a, -size * stub(a)), v[0]]], painter.theme.curveFaint);
-  drawRoadway(
-    painter,
-    [[v[v.length - 1], plus(v[v.length - 1], b, size * stub(b))]],
-    painter.theme.curveFaint,
-  );
+  const length = Math.max(...boundsSpan(v), 1) * 0.25;
+  const unit = (g: Point) => length / Math.max(1e-9, Math.hypot(g[0], g[1]));
+  return [plus(v[0], a, -unit(a)), plus(v[v.length - 1], b, unit(b))];
+}
+
+/** The roads the new one must join at P0 and Pm, leaving along the chosen gradients. */
+function drawOtherRoads(painter: Painter, state: RoadState): void {
+  const v = state.v;
+  const [start, end] = otherRoadEnds(state);
+  const faint = painter.theme.curveFaint;
+  drawRoadway(painter, [[start, v[0]]], faint);
+  drawRoadway(painter, [[v[v.length - 1], end]], faint);
+  const style = {
+    size: painter.theme.sizes.small,
+    color: painter.theme.muted,
+    halo: true,
+    align: 'center' as const,
+  };
+  painter.label('existing road', start, { ...style, dy: -painter.theme.sizes.curve * 3 });
+  painter.label('existing road', end, { ...style, dy: -painter.theme.sizes.curve * 3 });
 }
 
 function boundsSpan(points: readonly Point[]): [number, number] {
@@ -275,7 +299,7 @@ function drawMethodAids(painter: Painter, state: RoadState, info: DrawInfo): voi
   const few = v.length <= LABEL_VILLAGES;
   if (usesQuadraticHandle(state)) {
     const road = buildRoad('quadratic', state);
-    if (road.kind === 'pieces' && v.length <= 60) {
+    if (road.kind === 'pieces' && v.length <= 60 && !state.overlay) {
       // The control polygon P0 B0 P1 B1 …: each Bi is the reflection of B(i−1) in Pi.
       const polygon: Point[] = road.pieces.flatMap((piece) => piece.slice(0, 2));
       polygon.push(v[v.length - 1]);
@@ -332,7 +356,7 @@ function drawSolveProgress(painter: Painter, state: RoadState): void {
 
 function drawComb(painter: Painter, state: RoadState, pieces: readonly Point[][]): void {
   const [w, h] = boundsSpan(state.v);
-  drawCurvatureComb(painter, pieces, Math.max(w, h, 1e-9) / 8, painter.color(3));
+  drawCurvatureComb(painter, pieces, Math.max(w, h, 1e-9) / 10, painter.color(3));
 }
 
 function drawMarkerLabel(painter: Painter, state: RoadState, pieces: readonly Point[][]): void {

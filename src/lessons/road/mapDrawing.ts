@@ -151,7 +151,7 @@ export function drawCurvatureComb(
         flush();
         continue;
       }
-      const length = Math.max(-2, Math.min(2, -frame.curvature * scale)) * scale;
+      const length = Math.max(-1.5, Math.min(1.5, -frame.curvature * scale)) * scale;
       const tip = [
         frame.point[0] + frame.normal[0] * length,
         frame.point[1] + frame.normal[1] * length,
