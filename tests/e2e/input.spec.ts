@@ -17,7 +17,7 @@ async function gesture(page: Page, type: 'touch' | 'pen', path: [number, number]
   const [first, ...rest] = path;
   const last = path[path.length - 1];
   if (type === 'touch') {
-    const touch = (t: string, [x, y]: [number, number]) =>
+    const touch = (t: 'touchStart' | 'touchMove' | 'touchEnd', [x, y]: [number, number]) =>
       cdp.send('Input.dispatchTouchEvent', {
         type: t,
         touchPoints: t === 'touchEnd' ? [] : [{ x, y }],
@@ -27,7 +27,11 @@ async function gesture(page: Page, type: 'touch' | 'pen', path: [number, number]
     for (const point of rest) await touch('touchMove', point);
     await touch('touchEnd', last);
   } else {
-    const pen = (t: string, [x, y]: [number, number], buttons: number) =>
+    const pen = (
+      t: 'mousePressed' | 'mouseMoved' | 'mouseReleased',
+      [x, y]: [number, number],
+      buttons: number,
+    ) =>
       cdp.send('Input.dispatchMouseEvent', {
         type: t,
         x,
@@ -124,7 +128,7 @@ test('two fingers pinch to zoom the figure', async ({ page }) => {
   const cx = box.x + box.width / 2;
   const cy = box.y + box.height / 2;
   const cdp = await page.context().newCDPSession(page);
-  const fingers = (type: string, d: number) =>
+  const fingers = (type: 'touchStart' | 'touchMove' | 'touchEnd', d: number) =>
     cdp.send('Input.dispatchTouchEvent', {
       type,
       touchPoints:
