@@ -48,6 +48,19 @@ export const road = defineLesson<RoadState>({
       overlay: false,
       q: [10, 40],
     })),
+    preset('ring', 'Villages round a lake', () => ({
+      v: [
+        [0, 20],
+        [18, 2],
+        [46, 0],
+        [70, 12],
+        [74, 38],
+        [50, 52],
+        [22, 46],
+      ],
+      road: 'ring',
+      overlay: false,
+    })),
     preset(
       'two',
       'Two villages',

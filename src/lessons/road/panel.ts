@@ -79,9 +79,13 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
       slider,
       sliderValue,
     ),
-    segmentTitle,
-    segmentText,
-    segmentFormula,
+    h(
+      'section',
+      { 'aria-label': 'Segment coefficients' },
+      segmentTitle,
+      segmentText,
+      segmentFormula,
+    ),
   );
 
   return {
