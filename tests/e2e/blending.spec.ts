@@ -1,0 +1,149 @@
+import type { Page } from '@playwright/test';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
+const plot = (page: Page) => page.locator('canvas[data-figure="blending"]');
+const pixels = (page: Page, which: 'curve' | 'blending') =>
+  page.locator(`canvas[data-figure="${which}"]`).evaluate((c: HTMLCanvasElement) => c.toDataURL());
+
+/** The weights as listed in the table, at full precision. */
+async function listedWeights(page: Page): Promise<number[]> {
+  const values = await page
+    .getByRole('table', { name: 'Weights at μ', exact: true })
+    .locator('tbody tr')
+    .evaluateAll((rows) => rows.map((row) => (row as HTMLElement).dataset.value ?? 'NaN'));
+  return values.map(Number);
+}
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/blending');
+  await expect(curve(page)).toBeVisible();
+  await expect(plot(page)).toBeVisible();
+});
+
+test('the lecture cubic at μ = 0.5 lists the weights 1/8, 3/8, 3/8, 1/8', async ({ page }) => {
+  await expectHash(page, 'mu', (v) => v === '0.5');
+  expect(await listedWeights(page)).toEqual([0.125, 0.375, 0.375, 0.125]);
+  await expect(page.getByText(/centre-weighted centroid/)).toBeVisible();
+  // x(0.5) of (0,0), (1,2), (3,2), (4,0) is (2, 1.5).
+  await expect(page.getByText('Worked example: x(0.5) for the cubic')).toBeVisible();
+});
+
+test('dragging the plot cursor changes μ, the weights and the curve figure; the weights sum to 1', async ({
+  page,
+}) => {
+  const before = await listedWeights(page);
+  const curveBefore = await pixels(page, 'curve');
+  const handle = page.getByRole('button', { name: /^μ at/ });
+  const box = (await handle.boundingBox())!;
+  const x = box.x + box.width / 2;
+  const y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 90, y + 40, { steps: 6 });
+  await page.mouse.up();
+  await expectHash(page, 'mu', (v) => Number(v) > 0.55);
+  const mu = Number(hashState(page).mu);
+  await expect(page.getByRole('slider', { name: 'μ' })).toHaveValue(String(Number(mu.toFixed(2))));
+  const after = await listedWeights(page);
+  expect(after).not.toEqual(before);
+  // W(3, i, μ) = C(3, i) μ^i (1 − μ)^(3 − i), read back from the page.
+  const expected = [1, 3, 3, 1].map((c, i) => c * mu ** i * (1 - mu) ** (3 - i));
+  after.forEach((w, i) => expect(w).toBeCloseTo(expected[i], 12));
+  expect(Math.abs(after.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
+  expect(await pixels(page, 'curve')).not.toBe(curveBefore);
+
+  // The cursor line can be grabbed anywhere along its height, not only at its handle.
+  const plotBox = (await plot(page).boundingBox())!;
+  const lineX = box.x + box.width / 2 + 90;
+  await page.mouse.move(lineX, plotBox.y + plotBox.height * 0.6);
+  await page.mouse.down();
+  await page.mouse.move(lineX - 200, plotBox.y + plotBox.height * 0.6, { steps: 6 });
+  await page.mouse.up();
+  await expectHash(page, 'mu', (v) => Number(v) < mu - 0.2);
+  const weights = await listedWeights(page);
+  expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
+  await snapshot(page, 'blending-dragged');
+});
+
+test('the cursor moves with the keyboard, and the weights of every degree sum to 1', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: /^μ at/ }).focus();
+  await page.keyboard.press('ArrowRight');
+  await expectHash(page, 'mu', (v) => Number(v) > 0.5);
+  await page.keyboard.press('ArrowUp');
+  // Up and down do not move μ: the cursor only slides along the μ axis.
+  const mu = hashState(page).mu;
+  await page.keyboard.press('ArrowLeft');
+  await expectHash(page, 'mu', (v) => Number(v) < Number(mu));
+  for (let n = 4; n <= 12; n++) {
+    await page.getByRole('button', { name: 'N + 1: add a control point' }).click();
+    await expect(page.getByRole('heading', { name: new RegExp(`\\(N = ${n}\\)`) })).toBeVisible();
+    const weights = await listedWeights(page);
+    expect(weights).toHaveLength(n + 1);
+    expect(weights.every((w) => w >= 0)).toBe(true);
+    expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
+  }
+  await expect(page.getByRole('button', { name: 'N + 1: add a control point' })).toBeDisabled();
+});
+
+test('hovering a weight row highlights its control point in both figures', async ({ page }) => {
+  const curveBefore = await pixels(page, 'curve');
+  const plotBefore = await pixels(page, 'blending');
+  const row = page
+    .getByRole('table', { name: 'Weights at μ', exact: true })
+    .getByRole('row', { name: /^P2/ });
+  await row.hover();
+  await expect(row).toHaveClass(/current/);
+  await expect.poll(() => pixels(page, 'curve')).not.toBe(curveBefore);
+  expect(await pixels(page, 'blending')).not.toBe(plotBefore);
+});
+
+test('comparing with Lagrange shows negative weights and a curve leaving the hull', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'Compare: Lagrange' }).click();
+  await expectHash(page, 'b', (v) => v === 'lagrange');
+  await expect(
+    page.getByText(/Not non-negative: the lowest value on \[0, 1\] is -\d/),
+  ).toBeVisible();
+  await expect(page.getByText(/leaves the convex hull/)).toBeVisible();
+  await page.getByLabel('Uniform cubic B-spline').check();
+  await expectHash(page, 'b', (v) => v === 'bspline');
+  await expect(page.getByText('No value on [0, 1] is negative.')).toBeVisible();
+  await page.getByLabel('Hermite H0…H3').check();
+  await expect(page.getByText(/Not non-negative/)).toBeVisible();
+});
+
+test('a link with a bad comparison or too many points keeps the rest and says why', async ({
+  page,
+}) => {
+  await page.goto('./#/blending?p=0,0;1,1;2,0&mu=0.25&b=fourier');
+  await expect(page.getByRole('status').getByText(/b: "fourier" is not one of/)).toBeVisible();
+  await expectHash(page, 'p', (v) => v === '0,0;1,1;2,0');
+  await expect(page.getByRole('heading', { name: 'Weights at μ = 0.25 (N = 2)' })).toBeVisible();
+  // Coincident control points are legal: the curve is a point, the weights still sum to 1.
+  await page.goto('./#/blending?p=1,1;1,1;1,1;1,1&mu=0.3');
+  const weights = await listedWeights(page);
+  expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
+});
+
+test('every preset draws, in normal and projector mode', async ({ page }) => {
+  const ids = await page
+    .locator('[data-preset]')
+    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.preset!));
+  expect(ids.length).toBeGreaterThanOrEqual(7);
+  for (const projector of [false, true]) {
+    if (projector) await page.keyboard.press('p');
+    let previous = '';
+    for (const id of ids) {
+      await page.locator(`[data-preset="${id}"]`).click();
+      await expect.poll(() => pixels(page, 'blending')).not.toBe(previous);
+      previous = await pixels(page, 'blending');
+      const weights = await listedWeights(page);
+      expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
+      await snapshot(page, `blending-${id}${projector ? '-projector' : ''}`);
+    }
+  }
+});
