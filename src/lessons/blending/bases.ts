@@ -17,7 +17,7 @@ export const equallySpacedNodes = (n: number) =>
 export function bernsteinFamily(n: number): Basis {
   return {
     labels: Array.from({ length: n + 1 }, (_, i) => `W_{${n},${i}}`),
-    weights: Array.from({ length: n + 1 }, (_, i) => `P_${i}`),
+    weights: Array.from({ length: n + 1 }, (_, i) => `P_{${i}}`),
     values: (mu) => bernsteinBasis(n, mu),
   };
 }
@@ -42,8 +42,8 @@ export function comparisonFamily(kind: Comparison, n: number): Basis | null {
     case 'lagrange': {
       const nodes = equallySpacedNodes(n);
       return {
-        labels: nodes.map((_, i) => `L_${i}`),
-        weights: nodes.map((_, i) => `P_${i}`),
+        labels: nodes.map((_, i) => `L_{${i}}`),
+        weights: nodes.map((_, i) => `P_{${i}}`),
         values: (mu) => lagrangeBasis(nodes, mu),
       };
     }

@@ -137,7 +137,7 @@ export const curveFigure: FigureSpec<BlendingState> = {
     }
   },
   handles: (state) =>
-    state.p.map((point, i) => ({ id: `p${i}`, label: `P_${i}`, position: point })),
+    state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
