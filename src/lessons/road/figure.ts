@@ -245,19 +245,14 @@ function drawOverlay(painter: Painter, state: RoadState, info: DrawInfo): void {
     });
   drawMethodAids(painter, state, info);
   if (info.thumbnail) return;
-  if (entries.length) drawLegend(painter, entries);
-  const notes = [
-    ...entries.filter((e) => e.missing).map((e) => e.missing!),
-    ...villageNotes(state),
-  ];
-  if (notes.length) drawFigureNote(painter, notes.map(shorten));
+  const below = entries.length ? drawLegend(painter, entries) : undefined;
+  // Curves left out say why in the legend and the panel; the map keeps the villages' notes.
+  const notes = villageNotes(state);
+  if (notes.length) drawFigureNote(painter, notes.map(shorten), below);
 }
 
-/** Sentences on the figure stay one line; the panel has the whole text. */
-const shorten = (text: string) => {
-  const first = text.split(/(?<=[.:;])\s/)[0];
-  return first.length > 90 ? `${first.slice(0, 88)}…` : first;
-};
+/** The figure says the first sentence; the panel has the whole text. */
+const shorten = (text: string) => text.split(/(?<=\.)\s/)[0];
 
 /** Where the existing roads at P0 and Pm start and end: a quarter of the map along ∓D0, ±Dm. */
 function otherRoadEnds(state: RoadState): [Point2, Point2] {

@@ -44,7 +44,7 @@ export function drawOverlayCurve(painter: Painter, road: Road, index: number): v
 export function drawLegend(
   painter: Painter,
   entries: readonly { index: number; missing: string | null }[],
-): void {
+): number {
   const { theme, view } = painter;
   const size = theme.sizes.small * 1.05;
   const lineHeight = size * 1.45;
@@ -86,6 +86,7 @@ export function drawLegend(
     );
     y += lineHeight;
   }
+  return y;
 }
 
 function measure(painter: Painter, text: string, size: number): number {
@@ -166,12 +167,8 @@ export function drawCurvatureComb(
   painter.polylineFlat(teeth, { color, width: Math.max(1, painter.theme.sizes.thin), alpha: 0.7 });
 }
 
-/** A boxed sentence at the bottom left of the figure: why something looks as it does. */
-export function drawFigureNote(painter: Painter, lines: readonly string[]): void {
-  const { theme, view } = painter;
-  const size = theme.sizes.small * 1.05;
-  lines.forEach((line, k) => {
-    const y = view.height - size * 1.2 - (lines.length - 1 - k) * size * 2;
-    painter.screenLabel(line, size * 0.9, y, { size, box: true, color: theme.ink });
-  });
+/** Boxed sentences at the top of the figure (wrapped to its width): why something looks as it does. */
+export function drawFigureNote(painter: Painter, lines: readonly string[], top?: number): void {
+  let y = top;
+  for (const line of lines) y = painter.note(line, { top: y });
 }

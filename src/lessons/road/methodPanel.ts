@@ -72,11 +72,15 @@ export function methodSection(api: LessonApi<RoadState>) {
       api.set({ ...s, compare: compare.sort((x, y) => x - y) });
     });
     const line = h('span', { class: 'road-line', 'aria-hidden': 'true' });
-    return {
+    const why = h('span', { class: 'note' });
+    const label = h(
+      'label',
+      { class: 'toggle', for: box.id },
       box,
       line,
-      label: h('label', { class: 'toggle', for: box.id }, box, line, curve.name),
-    };
+      h('span', {}, curve.name, why),
+    );
+    return { box, line, why, label };
   });
   const compareList = h(
     'fieldset',
@@ -136,6 +140,8 @@ export function methodSection(api: LessonApi<RoadState>) {
       compareList.hidden = !state.overlay;
       compareBoxes.forEach((c, index) => {
         c.box.checked = state.compare.includes(index);
+        const road = state.overlay && c.box.checked ? buildRoad(CURVES[index].id, state) : null;
+        c.why.textContent = road?.kind === 'missing' ? ` (not drawn: ${road.why})` : '';
         c.line.style.borderTop = `3px ${CURVES[index].dash.length ? 'dashed' : 'solid'} ${palette[index % palette.length]}`;
       });
       endsToggle.hidden = state.road !== 'hermite';
