@@ -5,8 +5,14 @@ import type { Point } from './vec';
 // Arc length ∫ |P′(t)| dt by adaptive Gauss–Legendre quadrature: five-point
 // rules on an interval and on its two halves; where they disagree by more than
 // the interval's share of the tolerance, bisect (Gander & Gautschi, "Adaptive
-// quadrature — revisited", 2000). |P′| is smooth except near cusps, where the
-// bisection concentrates.
+// quadrature — revisited", 2000).
+//
+// Adaptive rules can be fooled by a feature too small for the first samples to
+// see (a curve that doubles back a little, where |P′| has a kink). So the
+// interval is first cut where any coordinate turns (a root of that component of
+// the hodograph, isolated by Bézier subdivision: no sign change in the control
+// values means no root). Between cuts every coordinate is monotone and |P′| is
+// smooth, vanishing at most at the ends.
 
 const nodes = [-0.906179845938664, -0.5384693101056831, 0, 0.5384693101056831, 0.906179845938664];
 const weights = [
@@ -71,5 +77,67 @@ export function bezierArcLength(points: readonly Point[], upTo = 1, tolerance = 
       adapt(middle, b, right, allowed / 2, depth + 1)
     );
   };
-  return adapt(0, upTo, rule(0, upTo), tolerance * Math.max(polygon, Number.MIN_VALUE), 0);
+  const allowed = tolerance * Math.max(polygon, Number.MIN_VALUE);
+  const cuts = [0];
+  for (const t of turningParameters(flat, count, dimension)) if (t > 0 && t < upTo) cuts.push(t);
+  cuts.push(upTo);
+  let length = 0;
+  for (let k = 1; k < cuts.length; k++) {
+    const [a, b] = [cuts[k - 1], cuts[k]];
+    length += adapt(a, b, rule(a, b), (allowed * (b - a)) / upTo, 0);
+  }
+  return length;
+}
+
+/**
+ * Sorted parameters in (0, 1) where some coordinate of the curve turns: roots
+ * of the hodograph's components, whose control values are `flat[d·count + i]`.
+ */
+function turningParameters(flat: Float64Array, count: number, dimension: number): number[] {
+  const roots: number[] = [];
+  for (let d = 0; d < dimension; d++) {
+    const values = Array.from(flat.subarray(d * count, (d + 1) * count));
+    if (values.every((value) => value === 0)) continue; // this coordinate never moves
+    // Rounding noise in a nearly constant coordinate could show sign changes
+    // everywhere; the cuts only help accuracy, so cap the work instead.
+    isolateRoots(values, 0, 1, 0, roots, { calls: 0, limit: 200 * count });
+  }
+  roots.sort((a, b) => a - b);
+  return roots.filter((t, k) => k === 0 || t - roots[k - 1] > 1e-12);
+}
+
+/** Roots in [a, b] of the scalar Bézier polynomial with these control values. */
+function isolateRoots(
+  values: number[],
+  a: number,
+  b: number,
+  depth: number,
+  roots: number[],
+  budget: { calls: number; limit: number },
+): void {
+  if (++budget.calls > budget.limit) return;
+  let low = Infinity;
+  let high = -Infinity;
+  for (const value of values) {
+    low = Math.min(low, value);
+    high = Math.max(high, value);
+  }
+  // Variation diminishing: one sign throughout the control values, no root.
+  if (low > 0 || high < 0) return;
+  if (depth >= 40 || b - a < 1e-12) {
+    roots.push((a + b) / 2);
+    return;
+  }
+  // de Casteljau at 1/2 on the scalar values.
+  const left: number[] = [];
+  const right: number[] = [];
+  let row = values.slice();
+  while (row.length > 0) {
+    left.push(row[0]);
+    right.unshift(row[row.length - 1]);
+    row = row.slice(1).map((value, i) => (row[i] + value) / 2);
+  }
+  const middle = (a + b) / 2;
+  isolateRoots(left, a, middle, depth + 1, roots, budget);
+  isolateRoots(right, middle, b, depth + 1, roots, budget);
 }

@@ -14,17 +14,8 @@ import { distance, type Point } from './vec';
 
 /** `(P(i+1) − P(i−1)) / 2` inside, zero vectors at both ends (uniform Catmull-Rom). */
 export function catmullRomTangents(points: readonly Point[]): Point[] {
-  const dimension = checkPoints('catmullRomTangents', 'points', points, 1);
-  const m = points.length - 1;
-  const tangents: Point[] = new Array<Point>(m + 1);
-  for (let i = 0; i <= m; i++) {
-    const tangent = new Array<number>(dimension).fill(0);
-    if (i > 0 && i < m) {
-      for (let d = 0; d < dimension; d++) tangent[d] = (points[i + 1][d] - points[i - 1][d]) / 2;
-    }
-    tangents[i] = tangent;
-  }
-  return tangents;
+  checkPoints('catmullRomTangents', 'points', points, 1);
+  return points.map((_, i) => uniformTangent(points, i));
 }
 
 /**
@@ -63,14 +54,24 @@ export function catmullRomPoint(points: readonly Point[], alpha: number, s: numb
   checkParameter('catmullRomPoint', 'alpha', alpha, 0, 1);
   const m = points.length - 1;
   checkParameter('catmullRomPoint', 's', s, 0, m);
-  if (alpha === 0) return cubicSplinePoint(points, catmullRomTangents(points), s);
-  // Each segment's Hermite gradients are its knot gap times the knot velocity.
-  const gaps = knotGaps(points, alpha);
-  const velocities = knotVelocities(points, gaps);
   if (m === 0) return points[0].slice();
+  // Only segment i's two gradients are needed: its knot gap times the knot
+  // velocities (for alpha = 0 exactly the lecture's (P(i+1) − P(i−1))/2).
   const i = Math.min(Math.floor(s), m - 1);
-  const scaled = [velocities[i], velocities[i + 1]].map((v) => v.map((value) => gaps[i] * value));
-  return cubicSplinePoint([points[i], points[i + 1]], scaled, s - i);
+  const gap = alpha === 0 ? 1 : distance(points[i], points[i + 1]) ** alpha;
+  const tangents = [i, i + 1].map((j) =>
+    alpha === 0 ? uniformTangent(points, j) : knotVelocity(points, alpha, j).map((v) => gap * v),
+  );
+  return cubicSplinePoint([points[i], points[i + 1]], tangents, s - i);
+}
+
+/** The uniform Catmull-Rom gradient at Pi: (P(i+1) − P(i−1))/2, zero at the ends. */
+function uniformTangent(points: readonly Point[], i: number): number[] {
+  const m = points.length - 1;
+  const tangent = new Array<number>(points[0].length).fill(0);
+  if (i === 0 || i === m) return tangent;
+  for (let d = 0; d < tangent.length; d++) tangent[d] = (points[i + 1][d] - points[i - 1][d]) / 2;
+  return tangent;
 }
 
 /** Δi = |P(i+1) − Pi|^alpha. */
@@ -82,24 +83,30 @@ function knotGaps(points: readonly Point[], alpha: number): number[] {
 
 /** The derivative with respect to the knot parameter at each point (zero at the ends). */
 function knotVelocities(points: readonly Point[], gaps: readonly number[]): Point[] {
+  return points.map((_, i) => velocity(points, i, gaps[i - 1], gaps[i]));
+}
+
+/** The knot velocity at point i alone. */
+function knotVelocity(points: readonly Point[], alpha: number, i: number): number[] {
+  const m = points.length - 1;
+  const before = i > 0 ? distance(points[i - 1], points[i]) ** alpha : 0;
+  const after = i < m ? distance(points[i], points[i + 1]) ** alpha : 0;
+  return velocity(points, i, before, after);
+}
+
+/** Barry–Goldman velocity at Pi from its knot gaps; zero at the ends and at repeated points. */
+function velocity(points: readonly Point[], i: number, before: number, after: number): number[] {
   const m = points.length - 1;
   const dimension = points[0].length;
-  const velocities: Point[] = new Array<Point>(m + 1);
-  for (let i = 0; i <= m; i++) {
-    const velocity = new Array<number>(dimension).fill(0);
-    const before = gaps[i - 1];
-    const after = gaps[i];
-    // Zero gaps (repeated points) would divide 0 by 0: treat them as an end.
-    if (i > 0 && i < m && before > 0 && after > 0) {
-      const [previous, current, next] = [points[i - 1], points[i], points[i + 1]];
-      for (let d = 0; d < dimension; d++) {
-        velocity[d] =
-          (current[d] - previous[d]) / before -
-          (next[d] - previous[d]) / (before + after) +
-          (next[d] - current[d]) / after;
-      }
-    }
-    velocities[i] = velocity;
+  const result = new Array<number>(dimension).fill(0);
+  // Zero gaps (repeated points) would divide 0 by 0: treat them as an end.
+  if (i === 0 || i === m || !(before > 0) || !(after > 0)) return result;
+  const [previous, current, next] = [points[i - 1], points[i], points[i + 1]];
+  for (let d = 0; d < dimension; d++) {
+    result[d] =
+      (current[d] - previous[d]) / before -
+      (next[d] - previous[d]) / (before + after) +
+      (next[d] - current[d]) / after;
   }
-  return velocities;
+  return result;
 }

@@ -1,5 +1,12 @@
 import { checkKnots, fillBasis, knotSpan } from './bsplineBasis';
-import { checkNumbers, checkParameter, checkPoints, checkSameLength } from './validate';
+import {
+  checkNumber,
+  checkNumbers,
+  checkParameter,
+  checkPoint,
+  checkPoints,
+  checkSameLength,
+} from './validate';
 import type { Point } from './vec';
 
 // Non-uniform rational B-splines (Piegl & Tiller, The NURBS Book, eq. 4.2):
@@ -71,6 +78,10 @@ export interface NurbsCurve {
  * the corners, knots `[0,0,0, ¼,¼, ½,½, ¾,¾, 1,1,1]`.
  */
 export function nurbsCircle(centre: Point = [0, 0], radius = 1): NurbsCurve {
+  checkPoint('nurbsCircle', 'centre', centre, 2);
+  if (!(checkNumber('nurbsCircle', 'radius', radius) > 0)) {
+    throw new RangeError(`nurbsCircle: radius = ${radius}; it must be positive.`);
+  }
   const [x, y] = centre;
   const r = radius;
   const corner = Math.SQRT1_2;
