@@ -308,6 +308,40 @@ export class Painter {
     return top + lines.length * lineHeight + 2 * pad;
   }
 
+  /**
+   * Labels beside a plot cursor at x = `at` (world), one per value (e.g. the
+   * weights `L_2 = 0.81`), each at its value's height but pushed apart so
+   * none covers another.
+   */
+  cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
+    const size = this.sizes.small;
+    const gap = size * 1.15;
+    const [x] = this.view.toScreen([at, 0]);
+    const placed = entries
+      .map((entry) => ({ ...entry, sy: this.view.toScreen([at, entry.y])[1] }))
+      .sort((a, b) => a.sy - b.sy);
+    for (let i = 1; i < placed.length; i++) {
+      placed[i].sy = Math.max(placed[i].sy, placed[i - 1].sy + gap);
+    }
+    // Labels pushed past the bottom move back up as a block.
+    const overflow = placed.length ? placed[placed.length - 1].sy - (this.view.height - size) : 0;
+    // Near the right edge, write them on the left of the cursor.
+    const left = x > this.view.width * 0.75;
+    for (const label of placed) {
+      this.screenLabel(
+        label.text,
+        left ? x - size * 0.7 : x + size * 0.7,
+        label.sy - Math.max(0, overflow),
+        {
+          color: label.color,
+          halo: true,
+          size,
+          align: left ? 'right' : 'left',
+        },
+      );
+    }
+  }
+
   /** A label at screen coordinates (pixels): legends, captions. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
     const c = this.ctx;
