@@ -1,6 +1,5 @@
 import type { FigureSpec } from '../../app/lesson';
 import { lagrangeBasis } from '../../math';
-import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/viewport';
 import { niceStep } from '../../render/viewport';
 import { interpolant, sampleBasis } from './model';
@@ -44,7 +43,15 @@ export const basisFigure: FigureSpec<LagrangeState> = {
       .map((w, k) => ({ w, k }))
       .filter(({ w }) => w >= bounds.minY && w <= bounds.maxY);
     for (const { w, k } of shown) painter.dot([state.t, w], painter.color(k), theme.sizes.point);
-    if (!info.thumbnail && ts.length <= LABEL_UP_TO) labelWeights(painter, state.t, shown);
+    if (!info.thumbnail && ts.length <= LABEL_UP_TO)
+      painter.cursorLabels(
+        state.t,
+        shown.map(({ w, k }) => ({
+          y: w,
+          text: `L_${k} = ${w.toFixed(2)}`,
+          color: painter.color(k),
+        })),
+      );
     if (!info.thumbnail && clipped(curves)) {
       const [x, y] = painter.view.toScreen([1, bounds.maxY]);
       painter.screenLabel(`cut at ±${CLIP}`, x, y + theme.sizes.small, {
@@ -80,29 +87,6 @@ export const basisFigure: FigureSpec<LagrangeState> = {
     return best;
   },
 };
-
-/** "L_k = 0.36" beside each dot on the cursor, pushed apart so none covers another. */
-function labelWeights(painter: Painter, t: number, shown: { w: number; k: number }[]) {
-  const size = painter.theme.sizes.small;
-  const gap = size * 1.15;
-  const [x] = painter.view.toScreen([t, 0]);
-  const placed = shown
-    .map(({ w, k }) => ({ k, w, y: painter.view.toScreen([t, w])[1] }))
-    .sort((a, b) => a.y - b.y);
-  for (let i = 1; i < placed.length; i++) {
-    placed[i].y = Math.max(placed[i].y, placed[i - 1].y + gap);
-  }
-  // Labels pushed past the bottom move back up as a block.
-  const overflow = placed.length ? placed[placed.length - 1].y - (painter.view.height - size) : 0;
-  for (const label of placed) {
-    if (overflow > 0) label.y -= overflow;
-    painter.screenLabel(`L_${label.k} = ${label.w.toFixed(2)}`, x + size * 0.7, label.y, {
-      color: painter.color(label.k),
-      halo: true,
-      size,
-    });
-  }
-}
 
 function plotBounds(curves: readonly Float64Array[]): Bounds {
   let low = -0.3;

@@ -1,0 +1,202 @@
+import type { Page } from '@playwright/test';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const patches = (page: Page) => page.locator('canvas[data-figure="patches"]');
+const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');
+const pixels = (page: Page) =>
+  Promise.all(
+    [patches(page), basis(page)].map((c) => c.evaluate((e: HTMLCanvasElement) => e.toDataURL())),
+  ).then((all) => all.join('|'));
+const list = (value: string) => value.split(';').map((q) => q.split(',').map(Number));
+
+/** a0 … a3 of the chosen patch as the page prints them. */
+async function coefficients(page: Page): Promise<number[][]> {
+  const table = page.getByRole('table', { name: 'Coefficients of the patch' });
+  const rows = [];
+  for (const k of [0, 1, 2, 3]) {
+    const cells = await table
+      .getByRole('row', { name: new RegExp(`^a${k} `) })
+      .locator('td')
+      .allInnerTexts();
+    rows.push([Number(cells[1]), Number(cells[2])]);
+  }
+  return rows;
+}
+
+/** Equation 7 read back: a0 = P_i, a1 = D_i, Σ a_k = P_i+1, a1 + 2a2 + 3a3 = D_i+1 (to the 4 decimals shown). */
+async function expectEquation7(page: Page, i: number, D: number[][]) {
+  const p = list(hashState(page).p);
+  await expect
+    .poll(async () => {
+      const [a0, a1, a2, a3] = await coefficients(page);
+      return [0, 1].every(
+        (d) =>
+          Math.abs(a0[d] - p[i][d]) < 1e-4 &&
+          Math.abs(a1[d] - D[i][d]) < 1e-4 &&
+          Math.abs(a0[d] + a1[d] + a2[d] + a3[d] - p[i + 1][d]) < 4e-4 &&
+          Math.abs(a1[d] + 2 * a2[d] + 3 * a3[d] - D[i + 1][d]) < 6e-4,
+      );
+    })
+    .toBe(true);
+}
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/hermite');
+  await expect(patches(page)).toBeVisible();
+});
+
+test('dragging a gradient tip sets D = 3 × (tip − P), and the matrix solve follows', async ({
+  page,
+}) => {
+  await expectEquation7(page, 0, list(hashState(page).d));
+  const before = await pixels(page);
+  const tip = page.getByRole('button', { name: /^D0 at \(1\.00, 1\.50\)/ });
+  const box = (await tip.boundingBox())!;
+  const x = box.x + box.width / 2;
+  const y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 60, y - 30, { steps: 5 });
+  await page.mouse.up();
+  await expectHash(page, 'd', (v) => v.split(';')[0] !== '3,4.5');
+  const D = list(hashState(page).d);
+  expect(D[0][0]).toBeGreaterThan(3);
+  expect(D[0][1]).toBeGreaterThan(4.5);
+  // The tip is announced where it is drawn: P0 + D0/3.
+  await expect(
+    page.getByRole('button', {
+      name: `D0 at (${(D[0][0] / 3).toFixed(2)}, ${(D[0][1] / 3).toFixed(2)})`,
+    }),
+  ).toBeVisible();
+  await expectEquation7(page, 0, D);
+  expect(await pixels(page)).not.toBe(before);
+  await snapshot(page, 'hermite-dragged-gradient');
+});
+
+test('a gradient tip moves with the keyboard too', async ({ page }) => {
+  await page.getByRole('button', { name: /^D1 at/ }).focus();
+  await page.keyboard.press('ArrowUp');
+  await expectHash(page, 'd', (v) => v.split(';')[1] !== '3,-4.5');
+  expect(list(hashState(page).d)[1][1]).toBeGreaterThan(-4.5);
+  await expectEquation7(page, 0, list(hashState(page).d));
+});
+
+test('the basis cursor shows H0…H3 at μ and what each weighs', async ({ page }) => {
+  await page.getByRole('slider', { name: 'μ' }).fill('0.5');
+  await expectHash(page, 'mu', (v) => v === '0.5');
+  // At μ = 1/2: H0 = H1 = 1/2, H2 = 1/8, H3 = −1/8.
+  const weights = page.getByRole('table', { name: 'Hermite weights at μ' });
+  for (const [k, value, weighs] of [
+    [0, '0.5000', 'P0'],
+    [1, '0.5000', 'P1'],
+    [2, '0.1250', 'D0'],
+    [3, '-0.1250', 'D1'],
+  ]) {
+    const row = weights.getByRole('row', { name: new RegExp(`^H${k} `) });
+    await expect(row).toContainText(String(value));
+    await expect(row).toContainText(String(weighs));
+  }
+  const cursor = page.getByRole('button', { name: /^μ at/ });
+  await cursor.focus();
+  await page.keyboard.press('ArrowRight');
+  await expectHash(page, 'mu', (v) => Number(v) > 0.5);
+});
+
+test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patches', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'Several points, Catmull-Rom' }).click();
+  await expectHash(page, 'mode', (v) => v === 'catmull-rom');
+  await expect(page.getByText('Patch 2 of 4', { exact: true })).toBeVisible();
+  const joins = page.getByRole('table', { name: 'Joins' });
+  for (const k of [1, 2, 3]) {
+    const row = joins.getByRole('row', { name: new RegExp(`^P${k} `) });
+    await expect(row).toContainText(/C1|C2/);
+  }
+  // D2 = (P3 − P1) / 2 = ((6.5 − 2) / 2, (−1 − 2) / 2), drawn at P2 + D2/3.
+  const p = list(hashState(page).p);
+  const tip = [p[2][0] + (p[3][0] - p[1][0]) / 6, p[2][1] + (p[3][1] - p[1][1]) / 6];
+  await expect(
+    page.getByRole('button', { name: `D2 at (${tip[0].toFixed(2)}, ${tip[1].toFixed(2)})` }),
+  ).toBeVisible();
+  // The end gradients are zero: the tips sit on the points.
+  await expect(page.getByRole('button', { name: 'D0 at (0.00, 0.00)' })).toBeVisible();
+  const i = 1;
+  const D = p.map((_, k) =>
+    k === 0 || k === p.length - 1
+      ? [0, 0]
+      : [(p[k + 1][0] - p[k - 1][0]) / 2, (p[k + 1][1] - p[k - 1][1]) / 2],
+  );
+  await expectEquation7(page, i, D);
+  // Step to the next patch with a clicker.
+  await page.keyboard.press('PageDown');
+  await expect(page.getByText('Patch 3 of 4', { exact: true })).toBeVisible();
+  await expectEquation7(page, 2, D);
+  // Dragging a tip switches to gradients by hand.
+  await page.getByRole('button', { name: /^D2 at/ }).focus();
+  await page.keyboard.press('ArrowUp');
+  await expectHash(page, 'mode', (v) => v === 'hand');
+  await expect(page.getByLabel(/^By hand/)).toBeChecked();
+  await snapshot(page, 'hermite-catmull-rom');
+});
+
+test('two points in Catmull-Rom mode: zero gradients, and the figure says why', async ({
+  page,
+}) => {
+  await page.getByLabel(/^From the neighbours/).check();
+  await expectHash(page, 'mode', (v) => v === 'catmull-rom');
+  await expect(page.getByText(/Two points have no neighbours/)).toBeVisible();
+  // a2 = 3(P1 − P0) − 2D0 − D1 = (12, 0) with both gradients zero.
+  await expect(
+    page
+      .getByRole('table', { name: 'Coefficients of the patch' })
+      .getByRole('row', { name: /^a2 / }),
+  ).toContainText('12.0000');
+  await snapshot(page, 'hermite-two-points-catmull-rom');
+});
+
+test('the Bézier view lists B0…B3 at P ± D/3', async ({ page }) => {
+  const before = await pixels(page);
+  await page.getByLabel(/Show each patch as a Bézier curve/).check();
+  await expectHash(page, 'bezier', (v) => v === '1');
+  // P0 = (0, 0), D0 = (3, 4.5) → B1 = (1, 1.5); P1 = (4, 0), D1 = (3, −4.5) → B2 = (3, 1.5).
+  const controls = page.getByRole('table', { name: 'Bézier control points' });
+  await expect(controls.getByRole('row', { name: /^B1 / })).toHaveText(/B1\s*1\.0000\s*1\.5000/);
+  await expect(controls.getByRole('row', { name: /^B2 / })).toHaveText(/B2\s*3\.0000\s*1\.5000/);
+  expect(await pixels(page)).not.toBe(before);
+  await snapshot(page, 'hermite-bezier');
+});
+
+test('points can be added and removed, gradients with them', async ({ page }) => {
+  await page.getByRole('button', { name: 'Add a point' }).click();
+  await expectHash(page, 'p', (v) => v.split(';').length === 3);
+  expect(hashState(page).d.split(';').length).toBe(3);
+  await expect(page.getByRole('table', { name: 'Joins' })).toBeVisible();
+  await page.getByRole('button', { name: /^P2 at/ }).focus();
+  await page.keyboard.press('Delete');
+  await expectHash(page, 'p', (v) => v.split(';').length === 2);
+  expect(hashState(page).d.split(';').length).toBe(2);
+});
+
+test('a link with too few gradients is repaired and says so', async ({ page }) => {
+  await page.goto('./#/hermite?p=0,0;2,1;4,0;6,1&d=1,1;1,0');
+  await expect(page.getByRole('status').getByText(/2 gradients for 4 points/)).toBeVisible();
+  await expectHash(page, 'd', (v) => v.split(';').length === 4);
+});
+
+test('every preset draws, in normal and projector mode', async ({ page }) => {
+  const presets = page.getByRole('group', { name: 'Presets' }).getByRole('button');
+  expect(await presets.count()).toBe(5);
+  for (const projector of [false, true]) {
+    if (projector) await page.keyboard.press('p');
+    let previous = '';
+    for (let i = 0; i < 5; i++) {
+      const preset = presets.nth(i);
+      const id = await preset.getAttribute('data-preset');
+      await preset.click();
+      if (previous) await expect.poll(() => pixels(page)).not.toBe(previous);
+      previous = await pixels(page);
+      await snapshot(page, `hermite-${projector ? 'projector' : 'normal'}-${id}`);
+    }
+  }
+});
