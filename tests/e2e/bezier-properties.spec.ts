@@ -78,6 +78,8 @@ test('moving an inner point of twelve barely moves the curve, and "before" survi
   await expect(
     page.getByText(/P5 moved by 2\.000, the curve by at most 23\.6% of that/),
   ).toBeVisible();
+  // The link is written shortly after a change: wait for the preset's "before" to be in it.
+  await expectHash(page, 'q', (v) => v.split(';').length === 12);
   const before = hashState(page).q;
   const p5 = page.getByRole('button', { name: /^P5 at/ });
   await p5.focus();

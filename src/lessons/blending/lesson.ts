@@ -66,7 +66,7 @@ export const blending = defineLesson<BlendingState>({
     preset(
       'degree10',
       'N = 10',
-      Array.from({ length: 11 }, (_, i): [number, number] => [i, i % 2 === 0 ? 0 : 3]),
+      Array.from({ length: 11 }, (_, i): [number, number] => [i / 2, i % 2 === 0 ? 0 : 3]),
       0.5,
     ),
     preset('hermite', 'Compare: Hermite', cubic(), 0.3, 'hermite'),
