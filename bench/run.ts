@@ -155,9 +155,10 @@ function uniformBSpline(n: number): Row[] {
   const silent = measure(() => curveBasis(silentContext()), feed);
   const recorded = measure(() => curveBasis(recordingContext(n)), feed);
   const task = `uniform cubic B-spline, ${label(n)} points → Bézier segments`;
+  const samples = sampleUniformBSpline([xs, ys], 8);
   const sampled = measure(
     () => undefined,
-    () => sampleUniformBSpline([xs, ys], 8),
+    () => sampleUniformBSpline([xs, ys], 8, samples),
   );
   return [
     {

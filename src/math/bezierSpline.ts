@@ -40,7 +40,8 @@ export function cubicSplineC2(points: readonly Point[]): Point[][] {
 /**
  * The point at global `s ∈ [0, k]` on a chain of k Bézier segments (any
  * degrees, e.g. from quadraticSplineC1 or cubicSplineC2): segment
- * `min(floor(s), k−1)` at local `t = s − i`.
+ * `min(floor(s), k−1)` at local `t = s − i`. Only that segment is read, so
+ * only that segment is checked.
  */
 export function bezierSplinePoint(segments: readonly (readonly Point[])[], s: number): Point {
   if (!Array.isArray(segments) || segments.length < 1) {

@@ -263,3 +263,15 @@ describe('uniformBSplineBezierBatch output buffers', () => {
     ).toThrow(/out must hold 1 Float64Arrays per field/);
   });
 });
+
+describe('sampleUniformBSpline output buffers', () => {
+  it('are reused when given, and checked', () => {
+    const xs = Float64Array.of(0, 6, 6, 0, 0);
+    const out = sampleUniformBSpline([xs], 2);
+    expect(out[0]).toHaveLength(5);
+    expect(sampleUniformBSpline([xs], 2, out)).toBe(out);
+    expect(() => sampleUniformBSpline([xs], 2, [new Float64Array(4)])).toThrow(
+      /out must hold 1 Float64Arrays of at least 5 entries/,
+    );
+  });
+});

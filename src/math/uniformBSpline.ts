@@ -108,47 +108,73 @@ export function uniformBSplineSegments(points: readonly Point[]): Point[][] {
  * Samples the uniform cubic B-spline whose control points are given as parallel
  * coordinate arrays (`[xs, ys]` or `[xs, ys, zs]`, at least 4 points) at
  * `samplesPerSegment` steps per segment plus the end: returns one Float64Array
- * per coordinate with `(m−2)·samplesPerSegment + 1` samples. For 10^5 points.
+ * per coordinate with `(m−2)·samplesPerSegment + 1` samples. For 10^5 points;
+ * pass `out` (one array per coordinate, long enough) to reuse buffers.
  */
 export function sampleUniformBSpline(
   coordinates: readonly Float64Array[],
   samplesPerSegment: number,
+  out?: Float64Array[],
 ): Float64Array[] {
   const caller = 'sampleUniformBSpline';
   const n = checkCoordinateArrays(caller, coordinates, 4);
   checkInteger(caller, 'samplesPerSegment', samplesPerSegment, 1);
   const k = samplesPerSegment;
-  const segments = n - 3;
+  const length = (n - 3) * k + 1;
+  const result = out ?? coordinates.map(() => new Float64Array(length));
+  if (
+    !Array.isArray(result) ||
+    result.length !== coordinates.length ||
+    result.some((array) => !(array instanceof Float64Array) || array.length < length)
+  ) {
+    throw new RangeError(
+      `${caller}: out must hold ${coordinates.length} Float64Arrays of at least ${length} entries.`,
+    );
+  }
+  // The four blending weights of each local step, computed once for all segments.
   const weights = new Float64Array(4 * (k + 1));
   for (let j = 0; j <= k; j++) weights.set(uniformBSplineWeights(j / k), 4 * j);
-  return coordinates.map((values, c) => {
-    const samples = new Float64Array(segments * k + 1);
-    let offset = 0;
-    // NaN or ±Infinity times zero is NaN: one running sum checks every input.
-    let check = 0;
-    for (let i = 0; i < segments; i++) {
-      const p0 = values[i];
-      const p1 = values[i + 1];
-      const p2 = values[i + 2];
-      const p3 = values[i + 3];
-      check += p0 * 0;
-      for (let j = 0; j < k; j++) {
-        const w = 4 * j;
-        samples[offset++] =
-          weights[w] * p0 + weights[w + 1] * p1 + weights[w + 2] * p2 + weights[w + 3] * p3;
-      }
+  for (let c = 0; c < coordinates.length; c++) {
+    const check = sampleCoordinate(coordinates[c], weights, k, result[c]);
+    if (check !== 0) throw nonFiniteError(caller, `coordinates[${c}]`, coordinates[c]);
+  }
+  return result;
+}
+
+/**
+ * One coordinate of sampleUniformBSpline. Returns Σ value·0, which is 0 unless
+ * some value is NaN or ±Infinity (then NaN): the check rides along.
+ */
+function sampleCoordinate(
+  values: Float64Array,
+  weights: Float64Array,
+  k: number,
+  samples: Float64Array,
+): number {
+  const segments = values.length - 3;
+  let offset = 0;
+  let check = 0;
+  for (let i = 0; i < segments; i++) {
+    const p0 = values[i];
+    const p1 = values[i + 1];
+    const p2 = values[i + 2];
+    const p3 = values[i + 3];
+    check += p0 * 0;
+    for (let j = 0; j < k; j++) {
+      const w = 4 * j;
+      samples[offset++] =
+        weights[w] * p0 + weights[w + 1] * p1 + weights[w + 2] * p2 + weights[w + 3] * p3;
     }
-    const last = 4 * k;
-    const i = segments - 1;
-    samples[offset] =
-      weights[last] * values[i] +
-      weights[last + 1] * values[i + 1] +
-      weights[last + 2] * values[i + 2] +
-      weights[last + 3] * values[i + 3];
-    check += values[n - 3] * 0 + values[n - 2] * 0 + values[n - 1] * 0;
-    if (check !== 0) throw nonFiniteError(caller, `coordinates[${c}]`, values);
-    return samples;
-  });
+  }
+  const last = 4 * k;
+  const i = segments - 1;
+  const [p1, p2, p3] = [values[i + 1], values[i + 2], values[i + 3]];
+  samples[offset] =
+    weights[last] * values[i] +
+    weights[last + 1] * p1 +
+    weights[last + 2] * p2 +
+    weights[last + 3] * p3;
+  return check + p1 * 0 + p2 * 0 + p3 * 0;
 }
 
 /** Bézier control points of every segment of a uniform cubic B-spline, per coordinate. */
