@@ -65,6 +65,31 @@ describe('bezierArcLength', () => {
     );
   });
 
+  it('scales exactly, from 1e-300 to 1e300 (no underflow, no overflow)', () => {
+    // fast-check found coordinates near 1e-300 on which the tolerance underflowed
+    // and bisection ran for minutes.
+    const curve: Point[] = [
+      [0, 0],
+      [1, 2],
+      [3, -1],
+      [4, 0.5],
+    ];
+    const length = bezierArcLength(curve);
+    for (const k of [1e-300, 1e-200, 1e-12, 1e12, 1e200, 1e300]) {
+      const scaled = bezierArcLength(curve.map((p) => p.map((v) => v * k)));
+      expect(Math.abs(scaled / k - length)).toBeLessThanOrEqual(1e-12 * length);
+    }
+    const found: Point[] = [
+      [-6.750656998894163e-179, -1.1716973534879419e-185],
+      [2.480871621883356e-226, 4.606909187070027e-161],
+      [1.388963649242084e-306, -2.814317881242241e-235],
+    ];
+    const tiny = bezierArcLength(found);
+    const lifted = bezierArcLength(found.map((p) => p.map((v) => v * 1e160))) / 1e160;
+    expect(tiny).toBeGreaterThan(0);
+    expect(Math.abs(tiny - lifted)).toBeLessThanOrEqual(1e-9 * lifted);
+  });
+
   it('is 0 for a point and rejects bad arguments', () => {
     expect(bezierArcLength([[1, 2]])).toBe(0);
     expect(() =>

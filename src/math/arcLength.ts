@@ -20,6 +20,8 @@ const weights = [
   0.2369268850561891,
 ];
 const maximumDepth = 40;
+/** Bisections allowed in one call: far more than any smooth curve needs. */
+const maximumIntervals = 20_000;
 
 /**
  * The length of the Bézier curve from t = 0 to t = `upTo` ∈ [0, 1], to within
@@ -35,6 +37,22 @@ export function bezierArcLength(points: readonly Point[], upTo = 1, tolerance = 
     );
   }
   if (points.length === 1 || upTo === 0) return 0;
+  // Length scales with the curve, L(kP) = k·L(P): integrate the curve scaled to
+  // unit size, so neither 1e-300 (tolerances underflow and can never be met)
+  // nor 1e300 (squares overflow) reaches the quadrature.
+  let size = 0;
+  for (const p of points) for (const value of p) size = Math.max(size, Math.abs(value));
+  if (size === 0) return 0;
+  const unit = points.map((p) => p.map((value) => value / size));
+  return size * unitArcLength(unit, dimension, upTo, tolerance);
+}
+
+function unitArcLength(
+  points: readonly Point[],
+  dimension: number,
+  upTo: number,
+  tolerance: number,
+): number {
   const hodograph = bezierDerivative(points);
   const count = hodograph.length;
   const flat = new Float64Array(count * dimension);
@@ -67,11 +85,24 @@ export function bezierArcLength(points: readonly Point[], upTo = 1, tolerance = 
     for (let d = 0; d < dimension; d++) squared += (points[i][d] - points[i - 1][d]) ** 2;
     polygon += Math.sqrt(squared);
   }
+  // Each interval's share of the tolerance halves with its width, so without a
+  // floor rounding noise alone could force bisection to full depth in every
+  // branch (2^40 calls); and a budget bounds the work on any input.
+  let budget = maximumIntervals;
   const adapt = (a: number, b: number, whole: number, allowed: number, depth: number): number => {
     const middle = (a + b) / 2;
     const left = rule(a, middle);
     const right = rule(middle, b);
-    if (Math.abs(left + right - whole) <= allowed || depth >= maximumDepth) return left + right;
+    const estimate = left + right;
+    const noise = 64 * Number.EPSILON * Math.abs(estimate);
+    budget -= 1;
+    if (
+      Math.abs(estimate - whole) <= Math.max(allowed, noise) ||
+      depth >= maximumDepth ||
+      budget <= 0
+    ) {
+      return estimate;
+    }
     return (
       adapt(a, middle, left, allowed / 2, depth + 1) +
       adapt(middle, b, right, allowed / 2, depth + 1)

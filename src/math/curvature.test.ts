@@ -144,8 +144,15 @@ describe('bezierFrenetFrame', () => {
         expectClose(cross(T, N), B, 1e-9);
         expect(curvature).toBeGreaterThanOrEqual(0);
         const second = bezierPoint(bezierDerivative(bezierDerivative(points)), t);
-        // P″ has no component along B.
-        expect(Math.abs(dot(second, B))).toBeLessThan(1e-6 * Math.max(1, Math.hypot(...second)));
+        // P″ has no component along B, where the osculating plane is well defined:
+        // on a nearly straight stretch (P′ and P″ nearly parallel; fast-check found
+        // sin θ ≈ 1e-12) rounding in P′ and P″ alone tilts the plane.
+        const first = bezierTangent(points, t);
+        const sine =
+          Math.hypot(...cross(first, second)) / (Math.hypot(...first) * Math.hypot(...second));
+        if (sine > 1e-6) {
+          expect(Math.abs(dot(second, B))).toBeLessThan(1e-6 * Math.max(1, Math.hypot(...second)));
+        }
       }),
     );
   });
