@@ -36,9 +36,71 @@ export function deCasteljau(points: readonly Point[], t: number): Point[][] {
 
 /** The point at parameter t ∈ [0, 1] on the Bézier curve with these control points. */
 export function bezierPoint(points: readonly Point[], t: number): Point {
+  if (points.length === 4 && t >= 0 && t <= 1) {
+    const cubic = planarCubicPoint(points, t);
+    if (cubic !== null) return cubic;
+  }
   const dimension = checkPoints('bezierPoint', 'points', points, 1);
   checkParameter('bezierPoint', 't', t, 0, 1);
   return evaluateBezier(points, dimension, t);
+}
+
+/**
+ * The everyday case, a 2D cubic, checked and evaluated in one pass: `v - v` is
+ * 0 exactly when v is a finite number, so one sum tests all eight coordinates.
+ * Returns null for anything else, which then takes the general path (and gets
+ * its error message there).
+ */
+function planarCubicPoint(points: readonly Point[], t: number): Point | null {
+  const p0 = points[0];
+  const p1 = points[1];
+  const p2 = points[2];
+  const p3 = points[3];
+  if (
+    !Array.isArray(p0) ||
+    !Array.isArray(p1) ||
+    !Array.isArray(p2) ||
+    !Array.isArray(p3) ||
+    p0.length !== 2 ||
+    p1.length !== 2 ||
+    p2.length !== 2 ||
+    p3.length !== 2
+  ) {
+    return null;
+  }
+  const x0 = p0[0];
+  const y0 = p0[1];
+  const x1 = p1[0];
+  const y1 = p1[1];
+  const x2 = p2[0];
+  const y2 = p2[1];
+  const x3 = p3[0];
+  const y3 = p3[1];
+  if (
+    typeof x0 !== 'number' ||
+    typeof y0 !== 'number' ||
+    typeof x1 !== 'number' ||
+    typeof y1 !== 'number' ||
+    typeof x2 !== 'number' ||
+    typeof y2 !== 'number' ||
+    typeof x3 !== 'number' ||
+    typeof y3 !== 'number' ||
+    x0 - x0 + (y0 - y0) + (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) !==
+      0
+  ) {
+    return null;
+  }
+  const s = 1 - t;
+  const ax = s * x0 + t * x1;
+  const bx = s * x1 + t * x2;
+  const cx = s * x2 + t * x3;
+  const ay = s * y0 + t * y1;
+  const by = s * y1 + t * y2;
+  const cy = s * y2 + t * y3;
+  return [
+    s * (s * ax + t * bx) + t * (s * bx + t * cx),
+    s * (s * ay + t * by) + t * (s * by + t * cy),
+  ];
 }
 
 /** de Casteljau without checks, for callers that have already validated. */
