@@ -257,12 +257,17 @@ export class FigureView<S> {
   private keyMove(id: string, dx: number, dy: number, size: 'normal' | 'big' | 'fine'): void {
     const handle = this.handleById(id);
     if (!handle || !this.spec.moveHandle) return;
-    const base = niceStep(8 / Math.min(this.view.scaleX, this.view.scaleY));
-    const step = size === 'big' ? base * 10 : size === 'fine' ? base / 10 : base;
-    const snap = (v: number) => Number((Math.round(v / step) * step).toPrecision(12));
+    // About 8 pixels a press, on each axis's own scale (a plot's axes differ).
+    const factor = size === 'big' ? 10 : size === 'fine' ? 0.1 : 1;
+    const stepX = niceStep(8 / this.view.scaleX) * factor;
+    const stepY = niceStep(8 / this.view.scaleY) * factor;
+    const snap = (v: number, step: number) => Number((Math.round(v / step) * step).toPrecision(12));
     // Only the axis that moves lands on the step grid; the other stays exact.
     const [x, y] = handle.position;
-    const to: Point2 = [dx === 0 ? x : snap(x + dx * step), dy === 0 ? y : snap(y + dy * step)];
+    const to: Point2 = [
+      dx === 0 ? x : snap(x + dx * stepX, stepX),
+      dy === 0 ? y : snap(y + dy * stepY, stepY),
+    ];
     this.host.set(this.spec.moveHandle(this.host.get(), id, to), {
       coalesce: `key:${id}`,
       windowMs: 1000,

@@ -71,7 +71,7 @@ export const constructionFigure: FigureSpec<DeCasteljauState> = {
     }
   },
   handles: (state) =>
-    state.p.map((point, i) => ({ id: `p${i}`, label: `P_${i}`, position: point })),
+    state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
