@@ -103,8 +103,12 @@ test('a link with three equal x, or points going backwards, says so', async ({ p
 });
 
 test('the rules put μ1 where the formulas say', async ({ page }) => {
+  await expectHash(page, 'p', (v) => v !== '');
+  const defaults = hashState(page).p;
   await page.getByRole('button', { name: 'Uneven spacing' }).click();
   await expect(page.getByRole('heading', { name: /^Step 3 of 3/ })).toBeVisible();
+  // The link is written just after the change: read the preset's points, not the old ones.
+  await expectHash(page, 'p', (v) => v !== defaults);
   const [p0, p1, p2] = points(page);
   const d0 = Math.hypot(p1[0] - p0[0], p1[1] - p0[1]);
   const d1 = Math.hypot(p2[0] - p1[0], p2[1] - p1[1]);
