@@ -10,6 +10,8 @@ export default tseslint.config(
       'test-results/**',
       'playwright-report/**',
       'artifacts/**',
+      'reports/**',
+      '.dbg/**',
     ],
   },
   js.configs.recommended,
