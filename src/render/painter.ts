@@ -342,6 +342,39 @@ export class Painter {
     }
   }
 
+  /**
+   * A label beside `p` on whichever of four sides (above/below, right/left) lies
+   * farthest from the `avoid` points, e.g. the handles around it.
+   */
+  labelClear(text: string, p: P, avoid: readonly P[], style: LabelStyle = {}): void {
+    const [x, y] = this.view.toScreen(p);
+    const size = style.size ?? this.sizes.label;
+    const width = size * 0.6 * text.length;
+    const gap = size * 0.7;
+    const candidates: [number, number, CanvasTextAlign][] = [
+      [gap, -size, 'left'],
+      [gap, size, 'left'],
+      [-gap, -size, 'right'],
+      [-gap, size, 'right'],
+    ];
+    const obstacles = avoid.map((q) => this.view.toScreen(q));
+    let best = candidates[0];
+    let bestClearance = -Infinity;
+    for (const candidate of candidates) {
+      const [dx, dy, align] = candidate;
+      const cx = x + dx + (align === 'left' ? width / 2 : -width / 2);
+      const cy = y + dy;
+      let clearance = Infinity;
+      for (const [ox, oy] of obstacles)
+        clearance = Math.min(clearance, Math.hypot(ox - cx, oy - cy));
+      if (clearance > bestClearance + 1e-9) {
+        bestClearance = clearance;
+        best = candidate;
+      }
+    }
+    this.screenLabel(text, x + best[0], y + best[1], { ...style, align: best[2] });
+  }
+
   /** A label at screen coordinates (pixels): legends, captions. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
     const c = this.ctx;

@@ -54,7 +54,8 @@ export const curveFigure: FigureSpec<HermiteState> = {
     );
     painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
-    painter.label('P(μ)', patch.point, { dx: 10, dy: -theme.sizes.label, halo: true, bold: true });
+    const crowd = state.p.flatMap((p, i) => [p, tip(p, D[i])]);
+    painter.labelClear('P(μ)', patch.point, crowd, { halo: true, bold: true });
     if (state.bezier) {
       patch.bezier.slice(1, 3).forEach((q, j) =>
         painter.label(`B_${j + 1}`, q, {
