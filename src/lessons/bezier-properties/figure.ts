@@ -1,6 +1,6 @@
 import type { FigureSpec, Point2 } from '../../app/lesson';
 import { boundsOf } from '../../render/viewport';
-import { insertPoint } from '../de-casteljau/state';
+import { insertPoint } from '../../interact/editPoints';
 import { EXPERIMENTS } from './experiments';
 import { MAX_POINTS, type PropertiesState, controlPoints, needsCubic } from './state';
 

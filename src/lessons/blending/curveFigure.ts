@@ -11,7 +11,7 @@ import {
 } from '../../math';
 import type { Painter } from '../../render/painter';
 import { boundsOf, unionBounds } from '../../render/viewport';
-import { insertPoint } from '../de-casteljau/state';
+import { insertPoint } from '../../interact/editPoints';
 import { equallySpacedNodes } from './bases';
 import { type BlendingState, MAX_POINTS, degree } from './state';
 

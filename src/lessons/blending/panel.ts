@@ -1,4 +1,6 @@
 import { fmt, h, setChildren } from '../../app/dom';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { bernsteinBasis, bezierBasisMatrix, bezierPoint, binomial } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
@@ -29,23 +31,14 @@ export function blendingPanel(api: LessonApi<BlendingState>): LessonPanel<Blendi
   const centroidFormula = h('div', { class: 'formula display' });
   const centroidNote = h('p', { class: 'note' });
   const compare = compareSection(api);
-  const addButton = h('button', { type: 'button' }, 'N + 1: add a control point');
-  const removeButton = h('button', { type: 'button' }, 'N − 1: remove the last point');
-  addButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length >= MAX_POINTS) return;
-    // Continue the polygon past its last edge, turning a little, as one would sketch it.
-    const a = s.p[s.p.length - 2];
-    const b = s.p[s.p.length - 1];
-    const next: [number, number] = [
-      b[0] + (b[0] - a[0]) * 0.7 + 0.3,
-      b[1] - (b[1] - a[1]) * 0.7 + 0.5,
-    ];
-    api.set({ ...s, p: [...s.p, next] });
-  });
-  removeButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length > 2) api.set({ ...s, p: s.p.slice(0, -1) });
+  const pointCount = pointButtons(api, {
+    addLabel: 'N + 1: add a control point',
+    removeLabel: 'N − 1: remove the last point',
+    count: (s) => s.p.length,
+    min: 2,
+    max: MAX_POINTS,
+    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
+    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
   });
 
   const element = h(
@@ -63,7 +56,7 @@ export function blendingPanel(api: LessonApi<BlendingState>): LessonPanel<Blendi
       { class: 'note' },
       'Drag the cursor on the plot (or Tab to μ and use the arrow keys), or the μ slider. Hover a curve of the plot or a row of the table to find its control point. Double-click the figure to add a point, Delete to remove one.',
     ),
-    h('div', { class: 'lesson-tools' }, addButton, removeButton),
+    pointCount.element,
     weightsTitle,
     h(
       'table',
@@ -120,8 +113,7 @@ export function blendingPanel(api: LessonApi<BlendingState>): LessonPanel<Blendi
       const palette = api.theme().palette;
       const color = (i: number) => palette[i % palette.length];
       const lit = highlightedIndex(info.hover);
-      addButton.disabled = state.p.length >= MAX_POINTS;
-      removeButton.disabled = state.p.length <= 2;
+      pointCount.update(state);
 
       weightsTitle.textContent = `Weights at μ = ${texMu(mu)} (N = ${n})`;
       setChildren(

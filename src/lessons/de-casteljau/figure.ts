@@ -1,7 +1,8 @@
 import type { FigureSpec } from '../../app/lesson';
 import { deCasteljau, sampleBezier, splitBezier } from '../../math';
 import { boundsOf } from '../../render/viewport';
-import { type DeCasteljauState, MAX_POINTS, degree, insertPoint } from './state';
+import { type DeCasteljauState, MAX_POINTS, degree } from './state';
+import { insertPoint } from '../../interact/editPoints';
 
 /** Labels for every constructed point stay readable up to this degree. */
 const LABEL_ALL_UP_TO = 5;

@@ -1,8 +1,10 @@
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
 import { bernstein, deCasteljau, splitBezier } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
-import { type DeCasteljauState, MAX_POINTS, degree, insertPoint } from './state';
+import { type DeCasteljauState, MAX_POINTS, degree } from './state';
 
 /** t as typed: up to four decimals, trailing zeros dropped. */
 const texT = (t: number) => String(Number(t.toFixed(4)));
@@ -15,20 +17,19 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
   splitBox.addEventListener('change', () => api.set({ ...api.get(), split: splitBox.checked }));
   const splitInfo = h('div', { class: 'split-info' });
   const tableBody = h('tbody', {});
-  const addButton = h('button', { type: 'button' }, 'Add a control point');
-  const removeButton = h('button', { type: 'button' }, 'Remove the last control point');
-  addButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length >= MAX_POINTS) return;
-    // Extend the polygon beyond its last edge, the way one would sketch it.
-    const a = s.p[s.p.length - 2];
-    const b = s.p[s.p.length - 1];
-    const p = insertPoint(s.p, [b[0] + (b[0] - a[0]) * 0.6, b[1] + (b[1] - a[1]) * 0.6 + 0.5]);
-    api.set({ ...s, p, step: s.step === degree(s) ? p.length - 1 : s.step });
-  });
-  removeButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length > 2) api.set({ ...s, p: s.p.slice(0, -1) });
+  const pointCount = pointButtons(api, {
+    addLabel: 'Add a control point',
+    removeLabel: 'Remove the last control point',
+    count: (s) => s.p.length,
+    min: 2,
+    max: MAX_POINTS,
+    // A construction shown to its end stays shown to its end.
+    add: (s) => ({
+      ...s,
+      p: [...s.p, extendPolygon(s.p)],
+      step: s.step === degree(s) ? s.p.length : s.step,
+    }),
+    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
   });
 
   const element = h(
@@ -58,7 +59,7 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
       'Show subdivision at t: the two halves of the curve and their control polygons',
     ),
     splitInfo,
-    h('div', { class: 'lesson-tools' }, addButton, removeButton),
+    pointCount.element,
     h('h2', {}, 'Every constructed point'),
     h(
       'table',
@@ -87,8 +88,7 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
       const palette = api.theme().palette;
       const r = state.step;
       splitBox.checked = state.split;
-      addButton.disabled = state.p.length >= MAX_POINTS;
-      removeButton.disabled = state.p.length <= 2;
+      pointCount.update(state);
 
       stepTitle.textContent =
         r === 0 ? `Step 0 of ${n}: the control points` : `Step ${r} of ${n}: level ${r}`;

@@ -31,33 +31,3 @@ export const schema: Schema<DeCasteljauState> = {
 
 /** Degree of the curve. */
 export const degree = (state: DeCasteljauState) => state.p.length - 1;
-
-/** Inserts `at` into the polygon edge it is closest to, so the curve changes least. */
-export function insertPoint(points: readonly Point2[], at: Point2): Point2[] {
-  let best = points.length;
-  let bestDistance = Infinity;
-  for (let i = 0; i + 1 < points.length; i++) {
-    const d = distanceToSegment(at, points[i], points[i + 1]);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = i + 1;
-    }
-  }
-  const endDistance = Math.min(dist(at, points[0]), dist(at, points[points.length - 1]));
-  if (endDistance < bestDistance)
-    best = dist(at, points[0]) < dist(at, points[points.length - 1]) ? 0 : points.length;
-  return [...points.slice(0, best), at, ...points.slice(best)];
-}
-
-const dist = (a: Point2, b: Point2) => Math.hypot(a[0] - b[0], a[1] - b[1]);
-
-function distanceToSegment(p: Point2, a: Point2, b: Point2): number {
-  const dx = b[0] - a[0];
-  const dy = b[1] - a[1];
-  const length2 = dx * dx + dy * dy;
-  const s =
-    length2 === 0
-      ? 0
-      : Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2));
-  return Math.hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy);
-}

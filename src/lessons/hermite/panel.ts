@@ -1,4 +1,6 @@
 import { fmt, fmtPoint, h, setChildren } from '../../app/dom';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { hermiteMatrix, type Point } from '../../math';
 import { formula, renderFormula, texNumber } from '../../render/formula';
@@ -24,18 +26,23 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
   );
   const bezierBox = h('input', { type: 'checkbox', id: 'hermite-bezier' });
   bezierBox.addEventListener('change', () => api.set({ ...api.get(), bezier: bezierBox.checked }));
-  const addButton = h('button', { type: 'button' }, 'Add a point');
-  const removeButton = h('button', { type: 'button' }, 'Remove the last point');
-  addButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length >= MAX_POINTS) return;
-    const [a, b] = s.p.slice(-2);
-    const next: [number, number] = [b[0] + (b[0] - a[0]) * 0.8, a[1]];
-    api.set({ ...s, p: [...s.p, next], d: [...s.d, [next[0] - b[0], 0]] });
-  });
-  removeButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length > 2) api.set({ ...s, p: s.p.slice(0, -1), d: s.d.slice(0, -1) });
+  const pointCount = pointButtons(api, {
+    addLabel: 'Add a point',
+    removeLabel: 'Remove the last point',
+    count: (s) => s.p.length,
+    min: 2,
+    max: MAX_POINTS,
+    add: (s) => {
+      const last = s.p[s.p.length - 1];
+      const next = extendPolygon(s.p);
+      // The new point's gradient follows the new edge.
+      return {
+        ...s,
+        p: [...s.p, next],
+        d: [...s.d, [next[0] - last[0], next[1] - last[1]] as const],
+      };
+    },
+    remove: (s) => ({ ...s, p: s.p.slice(0, -1), d: s.d.slice(0, -1) }),
   });
   const patchTitle = h('h2', {});
   const warning = h(
@@ -83,7 +90,7 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       'Show each patch as a Bézier curve: control points at P ± D/3',
     ),
     warning,
-    h('div', { class: 'lesson-tools' }, addButton, removeButton),
+    pointCount.element,
     patchTitle,
     h('p', {}, 'Equation 7: the four conditions as a matrix, and their solution.'),
     system,
@@ -126,8 +133,7 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       radios.forEach((radio) => (radio.checked = radio.value === state.mode));
       bezierBox.checked = state.bezier;
       warning.hidden = !(state.mode === 'catmull-rom' && state.p.length === 2);
-      addButton.disabled = state.p.length >= MAX_POINTS;
-      removeButton.disabled = state.p.length <= 2;
+      pointCount.update(state);
       patchTitle.textContent = `Patch ${i + 1} of ${m}: from P${i} to P${i + 1}`;
       const inverse = hermiteMatrix()
         .map((row) => row.join(' & '))

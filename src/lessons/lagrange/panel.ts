@@ -1,4 +1,6 @@
 import { fmt, h, setChildren } from '../../app/dom';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { lagrangeBasis } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
@@ -21,18 +23,14 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
   );
   const splineBox = h('input', { type: 'checkbox', id: 'lagrange-spline' });
   splineBox.addEventListener('change', () => api.set({ ...api.get(), spline: splineBox.checked }));
-  const addButton = h('button', { type: 'button' }, 'Add a point');
-  const removeButton = h('button', { type: 'button' }, 'Remove the last point');
-  addButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length >= MAX_POINTS) return;
-    const [a, b] = s.p.slice(-2);
-    // Continue the last edge, the way one would extend a sketch.
-    api.set({ ...s, p: [...s.p, [2 * b[0] - a[0], b[1] + (b[1] - a[1]) * 0.5 + 0.5]] });
-  });
-  removeButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.p.length > 2) api.set({ ...s, p: s.p.slice(0, -1) });
+  const pointCount = pointButtons(api, {
+    addLabel: 'Add a point',
+    removeLabel: 'Remove the last point',
+    count: (s) => s.p.length,
+    min: 2,
+    max: MAX_POINTS,
+    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
+    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
   });
   const heading = h('h2', {});
   const warning = h('p', { class: 'warning', role: 'note' });
@@ -68,7 +66,7 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
       splineBox,
       'Compare with a natural cubic spline through the same points',
     ),
-    h('div', { class: 'lesson-tools' }, addButton, removeButton),
+    pointCount.element,
     h(
       'p',
       { class: 'note' },
@@ -108,8 +106,7 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
       const palette = api.theme().palette;
       radios.forEach((radio) => (radio.checked = radio.value === state.spacing));
       splineBox.checked = state.spline;
-      addButton.disabled = state.p.length >= MAX_POINTS;
-      removeButton.disabled = state.p.length <= 2;
+      pointCount.update(state);
       warning.hidden = !collapsed;
       if (collapsed) {
         warning.textContent = `P${collapsed[0]} and P${collapsed[1]} are the same point, so chord length gives them the same parameter value and no polynomial can pass both "at once". The curve uses equally spaced values until you move one of them.`;

@@ -10,6 +10,7 @@ import {
 } from './model';
 import { FAMILY, type QuadraticState } from './state';
 import type { Point } from '../../math';
+import { distanceToSegment } from '../../interact/editPoints';
 
 const fmtMu = (mu: number) => String(Number(mu.toFixed(2)));
 
@@ -222,17 +223,6 @@ function distanceToPolygon(point: Point, polygon: readonly Point[]): number {
     best = Math.min(best, distanceToSegment(point, polygon[i], polygon[i + 1]));
   }
   return best;
-}
-
-function distanceToSegment(p: Point, a: Point, b: Point): number {
-  const dx = b[0] - a[0];
-  const dy = b[1] - a[1];
-  const length2 = dx * dx + dy * dy;
-  const s =
-    length2 === 0
-      ? 0
-      : Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2));
-  return Math.hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy);
 }
 
 /** A coordinate as a person would write it: up to three decimals. */

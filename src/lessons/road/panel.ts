@@ -1,4 +1,6 @@
 import { fmt, h, setChildren } from '../../app/dom';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
 import type { DrawInfo, LessonApi, LessonPanel } from '../../app/lesson';
 import { bezierToPowerBasis } from '../../math';
 import { renderFormula, texNumber } from '../../render/formula';
@@ -31,19 +33,14 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
 
   const combBox = h('input', { type: 'checkbox', id: 'road-comb' });
   combBox.addEventListener('change', () => api.set({ ...api.get(), comb: combBox.checked }));
-  const addButton = h('button', { type: 'button' }, 'Add a village');
-  const removeButton = h('button', { type: 'button' }, 'Remove the last village');
-  addButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.v.length >= MAX_VILLAGES) return;
-    // Beyond the last village, continuing the way the road was going.
-    const [a, b] = [s.v[s.v.length - 2], s.v[s.v.length - 1]];
-    const at: [number, number] = [b[0] + (b[0] - a[0]) * 0.7 + 4, b[1] + (b[1] - a[1]) * 0.7 - 6];
-    api.set(keepStepEnd(s, { ...s, v: insertVillage(s.v, at) }));
-  });
-  removeButton.addEventListener('click', () => {
-    const s = api.get();
-    if (s.v.length > 2) api.set(keepStepEnd(s, { ...s, v: s.v.slice(0, -1) }));
+  const pointCount = pointButtons(api, {
+    addLabel: 'Add a village',
+    removeLabel: 'Remove the last village',
+    count: (s) => s.v.length,
+    min: 2,
+    max: MAX_VILLAGES,
+    add: (s) => keepStepEnd(s, { ...s, v: insertVillage(s.v, extendPolygon(s.v)) }),
+    remove: (s) => keepStepEnd(s, { ...s, v: s.v.slice(0, -1) }),
   });
   const notes = h('div', {});
 
@@ -63,7 +60,7 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
       combBox,
       'Curvature comb: teeth across the road as long as its curvature',
     ),
-    h('div', { class: 'lesson-tools' }, addButton, removeButton),
+    pointCount.element,
     method.explanation,
     solve.element,
     h('h2', {}, 'The parameter along the road'),
@@ -94,8 +91,7 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
       method.update(state);
       solve.update(state);
       combBox.checked = state.comb;
-      addButton.disabled = state.v.length >= MAX_VILLAGES;
-      removeButton.disabled = state.v.length <= 2;
+      pointCount.update(state);
       const count = segmentCount(state);
       slider.max = String(count);
       if (Number(slider.value) !== state.s) slider.value = String(state.s);

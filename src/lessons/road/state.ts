@@ -1,6 +1,6 @@
 import type { Point2 } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
-import { insertPoint } from '../de-casteljau/state';
+import { insertPoint } from '../../interact/editPoints';
 
 /** The road the class is discussing: one of the lecture's answers. */
 export type RoadMethod = 'roman' | 'quadratic' | 'hermite' | 'natural' | 'clamped' | 'ring';
