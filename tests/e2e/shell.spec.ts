@@ -99,3 +99,26 @@ test('the built app is served with a Content-Security-Policy against foreign scr
   expect(csp).toContain("script-src 'self'");
   expect(csp).toContain("default-src 'self'");
 });
+
+test('the canvas is sharp on a high-density screen', async ({ browser }) => {
+  const context = await browser.newContext({
+    deviceScaleFactor: 2,
+    viewport: { width: 1000, height: 700 },
+  });
+  const page = await context.newPage();
+  await page.goto('./#/de-casteljau');
+  const canvas = page.locator('canvas[data-figure="construction"]');
+  await expect(canvas).toBeVisible();
+  await expect
+    .poll(() =>
+      canvas.evaluate((c: HTMLCanvasElement) => c.width / c.getBoundingClientRect().width),
+    )
+    .toBeCloseTo(2, 2);
+  // Resizing the window resizes the drawing buffer with it.
+  const before = await canvas.evaluate((c: HTMLCanvasElement) => c.width);
+  await page.setViewportSize({ width: 1300, height: 700 });
+  await expect
+    .poll(() => canvas.evaluate((c: HTMLCanvasElement) => c.width))
+    .toBeGreaterThan(before);
+  await context.close();
+});
