@@ -1,5 +1,5 @@
 import { h } from '../../app/dom';
-import { add, bezierDerivative, bezierPoint, norm, subtract } from '../../math';
+import { add, bezierDerivative, bezierPoint, norm, scale, subtract } from '../../math';
 import { formula, texPoint } from '../../render/formula';
 import { type Experiment, drawBezier, drawMarked, drawPolygon, texT } from './experiment';
 import { controlPoints } from './state';
@@ -14,6 +14,13 @@ function tangents(points: readonly (readonly number[])[], t: number) {
   };
 }
 
+/**
+ * Tangent arrows are drawn at half their true length: at full length (three
+ * legs of a cubic's polygon) they shrink the curve to a corner of the figure,
+ * while half still reaches past P1, showing the speed is N times the leg.
+ */
+const ARROW_SCALE = 0.5;
+
 export const ends: Experiment = {
   id: 'ends',
   title: 'End points and end tangents',
@@ -22,7 +29,11 @@ export const ends: Experiment = {
   extent(state) {
     const p = controlPoints(state);
     const d = tangents(p, state.t);
-    return [add(p[0], d.start), add(p[p.length - 1], d.end), add(bezierPoint(p, state.t), d.at)];
+    return [
+      add(p[0], scale(d.start, ARROW_SCALE)),
+      add(p[p.length - 1], scale(d.end, ARROW_SCALE)),
+      add(bezierPoint(p, state.t), scale(d.at, ARROW_SCALE)),
+    ];
   },
   draw(painter, state, info) {
     const theme = painter.theme;
@@ -35,12 +46,12 @@ export const ends: Experiment = {
     const last = p[n];
     const here = bezierPoint(p, state.t);
     const arrows: [readonly number[], readonly number[], string, string][] = [
-      [first, d.start, painter.color(0), "P'(0)"],
-      [last, d.end, painter.color(1), "P'(1)"],
-      [here, d.at, painter.color(2), "P'(t)"],
+      [first, d.start, painter.color(0), "½P'(0)"],
+      [last, d.end, painter.color(1), "½P'(1)"],
+      [here, d.at, painter.color(2), "½P'(t)"],
     ];
     for (const [from, vector, color, name] of arrows) {
-      const tip = add(from, vector);
+      const tip = add(from, scale(vector, ARROW_SCALE));
       painter.arrow(from, tip, { color, width: theme.sizes.line * 1.4 });
       if (!info.thumbnail && norm(vector) > 0) {
         painter.label(name, tip, {
@@ -73,7 +84,7 @@ export const ends: Experiment = {
       h(
         'p',
         { class: 'note' },
-        'The arrows are drawn at true length, in the units of the grid: a speed, not just a direction. Drag P1 along the first leg: the start tangent keeps its direction and changes its length.',
+        'The arrows are drawn at half their true length, in the units of the grid: a speed, not just a direction. For a cubic, half of 3(P1 − P0) still reaches past P1. Drag P1 along the first leg: the start tangent keeps its direction and changes its length.',
       ),
     ];
     if (norm(subtract(p[1], p[0])) === 0) {
