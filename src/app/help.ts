@@ -34,10 +34,22 @@ export function helpDialog(): HTMLDialogElement {
         ),
       ),
     ),
-    h('form', { method: 'dialog' }, h('button', { type: 'submit', autofocus: true }, 'Close')),
+    h('form', { method: 'dialog' }, h('button', { type: 'submit' }, 'Close')),
   );
+  dialog.setAttribute('tabindex', '-1');
   dialog.addEventListener('click', (e) => {
     if (e.target === dialog) dialog.close();
   });
   return dialog;
+}
+
+/**
+ * Opens the help at its top: the dialog itself takes focus, not the Close
+ * button at the bottom, which would scroll a tall dialog (projector mode, a
+ * phone) to its end.
+ */
+export function openHelp(dialog: HTMLDialogElement): void {
+  dialog.showModal();
+  dialog.scrollTop = 0;
+  dialog.focus();
 }

@@ -1,3 +1,4 @@
+import { fitToWidth, refitAll } from '../render/fit';
 import type { Theme } from '../render/theme';
 import { fmt, h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
@@ -34,6 +35,7 @@ export class LessonPage<S> {
   private urlTimer = 0;
   private playing: { last: number; timer: number } | null = null;
   private readonly unsubscribe: () => void;
+  private readonly panelResize: ResizeObserver;
   private readonly controls: {
     slider?: HTMLInputElement;
     number?: HTMLInputElement;
@@ -60,6 +62,7 @@ export class LessonPage<S> {
       setHover: (id: string | null) => this.setHover(id),
       announce: (text: string) => shell.announce(text),
       requestDraw: () => this.requestDraw(),
+      settle: () => this.writeUrl(),
     };
     this.figures = lesson.figures.map((spec) => new FigureView<S>(spec, host));
     this.panel = lesson.panel({
@@ -157,6 +160,17 @@ export class LessonPage<S> {
       h('div', { class: 'lesson-body' }, stage, aside),
     );
 
+    // Formulas fit the panel's width; its height follows its content, so only
+    // a change of width may refit them (else fitting could feed itself).
+    let panelWidth = -1;
+    this.panelResize = new ResizeObserver(([entry]) => {
+      const width = Math.round(entry.contentRect.width);
+      if (width !== panelWidth) {
+        panelWidth = width;
+        this.refresh();
+      }
+    });
+    this.panelResize.observe(aside);
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
     this.unsubscribe = this.store.subscribe(() => {
       this.requestDraw();
@@ -246,6 +260,12 @@ export class LessonPage<S> {
     return { hover: this.hover, thumbnail: false };
   }
 
+  /** Redraws after a change of display settings (projector mode changes every size). */
+  refresh(): void {
+    refitAll(this.element);
+    this.requestDraw();
+  }
+
   setHover(id: string | null): void {
     if (id === this.hover) return;
     this.hover = id;
@@ -265,6 +285,7 @@ export class LessonPage<S> {
     const state = this.store.state;
     for (const figure of this.figures) figure.draw(state);
     this.panel.update(state, this.info());
+    fitToWidth(this.panel.element);
     this.syncControls(state);
   }
 
@@ -508,6 +529,7 @@ export class LessonPage<S> {
     window.clearTimeout(this.urlTimer);
     this.remember();
     this.unsubscribe();
+    this.panelResize.disconnect();
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();
     this.panel.destroy?.();

@@ -6,7 +6,7 @@ import { loadState } from './lessonState';
 import { findLesson, lessons } from './registry';
 import { parseHash } from './router';
 import { applySettings, loadSettings, saveSettings } from './settings';
-import { helpDialog } from './help';
+import { helpDialog, openHelp } from './help';
 
 const settings = loadSettings();
 let theme = applySettings(settings);
@@ -56,7 +56,7 @@ const topBar = h(
     projectorButton,
     darkButton,
     button('Full screen', 'Full screen (F)', () => toggleFullscreen()),
-    button('?', 'Keyboard shortcuts (?)', () => help.showModal()),
+    button('?', 'Keyboard shortcuts (?)', () => openHelp(help)),
   ),
 );
 document.body.append(
@@ -100,7 +100,7 @@ function rerender(): void {
   saveSettings(settings);
   projectorButton.setAttribute('aria-pressed', String(settings.projector));
   darkButton.setAttribute('aria-pressed', String(settings.dark));
-  if (page) page.requestDraw();
+  if (page) page.refresh();
   else route();
 }
 
@@ -174,7 +174,7 @@ window.addEventListener('keydown', (e) => {
   if (e.key === 'p' || e.key === 'P') toggleProjector();
   else if (e.key === 'f' || e.key === 'F') toggleFullscreen();
   else if (e.key === 'd' || e.key === 'D') toggleDark();
-  else if (e.key === '?') help.showModal();
+  else if (e.key === '?') openHelp(help);
   else if (e.key === 'g' || e.key === 'G') location.hash = '#/';
   else return;
   e.preventDefault();

@@ -1,5 +1,6 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
+import { markForFit } from './fit';
 
 /**
  * Typesets TeX into `el` with the bundled KaTeX (no CDN). The TeX is built by
@@ -9,6 +10,7 @@ export function renderFormula(el: HTMLElement, tex: string, display = false): vo
   if (el.dataset.tex === tex) return;
   el.dataset.tex = tex;
   katex.render(tex, el, { displayMode: display, throwOnError: false, output: 'htmlAndMathml' });
+  if (display) markForFit(el);
 }
 
 /** A new element holding a typeset formula. */

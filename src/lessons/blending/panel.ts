@@ -169,7 +169,7 @@ export function blendingPanel(api: LessonApi<BlendingState>): LessonPanel<Blendi
         ),
       );
       if (n > 3) {
-        renderFormula(currentExpansion, `N = ${n}:\\quad ${expansionTex(n)}`, true);
+        renderFormula(currentExpansion, `N = ${n}:\\quad ${expansionTex(n, 3)}`, true);
         currentExpansion.hidden = false;
       } else currentExpansion.hidden = true;
 

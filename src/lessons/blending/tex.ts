@@ -13,9 +13,14 @@ export function blendingTermTex(n: number, i: number): string {
 }
 
 /** The whole expansion `P(μ) = (1−μ)³P₀ + 3μ(1−μ)²P₁ + …` for degree n. */
-export function expansionTex(n: number): string {
+export function expansionTex(n: number, termsPerLine = Infinity): string {
   const terms = Array.from({ length: n + 1 }, (_, i) => `${blendingTermTex(n, i)}\\,P_{${i}}`);
-  return `P(\\mu) = ${terms.join(' + ')}`;
+  if (terms.length <= termsPerLine) return `P(\\mu) = ${terms.join(' + ')}`;
+  // A long expansion (N = 6, 10) wraps, a few terms a line, aligned on "=".
+  const lines: string[] = [];
+  for (let i = 0; i < terms.length; i += termsPerLine)
+    lines.push(terms.slice(i, i + termsPerLine).join(' + '));
+  return `\\begin{aligned}P(\\mu) &= ${lines.join('\\\\ &\\quad + ')}\\end{aligned}`;
 }
 
 /** `3 \cdot 0.3^{1} \cdot 0.7^{2}`: the term with the numbers of μ in. */

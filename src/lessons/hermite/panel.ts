@@ -141,7 +141,7 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       const data = [patch.p0, patch.p1, patch.d0, patch.d1];
       renderFormula(
         system,
-        `\\begin{aligned}${column(data)} &= \\begin{pmatrix}1&0&0&0\\\\1&1&1&1\\\\0&1&0&0\\\\0&1&2&3\\end{pmatrix}\\begin{pmatrix}a_0\\\\a_1\\\\a_2\\\\a_3\\end{pmatrix}\\\\ \\begin{pmatrix}a_0\\\\a_1\\\\a_2\\\\a_3\\end{pmatrix} &= \\begin{pmatrix}${inverse}\\end{pmatrix}${column(data)} = ${column(patch.coefficients)}\\end{aligned}`,
+        `\\begin{aligned}${column(data)} &= \\begin{pmatrix}1&0&0&0\\\\1&1&1&1\\\\0&1&0&0\\\\0&1&2&3\\end{pmatrix}\\begin{pmatrix}a_0\\\\a_1\\\\a_2\\\\a_3\\end{pmatrix}\\\\ \\begin{pmatrix}a_0\\\\a_1\\\\a_2\\\\a_3\\end{pmatrix} &= \\begin{pmatrix}${inverse}\\end{pmatrix}${column(data)}\\\\ &= ${column(patch.coefficients)}\\end{aligned}`,
         true,
       );
       setChildren(
@@ -158,7 +158,7 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       );
       renderFormula(
         bezierLine,
-        `B_0 \\dots B_3 = ${patch.bezier.map((q) => `(${texNumber(q[0], 2)},\\ ${texNumber(q[1], 2)})`).join(',\\ ')}`,
+        `\\begin{aligned}${patch.bezier.map((q, k) => `B_${k} &= (${texNumber(q[0], 2)},\\ ${texNumber(q[1], 2)})`).join('\\\\ ')}\\end{aligned}`,
         true,
       );
       const weighs = [`P${i}`, `P${i + 1}`, `D${i}`, `D${i + 1}`];
