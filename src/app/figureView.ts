@@ -15,6 +15,8 @@ export interface FigureHost<S> {
   setHover(id: string | null): void;
   announce(text: string): void;
   requestDraw(): void;
+  /** A gesture ended: the state is final for now (write the link at once). */
+  settle(): void;
 }
 
 /** Plain-text name of a lecture label: `P_{1,2}` → `P1,2`. */
@@ -172,6 +174,7 @@ export class FigureView<S> {
         });
       }
     }
+    this.spec.drawOver?.(painter, state, info);
   }
 
   private syncKeys(): void {
@@ -235,6 +238,7 @@ export class FigureView<S> {
   private dragEnd(): void {
     const id = this.dragging?.id;
     this.dragging = null;
+    this.host.settle();
     this.canvas.classList.remove('dragging');
     const handle = id ? this.handleById(id) : undefined;
     if (handle)

@@ -46,6 +46,8 @@ export interface FigureSpec<S> {
   /** What "fit view" shows (and plots always show). */
   bounds(state: S): Bounds;
   draw(painter: Painter, state: S, info: DrawInfo): void;
+  /** Marks that must stay visible over the handles and their labels (e.g. the arrow just computed). */
+  drawOver?(painter: Painter, state: S, info: DrawInfo): void;
   handles?(state: S): Handle[];
   moveHandle?(state: S, id: string, to: Point2): S;
   /** Double-click / long-press on empty space; null if not allowed now. */

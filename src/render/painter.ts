@@ -315,30 +315,35 @@ export class Painter {
    */
   cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
     const size = this.sizes.small;
-    const gap = size * 1.15;
+    const gap = size * 1.3;
     const [x] = this.view.toScreen([at, 0]);
     const placed = entries
       .map((entry) => ({ ...entry, sy: this.view.toScreen([at, entry.y])[1] }))
       .sort((a, b) => a.sy - b.sy);
-    for (let i = 1; i < placed.length; i++) {
-      placed[i].sy = Math.max(placed[i].sy, placed[i - 1].sy + gap);
+    // Top down, push each label below the one above it; then bottom up, keep
+    // them above the axis numbers and the cursor's handle, pushing up in turn.
+    const top = size;
+    const bottom = this.view.height - size * 3.2;
+    for (let i = 0; i < placed.length; i++) {
+      placed[i].sy = Math.max(placed[i].sy, i ? placed[i - 1].sy + gap : top);
     }
-    // Labels pushed past the bottom move back up as a block.
-    const overflow = placed.length ? placed[placed.length - 1].sy - (this.view.height - size) : 0;
+    for (let i = placed.length - 1; i >= 0; i--) {
+      placed[i].sy = Math.min(
+        placed[i].sy,
+        i < placed.length - 1 ? placed[i + 1].sy - gap : bottom,
+      );
+    }
     // Near the right edge, write them on the left of the cursor.
     const left = x > this.view.width * 0.75;
     for (const label of placed) {
-      this.screenLabel(
-        label.text,
-        left ? x - size * 0.7 : x + size * 0.7,
-        label.sy - Math.max(0, overflow),
-        {
-          color: label.color,
-          halo: true,
-          size,
-          align: left ? 'right' : 'left',
-        },
-      );
+      // Clear of the cursor's handle, which may sit on the cursor line.
+      const offset = this.sizes.handle + 6;
+      this.screenLabel(label.text, left ? x - offset : x + offset, label.sy, {
+        color: label.color,
+        halo: true,
+        size,
+        align: left ? 'right' : 'left',
+      });
     }
   }
 
@@ -395,37 +400,49 @@ export class Painter {
     let left =
       align === 'center' ? x - total / 2 : align === 'right' || align === 'end' ? x - total : x;
     const baseline = style.baseline ?? 'middle';
-    const middleY = baseline === 'top' ? y + size / 2 : baseline === 'bottom' ? y - size / 2 : y;
-    if (style.box || style.halo) {
-      c.fillStyle = this.theme.labelHalo;
-      c.globalAlpha = style.box ? 0.92 : 0.75;
-      const pad = style.box ? size * 0.35 : size * 0.12;
-      c.fillRect(
+    let middleY = baseline === 'top' ? y + size / 2 : baseline === 'bottom' ? y - size / 2 : y;
+    // Keep the whole label inside the figure rather than cut at its edge.
+    const margin = 2 + (style.box ? size * 0.35 : 0);
+    left = Math.max(margin, Math.min(left, this.view.width - total - margin));
+    middleY = Math.max(
+      size * 0.7 + margin,
+      Math.min(middleY, this.view.height - size * 0.7 - margin),
+    );
+    if (style.box) {
+      const pad = size * 0.35;
+      const box: [number, number, number, number] = [
         left - pad,
         middleY - size * 0.62 - pad * 0.4,
         total + 2 * pad,
         size * 1.3 + pad * 0.8,
-      );
+      ];
+      c.fillStyle = this.theme.labelHalo;
+      c.globalAlpha = 0.92;
+      c.fillRect(...box);
       c.globalAlpha = 1;
-      if (style.box) {
-        c.strokeStyle = style.color ?? this.theme.ink;
-        c.lineWidth = Math.max(1, this.sizes.thin);
-        c.beginPath();
-        c.rect(
-          left - pad,
-          middleY - size * 0.62 - pad * 0.4,
-          total + 2 * pad,
-          size * 1.3 + pad * 0.8,
-        );
-        c.stroke();
-      }
+      c.strokeStyle = style.color ?? this.theme.ink;
+      c.lineWidth = Math.max(1, this.sizes.thin);
+      c.beginPath();
+      c.rect(...box);
+      c.stroke();
     }
-    c.fillStyle = style.color ?? this.theme.ink;
     c.textAlign = 'left';
     c.textBaseline = 'middle';
     runs.forEach((run, i) => {
       c.font = run.sub ? subFont : mainFont;
-      c.fillText(run.text, left, run.sub ? middleY + size * 0.3 : middleY);
+      const textY = run.sub ? middleY + size * 0.3 : middleY;
+      if (style.halo && !style.box) {
+        // A halo that follows the glyphs, as map labels have: it keeps the text
+        // readable over lines without blanking out a rectangle of the figure.
+        c.strokeStyle = this.theme.labelHalo;
+        c.lineWidth = Math.max(2.5, size * 0.22);
+        c.lineJoin = 'round';
+        c.globalAlpha = 0.9;
+        c.strokeText(run.text, left, textY);
+        c.globalAlpha = 1;
+      }
+      c.fillStyle = style.color ?? this.theme.ink;
+      c.fillText(run.text, left, textY);
       left += widths[i];
     });
     c.restore();

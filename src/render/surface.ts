@@ -28,6 +28,7 @@ export interface DrawingSurface {
   fill(): void;
   fillRect(x: number, y: number, w: number, h: number): void;
   fillText(text: string, x: number, y: number): void;
+  strokeText(text: string, x: number, y: number): void;
   measureText(text: string): { width: number };
   setLineDash(segments: number[]): void;
 }

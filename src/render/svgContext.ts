@@ -180,6 +180,20 @@ export class SvgContext implements DrawingSurface {
     );
   }
   fillText(text: string, x: number, y: number): void {
+    // Only filled text counts as what was written; a stroke is its halo.
+    this.texts.push(text);
+    this.text(text, x, y, `fill="${escapeXml(this.style.fillStyle)}"`);
+  }
+  strokeText(text: string, x: number, y: number): void {
+    const s = this.style;
+    this.text(
+      text,
+      x,
+      y,
+      `fill="none" stroke="${escapeXml(s.strokeStyle)}" stroke-width="${round(s.lineWidth)}" stroke-linejoin="${s.lineJoin}"`,
+    );
+  }
+  private text(text: string, x: number, y: number, paint: string): void {
     const s = this.style;
     const anchor =
       s.textAlign === 'center'
@@ -196,9 +210,8 @@ export class SvgContext implements DrawingSurface {
             ? 'text-after-edge'
             : 'alphabetic';
     const { size, family, weight } = parseFont(s.font);
-    this.texts.push(text);
     this.elements.push(
-      `<text x="${round(x)}" y="${round(y)}" font-size="${size}" font-family="${escapeXml(family)}" font-weight="${weight}" text-anchor="${anchor}" dominant-baseline="${baseline}" fill="${escapeXml(s.fillStyle)}"${this.alpha()}>${escapeXml(text)}</text>`,
+      `<text x="${round(x)}" y="${round(y)}" font-size="${size}" font-family="${escapeXml(family)}" font-weight="${weight}" text-anchor="${anchor}" dominant-baseline="${baseline}" ${paint}${this.alpha()}>${escapeXml(text)}</text>`,
     );
   }
   measureText(text: string): { width: number } {
