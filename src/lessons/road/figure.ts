@@ -123,6 +123,10 @@ export const mapFigure: FigureSpec<RoadState> = {
     if (road.kind === 'missing') notes.unshift(shorten(road.why));
     if (notes.length) drawFigureNote(painter, notes);
   },
+  drawOver(painter, state, info) {
+    if (info.thumbnail || state.overlay) return;
+    if (hasSolve(state) && state.step < stepCount(state)) drawFixedGradients(painter, state);
+  },
   handles(state) {
     const handles: Handle[] = [];
     if (usesQuadraticHandle(state)) {
@@ -339,12 +343,20 @@ function drawSolveProgress(painter: Painter, state: RoadState): void {
       width: current ? theme.sizes.line * 1.5 : theme.sizes.thin,
     });
   });
+}
+
+/** Each gradient fixed so far, as an arrow D/3: over the villages' labels, so the new one is seen. */
+function drawFixedGradients(painter: Painter, state: RoadState): void {
+  const theme = painter.theme;
+  const solve = buildSolve(state)!;
+  const progress = solveProgress(solve.n, state.step);
+  if (state.v.length > LABEL_VILLAGES) return;
   state.v.forEach((p, i) => {
     if (!isFixed(solve.n, progress, i)) return;
     const d = [solve.trace[0].solution[i], solve.trace[1].solution[i]];
     painter.arrow(p, plus(p, d, 1 / 3), {
       color: i === progress.row ? theme.accent : painter.color(0),
-      width: theme.sizes.line,
+      width: theme.sizes.line * (i === progress.row ? 1.4 : 1),
     });
   });
 }

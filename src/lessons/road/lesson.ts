@@ -1,4 +1,5 @@
 import { defineLesson } from '../../app/lesson';
+import { defaultsOf } from '../../app/urlState';
 import type { Point2 } from '../../app/lesson';
 import { mapFigure } from './figure';
 import { roadPanel } from './panel';
@@ -23,7 +24,12 @@ const preset = (id: string, label: string, change: (s: RoadState) => Partial<Roa
   },
 });
 
-const villages = (v: Point2[]) => () => ({ v });
+/**
+ * Villages shown with the natural spline, whatever was on before: a preset
+ * sets up its whole figure (a ring road through a valley's villages, left
+ * over from the lake preset, would only look broken).
+ */
+const villages = (v: Point2[]) => () => ({ v, road: 'natural' as const, overlay: false });
 
 export const road = defineLesson<RoadState>({
   slug: 'road',
@@ -36,7 +42,8 @@ export const road = defineLesson<RoadState>({
   steps: { key: 'step', count: stepCount, describe: describeStep },
   normalize,
   presets: [
-    preset('lecture', 'Lecture villages', villages(LECTURE_VILLAGES)),
+    // Back to the lesson as it opens: the lecture's villages, the natural spline, nothing else.
+    preset('lecture', 'Lecture villages', () => defaultsOf(schema)),
     preset('compare', 'Every answer at once', (s) => ({
       v: s.v.length > 12 ? LECTURE_VILLAGES : s.v,
       overlay: true,
@@ -92,8 +99,8 @@ export const road = defineLesson<RoadState>({
         [92, 44],
       ]),
     ),
-    preset('valley50', 'Valley: 50 villages', () => ({ v: valleyVillages(50), overlay: false })),
-    preset('valley500', 'Valley: 500 villages', () => ({ v: valleyVillages(500), overlay: false })),
+    preset('valley50', 'Valley: 50 villages', villages(valleyVillages(50))),
+    preset('valley500', 'Valley: 500 villages', villages(valleyVillages(500))),
   ],
   panel: roadPanel,
 });

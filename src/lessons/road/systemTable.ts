@@ -1,6 +1,7 @@
 import { fmt, h } from '../../app/dom';
 import type { RoadSolve, SolveProgress } from './solve';
 import { isFixed } from './solve';
+import { markForFit } from '../../render/fit';
 
 /** Up to this many rows the matrix is written out in full; beyond, by its three diagonals. */
 export const FULL_MATRIX_ROWS = 8;
@@ -35,25 +36,52 @@ export function systemTable(solve: RoadSolve, progress: SolveProgress): HTMLElem
         ],
     h('th', { scope: 'col', class: 'rhs' }, 'rhs x'),
     h('th', { scope: 'col' }, 'rhs y'),
-    h('th', { scope: 'col', class: 'rhs' }, 'Dx'),
-    h('th', { scope: 'col' }, 'Dy'),
   );
   const body = h('tbody', {});
+  const gradients = h('tbody', {});
   let previous = -1;
+  const span = full ? n + 3 : 6;
   for (const i of shownRows(n, progress.row)) {
-    if (i > previous + 1) body.append(gapRow(i - previous - 1, full ? n + 5 : 8));
+    if (i > previous + 1) {
+      body.append(gapRow(i - previous - 1, span));
+      gradients.append(gapRow(i - previous - 1, 3));
+    }
     body.append(matrixRow(solve, progress, i, full));
+    gradients.append(gradientRow(solve, progress, i));
     previous = i;
   }
-  if (previous < n - 1) body.append(gapRow(n - 1 - previous, full ? n + 5 : 8));
-  return h(
-    'div',
-    { class: 'road-system' },
+  if (previous < n - 1) {
+    body.append(gapRow(n - 1 - previous, span));
+    gradients.append(gapRow(n - 1 - previous, 3));
+  }
+  // Two tables, the system and the gradients it yields, so each fits a narrow
+  // panel (and a projector) without losing columns; marked to shrink if need be.
+  return markForFit(
     h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Tridiagonal system' },
-      h('thead', {}, head),
-      body,
+      'div',
+      { class: 'road-system' },
+      h(
+        'table',
+        { class: 'data-table', 'aria-label': 'Tridiagonal system' },
+        h('thead', {}, head),
+        body,
+      ),
+      h(
+        'table',
+        { class: 'data-table road-gradients', 'aria-label': 'Gradients found' },
+        h(
+          'thead',
+          {},
+          h(
+            'tr',
+            {},
+            h('th', { scope: 'col' }, 'Gradient'),
+            h('th', { scope: 'col' }, 'Dx'),
+            h('th', { scope: 'col' }, 'Dy'),
+          ),
+        ),
+        gradients,
+      ),
     ),
   );
 }
@@ -73,7 +101,6 @@ function matrixRow(
   const b = swept ? 1 : diag[i];
   const c = i < n - 1 ? (swept ? gamma : sup[i]) : null;
   const rhs = [0, 1].map((k) => (swept ? solve.trace[k].Gamma[i] : solve.rhs[k][i]));
-  const fixed = isFixed(n, progress, i);
   const cells: HTMLElement[] = [];
   if (full) {
     for (let j = 0; j < n; j++) {
@@ -98,13 +125,23 @@ function matrixRow(
       class: classes,
       'data-row': i,
       'data-swept': swept ? 1 : 0,
-      'data-fixed': fixed ? 1 : 0,
     },
     h('th', { scope: 'row' }, `row ${i}`),
     cells,
     h('td', { class: 'rhs' }, number(rhs[0])),
     h('td', {}, number(rhs[1])),
-    h('td', { class: 'rhs' }, fixed ? number(solve.trace[0].solution[i]) : '—'),
+  );
+}
+
+/** Row i of the gradients table: Di for x and y once back substitution has fixed it. */
+function gradientRow(solve: RoadSolve, progress: SolveProgress, i: number): HTMLElement {
+  const fixed = isFixed(solve.n, progress, i);
+  const current = i === progress.row && fixed;
+  return h(
+    'tr',
+    { class: current ? 'current' : '', 'data-row': i, 'data-fixed': fixed ? 1 : 0 },
+    h('th', { scope: 'row' }, `D${i}`),
+    h('td', {}, fixed ? number(solve.trace[0].solution[i]) : '—'),
     h('td', {}, fixed ? number(solve.trace[1].solution[i]) : '—'),
   );
 }
