@@ -135,6 +135,9 @@ function parseNumber(text: string): number | null {
   return Number.isFinite(value) ? value : null;
 }
 
+/** "1 point", "3 points". */
+const count = (n: number, noun: string) => `${n} ${noun}${n === 1 ? '' : 's'}`;
+
 function describe(text: string): string {
   const shown = text.length > 24 ? `${text.slice(0, 24)}…` : text;
   return JSON.stringify(shown);
@@ -148,10 +151,12 @@ function decodeField(field: Field, raw: string): FieldResult {
   switch (field.kind) {
     case 'points': {
       const items = raw === '' ? [] : raw.split(';');
-      if (items.length < field.min || items.length > field.max) {
+      // Too many is refused before anything is parsed; what is there must be
+      // points before their number matters ("garbage" is not "1 point").
+      if (items.length > field.max) {
         return {
           ok: false,
-          why: `${items.length} points given, ${field.min} to ${field.max} allowed`,
+          why: `${count(items.length, 'point')} given, at most ${field.max} allowed`,
         };
       }
       const limit = field.limit ?? 1e6;
@@ -161,21 +166,28 @@ function decodeField(field: Field, raw: string): FieldResult {
         if (coords.length !== 2) return { ok: false, why: `${describe(item)} is not a point x,y` };
         const x = parseNumber(coords[0]);
         const y = parseNumber(coords[1]);
-        if (x === null || y === null)
+        if (x === null || y === null) {
           return { ok: false, why: `${describe(item)} is not a point of two numbers` };
+        }
         if (Math.abs(x) > limit || Math.abs(y) > limit) {
           return { ok: false, why: `${describe(item)} is beyond ±${limit}` };
         }
         points.push([x, y]);
       }
+      if (points.length < field.min) {
+        return {
+          ok: false,
+          why: `${count(points.length, 'point')} given, at least ${field.min} needed`,
+        };
+      }
       return { ok: true, value: points };
     }
     case 'numbers': {
       const items = raw === '' ? [] : raw.split(',');
-      if (items.length < field.min || items.length > field.max) {
+      if (items.length > field.max) {
         return {
           ok: false,
-          why: `${items.length} values given, ${field.min} to ${field.max} allowed`,
+          why: `${count(items.length, 'value')} given, at most ${field.max} allowed`,
         };
       }
       const values: number[] = [];
@@ -188,6 +200,12 @@ function decodeField(field: Field, raw: string): FieldResult {
           };
         }
         values.push(v);
+      }
+      if (values.length < field.min) {
+        return {
+          ok: false,
+          why: `${count(values.length, 'value')} given, at least ${field.min} needed`,
+        };
       }
       return { ok: true, value: values };
     }
