@@ -94,7 +94,9 @@ test('two equal x: the parabola lesson says there is no y(x), on the figure and 
 
 test('a link with three equal x, or points going backwards, says so', async ({ page }) => {
   await page.goto('./#/quadratic?p=2,0;2,1;2,3&step=0');
-  await expect(page.getByText(/There is none: P0 and P1 share x = 2/)).toBeVisible();
+  await expect(page.getByText(/There is none: all three points share x = 2/)).toBeVisible();
+  await page.goto('./#/quadratic?p=1,1;1,1;1,1&step=0');
+  await expect(page.getByText(/all three points are at one spot, \(1, 1\)/).first()).toBeVisible();
   await page.getByRole('button', { name: 'Going backwards' }).click();
   await expect(
     page.getByText(/meets the points in the wrong order: x1 = 4 is not between/),

@@ -7,6 +7,7 @@ import {
   quadraticTicks,
   sampleParabola,
   sampleQuadratic,
+  sameXWords,
 } from './model';
 import { FAMILY, type QuadraticState } from './state';
 import type { Point } from '../../math';
@@ -59,7 +60,7 @@ function drawExplicit(painter: Painter, state: QuadraticState, thumbnail: boolea
   const p = state.p;
   if (parabola.kind === 'same-x') {
     if (!main || thumbnail) return;
-    const { first, second, x } = parabola;
+    const { x } = parabola;
     const column = p.filter((q) => q[0] === x);
     painter.segment(column[0], column[column.length - 1], {
       color: theme.accent,
@@ -67,7 +68,7 @@ function drawExplicit(painter: Painter, state: QuadraticState, thumbnail: boolea
       dash: [4, 4],
     });
     painter.note(
-      `No parabola y(x): P${first} and P${second} share x = ${fmtNumber(x)}, and a function has one y at each x.`,
+      `No parabola y(x): ${sameXWords(p, x, fmtNumber)}, and a function has one y at each x.`,
     );
     return;
   }

@@ -20,6 +20,21 @@ export type Parabola =
   /** Two (or three) points share an x: no function y(x) passes through them. */
   | { kind: 'same-x'; first: number; second: number; x: number };
 
+/**
+ * Which points share an x, in words: "P0 and P1 share x = 2", "all three
+ * points share x = 2", or "all three points are at one spot, (1, 1)".
+ */
+export function sameXWords(p: readonly Point2[], x: number, fmt: (v: number) => string): string {
+  const sharing = [0, 1, 2].filter((i) => p[i][0] === x);
+  if (sharing.length === 3) {
+    if (p.every((q) => q[1] === p[0][1])) {
+      return `all three points are at one spot, (${fmt(x)}, ${fmt(p[0][1])})`;
+    }
+    return `all three points share x = ${fmt(x)}`;
+  }
+  return `P${sharing[0]} and P${sharing[1]} share x = ${fmt(x)}`;
+}
+
 export function explicitParabola(p: readonly Point2[]): Parabola {
   for (const [i, j] of [
     [0, 1],

@@ -3,7 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { distance, parametricQuadraticPoint } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
 import { fmtNumber } from './figure';
-import { clampMu, explicitParabola, muRules, quadraticCoefficients } from './model';
+import { clampMu, explicitParabola, muRules, quadraticCoefficients, sameXWords } from './model';
 import { type QuadraticState, STEP_TITLES } from './state';
 
 /** Every digit a reader may want to check by hand (12 significant). */
@@ -128,7 +128,7 @@ function updateParabola(box: HTMLElement, p: QuadraticState['p']) {
       h(
         'p',
         { class: 'warning', role: 'note' },
-        `There is none: P${parabola.first} and P${parabola.second} share x = ${fmtNumber(parabola.x)}, so the system below has two equal rows and no solution.`,
+        `There is none: ${sameXWords(p, parabola.x, fmtNumber)}, so the system below has equal rows and no solution.`,
       ),
       formula(vandermonde(p), true),
     );
