@@ -126,14 +126,10 @@ export const curveFigure: FigureSpec<BlendingState> = {
     }
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
-      painter.label('P(μ)', point, {
-        dx: -theme.sizes.point - 4,
-        dy: -theme.sizes.label * 0.9,
-        align: 'right',
-        color: theme.ink,
-        halo: true,
-        bold: true,
-      });
+      // Away from the control points and the weights written under them.
+      const below = (theme.sizes.handle + theme.sizes.small * 1.1) / painter.view.scaleY;
+      const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
+      painter.labelClear('P(μ)', point, crowd, { color: theme.ink, halo: true, bold: true });
     }
   },
   handles: (state) =>

@@ -66,7 +66,13 @@ export const curveFigure: FigureSpec<HermiteState> = {
         }),
       );
     }
-    if (state.mode === 'catmull-rom' && state.p.length === 2) {
+    const [a, b] = [state.p[state.patch], state.p[state.patch + 1]];
+    const still = (d: Point2) => d[0] === 0 && d[1] === 0;
+    if (a[0] === b[0] && a[1] === b[1] && still(D[state.patch]) && still(D[state.patch + 1])) {
+      painter.note(
+        `P${state.patch} and P${state.patch + 1} are at one spot and both gradients are zero: four conditions that all say "stay here", so the patch is a single point. Drag a point or a gradient tip away.`,
+      );
+    } else if (state.mode === 'catmull-rom' && state.p.length === 2) {
       painter.note(
         'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment. Add a point.',
       );
