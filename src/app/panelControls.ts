@@ -40,3 +40,58 @@ export function pointButtons<S>(api: LessonApi<S>, options: PointButtonsOptions<
     },
   };
 }
+
+export interface CheckboxOptions<S> {
+  id: string;
+  label: string | Node;
+  get(state: S): boolean;
+  set(state: S, on: boolean): S;
+}
+
+/** A labelled checkbox bound to a yes/no of the state. */
+export function checkbox<S>(api: LessonApi<S>, options: CheckboxOptions<S>): Control<S> {
+  const input = h('input', { type: 'checkbox', id: options.id });
+  input.addEventListener('change', () => api.set(options.set(api.get(), input.checked)));
+  return {
+    element: h('label', { class: 'toggle', for: options.id }, input, options.label),
+    update(state) {
+      input.checked = options.get(state);
+    },
+  };
+}
+
+export interface RadioOptions<S, V extends string> {
+  /** The group's name, also the prefix of each input's id. */
+  name: string;
+  choices: readonly { value: V; label: string | Node }[];
+  get(state: S): V;
+  set(state: S, value: V): S;
+}
+
+/** Radio buttons for one choice of the state, each on a labelled line. */
+export function radioGroup<S, V extends string>(
+  api: LessonApi<S>,
+  options: RadioOptions<S, V>,
+): { labels: HTMLElement[]; update(state: S): void } {
+  const inputs = options.choices.map(({ value }) => {
+    const input = h('input', {
+      type: 'radio',
+      name: options.name,
+      value,
+      id: `${options.name}-${value}`,
+    });
+    input.addEventListener('change', () => {
+      if (input.checked) api.set(options.set(api.get(), value));
+    });
+    return input;
+  });
+  return {
+    labels: options.choices.map(({ value, label }, i) =>
+      h('label', { class: 'toggle', for: `${options.name}-${value}` }, inputs[i], label),
+    ),
+    update(state) {
+      const current = options.get(state);
+      options.choices.forEach(({ value }, i) => (inputs[i].checked = value === current));
+    },
+  };
+}

@@ -9,6 +9,7 @@ import {
   type PropertiesState,
   controlPoints,
 } from './state';
+import { radioGroup } from '../../app/panelControls';
 
 const MAPS: { value: MapKind; label: string }[] = [
   { value: 'rotate', label: 'Rotation' },
@@ -45,16 +46,11 @@ export function propertiesPanel(api: LessonApi<PropertiesState>): LessonPanel<Pr
   const remember = button('Make this the "before" curve', () =>
     change((s) => ({ q: s.p.map((point): Point2 => [point[0], point[1]]) })),
   );
-  const mapRadios = MAPS.map(({ value, label }) => {
-    const input = h('input', { type: 'radio', name: 'plane-map', value, id: `map-${value}` });
-    input.addEventListener('change', () => {
-      if (input.checked) change(() => ({ m: value }));
-    });
-    return {
-      value,
-      input,
-      label: h('label', { class: 'toggle', for: `map-${value}` }, input, label),
-    };
+  const mapChoice = radioGroup(api, {
+    name: 'map',
+    choices: MAPS,
+    get: (s) => s.m,
+    set: (s, m) => ({ ...s, m }),
   });
 
   const groups = {
@@ -73,7 +69,7 @@ export function propertiesPanel(api: LessonApi<PropertiesState>): LessonPanel<Pr
       'fieldset',
       { style: 'border:0;padding:0;margin:0' },
       h('legend', { class: 'visually-hidden' }, 'Map applied'),
-      mapRadios.map((r) => r.label),
+      mapChoice.labels,
     ),
   };
 
@@ -115,7 +111,7 @@ export function propertiesPanel(api: LessonApi<PropertiesState>): LessonPanel<Pr
         );
       }
       repeated.value = String(state.r);
-      for (const r of mapRadios) r.input.checked = r.value === state.m;
+      mapChoice.update(state);
       setChildren(details, experiment.explain(state, api));
       details.dataset.controlPoints = String(controlPoints(state).length);
     },

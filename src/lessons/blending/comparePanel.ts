@@ -5,6 +5,7 @@ import { formula } from '../../render/formula';
 import { basisMinimum, comparisonFamily, equallySpacedNodes } from './bases';
 import { hermiteColorIndex } from './plotFigure';
 import { type BlendingState, type Comparison, degree, texMu } from './state';
+import { radioGroup } from '../../app/panelControls';
 
 const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'none', label: 'Bernstein only' },
@@ -25,21 +26,11 @@ const EXPLAIN: Record<Comparison, string> = {
 
 /** The switch to compare other bases, with their values at μ and whether they go negative. */
 export function compareSection(api: LessonApi<BlendingState>) {
-  const radios = CHOICES.map(({ value, label }) => {
-    const input = h('input', {
-      type: 'radio',
-      name: 'blending-compare',
-      value,
-      id: `compare-${value}`,
-    });
-    input.addEventListener('change', () => {
-      if (input.checked) api.set({ ...api.get(), b: value });
-    });
-    return {
-      value,
-      input,
-      label: h('label', { class: 'toggle', for: `compare-${value}` }, input, label),
-    };
+  const basisChoice = radioGroup(api, {
+    name: 'compare',
+    choices: CHOICES,
+    get: (s) => s.b,
+    set: (s, b) => ({ ...s, b }),
   });
   const explain = h('p', {});
   const tableBody = h('tbody', {});
@@ -68,7 +59,7 @@ export function compareSection(api: LessonApi<BlendingState>) {
       'fieldset',
       { style: 'border:0;padding:0;margin:0' },
       h('legend', { class: 'visually-hidden' }, 'Basis drawn for comparison'),
-      radios.map((r) => r.label),
+      basisChoice.labels,
     ),
     explain,
     table,
@@ -79,7 +70,7 @@ export function compareSection(api: LessonApi<BlendingState>) {
     element,
     update(state: BlendingState, info: DrawInfo) {
       const n = degree(state);
-      for (const r of radios) r.input.checked = r.value === state.b;
+      basisChoice.update(state);
       explain.textContent = EXPLAIN[state.b];
       const basis = comparisonFamily(state.b, n);
       table.hidden = basis === null;

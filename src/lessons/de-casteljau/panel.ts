@@ -1,6 +1,6 @@
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { pointButtons } from '../../app/panelControls';
+import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { bernstein, deCasteljau, splitBezier } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
@@ -13,8 +13,12 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
   const stepTitle = h('h2', {});
   const stepText = h('p', {});
   const stepFormulas = h('div', { class: 'step-formulas' });
-  const splitBox = h('input', { type: 'checkbox', id: 'split-toggle' });
-  splitBox.addEventListener('change', () => api.set({ ...api.get(), split: splitBox.checked }));
+  const split = checkbox(api, {
+    id: 'split-toggle',
+    label: 'Show subdivision at t: the two halves of the curve and their control polygons',
+    get: (s) => s.split,
+    set: (s, on) => ({ ...s, split: on }),
+  });
   const splitInfo = h('div', { class: 'split-info' });
   const tableBody = h('tbody', {});
   const pointCount = pointButtons(api, {
@@ -52,12 +56,7 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
     stepTitle,
     stepText,
     stepFormulas,
-    h(
-      'label',
-      { class: 'toggle', for: 'split-toggle' },
-      splitBox,
-      'Show subdivision at t: the two halves of the curve and their control polygons',
-    ),
+    split.element,
     splitInfo,
     pointCount.element,
     h('h2', {}, 'Every constructed point'),
@@ -87,7 +86,7 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
       const levels = deCasteljau(state.p, t);
       const palette = api.theme().palette;
       const r = state.step;
-      splitBox.checked = state.split;
+      split.update(state);
       pointCount.update(state);
 
       stepTitle.textContent =

@@ -1,5 +1,5 @@
 import { fmt, fmtPoint, h, setChildren } from '../../app/dom';
-import { pointButtons } from '../../app/panelControls';
+import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { hermiteMatrix, type Point } from '../../math';
@@ -16,16 +16,18 @@ const column = (rows: readonly Point[]) =>
   `\\begin{pmatrix}${rows.map((q) => `${texNumber(q[0], 3)} & ${texNumber(q[1], 3)}`).join('\\\\')}\\end{pmatrix}`;
 
 export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteState> {
-  const radios = MODES.map(([value]) =>
-    h('input', { type: 'radio', name: 'hermite-mode', value, id: `mode-${value}` }),
-  );
-  radios.forEach((radio) =>
-    radio.addEventListener('change', () => {
-      if (radio.checked) api.set({ ...api.get(), mode: radio.value as GradientMode });
-    }),
-  );
-  const bezierBox = h('input', { type: 'checkbox', id: 'hermite-bezier' });
-  bezierBox.addEventListener('change', () => api.set({ ...api.get(), bezier: bezierBox.checked }));
+  const mode = radioGroup(api, {
+    name: 'mode',
+    choices: MODES.map(([value, label]) => ({ value, label })),
+    get: (s) => s.mode,
+    set: (s, value) => ({ ...s, mode: value }),
+  });
+  const bezier = checkbox(api, {
+    id: 'hermite-bezier',
+    label: 'Show each patch as a Bézier curve: control points at P ± D/3',
+    get: (s) => s.bezier,
+    set: (s, on) => ({ ...s, bezier: on }),
+  });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
     removeLabel: 'Remove the last point',
@@ -70,25 +72,13 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       "\\begin{aligned}P(\\mu) &= a_3\\mu^3 + a_2\\mu^2 + a_1\\mu + a_0\\\\ P(0) &= P_i,\\quad P(1) = P_{i+1}\\\\ P'(0) &= D_i,\\quad P'(1) = D_{i+1}\\end{aligned}",
       true,
     ),
-    h(
-      'fieldset',
-      {},
-      h('legend', {}, 'Gradients Dₖ'),
-      MODES.map(([value, label], i) =>
-        h('label', { class: 'toggle', for: `mode-${value}` }, radios[i], label),
-      ),
-    ),
+    h('fieldset', {}, h('legend', {}, 'Gradients Dₖ'), mode.labels),
     h(
       'p',
       { class: 'note' },
       'Each arrow is drawn a third as long as its gradient: its tip is at P + D/3. Drag a tip (or Tab to it and use the arrow keys) to set D; dragging one in Catmull-Rom mode switches to gradients by hand. Double-click adds a point after the last one, Delete removes one. Drag the cursor in the lower plot to move μ.',
     ),
-    h(
-      'label',
-      { class: 'toggle', for: 'hermite-bezier' },
-      bezierBox,
-      'Show each patch as a Bézier curve: control points at P ± D/3',
-    ),
+    bezier.element,
     warning,
     pointCount.element,
     patchTitle,
@@ -130,8 +120,8 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
       const patch = patchAt(state);
       const i = patch.index;
       const m = patchCount(state);
-      radios.forEach((radio) => (radio.checked = radio.value === state.mode));
-      bezierBox.checked = state.bezier;
+      mode.update(state);
+      bezier.update(state);
       warning.hidden = !(state.mode === 'catmull-rom' && state.p.length === 2);
       pointCount.update(state);
       patchTitle.textContent = `Patch ${i + 1} of ${m}: from P${i} to P${i + 1}`;

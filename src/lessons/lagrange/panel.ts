@@ -1,5 +1,5 @@
 import { fmt, h, setChildren } from '../../app/dom';
-import { pointButtons } from '../../app/panelControls';
+import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { lagrangeBasis } from '../../math';
@@ -13,16 +13,18 @@ const SPACINGS: [Spacing, string][] = [
 ];
 
 export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<LagrangeState> {
-  const radios = SPACINGS.map(([value]) =>
-    h('input', { type: 'radio', name: 'lagrange-spacing', value, id: `spacing-${value}` }),
-  );
-  radios.forEach((radio) =>
-    radio.addEventListener('change', () => {
-      if (radio.checked) api.set({ ...api.get(), spacing: radio.value as Spacing });
-    }),
-  );
-  const splineBox = h('input', { type: 'checkbox', id: 'lagrange-spline' });
-  splineBox.addEventListener('change', () => api.set({ ...api.get(), spline: splineBox.checked }));
+  const spacing = radioGroup(api, {
+    name: 'spacing',
+    choices: SPACINGS.map(([value, label]) => ({ value, label })),
+    get: (s) => s.spacing,
+    set: (s, value) => ({ ...s, spacing: value }),
+  });
+  const spline = checkbox(api, {
+    id: 'lagrange-spline',
+    label: 'Compare with a natural cubic spline through the same points',
+    get: (s) => s.spline,
+    set: (s, on) => ({ ...s, spline: on }),
+  });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
     removeLabel: 'Remove the last point',
@@ -51,21 +53,9 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
       'P(t) = \\sum_{k=0}^{n} L_k(t)\\,P_k,\\qquad L_k(t) = \\prod_{j \\ne k} \\frac{t - t_j}{t_k - t_j}',
       true,
     ),
-    h(
-      'fieldset',
-      { class: 'choices' },
-      h('legend', {}, 'Parameter values tₖ'),
-      SPACINGS.map(([value, label], i) =>
-        h('label', { class: 'toggle', for: `spacing-${value}` }, radios[i], label),
-      ),
-    ),
+    h('fieldset', { class: 'choices' }, h('legend', {}, 'Parameter values tₖ'), spacing.labels),
     warning,
-    h(
-      'label',
-      { class: 'toggle', for: 'lagrange-spline' },
-      splineBox,
-      'Compare with a natural cubic spline through the same points',
-    ),
+    spline.element,
     pointCount.element,
     h(
       'p',
@@ -104,8 +94,8 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
       const weights = lagrangeBasis(ts, state.t);
       const at = polynomialPoint(state, ts, state.t);
       const palette = api.theme().palette;
-      radios.forEach((radio) => (radio.checked = radio.value === state.spacing));
-      splineBox.checked = state.spline;
+      spacing.update(state);
+      spline.update(state);
       pointCount.update(state);
       warning.hidden = !collapsed;
       if (collapsed) {

@@ -4,6 +4,7 @@ import { closedCubicSystem, constraintCount } from '../../math';
 import { renderFormula, texNumber, texPoint } from '../../render/formula';
 import { CURVES, buildRoad, quadraticControl } from './roads';
 import { ROAD_METHODS, type RoadMethod, type RoadState, keepStepEnd, stepCount } from './state';
+import { checkbox, radioGroup } from '../../app/panelControls';
 
 const NAMES: Record<RoadMethod, string> = {
   roman: 'Roman road: straight segments',
@@ -40,30 +41,24 @@ const TEXT: Record<RoadMethod, string> = {
 
 /** Method radio buttons, overlay checkboxes, the method's explanation and the counting panel. */
 export function methodSection(api: LessonApi<RoadState>) {
-  const radios = new Map<RoadMethod, HTMLInputElement>();
+  const methods = radioGroup(api, {
+    name: 'road',
+    choices: ROAD_METHODS.map((method) => ({ value: method, label: NAMES[method] })),
+    get: (s) => s.road,
+    set: (s, road) => keepStepEnd(s, { ...s, road, step: stepCount({ ...s, road }) }),
+  });
   const methodList = h(
     'fieldset',
     { class: 'road-methods' },
     h('legend', {}, 'The road is built by'),
-    ROAD_METHODS.map((method) => {
-      const input = h('input', {
-        type: 'radio',
-        name: 'road-method',
-        value: method,
-        id: `road-${method}`,
-      });
-      input.addEventListener('change', () => {
-        const s = api.get();
-        api.set(keepStepEnd(s, { ...s, road: method, step: stepCount({ ...s, road: method }) }));
-      });
-      radios.set(method, input);
-      return h('label', { class: 'toggle', for: `road-${method}` }, input, NAMES[method]);
-    }),
+    methods.labels,
   );
-  const overlayBox = h('input', { type: 'checkbox', id: 'road-overlay' });
-  overlayBox.addEventListener('change', () =>
-    api.set({ ...api.get(), overlay: overlayBox.checked }),
-  );
+  const overlay = checkbox(api, {
+    id: 'road-overlay',
+    label: 'Compare: draw several answers at once',
+    get: (s) => s.overlay,
+    set: (s, on) => ({ ...s, overlay: on }),
+  });
   const compareBoxes = CURVES.map((curve, index) => {
     const box = h('input', { type: 'checkbox', id: `road-compare-${curve.id}` });
     box.addEventListener('change', () => {
@@ -88,14 +83,12 @@ export function methodSection(api: LessonApi<RoadState>) {
     h('legend', {}, 'Draw side by side'),
     compareBoxes.map((c) => c.label),
   );
-  const endsBox = h('input', { type: 'checkbox', id: 'road-ends' });
-  endsBox.addEventListener('change', () => api.set({ ...api.get(), ends: endsBox.checked }));
-  const endsToggle = h(
-    'label',
-    { class: 'toggle', for: 'road-ends' },
-    endsBox,
-    'Choose the end gradients of the Hermite road (drag D0 and Dm) instead of zero',
-  );
+  const ends = checkbox(api, {
+    id: 'road-ends',
+    label: 'Choose the end gradients of the Hermite road (drag D0 and Dm) instead of zero',
+    get: (s) => s.ends,
+    set: (s, on) => ({ ...s, ends: on }),
+  });
   const title = h('h2', {});
   const text = h('p', {});
   const formula = h('div', {});
@@ -111,12 +104,7 @@ export function methodSection(api: LessonApi<RoadState>) {
     'section',
     { 'aria-label': 'Method' },
     methodList,
-    h(
-      'label',
-      { class: 'toggle', for: 'road-overlay' },
-      overlayBox,
-      'Compare: draw several answers at once',
-    ),
+    overlay.element,
     compareList,
   );
   const explanation = h(
@@ -124,7 +112,7 @@ export function methodSection(api: LessonApi<RoadState>) {
     { 'aria-label': 'How this road is built' },
     title,
     text,
-    endsToggle,
+    ends.element,
     formula,
     countTitle,
     countTable,
@@ -135,8 +123,8 @@ export function methodSection(api: LessonApi<RoadState>) {
     explanation,
     update(state: RoadState) {
       const palette = api.theme().palette;
-      for (const [method, input] of radios) input.checked = method === state.road;
-      overlayBox.checked = state.overlay;
+      methods.update(state);
+      overlay.update(state);
       compareList.hidden = !state.overlay;
       compareBoxes.forEach((c, index) => {
         c.box.checked = state.compare.includes(index);
@@ -144,8 +132,8 @@ export function methodSection(api: LessonApi<RoadState>) {
         c.why.textContent = road?.kind === 'missing' ? ` (not drawn: ${road.why})` : '';
         c.line.style.borderTop = `3px ${CURVES[index].dash.length ? 'dashed' : 'solid'} ${palette[index % palette.length]}`;
       });
-      endsToggle.hidden = state.road !== 'hermite';
-      endsBox.checked = state.ends;
+      ends.element.hidden = state.road !== 'hermite';
+      ends.update(state);
       title.textContent = NAMES[state.road];
       text.textContent = TEXT[state.road];
       renderFormula(formula, methodFormula(state), true);

@@ -1,5 +1,5 @@
 import { fmt, h, setChildren } from '../../app/dom';
-import { pointButtons } from '../../app/panelControls';
+import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { DrawInfo, LessonApi, LessonPanel } from '../../app/lesson';
 import { bezierToPowerBasis } from '../../math';
@@ -31,8 +31,12 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
   const segmentText = h('p', { class: 'note' });
   const segmentFormula = h('div', {});
 
-  const combBox = h('input', { type: 'checkbox', id: 'road-comb' });
-  combBox.addEventListener('change', () => api.set({ ...api.get(), comb: combBox.checked }));
+  const comb = checkbox(api, {
+    id: 'road-comb',
+    label: 'Curvature comb: teeth across the road as long as its curvature',
+    get: (s) => s.comb,
+    set: (s, on) => ({ ...s, comb: on }),
+  });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a village',
     removeLabel: 'Remove the last village',
@@ -54,12 +58,7 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
     ),
     notes,
     method.element,
-    h(
-      'label',
-      { class: 'toggle', for: 'road-comb' },
-      combBox,
-      'Curvature comb: teeth across the road as long as its curvature',
-    ),
+    comb.element,
     pointCount.element,
     method.explanation,
     solve.element,
@@ -90,7 +89,7 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
     update(state: RoadState, info: DrawInfo) {
       method.update(state);
       solve.update(state);
-      combBox.checked = state.comb;
+      comb.update(state);
       pointCount.update(state);
       const count = segmentCount(state);
       slider.max = String(count);
