@@ -47,3 +47,21 @@ export function fmt(value: number, digits = 2): string {
 export function fmtPoint(p: readonly number[], digits = 2): string {
   return `(${p.map((v) => fmt(v, digits)).join(', ')})`;
 }
+
+/**
+ * A data table as the panels use it: named for screen readers, one row of
+ * column headings, and the body the panel fills in.
+ */
+export function dataTable(
+  label: string,
+  columns: readonly (string | Node)[],
+  body: HTMLTableSectionElement,
+  extraClass = '',
+): HTMLTableElement {
+  return h(
+    'table',
+    { class: `data-table${extraClass ? ` ${extraClass}` : ''}`, 'aria-label': label },
+    h('thead', {}, h('tr', {}, ...columns.map((c) => h('th', { scope: 'col' }, c)))),
+    body,
+  );
+}

@@ -1,4 +1,4 @@
-import { h } from '../../app/dom';
+import { h, dataTable } from '../../app/dom';
 import { bezierDeviation, controlPolygonGap, elevateDegree } from '../../math';
 import { formula, texPoint } from '../../render/formula';
 import { type Experiment, drawBezier, drawPolygon } from './experiment';
@@ -78,19 +78,9 @@ export const elevate: Experiment = {
       );
     }
     nodes.push(
-      h(
-        'table',
-        { class: 'data-table', 'aria-label': 'Distance from polygon to curve' },
-        h(
-          'thead',
-          {},
-          h(
-            'tr',
-            {},
-            h('th', { scope: 'col' }, 'Degree'),
-            h('th', { scope: 'col' }, 'max |Qi − P(i/N)|'),
-          ),
-        ),
+      dataTable(
+        'Distance from polygon to curve',
+        ['Degree', 'max |Qi − P(i/N)|'],
         h(
           'tbody',
           {},

@@ -1,4 +1,4 @@
-import { h } from '../../app/dom';
+import { h, dataTable } from '../../app/dom';
 import { bezierPoint, controlPolygonGap, splitBezier } from '../../math';
 import { formula, texPoint } from '../../render/formula';
 import { type Experiment, drawBezier, drawMarked, texT } from './experiment';
@@ -79,20 +79,9 @@ export const split: Experiment = {
       );
     });
     nodes.push(
-      h(
-        'table',
-        { class: 'data-table', 'aria-label': 'Subdivision levels' },
-        h(
-          'thead',
-          {},
-          h(
-            'tr',
-            {},
-            h('th', { scope: 'col' }, 'Splits'),
-            h('th', { scope: 'col' }, 'Pieces'),
-            h('th', { scope: 'col' }, 'Largest polygon gap'),
-          ),
-        ),
+      dataTable(
+        'Subdivision levels',
+        ['Splits', 'Pieces', 'Largest polygon gap'],
         h('tbody', {}, rows),
       ),
       h(

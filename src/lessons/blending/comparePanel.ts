@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, dataTable } from '../../app/dom';
 import type { DrawInfo, LessonApi } from '../../app/lesson';
 import { convexHull, convexHullContains, lagrangePoint } from '../../math';
 import { formula } from '../../render/formula';
@@ -34,20 +34,9 @@ export function compareSection(api: LessonApi<BlendingState>) {
   });
   const explain = h('p', {});
   const tableBody = h('tbody', {});
-  const table = h(
-    'table',
-    { class: 'data-table', 'aria-label': 'Comparison weights at μ' },
-    h(
-      'thead',
-      {},
-      h(
-        'tr',
-        {},
-        h('th', { scope: 'col' }, 'Function'),
-        h('th', { scope: 'col' }, 'Weights'),
-        h('th', { scope: 'col' }, 'Value at μ'),
-      ),
-    ),
+  const table = dataTable(
+    'Comparison weights at μ',
+    ['Function', 'Weights', 'Value at μ'],
     tableBody,
   );
   const verdict = h('p', { class: 'note' });

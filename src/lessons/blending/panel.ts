@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, dataTable } from '../../app/dom';
 import { pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
@@ -58,37 +58,13 @@ export function blendingPanel(api: LessonApi<BlendingState>): LessonPanel<Blendi
     ),
     pointCount.element,
     weightsTitle,
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Weights at μ' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'Point'),
-          h('th', { scope: 'col' }, 'W(N, i, μ)'),
-          h('th', { scope: 'col' }, 'Weight'),
-        ),
-      ),
-      weightsBody,
-    ),
+    dataTable('Weights at μ', ['Point', 'W(N, i, μ)', 'Weight'], weightsBody),
     bar,
     sumText,
     pointFormula,
     h('h2', {}, 'The expansions'),
     h('p', {}, 'Writing out the sum gives one polynomial weight per control point:'),
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Expansions' },
-      h(
-        'thead',
-        {},
-        h('tr', {}, h('th', { scope: 'col' }, 'N'), h('th', { scope: 'col' }, 'P(μ)')),
-      ),
-      expansionsBody,
-    ),
+    dataTable('Expansions', ['N', 'P(μ)'], expansionsBody),
     currentExpansion,
     h('h2', {}, 'Matrix form'),
     h(

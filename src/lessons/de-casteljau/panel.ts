@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, dataTable } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
@@ -60,22 +60,7 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
     splitInfo,
     pointCount.element,
     h('h2', {}, 'Every constructed point'),
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Constructed points' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'Point'),
-          h('th', { scope: 'col' }, 'x'),
-          h('th', { scope: 'col' }, 'y'),
-        ),
-      ),
-      tableBody,
-    ),
+    dataTable('Constructed points', ['Point', 'x', 'y'], tableBody),
   );
 
   return {

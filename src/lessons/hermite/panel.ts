@@ -1,4 +1,4 @@
-import { fmt, fmtPoint, h, setChildren } from '../../app/dom';
+import { fmt, fmtPoint, h, setChildren, dataTable } from '../../app/dom';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
@@ -84,22 +84,7 @@ export function hermitePanel(api: LessonApi<HermiteState>): LessonPanel<HermiteS
     patchTitle,
     h('p', {}, 'Equation 7: the four conditions as a matrix, and their solution.'),
     system,
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Coefficients of the patch' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'Coefficient'),
-          h('th', { scope: 'col' }, 'x'),
-          h('th', { scope: 'col' }, 'y'),
-        ),
-      ),
-      coefficientsBody,
-    ),
+    dataTable('Coefficients of the patch', ['Coefficient', 'x', 'y'], coefficientsBody),
     h('h2', {}, 'The Hermite basis at μ'),
     basisLine,
     table('Hermite weights at μ', ['Basis', 'Value at μ', 'Weighs'], weightsBody),
@@ -205,21 +190,9 @@ function updateJoins(section: HTMLElement, state: HermiteState) {
       {},
       `Both patches at an inner point use its one gradient, so P′ is the same on both sides: every join is C¹, measured here on the patches. ${onlyC1 ? `The second derivatives differ at ${onlyC1} of ${list.length}: C¹ but not C². A spline that is C² as well is the next step.` : ''}`,
     ),
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Joins' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'Join'),
-          h('th', { scope: 'col' }, 'P′ before'),
-          h('th', { scope: 'col' }, 'P′ after'),
-          h('th', { scope: 'col' }, 'Continuity'),
-        ),
-      ),
+    dataTable(
+      'Joins',
+      ['Join', 'P′ before', 'P′ after', 'Continuity'],
       h(
         'tbody',
         {},

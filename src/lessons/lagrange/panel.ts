@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, dataTable } from '../../app/dom';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
@@ -64,23 +64,7 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
     ),
     heading,
     pointFormula,
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Weights at t' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'k'),
-          h('th', { scope: 'col' }, 'tₖ'),
-          h('th', { scope: 'col' }, 'Lₖ(t)'),
-          h('th', { scope: 'col' }, 'Pₖ'),
-        ),
-      ),
-      tableBody,
-    ),
+    dataTable('Weights at t', ['k', 'tₖ', 'Lₖ(t)', 'Pₖ'], tableBody),
     sumLine,
     h('h2', {}, "Runge's phenomenon"),
     rungeText,

@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, dataTable } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { distance, parametricQuadraticPoint } from '../../math';
 import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
@@ -38,22 +38,7 @@ export function quadraticPanel(api: LessonApi<QuadraticState>): LessonPanel<Quad
       'details',
       {},
       h('summary', {}, 'All digits of the coefficients'),
-      h(
-        'table',
-        { class: 'data-table', 'aria-label': 'Coefficients, all digits' },
-        h(
-          'thead',
-          {},
-          h(
-            'tr',
-            {},
-            h('th', { scope: 'col' }, 'Vector'),
-            h('th', { scope: 'col' }, 'x'),
-            h('th', { scope: 'col' }, 'y'),
-          ),
-        ),
-        digitsBody,
-      ),
+      dataTable('Coefficients, all digits', ['Vector', 'x', 'y'], digitsBody),
     ),
   );
   const rulesSection = h(
@@ -61,20 +46,9 @@ export function quadraticPanel(api: LessonApi<QuadraticState>): LessonPanel<Quad
     {},
     h('h2', {}, 'Choosing μ₁ from the points'),
     rulesBox,
-    h(
-      'table',
-      { class: 'data-table', 'aria-label': 'Rules for μ1' },
-      h(
-        'thead',
-        {},
-        h(
-          'tr',
-          {},
-          h('th', { scope: 'col' }, 'Rule'),
-          h('th', { scope: 'col' }, 'μ₁'),
-          h('th', { scope: 'col' }, h('span', { class: 'visually-hidden' }, 'Action')),
-        ),
-      ),
+    dataTable(
+      'Rules for μ1',
+      ['Rule', 'μ₁', h('span', { class: 'visually-hidden' }, 'Action')],
       h('tbody', {}, rules.rows),
     ),
   );

@@ -1,4 +1,4 @@
-import { fmt, h } from '../../app/dom';
+import { fmt, h, dataTable } from '../../app/dom';
 import type { RoadSolve, SolveProgress } from './solve';
 import { isFixed } from './solve';
 import { markForFit } from '../../render/fit';
@@ -66,22 +66,7 @@ export function systemTable(solve: RoadSolve, progress: SolveProgress): HTMLElem
         h('thead', {}, head),
         body,
       ),
-      h(
-        'table',
-        { class: 'data-table road-gradients', 'aria-label': 'Gradients found' },
-        h(
-          'thead',
-          {},
-          h(
-            'tr',
-            {},
-            h('th', { scope: 'col' }, 'Gradient'),
-            h('th', { scope: 'col' }, 'Dx'),
-            h('th', { scope: 'col' }, 'Dy'),
-          ),
-        ),
-        gradients,
-      ),
+      dataTable('Gradients found', ['Gradient', 'Dx', 'Dy'], gradients, 'road-gradients'),
     ),
   );
 }
