@@ -23,6 +23,7 @@ import {
 import { naturalCubicBezierBatch, naturalCubicDerivativesBatch } from './naturalCubicBatch';
 import { solveTridiagonal } from './tridiagonal';
 import type { Point } from './vec';
+import { recordD3Bezier } from './d3Reference.test-helpers';
 
 const values = (minimum: number, maximum = 30) =>
   fc.array(fc.double({ min: -100, max: 100, noNaN: true }), {
@@ -321,20 +322,7 @@ describe('batch natural spline', () => {
 });
 
 describe('d3-shape curveNatural as an outside reference', () => {
-  function recordNatural(points: readonly Point[]): number[][] {
-    const calls: number[][] = [];
-    const context = {
-      moveTo: () => undefined,
-      lineTo: () => undefined,
-      closePath: () => undefined,
-      bezierCurveTo: (...args: number[]) => void calls.push(args),
-    };
-    const curve = curveNatural(context as unknown as CanvasRenderingContext2D);
-    curve.lineStart();
-    for (const [x, y] of points) curve.point(x, y);
-    curve.lineEnd();
-    return calls;
-  }
+  const recordNatural = (points: readonly Point[]) => recordD3Bezier(curveNatural, points);
 
   const cases: Point[][] = [
     [

@@ -15,6 +15,7 @@ import {
   uniformBSplineToBezier,
 } from './uniformBSpline';
 import type { Point } from './vec';
+import { recordD3Bezier } from './d3Reference.test-helpers';
 
 describe('uniformBSplineMatrix', () => {
   it('is the lecture’s (1/6)[[1,4,1,0],[−3,0,3,0],[3,−6,3,0],[−1,3,−3,1]]', () => {
@@ -217,17 +218,7 @@ describe('batch B-spline helpers', () => {
   it('agrees with d3-shape curveBasis on the inner segments', () => {
     // d3 adds clamped end pieces; between them it draws the same uniform B-spline.
     const points: Point[] = Array.from({ length: 12 }, (_, i) => [i * 10, Math.sin(i) * 30]);
-    const calls: number[][] = [];
-    const context = {
-      moveTo: () => undefined,
-      lineTo: () => undefined,
-      closePath: () => undefined,
-      bezierCurveTo: (...args: number[]) => void calls.push(args),
-    };
-    const curve = curveBasis(context as unknown as CanvasRenderingContext2D);
-    curve.lineStart();
-    for (const [x, y] of points) curve.point(x, y);
-    curve.lineEnd();
+    const calls = recordD3Bezier(curveBasis, points);
     const segments = uniformBSplineSegments(points);
     // d3's first bezierCurveTo is its clamped start piece; then one per segment.
     segments.forEach((segment, i) => {
