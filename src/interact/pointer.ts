@@ -147,23 +147,19 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     cb.zoom(local(e), Math.exp(-e.deltaY * 0.0015));
   };
 
-  canvas.addEventListener('pointerdown', onDown);
-  canvas.addEventListener('pointermove', onMove);
-  canvas.addEventListener('pointerup', onUp);
-  canvas.addEventListener('pointercancel', onUp);
-  canvas.addEventListener('pointerleave', onLeave);
-  canvas.addEventListener('dblclick', onDoubleClick);
-  canvas.addEventListener('contextmenu', onContextMenu);
-  canvas.addEventListener('wheel', onWheel, { passive: false });
+  // One list of listeners; aborting the signal removes them all.
+  const listening = new AbortController();
+  const options = { signal: listening.signal };
+  canvas.addEventListener('pointerdown', onDown, options);
+  canvas.addEventListener('pointermove', onMove, options);
+  canvas.addEventListener('pointerup', onUp, options);
+  canvas.addEventListener('pointercancel', onUp, options);
+  canvas.addEventListener('pointerleave', onLeave, options);
+  canvas.addEventListener('dblclick', onDoubleClick, options);
+  canvas.addEventListener('contextmenu', onContextMenu, options);
+  canvas.addEventListener('wheel', onWheel, { ...options, passive: false });
   return () => {
     cancelLongPress();
-    canvas.removeEventListener('pointerdown', onDown);
-    canvas.removeEventListener('pointermove', onMove);
-    canvas.removeEventListener('pointerup', onUp);
-    canvas.removeEventListener('pointercancel', onUp);
-    canvas.removeEventListener('pointerleave', onLeave);
-    canvas.removeEventListener('dblclick', onDoubleClick);
-    canvas.removeEventListener('contextmenu', onContextMenu);
-    canvas.removeEventListener('wheel', onWheel);
+    listening.abort();
   };
 }
