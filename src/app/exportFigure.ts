@@ -4,9 +4,9 @@ import type { DrawInfo } from './lesson';
 import type { FigureView } from './figureView';
 
 /** Every figure of the lesson laid out as on screen, redrawn as vector SVG. */
-export function figuresToSvg<S>(
-  figures: readonly FigureView<S>[],
-  state: S,
+export function figuresToSvg<S, M>(
+  figures: readonly FigureView<S, M>[],
+  model: M,
   theme: Theme,
   info: DrawInfo,
 ): string {
@@ -17,7 +17,7 @@ export function figuresToSvg<S>(
   const height = Math.max(...boxes.map((b) => b.bottom)) - top;
   const groups = figures.map((figure, i) => {
     const svg = new SvgContext();
-    figure.render(svg, state, theme, info);
+    figure.render(svg, model, theme, info);
     const x = Math.round(boxes[i].left - left);
     const y = Math.round(boxes[i].top - top);
     return `<g transform="translate(${x} ${y})">${svg.elements.join('')}</g>`;
@@ -26,8 +26,8 @@ export function figuresToSvg<S>(
 }
 
 /** The canvases composed into one PNG at device resolution. */
-export function figuresToPng<S>(
-  figures: readonly FigureView<S>[],
+export function figuresToPng<S, M>(
+  figures: readonly FigureView<S, M>[],
   background: string,
 ): Promise<Blob> {
   const boxes = figures.map((f) => f.element.getBoundingClientRect());

@@ -1,16 +1,15 @@
 import { h } from './dom';
+import { lessonKeyHelp } from './keymap';
 
 const KEYS: [string, string][] = [
   ['Tab / Shift+Tab', 'Focus the next / previous movable point or control'],
   ['Arrow keys (on a point)', 'Move the point; Shift: big steps, Alt: fine steps'],
+  ['Ctrl+↑ / Ctrl+↓ (on a point in space)', 'Move the point along z'],
   ['Delete (on a point)', 'Remove the point, where the lesson allows it'],
   ['Double-click / long-press', 'Add a point on empty space, where the lesson allows it'],
-  ['PageDown, →, space', 'Next step of the construction (a presentation clicker works)'],
-  ['PageUp, ←', 'Previous step'],
-  ['Home / End', 'First / last step'],
-  ['K', 'Play / pause the parameter'],
-  ['Ctrl+Z / Ctrl+Shift+Z', 'Undo / redo'],
-  ['0, +, −', 'Fit the view, zoom in, zoom out (or wheel, pinch, drag empty space)'],
+  ['Drag empty space, wheel, pinch', 'Pan and zoom a figure; in space, drag to turn it'],
+  ['Shift+drag (a point in space)', 'Move the point along one axis'],
+  ...lessonKeyHelp(),
   ['P', 'Projector mode: thick strokes, large labels, high contrast'],
   ['D', 'Dark theme'],
   ['F', 'Full screen'],

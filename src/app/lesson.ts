@@ -1,19 +1,18 @@
+/**
+ * What a lesson is, for the shell that hosts it. A lesson turns its state into
+ * a model once (`derive`), and its figures, handles, hit tests and panel all
+ * read that model. See src/lessons/README.md for the way to write one.
+ */
+import type { Point } from '../math';
+import type { CameraSettings } from '../render/orbitCamera';
 import type { Painter } from '../render/painter';
+import type { Bounds } from '../render/projection';
 import type { Theme } from '../render/theme';
-import type { Bounds } from '../render/viewport';
 import type { HistoryOptions } from './history';
-import type { Point2, Schema } from './urlState';
+import type { Schema } from './urlState';
 
-export type { Point2 };
-
-export type LessonGroup = 'interpolation' | 'bezier' | 'splines' | 'surfaces';
-
-export const GROUP_TITLES: Record<LessonGroup, string> = {
-  interpolation: 'Interpolation: a curve through points',
-  bezier: 'Bézier curves',
-  splines: 'Splines',
-  surfaces: 'Surfaces and drawing',
-};
+export type { Point } from '../math';
+export type { LessonGroup } from './meta';
 
 /** A point the user can move: drawn by the shell on top of the figure. */
 export interface Handle {
@@ -21,13 +20,21 @@ export interface Handle {
   id: string;
   /** Lecture name with subscripts (`P_0`, `D_1`): drawn next to it and read to screen readers. */
   label: string;
-  position: Point2;
+  /** Where it is: [x, y] in a plane figure, [x, y, z] in space. */
+  position: Point;
   color?: string;
   shape?: 'circle' | 'square' | 'diamond';
   /** Draw the label beside the handle (default true). */
   showLabel?: boolean;
   /** Draw it at half size, so hundreds of points do not hide what they shape (it is picked as usual). */
   small?: boolean;
+  /**
+   * For handles stacked on one spot: the world direction in which pulling
+   * picks this one (e.g. a repeated knot: [1, 0] for the one on the right).
+   * Without it, a pull right or up picks the last of the stack, left or down
+   * the first.
+   */
+  pull?: Point;
 }
 
 export interface DrawInfo {
@@ -37,33 +44,60 @@ export interface DrawInfo {
   thumbnail: boolean;
 }
 
-/** One canvas of a lesson: a geometric figure (pan and zoom) or a function plot (fixed axes). */
-export interface FigureSpec<S> {
+/**
+ * How a figure is viewed:
+ * - `geometry`: the plane, one scale on both axes, pan and zoom, fit = bounds;
+ * - `plot`: a function plot, always shows its bounds, stretched, no pan;
+ * - `space`: 3D through an orbit camera (drag to orbit, wheel to zoom);
+ * - `drawing`: always shows its bounds at one scale, no pan or zoom.
+ */
+export type FigureKind = 'geometry' | 'plot' | 'space' | 'drawing';
+
+/** One canvas of a lesson. Every function reads the model derived from the state. */
+export interface FigureSpec<S, M = S> {
   id: string;
   /** Accessible name of the figure. */
   title: string;
-  kind: 'geometry' | 'plot';
-  /** What "fit view" shows (and plots always show). */
-  bounds(state: S): Bounds;
-  draw(painter: Painter, state: S, info: DrawInfo): void;
+  kind: FigureKind;
+  /** What "fit view" shows (and plots and drawings always show). */
+  bounds(model: M): Bounds;
+  draw(painter: Painter, model: M, info: DrawInfo): void;
   /** Marks that must stay visible over the handles and their labels (e.g. the arrow just computed). */
-  drawOver?(painter: Painter, state: S, info: DrawInfo): void;
-  handles?(state: S): Handle[];
-  moveHandle?(state: S, id: string, to: Point2): S;
+  drawOver?(painter: Painter, model: M, info: DrawInfo): void;
+  handles?(model: M): Handle[];
+  /** The new state when handle `id` is moved to `to` (constrain it here: to a line, to an order). */
+  moveHandle?(state: S, id: string, to: Point, model: M): S;
   /** Double-click / long-press on empty space; null if not allowed now. */
-  addPoint?(state: S, at: Point2): S | null;
+  addPoint?(state: S, at: Point, model: M): S | null;
   /** Delete key / context action on a handle; null if not allowed now. */
-  removeHandle?(state: S, id: string): S | null;
+  removeHandle?(state: S, id: string, model: M): S | null;
   /**
    * A handle grabbed away from its dot (e.g. anywhere along a plot's cursor
    * line): the id to drag, or null. Asked only when no handle is within reach.
    */
-  pickAt?(state: S, at: Point2, tolerance: number): string | null;
+  pickAt?(model: M, at: Point, tolerance: number): string | null;
   /** Something other than a handle under the pointer (e.g. a basis curve), for linked highlighting. */
-  hoverAt?(state: S, at: Point2, tolerance: number): string | null;
-  /** Relative size in the layout (default 1). */
+  hoverAt?(model: M, at: Point, tolerance: number): string | null;
+  /** Relative size in its row or column (default 1). */
   weight?: number;
+  /** A fixed height in CSS pixels (a thin strip under another figure). */
+  height?: number;
+  /** Width over height, kept as the figure is laid out. */
+  aspect?: number;
+  /** The camera a `space` figure starts with. */
+  camera?: CameraSettings;
 }
+
+/**
+ * Where the figures go: all in a row or a column, or a tree of rows, columns
+ * and grids whose leaves are figure ids. A grid has row and column headings
+ * (e.g. three datasets × C⁰, C¹, C²).
+ */
+export type LayoutNode =
+  | string
+  | { row: LayoutNode[]; weights?: number[] }
+  | { column: LayoutNode[]; weights?: number[] }
+  | { grid: { columns: string[]; rows: string[]; cells: string[][] } };
 
 export type NumberKeys<S> = { [K in keyof S]: S[K] extends number ? K : never }[keyof S] & string;
 
@@ -92,8 +126,10 @@ export interface Preset<S> {
 }
 
 /** What a lesson's side panel can ask of the shell. */
-export interface LessonApi<S> {
+export interface LessonApi<S, M = S> {
   get(): S;
+  /** The model of the current state (derived once, shared with the figures). */
+  model(): M;
   set(next: S, options?: HistoryOptions & { record?: boolean }): void;
   notice(message: string): void;
   /** Highlight an id across figures (same as hovering it), or null. */
@@ -102,35 +138,40 @@ export interface LessonApi<S> {
   theme(): Theme;
 }
 
-export interface LessonPanel<S> {
+export interface LessonPanel<S, M = S> {
   element: HTMLElement;
-  update(state: S, info: DrawInfo): void;
+  /** Called once per new state (never for a pan, a zoom or a hover): change only what changed. */
+  update(model: M, state: S): void;
+  /** The hovered id changed (optional: most panels ignore hover). */
+  hover?(id: string | null): void;
   destroy?(): void;
 }
 
-export interface LessonDefinition<S> {
+export interface LessonDefinition<S, M = S> {
   slug: string;
-  title: string;
-  /** One line for the gallery. */
-  summary: string;
-  group: LessonGroup;
   schema: Schema<S>;
-  figures: FigureSpec<S>[];
-  /** Side by side on a wide screen (default) or stacked. */
-  layout?: 'row' | 'column';
+  /**
+   * The state's model: everything spline-related the figures and the panel
+   * show, computed once per state (the shell memoises it per state object,
+   * and states are never mutated).
+   */
+  derive(state: S): M;
+  figures: FigureSpec<S, M>[];
+  /** Side by side on a wide screen (default), stacked, or a tree of rows, columns and grids. */
+  layout?: 'row' | 'column' | LayoutNode;
   parameter?: ParameterSpec<S>;
   steps?: StepsSpec<S>;
   presets?: Preset<S>[];
   /** Cross-field checks after decoding a link or an edit; returns what it changed, in words. */
   normalize?(state: S): { state: S; issues: string[] };
-  panel(api: LessonApi<S>): LessonPanel<S>;
+  panel(api: LessonApi<S, M>): LessonPanel<S, M>;
 }
 
-/** Keeps the type of S when registering a lesson in a heterogeneous list. */
-export function defineLesson<S>(lesson: LessonDefinition<S>): LessonDefinition<S> {
+/** Keeps the types of S and M when registering a lesson in a heterogeneous list. */
+export function defineLesson<S, M = S>(lesson: LessonDefinition<S, M>): LessonDefinition<S, M> {
   return lesson;
 }
 
-// The registry holds lessons of different state types.
+// The shell hosts lessons of different state and model types.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
-export type AnyLesson = LessonDefinition<any>;
+export type AnyLesson = LessonDefinition<any, any>;

@@ -1,11 +1,23 @@
+/**
+ * Hosts one lesson: its figures, the construction controls, its side panel,
+ * and the frame that keeps them in step. Work is done by kind of change:
+ * a new state redraws the figures and updates the panel; a hover redraws the
+ * figures only; a pan, zoom or resize redraws only its own figure; an idle
+ * page does nothing.
+ */
 import { fitToWidth, refitAll } from '../render/fit';
 import type { Theme } from '../render/theme';
-import { fmt, h } from './dom';
+import { ParameterControl, StepControl } from './controls';
+import { memoize } from './derive';
+import { h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
+import { type KeyTarget, bindingFor } from './keymap';
+import { buildLayout } from './layout';
 import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
-import { LessonStore, type Loaded, storageKey } from './lessonState';
-import { prefersReducedMotion } from './settings';
+import { LessonStore, type Loaded } from './lessonState';
+import type { LessonMeta } from './meta';
+import { UrlSync } from './urlSync';
 
 /** What the app shell offers a lesson page. */
 export interface Shell {
@@ -14,265 +26,208 @@ export interface Shell {
   announce(message: string): void;
 }
 
-const isTyping = (target: EventTarget | null) =>
-  target instanceof HTMLElement &&
-  (target.isContentEditable ||
-    target.tagName === 'INPUT' ||
-    target.tagName === 'TEXTAREA' ||
-    target.tagName === 'SELECT');
+let firstDrawMarked = false;
 
-/**
- * Hosts one lesson: its figures, the construction controls, its side panel,
- * and the plumbing that keeps state, URL, local storage and undo in step.
- */
-export class LessonPage<S> {
+export class LessonPage<S, M> implements KeyTarget {
   readonly element: HTMLElement;
   readonly store: LessonStore<S>;
-  readonly figures: FigureView<S>[];
-  private readonly panel: LessonPanel<S>;
+  readonly figures: FigureView<S, M>[];
+  readonly model: (state: S) => M;
+  private readonly panel: LessonPanel<S, M>;
+  private readonly url: UrlSync;
+  private readonly parameter?: ParameterControl<S>;
+  private readonly steps?: StepControl<S>;
+  private readonly undoButton: HTMLButtonElement;
+  private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
   private frame = 0;
-  private urlTimer = 0;
-  private playing: { last: number; timer: number } | null = null;
+  // What the next frame must do.
+  private drawnState: S | null = null;
+  private hoverChanged = false;
+  private refreshAll = true;
+  private readonly dirtyFigures = new Set<FigureView<S, M>>();
   private readonly unsubscribe: () => void;
   private readonly panelResize: ResizeObserver;
-  private readonly controls: {
-    slider?: HTMLInputElement;
-    number?: HTMLInputElement;
-    back?: HTMLButtonElement;
-    forward?: HTMLButtonElement;
-    status?: HTMLElement;
-    play?: HTMLButtonElement;
-    undo: HTMLButtonElement;
-    redo: HTMLButtonElement;
-  };
+  private panelWidth = -1;
+  private panelWidthChanged = false;
 
   constructor(
+    readonly meta: LessonMeta,
     readonly lesson: AnyLesson,
     loaded: Loaded<S>,
     private readonly shell: Shell,
   ) {
     this.store = new LessonStore<S>(lesson, loaded.state);
-    const host = {
-      get: () => this.store.state,
-      set: (next: S, options: { coalesce?: string; windowMs?: number; record?: boolean }) =>
-        this.store.set(next, options),
-      theme: () => shell.theme(),
-      info: () => this.info(),
-      setHover: (id: string | null) => this.setHover(id),
-      announce: (text: string) => shell.announce(text),
-      requestDraw: () => this.requestDraw(),
-      settle: () => this.writeUrl(),
-    };
-    this.figures = lesson.figures.map((spec) => new FigureView<S>(spec, host));
+    this.model = memoize((state: S) => lesson.derive(state) as M);
+    const set = (next: S, options?: { coalesce?: string; windowMs?: number; record?: boolean }) =>
+      this.store.set(next, options);
+    this.figures = lesson.figures.map(
+      (spec) =>
+        new FigureView<S, M>(spec, {
+          get: () => this.store.state,
+          model: () => this.current(),
+          set,
+          theme: () => shell.theme(),
+          info: () => this.info(),
+          setHover: (id) => this.setHover(id),
+          announce: (text) => shell.announce(text),
+          invalidate: (figure) => this.invalidateFigure(figure),
+          viewChanged: () => this.url.schedule(300),
+          settle: () => this.url.write(),
+        }),
+    );
     this.panel = lesson.panel({
       get: () => this.store.state,
-      set: (next, options) => this.store.set(next, options),
+      model: () => this.current(),
+      set,
       notice: (message) => shell.notice(message),
       setHover: (id) => this.setHover(id),
       theme: () => shell.theme(),
     });
+    this.url = new UrlSync(lesson.slug, () => this.store.query(this.views()));
 
-    const undo = h(
+    const host = { get: () => this.store.state, set };
+    if (lesson.parameter) this.parameter = new ParameterControl<S>(lesson.parameter, host);
+    if (lesson.steps) this.steps = new StepControl<S>(lesson.steps, host);
+    this.undoButton = h(
       'button',
-      { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.store.undo() },
+      { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.undo() },
       'Undo',
     );
-    const redo = h(
+    this.redoButton = h(
       'button',
-      { type: 'button', title: 'Redo (Ctrl+Shift+Z)', onclick: () => this.store.redo() },
+      { type: 'button', title: 'Redo (Ctrl+Shift+Z)', onclick: () => this.redo() },
       'Redo',
     );
-    this.controls = { undo, redo };
-    const toolbar = h(
-      'div',
-      { class: 'lesson-tools', role: 'toolbar', 'aria-label': 'Lesson tools' },
-      undo,
-      redo,
-      h(
-        'button',
-        { type: 'button', title: 'Fit the view to the figure (0)', onclick: () => this.fit() },
-        'Fit view',
-      ),
-      h('button', { type: 'button', onclick: () => void this.copyLink() }, 'Copy link'),
-      h(
-        'button',
-        {
-          type: 'button',
-          title: 'Save the figure as a PNG image',
-          onclick: () => void this.exportPng(),
-        },
-        'PNG',
-      ),
-      h(
-        'button',
-        {
-          type: 'button',
-          title: 'Save the figure as an SVG drawing',
-          onclick: () => this.exportSvg(),
-        },
-        'SVG',
-      ),
-    );
 
-    const figureBox = h(
-      'div',
-      { class: `figures layout-${lesson.layout ?? 'row'}` },
-      ...this.figures.map((f) => f.element),
-    );
     const stage = h(
       'section',
       { class: 'stage', 'aria-label': 'Figure' },
-      figureBox,
-      this.buildControls(),
+      buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
+      h('div', { class: 'controls' }, this.parameter?.element, this.steps?.element),
     );
-    const presets = lesson.presets?.length
-      ? h(
-          'div',
-          { class: 'presets', role: 'group', 'aria-label': 'Presets' },
-          h('span', { class: 'presets-title' }, 'Presets'),
-          ...lesson.presets.map((preset) =>
-            h(
-              'button',
-              {
-                type: 'button',
-                'data-preset': preset.id,
-                onclick: () => {
-                  this.store.set(preset.apply(this.store.state));
-                  this.fit();
-                },
-              },
-              preset.label,
-            ),
-          ),
-        )
-      : null;
     const aside = h(
       'aside',
       { class: 'panel', 'aria-label': 'Explanation' },
-      presets,
+      this.presetButtons(),
       this.panel.element,
     );
     this.element = h(
       'div',
       { class: 'lesson-page', 'data-lesson': lesson.slug },
-      h('div', { class: 'lesson-head' }, h('h1', {}, lesson.title), toolbar),
+      h('div', { class: 'lesson-head' }, h('h1', {}, meta.title), this.toolbar()),
       h('div', { class: 'lesson-body' }, stage, aside),
     );
 
     // Formulas fit the panel's width; its height follows its content, so only
     // a change of width may refit them (else fitting could feed itself).
-    let panelWidth = -1;
     this.panelResize = new ResizeObserver(([entry]) => {
       const width = Math.round(entry.contentRect.width);
-      if (width !== panelWidth) {
-        panelWidth = width;
-        this.refresh();
+      if (width !== this.panelWidth) {
+        this.panelWidth = width;
+        this.panelWidthChanged = true;
+        this.requestFrame();
       }
     });
     this.panelResize.observe(aside);
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
+    this.applyViews(loaded.views);
     this.unsubscribe = this.store.subscribe(() => {
-      this.requestDraw();
-      this.scheduleUrl();
+      this.requestFrame();
+      this.url.schedule();
     });
-    this.requestDraw();
-    this.scheduleUrl();
+    this.requestFrame();
+    this.url.schedule();
   }
 
-  private buildControls(): HTMLElement {
-    const lesson = this.lesson;
-    const parts: HTMLElement[] = [];
-    const parameter = lesson.parameter;
-    if (parameter) {
-      const slider = h('input', {
-        type: 'range',
-        min: parameter.min,
-        max: parameter.max,
-        step: parameter.step,
-        'aria-label': parameter.label,
-        class: 'param-slider',
-      });
-      const number = h('input', {
-        type: 'number',
-        min: parameter.min,
-        max: parameter.max,
-        step: parameter.step,
-        'aria-label': `${parameter.label} value`,
-        class: 'param-number',
-      });
-      const setParameter = (value: number, coalesce: string) => {
-        if (!Number.isFinite(value)) return;
-        const clamped = Math.min(parameter.max, Math.max(parameter.min, value));
-        this.store.set(
-          { ...this.store.state, [parameter.key]: clamped },
-          { coalesce, windowMs: 1500 },
-        );
-      };
-      slider.addEventListener('input', () => setParameter(Number(slider.value), 'slider'));
-      number.addEventListener('change', () => setParameter(Number(number.value), 'number'));
-      this.controls.slider = slider;
-      this.controls.number = number;
-      const play = h(
-        'button',
-        {
-          type: 'button',
-          class: 'play',
-          'aria-label': 'Play',
-          title: 'Play / pause (K)',
-          onclick: () => this.togglePlay(),
-        },
-        '▶',
-      );
-      this.controls.play = play;
-      parts.push(
+  private toolbar(): HTMLElement {
+    const button = (label: string, title: string, action: () => void) =>
+      h('button', { type: 'button', title, onclick: action }, label);
+    return h(
+      'div',
+      { class: 'lesson-tools', role: 'toolbar', 'aria-label': 'Lesson tools' },
+      this.undoButton,
+      this.redoButton,
+      button('Fit view', 'Fit the view to the figure (0)', () => this.fit()),
+      button('Copy link', 'Copy a link to exactly this view', () => void this.copyLink()),
+      button('PNG', 'Save the figure as a PNG image', () => void this.exportPng()),
+      button('SVG', 'Save the figure as an SVG drawing', () => this.exportSvg()),
+    );
+  }
+
+  private presetButtons(): HTMLElement | null {
+    const presets = this.lesson.presets;
+    if (!presets?.length) return null;
+    return h(
+      'div',
+      { class: 'presets', role: 'group', 'aria-label': 'Presets' },
+      h('span', { class: 'presets-title' }, 'Presets'),
+      ...presets.map((preset) =>
         h(
-          'div',
-          { class: 'param' },
-          h('span', { class: 'param-name', 'aria-hidden': 'true' }, parameter.label),
-          slider,
-          number,
-          play,
+          'button',
+          {
+            type: 'button',
+            'data-preset': preset.id,
+            onclick: () => {
+              this.store.set(preset.apply(this.store.state));
+              this.fit();
+            },
+          },
+          preset.label,
         ),
-      );
-    }
-    if (lesson.steps) {
-      const back = h(
-        'button',
-        { type: 'button', onclick: () => this.step(-1), title: 'Step back (PageUp, ←)' },
-        '◀ Step back',
-      );
-      const forward = h(
-        'button',
-        { type: 'button', onclick: () => this.step(1), title: 'Step forward (PageDown, →, space)' },
-        'Step forward ▶',
-      );
-      const status = h('span', { class: 'step-status', 'aria-live': 'polite' });
-      this.controls.back = back;
-      this.controls.forward = forward;
-      this.controls.status = status;
-      parts.push(h('div', { class: 'steps' }, back, status, forward));
-    }
-    return h('div', { class: 'controls' }, ...parts);
+      ),
+    );
+  }
+
+  /** The model of the current state. */
+  current(): M {
+    return this.model(this.store.state);
   }
 
   info(): DrawInfo {
     return { hover: this.hover, thumbnail: false };
   }
 
-  /** Redraws after a change of display settings (projector mode changes every size). */
+  /** The views the user moved, by figure id, for the link. */
+  private views(): Record<string, string> {
+    const views: Record<string, string> = {};
+    for (const figure of this.figures) {
+      const text = figure.viewText();
+      if (text !== null) views[figure.spec.id] = text;
+    }
+    return views;
+  }
+
+  private applyViews(views: Readonly<Record<string, string>>): void {
+    for (const figure of this.figures) {
+      const text = views[figure.spec.id] ?? null;
+      if (!figure.applyView(text))
+        this.shell.notice(
+          `Ignored from the link: the view of “${figure.spec.title}” could not be read; it was fitted to the figure.`,
+        );
+    }
+  }
+
+  /** Redraws everything after a change of display settings (projector mode changes every size). */
   refresh(): void {
-    refitAll(this.element);
-    this.requestDraw();
+    refitAll(this.panel.element);
+    this.refreshAll = true;
+    this.requestFrame();
   }
 
   setHover(id: string | null): void {
     if (id === this.hover) return;
     this.hover = id;
-    this.requestDraw();
+    this.hoverChanged = true;
+    this.requestFrame();
   }
 
-  requestDraw(): void {
+  private invalidateFigure(figure: FigureView<S, M>): void {
+    this.dirtyFigures.add(figure);
+    this.requestFrame();
+  }
+
+  private requestFrame(): void {
     if (this.frame) return;
     this.frame = requestAnimationFrame(() => {
       this.frame = 0;
@@ -280,104 +235,77 @@ export class LessonPage<S> {
     });
   }
 
-  /** Draws everything for the current state at once (also used before export). */
+  /** Does what the changes since the last frame need (also used before export). */
   drawNow(): void {
     const state = this.store.state;
-    for (const figure of this.figures) figure.draw(state);
-    this.panel.update(state, this.info());
-    fitToWidth(this.panel.element);
-    this.syncControls(state);
-  }
-
-  private syncControls(state: S): void {
-    const c = this.controls;
-    c.undo.disabled = !this.store.canUndo;
-    c.redo.disabled = !this.store.canRedo;
-    const parameter = this.lesson.parameter;
-    if (parameter && c.slider && c.number) {
-      const value = (state as Record<string, number>)[parameter.key];
-      if (Number(c.slider.value) !== value) c.slider.value = String(value);
-      c.slider.setAttribute('aria-valuetext', `${parameter.label} = ${fmt(value, 3)}`);
-      if (document.activeElement !== c.number) c.number.value = fmt(value, 3);
+    const model = this.model(state);
+    const stateChanged = state !== this.drawnState || this.refreshAll;
+    const all = stateChanged || this.hoverChanged;
+    for (const figure of this.figures) {
+      if (all || this.dirtyFigures.has(figure)) figure.draw(model);
     }
-    const steps = this.lesson.steps;
-    if (steps && c.back && c.forward && c.status) {
-      const k = (state as Record<string, number>)[steps.key];
-      const count = steps.count(state);
-      // A lesson whose current figure has nothing to step hides the buttons.
-      if (c.back.parentElement) c.back.parentElement.style.display = count === 0 ? 'none' : '';
-      c.back.disabled = k <= 0;
-      c.forward.disabled = k >= count;
-      c.status.textContent = steps.describe(state, k);
+    this.dirtyFigures.clear();
+    if (stateChanged) {
+      this.panel.update(model, state);
+      this.parameter?.update(state);
+      this.steps?.update(state);
+      this.undoButton.disabled = !this.store.canUndo;
+      this.redoButton.disabled = !this.store.canRedo;
     }
-  }
-
-  private scheduleUrl(): void {
-    window.clearTimeout(this.urlTimer);
-    this.urlTimer = window.setTimeout(() => this.writeUrl(), 100);
+    if (this.hoverChanged) this.panel.hover?.(this.hover);
+    if (stateChanged || this.panelWidthChanged) fitToWidth(this.panel.element);
+    this.drawnState = state;
+    this.hoverChanged = false;
+    this.refreshAll = false;
+    this.panelWidthChanged = false;
+    if (!firstDrawMarked) {
+      firstDrawMarked = true;
+      performance.mark('spline-lab:first-draw');
+    }
   }
 
   /** The shareable link of the current state. */
   link(): string {
-    return `#/${this.lesson.slug}?${this.store.query}`;
+    return this.url.link();
   }
 
   writeUrl(): void {
-    window.clearTimeout(this.urlTimer);
-    const hash = this.link();
-    if (location.hash !== hash) history.replaceState(history.state, '', hash);
-    this.remember();
-  }
-
-  /** Keeps the state on this device, for the next visit without a link. */
-  private remember(): void {
-    try {
-      localStorage.setItem(storageKey(this.lesson.slug), this.store.query);
-    } catch {
-      // Storage unavailable: the link still carries the state.
-    }
+    this.url.write();
   }
 
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
-    if (this.store.query === new LessonStore<S>(this.lesson, loaded.state).query) {
+    this.applyViews(loaded.views);
+    const same =
+      this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();
+    if (same) {
       // Nothing changed, but the address bar must show the state in force.
-      if (loaded.issues.length) this.writeUrl();
+      this.url.write();
       return;
     }
     this.store.set(loaded.state);
   }
 
+  undo(): void {
+    this.store.undo();
+  }
+
+  redo(): void {
+    this.store.redo();
+  }
+
   step(delta: number): void {
-    const steps = this.lesson.steps;
-    const state = this.store.state as Record<string, number>;
-    if (steps) {
-      const count = steps.count(this.store.state);
-      const k = Math.min(count, Math.max(0, state[steps.key] + delta));
-      if (k !== state[steps.key])
-        this.store.set({ ...this.store.state, [steps.key]: k }, { coalesce: 'step', windowMs: 0 });
-      return;
-    }
-    const parameter = this.lesson.parameter;
-    if (parameter) {
-      const span = parameter.max - parameter.min;
-      const v = Math.min(
-        parameter.max,
-        Math.max(parameter.min, state[parameter.key] + (delta * span) / 20),
-      );
-      this.store.set(
-        { ...this.store.state, [parameter.key]: Number(v.toPrecision(12)) },
-        { coalesce: 'step-parameter', windowMs: 1500 },
-      );
-    }
+    if (this.steps) this.steps.step(delta);
+    else this.parameter?.nudge(delta);
   }
 
   stepTo(end: 'first' | 'last'): void {
-    const steps = this.lesson.steps;
-    if (!steps) return;
-    const k = end === 'first' ? 0 : steps.count(this.store.state);
-    this.store.set({ ...this.store.state, [steps.key]: k });
+    this.steps?.stepTo(end);
+  }
+
+  togglePlay(): void {
+    this.parameter?.toggle();
   }
 
   fit(): void {
@@ -385,62 +313,15 @@ export class LessonPage<S> {
   }
 
   zoom(factor: number): void {
-    this.figures.find((f) => f.spec.kind === 'geometry')?.zoom(null, factor);
+    this.figures.find((f) => f.movable)?.zoom(null, factor);
   }
 
-  togglePlay(): void {
-    if (this.playing) this.stopPlay();
-    else this.startPlay();
-  }
-
-  private startPlay(): void {
-    const parameter = this.lesson.parameter;
-    if (!parameter || !this.controls.play) return;
-    const span = parameter.max - parameter.min;
-    const reduced = prefersReducedMotion();
-    this.controls.play.textContent = '❚❚';
-    this.controls.play.setAttribute('aria-label', 'Pause');
-    const advance = (amount: number) => {
-      const state = this.store.state as Record<string, number>;
-      let v = state[parameter.key] + amount;
-      if (v > parameter.max + 1e-12) v = parameter.min;
-      this.store.set(
-        {
-          ...this.store.state,
-          [parameter.key]: Math.min(parameter.max, Number(v.toPrecision(12))),
-        },
-        { record: false },
-      );
-    };
-    if (reduced) {
-      // No continuous motion: one calm jump a second.
-      this.playing = { last: 0, timer: window.setInterval(() => advance(span / 10), 1000) };
-      return;
-    }
-    this.playing = { last: performance.now(), timer: 0 };
-    const tick = (now: number) => {
-      if (!this.playing) return;
-      const dt = Math.min(0.1, (now - this.playing.last) / 1000);
-      this.playing.last = now;
-      advance((dt * span) / 5);
-      this.playing.timer = requestAnimationFrame(tick);
-    };
-    this.playing.timer = requestAnimationFrame(tick);
-  }
-
-  private stopPlay(): void {
-    if (!this.playing) return;
-    cancelAnimationFrame(this.playing.timer);
-    window.clearInterval(this.playing.timer);
-    this.playing = null;
-    if (this.controls.play) {
-      this.controls.play.textContent = '▶';
-      this.controls.play.setAttribute('aria-label', 'Play');
-    }
+  orbit(yaw: number, pitch: number): void {
+    this.figures.find((f) => f.spec.kind === 'space')?.orbit(yaw, pitch);
   }
 
   async copyLink(): Promise<void> {
-    this.writeUrl();
+    this.url.write();
     const url = location.href;
     try {
       await navigator.clipboard.writeText(url);
@@ -451,83 +332,29 @@ export class LessonPage<S> {
   }
 
   async exportPng(): Promise<void> {
+    this.refreshAll = true;
     this.drawNow();
     const blob = await figuresToPng(this.figures, this.shell.theme().background);
     download(blob, `spline-lab-${this.lesson.slug}.png`);
   }
 
   exportSvg(): void {
-    const svg = figuresToSvg(this.figures, this.store.state, this.shell.theme(), this.info());
+    const svg = figuresToSvg(this.figures, this.current(), this.shell.theme(), this.info());
     download(new Blob([svg], { type: 'image/svg+xml' }), `spline-lab-${this.lesson.slug}.svg`);
   }
 
-  /** Page-level keys; returns true when the key was used. */
+  /** Page-level keys (see keymap.ts); returns true when the key was used. */
   handleKey(e: KeyboardEvent): boolean {
-    const mod = e.ctrlKey || e.metaKey;
-    if (mod && (e.key === 'z' || e.key === 'Z')) {
-      if (e.shiftKey) this.store.redo();
-      else this.store.undo();
-      return true;
-    }
-    if (mod && (e.key === 'y' || e.key === 'Y')) {
-      this.store.redo();
-      return true;
-    }
-    // A presentation clicker sends PageDown/PageUp: they step the construction
-    // even when the t slider has focus.
-    const clicker = e.key === 'PageDown' || e.key === 'PageUp';
-    const onSlider = e.target instanceof HTMLInputElement && e.target.type === 'range';
-    if (mod || e.altKey || (isTyping(e.target) && !(clicker && onSlider))) return false;
-    const onControl =
-      e.target instanceof HTMLElement &&
-      (e.target.tagName === 'BUTTON' || e.target.classList.contains('handle-proxy'));
-    switch (e.key) {
-      case 'PageDown':
-      case 'ArrowRight':
-      case 'ArrowDown':
-        if (onControl && e.key !== 'PageDown') return false;
-        this.step(1);
-        return true;
-      case ' ':
-        if (onControl) return false;
-        this.step(1);
-        return true;
-      case 'PageUp':
-      case 'ArrowLeft':
-      case 'ArrowUp':
-        if (onControl && e.key !== 'PageUp') return false;
-        this.step(-1);
-        return true;
-      case 'Home':
-        this.stepTo('first');
-        return true;
-      case 'End':
-        this.stepTo('last');
-        return true;
-      case 'k':
-      case 'K':
-        this.togglePlay();
-        return true;
-      case '0':
-        this.fit();
-        return true;
-      case '+':
-      case '=':
-        this.zoom(1.25);
-        return true;
-      case '-':
-        this.zoom(0.8);
-        return true;
-      default:
-        return false;
-    }
+    const binding = bindingFor(e);
+    if (!binding) return false;
+    binding.run(this);
+    return true;
   }
 
   destroy(): void {
-    this.stopPlay();
+    this.parameter?.stop();
     // By now the address bar may already show another page: only remember.
-    window.clearTimeout(this.urlTimer);
-    this.remember();
+    this.url.close();
     this.unsubscribe();
     this.panelResize.disconnect();
     cancelAnimationFrame(this.frame);

@@ -8,10 +8,12 @@ export const storageKey = (slug: string) => `spline-lab:lesson:${slug}`;
 export interface Loaded<S> {
   state: S;
   issues: string[];
+  /** Views of figures the link or the stored state carries (`view.<figure>`). */
+  views: Record<string, string>;
 }
 
 /** Applies the lesson's own cross-field rules and the shell's step clamp. */
-export function normalizeState<S>(lesson: AnyLesson, state: S): Loaded<S> {
+export function normalizeState<S>(lesson: AnyLesson, state: S): { state: S; issues: string[] } {
   const issues: string[] = [];
   let next = state;
   if (lesson.normalize) {
@@ -37,19 +39,28 @@ export function normalizeState<S>(lesson: AnyLesson, state: S): Loaded<S> {
  * is dropped quietly.
  */
 export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage | null): Loaded<S> {
+  const figures = lesson.figures.map((f) => f.id);
   if (query !== '') {
-    const decoded = decodeState<S>(lesson.schema, query);
+    const decoded = decodeState<S>(lesson.schema, query, figures);
     const normalized = normalizeState(lesson, decoded.state);
-    return { state: normalized.state as S, issues: [...decoded.issues, ...normalized.issues] };
+    return {
+      state: normalized.state as S,
+      issues: [...decoded.issues, ...normalized.issues],
+      views: decoded.views,
+    };
   }
   const stored = readStorage(storage, storageKey(lesson.slug));
   if (stored) {
-    const decoded = decodeState<S>(lesson.schema, stored);
+    const decoded = decodeState<S>(lesson.schema, stored, figures);
     if (decoded.issues.length === 0)
-      return { state: normalizeState(lesson, decoded.state).state as S, issues: [] };
+      return {
+        state: normalizeState(lesson, decoded.state).state as S,
+        issues: [],
+        views: decoded.views,
+      };
   }
   // Defaults go through the same rules, so a lesson may default a step to "the end".
-  return { state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state, issues: [] };
+  return { state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state, issues: [], views: {} };
 }
 
 function readStorage(storage: Storage | null, key: string): string | null {
@@ -83,9 +94,9 @@ export class LessonStore<S> {
     return this.history.canRedo;
   }
 
-  /** The state as it appears in the URL after `#/slug?`. */
-  get query(): string {
-    return encodeState(this.lesson.schema, this.state);
+  /** The state as it appears in the URL after `#/slug?`, with the figures' views. */
+  query(views: Readonly<Record<string, string>> = {}): string {
+    return encodeState(this.lesson.schema, this.state, views);
   }
 
   subscribe(listener: (state: S) => void): () => void {

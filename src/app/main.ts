@@ -1,7 +1,7 @@
 import '../styles.css';
 import { h, setChildren } from './dom';
 import { buildGallery } from './gallery';
-import { LessonPage } from './lessonPage';
+import type { LessonPage } from './lessonPage';
 import { loadState } from './lessonState';
 import { findLesson, lessons } from './registry';
 import { parseHash } from './router';
@@ -10,7 +10,9 @@ import { helpDialog, openHelp } from './help';
 
 const settings = loadSettings();
 let theme = applySettings(settings);
-let page: LessonPage<unknown> | null = null;
+let page: LessonPage<unknown, unknown> | null = null;
+/** The latest navigation: a lesson that finishes loading after another was asked for is dropped. */
+let routeToken = 0;
 
 const main = h('main', { id: 'main', tabindex: '-1' });
 const notices = h('div', { class: 'notices', role: 'status', 'aria-live': 'polite' });
@@ -101,7 +103,7 @@ function rerender(): void {
   projectorButton.setAttribute('aria-pressed', String(settings.projector));
   darkButton.setAttribute('aria-pressed', String(settings.dark));
   if (page) page.refresh();
-  else route();
+  else if (parseHash(location.hash).slug === null) showGallery();
 }
 
 function toggleProjector(): void {
@@ -122,7 +124,13 @@ function toggleFullscreen(): void {
       .catch(() => notice('This browser did not allow full screen here.'));
 }
 
-function route(): void {
+function showGallery(): void {
+  document.title = 'Spline Lab';
+  setChildren(main, buildGallery(lessons, settings.dark));
+}
+
+async function route(): Promise<void> {
+  const token = ++routeToken;
   const { slug, query } = parseHash(location.hash);
   if (slug !== null && page && page.lesson.slug === slug) {
     // Same lesson, new state (typed into the address bar, or back/forward).
@@ -132,31 +140,43 @@ function route(): void {
   page?.destroy();
   page = null;
   notices.replaceChildren();
-  const lesson = slug === null ? undefined : findLesson(slug);
-  if (slug !== null && !lesson) {
+  const meta = slug === null ? undefined : findLesson(slug);
+  if (slug !== null && !meta) {
     notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
   }
-  if (!lesson) {
-    document.title = 'Spline Lab';
-    setChildren(main, buildGallery(lessons, theme));
+  if (!meta) {
+    showGallery();
     return;
   }
+  document.title = `${meta.title} · Spline Lab`;
+  setChildren(main, h('p', { class: 'loading', role: 'status' }, `Opening ${meta.title}…`));
+  // The lesson's own code and the page shell are chunks of their own, loaded now.
+  let loaded: [Awaited<ReturnType<typeof meta.load>>, typeof import('./lessonPage')];
+  try {
+    loaded = await Promise.all([meta.load(), import('./lessonPage')]);
+  } catch {
+    if (token !== routeToken) return;
+    notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
+    showGallery();
+    return;
+  }
+  if (token !== routeToken) return;
+  const [lesson, { LessonPage }] = loaded;
   let storage: Storage | null = null;
   try {
     storage = localStorage;
   } catch {
     storage = null;
   }
-  page = new LessonPage(lesson, loadState(lesson, query, storage), {
+  page = new LessonPage(meta, lesson, loadState(lesson, query, storage), {
     theme: () => theme,
     notice,
     announce,
   });
-  document.title = `${lesson.title} · Spline Lab`;
   setChildren(main, page.element);
 }
 
-window.addEventListener('hashchange', route);
+window.addEventListener('hashchange', () => void route());
 window.addEventListener('keydown', (e) => {
   if (help.open) return;
   if (page?.handleKey(e)) {
@@ -180,7 +200,7 @@ window.addEventListener('keydown', (e) => {
   e.preventDefault();
 });
 window.addEventListener('pagehide', () => page?.writeUrl());
-route();
+void route();
 
 if (import.meta.env.PROD && 'serviceWorker' in navigator) {
   // Offline once loaded: the worker keeps a copy of every file the app fetched.

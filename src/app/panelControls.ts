@@ -1,6 +1,9 @@
 import { h } from './dom';
 import type { LessonApi } from './lesson';
 
+/** What a control needs of the lesson: the state, and a way to change it. */
+type StateApi<S> = Pick<LessonApi<S, unknown>, 'get' | 'set'>;
+
 /**
  * Controls that side panels share: each is bound to the lesson state through
  * the api, and returns its element with an `update` that shows the state.
@@ -21,7 +24,7 @@ export interface PointButtonsOptions<S> {
 }
 
 /** "Add a point" / "Remove the last point": the keyboard's way to change how many points there are. */
-export function pointButtons<S>(api: LessonApi<S>, options: PointButtonsOptions<S>): Control<S> {
+export function pointButtons<S>(api: StateApi<S>, options: PointButtonsOptions<S>): Control<S> {
   const add = h('button', { type: 'button' }, options.addLabel);
   const remove = h('button', { type: 'button' }, options.removeLabel);
   add.addEventListener('click', () => {
@@ -49,7 +52,7 @@ export interface CheckboxOptions<S> {
 }
 
 /** A labelled checkbox bound to a yes/no of the state. */
-export function checkbox<S>(api: LessonApi<S>, options: CheckboxOptions<S>): Control<S> {
+export function checkbox<S>(api: StateApi<S>, options: CheckboxOptions<S>): Control<S> {
   const input = h('input', { type: 'checkbox', id: options.id });
   input.addEventListener('change', () => api.set(options.set(api.get(), input.checked)));
   return {
@@ -70,7 +73,7 @@ export interface RadioOptions<S, V extends string> {
 
 /** Radio buttons for one choice of the state, each on a labelled line. */
 export function radioGroup<S, V extends string>(
-  api: LessonApi<S>,
+  api: StateApi<S>,
   options: RadioOptions<S, V>,
 ): { labels: HTMLElement[]; update(state: S): void } {
   const inputs = options.choices.map(({ value }) => {

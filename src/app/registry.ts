@@ -1,23 +1,18 @@
-import type { AnyLesson } from './lesson';
-import { deCasteljau } from '../lessons/de-casteljau/lesson';
-import { blending } from '../lessons/blending/lesson';
-import { bezierProperties } from '../lessons/bezier-properties/lesson';
-import { quadratic } from '../lessons/quadratic/lesson';
-import { lagrange } from '../lessons/lagrange/lesson';
-import { hermite } from '../lessons/hermite/lesson';
-import { road } from '../lessons/road/lesson';
+import { GROUP_ORDER, type LessonMeta } from './meta';
 
-/** Every lesson, in course order. Adding a lesson: its folder, and one line here. */
-export const lessons: AnyLesson[] = [
-  quadratic,
-  lagrange,
-  hermite,
-  deCasteljau,
-  blending,
-  bezierProperties,
-  road,
-];
+// Every lesson folder's meta.ts, found at build time: a new lesson is its
+// folder, nothing more. The metadata is tiny; each lesson's code is its own
+// chunk, loaded when the lesson is opened.
+const found = import.meta.glob<LessonMeta>('../lessons/*/meta.ts', {
+  eager: true,
+  import: 'default',
+});
 
-export function findLesson(slug: string): AnyLesson | undefined {
+/** Every lesson, in course order: by group, then by order within it. */
+export const lessons: LessonMeta[] = Object.values(found).sort(
+  (a, b) => GROUP_ORDER.indexOf(a.group) - GROUP_ORDER.indexOf(b.group) || a.order - b.order,
+);
+
+export function findLesson(slug: string): LessonMeta | undefined {
   return lessons.find((l) => l.slug === slug);
 }

@@ -1,14 +1,9 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import {
-  MAX_QUERY_LENGTH,
-  type Point2,
-  type Schema,
-  decodeState,
-  defaultsOf,
-  encodeState,
-  formatNumber,
-} from './urlState';
+import { bool, choice, formatNumber, int, number, numbers, points } from './fields';
+import { MAX_QUERY_LENGTH, type Schema, decodeState, defaultsOf, encodeState } from './urlState';
+
+type Point2 = readonly number[];
 
 interface Demo {
   p: Point2[];
@@ -20,8 +15,7 @@ interface Demo {
 }
 
 const schema: Schema<Demo> = {
-  p: {
-    kind: 'points',
+  p: points({
     default: [
       [0, 0],
       [1, 2],
@@ -30,12 +24,12 @@ const schema: Schema<Demo> = {
     ],
     min: 2,
     max: 12,
-  },
-  t: { kind: 'number', default: 0.5, min: 0, max: 1 },
-  step: { kind: 'int', default: 0, min: 0, max: 11 },
-  split: { kind: 'bool', default: false },
-  mode: { kind: 'enum', default: 'natural', values: ['natural', 'closed'] },
-  w: { kind: 'numbers', default: [1, 1], min: 1, max: 5, low: 0.01, high: 100 },
+  }),
+  t: number({ default: 0.5, min: 0, max: 1 }),
+  step: int({ default: 0, min: 0, max: 11 }),
+  split: bool({ default: false }),
+  mode: choice({ default: 'natural', values: ['natural', 'closed'] as const }),
+  w: numbers({ default: [1, 1], min: 1, max: 5, low: 0.01, high: 100 }),
 };
 
 const coordinate = fc.double({ min: -1e6, max: 1e6, noNaN: true, noDefaultInfinity: true });

@@ -1,6 +1,9 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { type Point2, distanceToSegment, extendPolygon, insertPoint } from './editPoints';
+import type { Point } from '../math';
+import { distanceToSegment, extendPolygon, insertPoint } from './editPoints';
+
+type Point2 = Point;
 
 const square: Point2[] = [
   [0, 0],

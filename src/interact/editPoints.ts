@@ -3,13 +3,13 @@
  * the polygon edge it is nearest (so the curve changes least), or continues
  * the polygon past its last edge. Pure geometry, no DOM.
  */
-export type Point2 = readonly [number, number];
+import type { Point } from '../math';
 
 /**
  * Inserts `at` into the polygon edge it is closest to; where the closest spot
  * of the polygon is its first or its last point, before or after it instead.
  */
-export function insertPoint(points: readonly Point2[], at: Point2): Point2[] {
+export function insertPoint<P extends Point>(points: readonly P[], at: P): P[] {
   if (points.length < 2) return [...points, at];
   let best = 1;
   let bestDistance = Infinity;
@@ -33,7 +33,7 @@ export function insertPoint(points: readonly Point2[], at: Point2): Point2[] {
  * continuing it at 70 % of its length and turning a little left, so repeated
  * additions curl instead of running off in a straight line.
  */
-export function extendPolygon(points: readonly Point2[]): Point2 {
+export function extendPolygon(points: readonly Point[]): [number, number] {
   const b = points[points.length - 1] ?? [0, 0];
   const a = points[points.length - 2] ?? [b[0] - 1, b[1]];
   let dx = b[0] - a[0];
@@ -51,7 +51,7 @@ export function projectOnSegment(
   p: readonly number[],
   a: readonly number[],
   b: readonly number[],
-): { point: Point2; s: number } {
+): { point: [number, number]; s: number } {
   const dx = b[0] - a[0];
   const dy = b[1] - a[1];
   const length2 = dx * dx + dy * dy;

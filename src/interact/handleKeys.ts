@@ -11,10 +11,15 @@ export interface KeyHandle {
   /** Where it is drawn, in CSS pixels within the canvas. */
   x: number;
   y: number;
+  /** A point in space: Ctrl (or ⌘) with ↑/↓ moves it along z. */
+  depth?: boolean;
 }
 
+export type KeySize = 'normal' | 'big' | 'fine';
+
 export interface HandleKeyCallbacks {
-  move(id: string, dx: number, dy: number, size: 'normal' | 'big' | 'fine'): void;
+  /** Move by whole steps along each world axis ([dx, dy] or [dx, dy, dz]). */
+  move(id: string, delta: readonly number[], size: KeySize): void;
   remove?(id: string): void;
   focus(id: string | null): void;
 }
@@ -37,6 +42,8 @@ export function arrowDirection(key: string): [number, number] | null {
 
 export class HandleKeys {
   private readonly elements = new Map<string, HTMLElement>();
+  /** What each element shows now, so unchanged handles cost no DOM write. */
+  private readonly shown = new Map<string, { name: string; x: number; y: number; depth: boolean }>();
 
   constructor(
     private readonly layer: HTMLElement,
@@ -53,13 +60,23 @@ export class HandleKeys {
         this.elements.set(handle.id, el);
         this.layer.appendChild(el);
       }
-      if (el.getAttribute('aria-label') !== handle.name) el.setAttribute('aria-label', handle.name);
-      el.style.transform = `translate(${handle.x}px, ${handle.y}px)`;
+      const before = this.shown.get(handle.id);
+      const depth = handle.depth === true;
+      if (before?.name !== handle.name) el.setAttribute('aria-label', handle.name);
+      if (before?.x !== handle.x || before?.y !== handle.y)
+        el.style.transform = `translate(${handle.x}px, ${handle.y}px)`;
+      if (before?.depth !== depth)
+        el.setAttribute(
+          'aria-description',
+          depth ? 'Arrow keys move it in x and y, Ctrl with up and down in z' : 'Arrow keys move it',
+        );
+      this.shown.set(handle.id, { name: handle.name, x: handle.x, y: handle.y, depth });
     }
     for (const [id, el] of this.elements) {
       if (!seen.has(id)) {
         el.remove();
         this.elements.delete(id);
+        this.shown.delete(id);
       }
     }
     // Keep the tab order the lesson's order.
@@ -92,7 +109,9 @@ export class HandleKeys {
       if (dir) {
         e.preventDefault();
         e.stopPropagation();
-        this.cb.move(id, dir[0], dir[1], e.shiftKey ? 'big' : e.altKey ? 'fine' : 'normal');
+        const size = e.shiftKey ? 'big' : e.altKey ? 'fine' : 'normal';
+        const alongZ = (e.ctrlKey || e.metaKey) && this.shown.get(id)?.depth && dir[1] !== 0;
+        this.cb.move(id, alongZ ? [0, 0, dir[1]] : dir, size);
       } else if ((e.key === 'Delete' || e.key === 'Backspace') && this.cb.remove) {
         e.preventDefault();
         e.stopPropagation();

@@ -11,10 +11,11 @@ export interface PointerCallbacks {
   /** The handle under `at`, if any, within a tolerance suited to the pointer type. */
   pick(at: Screen, pointerType: string): string | null;
   dragStart(id: string, at: Screen): void;
-  dragMove(id: string, at: Screen): void;
+  /** `shift`: the Shift key is held (a figure in space then moves along one axis). */
+  dragMove(id: string, at: Screen, shift: boolean): void;
   dragEnd(id: string): void;
   hover(at: Screen | null): void;
-  /** Pan by a screen offset; absent for fixed figures. */
+  /** Drag of empty space by a screen offset (pan, or orbit in space); absent for fixed figures. */
   pan?(dx: number, dy: number): void;
   zoom?(at: Screen, factor: number): void;
   add?(at: Screen): void;
@@ -98,7 +99,7 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     if (longPress && Math.hypot(at[0] - longPress.at[0], at[1] - longPress.at[1]) > MOVE_SLOP)
       cancelLongPress();
     if (dragging && dragging.pointer === e.pointerId) {
-      cb.dragMove(dragging.id, at);
+      cb.dragMove(dragging.id, at, e.shiftKey);
       return;
     }
     if (pointers.size === 2 && pinchStart && cb.zoom && cb.pan) {

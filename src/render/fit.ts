@@ -3,7 +3,9 @@
  * table is shrunk (down to half size, then it scrolls) so it is seen whole in
  * the side panel, and on a projector, where everything is larger, instead of
  * being cut at the panel's edge. Elements are marked when their content
- * changes, and only marked ones are measured.
+ * changes, and only marked ones are measured: all are read, then all are
+ * written, so the browser lays the page out once per pass, not once per
+ * element.
  */
 
 /** Smallest size content is shrunk to before it scrolls instead. */
@@ -17,22 +19,27 @@ export function markForFit(el: HTMLElement): HTMLElement {
 
 /** Shrinks each marked element under `root` that is wider than its box. */
 export function fitToWidth(root: ParentNode): void {
-  for (const el of root.querySelectorAll<HTMLElement>('[data-fit="pending"]')) {
-    el.style.fontSize = '';
-    const box = el.clientWidth;
-    let scale = 1;
-    // Not everything inside scales with the font (borders, a fixed padding), so
-    // a second look corrects what the first ratio left over.
-    for (
-      let pass = 0;
-      pass < 2 && box > 0 && el.scrollWidth > box + 1 && scale > SMALLEST;
-      pass++
-    ) {
-      scale = Math.max(SMALLEST, scale * (box / el.scrollWidth) * 0.98);
-      el.style.fontSize = `${scale.toFixed(3)}em`;
-    }
-    // Not laid out yet (hidden, or not in the page): try again next time.
-    el.dataset.fit = box > 0 ? 'done' : 'pending';
+  const pending = [...root.querySelectorAll<HTMLElement>('[data-fit="pending"]')];
+  if (!pending.length) return;
+  const scales = pending.map(() => 1);
+  // Start from the natural size (one write pass).
+  for (const el of pending) el.style.fontSize = '';
+  // Not everything inside scales with the font (borders, a fixed padding), so
+  // a second look corrects what the first ratio left over.
+  for (let pass = 0; pass < 2; pass++) {
+    const sizes = pending.map((el) => [el.clientWidth, el.scrollWidth]);
+    let wrote = false;
+    pending.forEach((el, i) => {
+      const [box, scroll] = sizes[i];
+      if (box > 0 && scroll > box + 1 && scales[i] > SMALLEST) {
+        scales[i] = Math.max(SMALLEST, scales[i] * (box / scroll) * 0.98);
+        el.style.fontSize = `${scales[i].toFixed(3)}em`;
+        wrote = true;
+      }
+      // Not laid out yet (hidden, or not in the page): try again next time.
+      if (pass === 0) el.dataset.fit = box > 0 ? 'done' : 'pending';
+    });
+    if (!wrote) break;
   }
 }
 

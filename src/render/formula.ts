@@ -2,23 +2,88 @@ import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
 
+const OPTIONS = {
+  throwOnError: false,
+  output: 'htmlAndMathml' as const,
+  // Only our own number slots (\htmlData) are trusted; no other HTML extension.
+  trust: (context: { command: string }) => context.command === '\\htmlData',
+  strict: false as const,
+};
+
 /**
- * Typesets TeX into `el` with the bundled KaTeX (no CDN). The TeX is built by
- * the lessons from numbers they computed; KaTeX builds DOM nodes, not markup.
+ * Typesets TeX into `el` with the bundled KaTeX (no CDN), unless `el` already
+ * shows exactly this TeX. The TeX is built by the lessons from numbers they
+ * computed; KaTeX builds DOM nodes, not markup.
  */
 export function renderFormula(el: HTMLElement, tex: string, display = false): void {
   if (el.dataset.tex === tex) return;
   el.dataset.tex = tex;
-  katex.render(tex, el, { displayMode: display, throwOnError: false, output: 'htmlAndMathml' });
+  katex.render(tex, el, { ...OPTIONS, displayMode: display });
   if (display) markForFit(el);
 }
 
-/** A new element holding a typeset formula. */
+/** A new element holding a typeset formula (for formulas that never change). */
 export function formula(tex: string, display = false): HTMLElement {
   const el = document.createElement(display ? 'div' : 'span');
   el.className = display ? 'formula display' : 'formula';
   renderFormula(el, tex, display);
   return el;
+}
+
+/** Marks where a live number goes in a LiveFormula's TeX. */
+export const SLOT = '\\val';
+
+/**
+ * A formula whose shape is typeset once and whose numbers change as text: the
+ * TeX has `\val` wherever a number goes, and `set` fills them in. Only a new
+ * shape (another number of terms, say) typesets again; a drag that changes
+ * the numbers writes a few text nodes.
+ */
+export class LiveFormula {
+  readonly element: HTMLElement;
+  private shape: string | null = null;
+  private slots: { html: Element; mathml: Element | null; text: string }[] = [];
+
+  constructor(private readonly display = false) {
+    this.element = document.createElement(display ? 'div' : 'span');
+    this.element.className = display ? 'formula display live' : 'formula live';
+  }
+
+  set(shape: string, values: readonly string[]): void {
+    if (shape !== this.shape) this.typeset(shape);
+    values.forEach((value, i) => {
+      const slot = this.slots[i];
+      if (!slot) return;
+      const text = value.replace(/^-/, '−');
+      if (text === slot.text) return;
+      slot.text = text;
+      slot.html.textContent = text;
+      if (slot.mathml) slot.mathml.textContent = text;
+    });
+  }
+
+  private typeset(shape: string): void {
+    this.shape = shape;
+    let k = 0;
+    // Each slot starts as a unique marker, so its MathML twin can be found too.
+    const tex = shape.split(SLOT).reduce((acc, part, i) => {
+      if (i === 0) return part;
+      const slot = `\\htmlData{slot=${k}}{\\text{§${k}§}}`;
+      k++;
+      return acc + slot + part;
+    });
+    katex.render(tex, this.element, { ...OPTIONS, displayMode: this.display });
+    this.element.querySelector('annotation')?.remove();
+    const mtexts = [...this.element.querySelectorAll('mtext')];
+    this.slots = [];
+    for (let i = 0; i < k; i++) {
+      const enclosing = this.element.querySelector(`[data-slot="${i}"]`);
+      const inner = enclosing?.querySelector('.mord.text .mord') ?? enclosing;
+      const mathml = mtexts.find((m) => m.textContent === `§${i}§`) ?? null;
+      if (inner) this.slots.push({ html: inner, mathml, text: '' });
+    }
+    if (this.display) markForFit(this.element);
+  }
 }
 
 /** A number as TeX: fixed digits, no "-0". */
@@ -30,3 +95,7 @@ export function texNumber(value: number, digits = 2): string {
 export function texPoint(p: readonly number[], digits = 2): string {
   return `(${p.map((v) => texNumber(v, digits)).join(',\\ ')})`;
 }
+
+/** The TeX shape of a point with live coordinates: `(\val,\ \val)`. */
+export const slotPoint = (dimension = 2) =>
+  `(${Array.from({ length: dimension }, () => SLOT).join(',\\ ')})`;

@@ -1,6 +1,19 @@
+import { type ClipRect, circleVisible, clipCubic, clipPolygon, clipPolyline } from './clip';
+import { drawGrid, drawPlotAxes } from './axes';
+import {
+  type LabelBox,
+  type LabelStyle,
+  drawCursorLabels,
+  drawLabelClear,
+  drawNote,
+  drawScreenLabel,
+} from './labels';
+import type { Bounds, Projection } from './projection';
 import type { DrawingSurface } from './surface';
 import type { Theme } from './theme';
-import { type Bounds, type Viewport, niceStep } from './viewport';
+
+export type { LabelStyle, LabelBox } from './labels';
+export { splitSubscripts } from './labels';
 
 export type P = readonly number[];
 
@@ -9,21 +22,6 @@ export interface StrokeStyle {
   width?: number;
   dash?: number[];
   alpha?: number;
-}
-
-export interface LabelStyle {
-  color?: string;
-  size?: number;
-  /** Offset in pixels from the anchor (screen axes, y down). */
-  dx?: number;
-  dy?: number;
-  align?: CanvasTextAlign;
-  baseline?: CanvasTextBaseline;
-  bold?: boolean;
-  /** Draw a light halo behind the text so it reads over lines. */
-  halo?: boolean;
-  /** Draw a boxed label (background box with border). */
-  box?: boolean;
 }
 
 export type HandleState = 'idle' | 'hover' | 'drag' | 'focus';
@@ -35,17 +33,34 @@ export interface HandleStyle {
   radius?: number;
 }
 
+/** How far outside the figure drawing still reaches (pixels): thick strokes and arrow heads. */
+const MARGIN = 64;
+
 /**
- * Drawing primitives in lesson (world) coordinates: a curve, a polygon, a
- * movable point, a label with lecture subscripts (`P_{1,2}`), an arrow, plot
- * axes. It knows the viewport and the theme; it computes no spline.
+ * Drawing primitives in lesson (world) coordinates, 2D or 3D: a curve, a
+ * polygon, a movable point, a label with lecture subscripts (`P_{1,2}`), an
+ * arrow, plot axes. It knows the projection and the theme; it computes no
+ * spline. Everything is cut to the visible rectangle first, so the cost of a
+ * frame follows the pixels on screen, not the zoom.
  */
 export class Painter {
+  /** Every label placed this frame, in screen pixels (for overlap checks). */
+  readonly labels: LabelBox[] = [];
+  readonly clip: ClipRect;
+  private scratch = new Float64Array(256);
+
   constructor(
     readonly ctx: DrawingSurface,
-    readonly view: Viewport,
+    readonly view: Projection,
     readonly theme: Theme,
-  ) {}
+  ) {
+    this.clip = {
+      minX: -MARGIN,
+      minY: -MARGIN,
+      maxX: view.width + MARGIN,
+      maxY: view.height + MARGIN,
+    };
+  }
 
   get sizes() {
     return this.theme.sizes;
@@ -56,7 +71,13 @@ export class Painter {
     return p[((i % p.length) + p.length) % p.length];
   }
 
-  private applyStroke(style: StrokeStyle, fallbackWidth: number, fallbackColor: string): void {
+  /** Is a world point on screen (within `margin` pixels of the figure)? */
+  visible(p: P, margin = 0): boolean {
+    const [x, y] = this.view.toScreen(p);
+    return x >= -margin && y >= -margin && x <= this.view.width + margin && y <= this.view.height + margin;
+  }
+
+  applyStroke(style: StrokeStyle, fallbackWidth: number, fallbackColor: string): void {
     const c = this.ctx;
     c.strokeStyle = style.color ?? fallbackColor;
     c.lineWidth = style.width ?? fallbackWidth;
@@ -75,51 +96,56 @@ export class Painter {
     c.restore();
   }
 
+  /** Projects world points into the scratch buffer as interleaved screen x, y. */
+  private project(points: readonly P[]): Float64Array {
+    const n = points.length;
+    if (this.scratch.length < 2 * n) this.scratch = new Float64Array(4 * n);
+    const xy = this.scratch;
+    for (let i = 0; i < n; i++) {
+      const [x, y] = this.view.toScreen(points[i]);
+      xy[2 * i] = x;
+      xy[2 * i + 1] = y;
+    }
+    return xy.length === 2 * n ? xy : xy.subarray(0, 2 * n);
+  }
+
   /** A polyline through world points (a sampled curve, a control polygon). */
   polyline(points: readonly P[], style: StrokeStyle = {}, closed = false): void {
     if (points.length < 2) return;
+    const path = closed ? [...points, points[0]] : points;
+    this.strokeScreen(this.project(path), style);
+  }
+
+  private strokeScreen(xy: ArrayLike<number>, style: StrokeStyle): void {
     const c = this.ctx;
     c.save();
     this.applyStroke(style, this.sizes.curve, this.theme.curve);
     c.beginPath();
-    this.tracePolyline(points);
-    if (closed) c.closePath();
-    c.stroke();
+    if (clipPolyline(xy, this.clip, c) > 0) c.stroke();
     c.restore();
   }
 
-  /** A polyline from interleaved coordinates [x0, y0, x1, y1, …]: for big samples. */
+  /** A polyline from interleaved 2D coordinates [x0, y0, x1, y1, …]: for big samples. */
   polylineFlat(coords: ArrayLike<number>, style: StrokeStyle = {}): void {
     if (coords.length < 4) return;
-    const c = this.ctx;
-    const v = this.view;
-    c.save();
-    this.applyStroke(style, this.sizes.curve, this.theme.curve);
-    c.beginPath();
-    const cx = v.width / 2;
-    const cy = v.height / 2;
-    for (let i = 0; i < coords.length; i += 2) {
-      const x = cx + (coords[i] - v.centerX) * v.scaleX;
-      const y = cy - (coords[i + 1] - v.centerY) * v.scaleY;
-      if (i === 0) c.moveTo(x, y);
-      else c.lineTo(x, y);
+    const n = coords.length >> 1;
+    if (this.scratch.length < 2 * n) this.scratch = new Float64Array(4 * n);
+    const xy = this.scratch;
+    const point = [0, 0];
+    for (let i = 0; i < n; i++) {
+      point[0] = coords[2 * i];
+      point[1] = coords[2 * i + 1];
+      const [x, y] = this.view.toScreen(point);
+      xy[2 * i] = x;
+      xy[2 * i + 1] = y;
     }
-    c.stroke();
-    c.restore();
-  }
-
-  private tracePolyline(points: readonly P[]): void {
-    const c = this.ctx;
-    points.forEach((p, i) => {
-      const [x, y] = this.view.toScreen(p);
-      if (i === 0) c.moveTo(x, y);
-      else c.lineTo(x, y);
-    });
+    this.strokeScreen(xy.subarray(0, 2 * n), style);
   }
 
   /**
-   * Cubic Bézier segments drawn natively (an affine map keeps a Bézier a
-   * Bézier, so the screen path is exact): each segment is 4 control points.
+   * Cubic Bézier segments, each 4 control points. An affine projection keeps a
+   * Bézier a Bézier, so the screen path is exact; under perspective the
+   * segments are flattened.
    */
   cubicSegments(segments: readonly (readonly P[])[], style: StrokeStyle = {}): void {
     if (!segments.length) return;
@@ -127,14 +153,41 @@ export class Painter {
     c.save();
     this.applyStroke(style, this.sizes.curve, this.theme.curve);
     c.beginPath();
-    segments.forEach((seg, i) => {
-      const [p0, p1, p2, p3] = seg.map((p) => this.view.toScreen(p));
-      if (i === 0) c.moveTo(p0[0], p0[1]);
-      else c.lineTo(p0[0], p0[1]);
-      c.bezierCurveTo(p1[0], p1[1], p2[0], p2[1], p3[0], p3[1]);
-    });
-    c.stroke();
+    let pen: [number, number] | null = null;
+    let drawn = false;
+    const q = new Array<number>(8);
+    for (const seg of segments) {
+      if (!this.view.affine) {
+        drawn = this.flattenedCubic(seg) || drawn;
+        pen = null;
+        continue;
+      }
+      for (let k = 0; k < 4; k++) {
+        const [x, y] = this.view.toScreen(seg[k]);
+        q[2 * k] = x;
+        q[2 * k + 1] = y;
+      }
+      if (!q.every(Number.isFinite)) {
+        pen = null;
+        continue;
+      }
+      const end = clipCubic(q, this.clip, c, pen);
+      if (end) drawn = true;
+      pen = end;
+    }
+    if (drawn) c.stroke();
     c.restore();
+  }
+
+  private flattenedCubic(seg: readonly P[]): boolean {
+    const samples: P[] = [];
+    for (let i = 0; i <= 48; i++) {
+      const t = i / 48;
+      const s = 1 - t;
+      const w = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
+      samples.push(seg[0].map((_, d) => w[0] * seg[0][d] + w[1] * seg[1][d] + w[2] * seg[2][d] + w[3] * seg[3][d]));
+    }
+    return clipPolyline(this.project(samples), this.clip, this.ctx) > 0;
   }
 
   segment(a: P, b: P, style: StrokeStyle = {}): void {
@@ -144,15 +197,21 @@ export class Painter {
   /** A filled polygon (convex hull, a region), optionally outlined. */
   polygon(points: readonly P[], fill: string, alpha = 0.15, outline?: StrokeStyle): void {
     if (points.length < 3) return;
-    const c = this.ctx;
-    c.save();
-    c.globalAlpha = alpha;
-    c.fillStyle = fill;
-    c.beginPath();
-    this.tracePolyline(points);
-    c.closePath();
-    c.fill();
-    c.restore();
+    const screen = clipPolygon(
+      points.map((p) => this.view.toScreen(p)),
+      this.clip,
+    );
+    if (screen.length >= 3) {
+      const c = this.ctx;
+      c.save();
+      c.globalAlpha = alpha;
+      c.fillStyle = fill;
+      c.beginPath();
+      screen.forEach(([x, y], i) => (i === 0 ? c.moveTo(x, y) : c.lineTo(x, y)));
+      c.closePath();
+      c.fill();
+      c.restore();
+    }
     if (outline) this.polyline(points, outline, true);
   }
 
@@ -161,7 +220,7 @@ export class Painter {
     const [ax, ay] = this.view.toScreen(a);
     const [bx, by] = this.view.toScreen(b);
     const len = Math.hypot(bx - ax, by - ay);
-    if (len < 1e-6) return;
+    if (!(len > 1e-6) || !Number.isFinite(len)) return;
     const c = this.ctx;
     const head = Math.min(len * 0.5, 6 + this.sizes.line * 3);
     const ux = (bx - ax) / len;
@@ -169,23 +228,26 @@ export class Painter {
     c.save();
     this.applyStroke(style, this.sizes.line, this.theme.ink);
     c.beginPath();
-    c.moveTo(ax, ay);
-    c.lineTo(bx - ux * head * 0.6, by - uy * head * 0.6);
-    c.stroke();
-    c.setLineDash([]);
-    c.fillStyle = style.color ?? this.theme.ink;
-    c.beginPath();
-    c.moveTo(bx, by);
-    c.lineTo(bx - ux * head - uy * head * 0.45, by - uy * head + ux * head * 0.45);
-    c.lineTo(bx - ux * head + uy * head * 0.45, by - uy * head - ux * head * 0.45);
-    c.closePath();
-    c.fill();
+    const shaft = [ax, ay, bx - ux * head * 0.6, by - uy * head * 0.6];
+    const drawn = clipPolyline(shaft, this.clip, c) > 0;
+    if (drawn) c.stroke();
+    if (circleVisible(bx, by, head, this.clip)) {
+      c.setLineDash([]);
+      c.fillStyle = style.color ?? this.theme.ink;
+      c.beginPath();
+      c.moveTo(bx, by);
+      c.lineTo(bx - ux * head - uy * head * 0.45, by - uy * head + ux * head * 0.45);
+      c.lineTo(bx - ux * head + uy * head * 0.45, by - uy * head - ux * head * 0.45);
+      c.closePath();
+      c.fill();
+    }
     c.restore();
   }
 
   /** A constructed (not movable) point. */
   dot(p: P, color: string = this.theme.ink, radius: number = this.sizes.point): void {
     const [x, y] = this.view.toScreen(p);
+    if (!circleVisible(x, y, radius, this.clip)) return;
     const c = this.ctx;
     c.save();
     c.fillStyle = color;
@@ -195,9 +257,10 @@ export class Painter {
     c.restore();
   }
 
-  /** A ring, e.g. a halo whose size shows a weight. */
+  /** A ring of `radius` pixels, e.g. a halo whose size shows a weight. */
   ring(p: P, radius: number, style: StrokeStyle = {}, fill?: string, fillAlpha = 0.2): void {
     const [x, y] = this.view.toScreen(p);
+    if (!circleVisible(x, y, radius + 4, this.clip)) return;
     const c = this.ctx;
     c.save();
     if (fill) {
@@ -214,14 +277,49 @@ export class Painter {
     c.restore();
   }
 
+  /**
+   * A circle of world radius `radius` about `center` (2D), e.g. an osculating
+   * circle. A circle far larger than the screen is drawn as the arc that shows.
+   */
+  circle(center: P, radius: number, style: StrokeStyle = {}): void {
+    const [x, y] = this.view.toScreen(center);
+    const r = Math.abs(this.view.toScreen([center[0] + radius, center[1]])[0] - x);
+    if (!Number.isFinite(r) || !Number.isFinite(x) || !Number.isFinite(y)) return;
+    const cx = (this.clip.minX + this.clip.maxX) / 2;
+    const cy = (this.clip.minY + this.clip.maxY) / 2;
+    const half = Math.hypot(this.clip.maxX - this.clip.minX, this.clip.maxY - this.clip.minY) / 2;
+    const d = Math.hypot(cx - x, cy - y);
+    // The screen lies wholly inside the circle, or wholly outside it.
+    if (d + half < r || d - half > r) return;
+    const c = this.ctx;
+    c.save();
+    this.applyStroke(style, this.sizes.line, this.theme.ink);
+    c.beginPath();
+    if (r < 4 * half) c.arc(x, y, r, 0, Math.PI * 2);
+    else {
+      // Only the arc near the screen: its angular width shrinks as the circle grows.
+      const toward = Math.atan2(cy - y, cx - x);
+      const spread = Math.min(Math.PI, (2 * half) / r);
+      const xy: number[] = [];
+      for (let i = 0; i <= 64; i++) {
+        const a = toward - spread + (2 * spread * i) / 64;
+        xy.push(x + r * Math.cos(a), y + r * Math.sin(a));
+      }
+      clipPolyline(xy, this.clip, c);
+    }
+    c.stroke();
+    c.restore();
+  }
+
   /** A movable point: hollow, with a clear hover, drag and keyboard-focus state. */
   handle(p: P, style: HandleStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
-    const c = this.ctx;
     const state = style.state ?? 'idle';
     const r =
       (style.radius ?? this.sizes.handle) *
       (state === 'drag' ? 1.25 : state === 'hover' ? 1.15 : 1);
+    if (!circleVisible(x, y, r * 2, this.clip)) return;
+    const c = this.ctx;
     const stroke = style.color ?? this.theme.handleStroke;
     c.save();
     c.setLineDash([]);
@@ -261,349 +359,52 @@ export class Painter {
 
   /**
    * A label at a world point. `text` may carry lecture subscripts:
-   * `P_{1,2}` or `P_3` draw the part after `_` lowered and smaller.
+   * `P_{1,2}` or `P_3` draw the part after `_` lowered and smaller. A point off
+   * screen gets no label (it would pile up at the edge).
    */
   label(text: string, p: P, style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
+    if (!this.onScreen(x, y)) return;
     this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), style);
+  }
+
+  private onScreen(x: number, y: number): boolean {
+    return x >= 0 && y >= 0 && x <= this.view.width && y <= this.view.height;
   }
 
   /**
    * A boxed message across the top of the figure, word-wrapped to its width:
-   * says on the figure why something is not drawn (coincident points, a
-   * parabola that cannot turn back). Returns the y (pixels) below the box, to
-   * stack a second note there with `top`.
+   * says on the figure why something is not drawn. Returns the y (pixels)
+   * below the box, to stack a second note there with `top`.
    */
   note(text: string, style: { color?: string; top?: number } = {}): number {
-    const c = this.ctx;
-    const size = this.sizes.label;
-    const pad = size * 0.5;
-    const maxWidth = Math.max(size * 6, this.view.width - 4 * pad);
-    c.save();
-    c.font = `${size}px ${this.theme.fontFamily}`;
-    const lines: string[] = [];
-    for (const word of text.split(/\s+/).filter(Boolean)) {
-      const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
-      if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;
-      else lines.push(word);
-    }
-    const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
-    const lineHeight = size * 1.3;
-    const top = style.top ?? pad;
-    c.setLineDash([]);
-    c.globalAlpha = 0.94;
-    c.fillStyle = this.theme.labelHalo;
-    c.fillRect(pad, top, width + 2 * pad, lines.length * lineHeight + pad);
-    c.globalAlpha = 1;
-    c.strokeStyle = style.color ?? this.theme.accent;
-    c.lineWidth = Math.max(2, this.sizes.line);
-    c.beginPath();
-    c.rect(pad, top, width + 2 * pad, lines.length * lineHeight + pad);
-    c.stroke();
-    c.fillStyle = this.theme.ink;
-    c.textAlign = 'left';
-    c.textBaseline = 'middle';
-    lines.forEach((line, i) => c.fillText(line, 2 * pad, top + pad / 2 + (i + 0.5) * lineHeight));
-    c.restore();
-    return top + lines.length * lineHeight + 2 * pad;
+    return drawNote(this, text, style);
   }
 
-  /**
-   * Labels beside a plot cursor at x = `at` (world), one per value (e.g. the
-   * weights `L_2 = 0.81`), each at its value's height but pushed apart so
-   * none covers another.
-   */
+  /** Labels beside a plot cursor at x = `at` (world), pushed apart so none covers another. */
   cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
-    const size = this.sizes.small;
-    const gap = size * 1.3;
-    const [x] = this.view.toScreen([at, 0]);
-    const placed = entries
-      .map((entry) => ({ ...entry, sy: this.view.toScreen([at, entry.y])[1] }))
-      .sort((a, b) => a.sy - b.sy);
-    // Top down, push each label below the one above it; then bottom up, keep
-    // them above the axis numbers and the cursor's handle, pushing up in turn.
-    const top = size;
-    const bottom = this.view.height - size * 3.2;
-    for (let i = 0; i < placed.length; i++) {
-      placed[i].sy = Math.max(placed[i].sy, i ? placed[i - 1].sy + gap : top);
-    }
-    for (let i = placed.length - 1; i >= 0; i--) {
-      placed[i].sy = Math.min(
-        placed[i].sy,
-        i < placed.length - 1 ? placed[i + 1].sy - gap : bottom,
-      );
-    }
-    // Near the right edge, write them on the left of the cursor.
-    const left = x > this.view.width * 0.75;
-    for (const label of placed) {
-      // Clear of the cursor's handle, which may sit on the cursor line.
-      const offset = this.sizes.handle + 6;
-      this.screenLabel(label.text, left ? x - offset : x + offset, label.sy, {
-        color: label.color,
-        halo: true,
-        size,
-        align: left ? 'right' : 'left',
-      });
-    }
+    drawCursorLabels(this, at, entries);
   }
 
-  /**
-   * A label beside `p` on whichever of four sides (above/below, right/left) lies
-   * farthest from the `avoid` points, e.g. the handles around it.
-   */
+  /** A label beside `p` on whichever side lies farthest from the `avoid` points. */
   labelClear(text: string, p: P, avoid: readonly P[], style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
-    const size = style.size ?? this.sizes.label;
-    const width = size * 0.6 * text.length;
-    const gap = size * 0.7;
-    const candidates: [number, number, CanvasTextAlign][] = [
-      [gap, -size, 'left'],
-      [gap, size, 'left'],
-      [-gap, -size, 'right'],
-      [-gap, size, 'right'],
-    ];
-    const obstacles = avoid.map((q) => this.view.toScreen(q));
-    let best = candidates[0];
-    let bestClearance = -Infinity;
-    for (const candidate of candidates) {
-      const [dx, dy, align] = candidate;
-      const cx = x + dx + (align === 'left' ? width / 2 : -width / 2);
-      const cy = y + dy;
-      let clearance = Infinity;
-      for (const [ox, oy] of obstacles)
-        clearance = Math.min(clearance, Math.hypot(ox - cx, oy - cy));
-      if (clearance > bestClearance + 1e-9) {
-        bestClearance = clearance;
-        best = candidate;
-      }
-    }
-    this.screenLabel(text, x + best[0], y + best[1], { ...style, align: best[2] });
+    if (!this.onScreen(x, y)) return;
+    drawLabelClear(this, text, [x, y], avoid, style);
   }
 
   /** A label at screen coordinates (pixels): legends, captions. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
-    const c = this.ctx;
-    const size = style.size ?? this.sizes.label;
-    const runs = splitSubscripts(text);
-    const weight = style.bold ? 'bold ' : '';
-    const mainFont = `${weight}${size}px ${this.theme.fontFamily}`;
-    const subFont = `${weight}${Math.round(size * 0.72)}px ${this.theme.fontFamily}`;
-    c.save();
-    c.setLineDash([]);
-    c.globalAlpha = 1;
-    const widths = runs.map((run) => {
-      c.font = run.sub ? subFont : mainFont;
-      return c.measureText(run.text).width;
-    });
-    const total = widths.reduce((a, b) => a + b, 0);
-    const align = style.align ?? 'left';
-    let left =
-      align === 'center' ? x - total / 2 : align === 'right' || align === 'end' ? x - total : x;
-    const baseline = style.baseline ?? 'middle';
-    let middleY = baseline === 'top' ? y + size / 2 : baseline === 'bottom' ? y - size / 2 : y;
-    // Keep the whole label inside the figure rather than cut at its edge.
-    const margin = 2 + (style.box ? size * 0.35 : 0);
-    left = Math.max(margin, Math.min(left, this.view.width - total - margin));
-    middleY = Math.max(
-      size * 0.7 + margin,
-      Math.min(middleY, this.view.height - size * 0.7 - margin),
-    );
-    if (style.box) {
-      const pad = size * 0.35;
-      const box: [number, number, number, number] = [
-        left - pad,
-        middleY - size * 0.62 - pad * 0.4,
-        total + 2 * pad,
-        size * 1.3 + pad * 0.8,
-      ];
-      c.fillStyle = this.theme.labelHalo;
-      c.globalAlpha = 0.92;
-      c.fillRect(...box);
-      c.globalAlpha = 1;
-      c.strokeStyle = style.color ?? this.theme.ink;
-      c.lineWidth = Math.max(1, this.sizes.thin);
-      c.beginPath();
-      c.rect(...box);
-      c.stroke();
-    }
-    c.textAlign = 'left';
-    c.textBaseline = 'middle';
-    runs.forEach((run, i) => {
-      c.font = run.sub ? subFont : mainFont;
-      const textY = run.sub ? middleY + size * 0.3 : middleY;
-      if (style.halo && !style.box) {
-        // A halo that follows the glyphs, as map labels have: it keeps the text
-        // readable over lines without blanking out a rectangle of the figure.
-        c.strokeStyle = this.theme.labelHalo;
-        c.lineWidth = Math.max(2.5, size * 0.22);
-        c.lineJoin = 'round';
-        c.globalAlpha = 0.9;
-        c.strokeText(run.text, left, textY);
-        c.globalAlpha = 1;
-      }
-      c.fillStyle = style.color ?? this.theme.ink;
-      c.fillText(run.text, left, textY);
-      left += widths[i];
-    });
-    c.restore();
-    return { width: total };
+    return drawScreenLabel(this, text, x, y, style);
   }
 
-  /**
-   * Light grid with axes through the origin (geometry figures). Grid spacing
-   * adapts to the zoom so lines stay about 60 px apart.
-   */
+  /** Light grid with axes through the origin (2D geometry figures), visible lines only. */
   grid(): void {
-    const v = this.view;
-    const b = v.visibleBounds();
-    const step = niceStep(60 / v.scaleX);
-    const stepY = niceStep(60 / v.scaleY);
-    const c = this.ctx;
-    c.save();
-    c.strokeStyle = this.theme.grid;
-    c.lineWidth = 1;
-    c.setLineDash([]);
-    c.beginPath();
-    for (let x = Math.ceil(b.minX / step) * step; x <= b.maxX; x += step) {
-      const [sx] = v.toScreen([x, 0]);
-      c.moveTo(Math.round(sx) + 0.5, 0);
-      c.lineTo(Math.round(sx) + 0.5, v.height);
-    }
-    for (let y = Math.ceil(b.minY / stepY) * stepY; y <= b.maxY; y += stepY) {
-      const [, sy] = v.toScreen([0, y]);
-      c.moveTo(0, Math.round(sy) + 0.5);
-      c.lineTo(v.width, Math.round(sy) + 0.5);
-    }
-    c.stroke();
-    c.strokeStyle = this.theme.axis;
-    c.beginPath();
-    const [ox, oy] = v.toScreen([0, 0]);
-    if (ox >= 0 && ox <= v.width) {
-      c.moveTo(Math.round(ox) + 0.5, 0);
-      c.lineTo(Math.round(ox) + 0.5, v.height);
-    }
-    if (oy >= 0 && oy <= v.height) {
-      c.moveTo(0, Math.round(oy) + 0.5);
-      c.lineTo(v.width, Math.round(oy) + 0.5);
-    }
-    c.stroke();
-    c.restore();
+    drawGrid(this);
   }
 
-  /**
-   * Axes for a function plot over `bounds` with tick numbers: the x axis at
-   * y = 0 (or the bottom), ticks every `xStep`/`yStep`, and axis names.
-   */
+  /** Axes for a function plot over `bounds` with tick numbers and axis names. */
   plotAxes(bounds: Bounds, xStep: number, yStep: number, xName = '', yName = ''): void {
-    const c = this.ctx;
-    const v = this.view;
-    const small = this.sizes.small;
-    c.save();
-    c.setLineDash([]);
-    c.strokeStyle = this.theme.grid;
-    c.lineWidth = 1;
-    c.beginPath();
-    for (
-      let y = Math.ceil(bounds.minY / yStep - 1e-9) * yStep;
-      y <= bounds.maxY + 1e-9;
-      y += yStep
-    ) {
-      const [x0, sy] = v.toScreen([bounds.minX, y]);
-      const [x1] = v.toScreen([bounds.maxX, y]);
-      c.moveTo(x0, sy);
-      c.lineTo(x1, sy);
-    }
-    for (
-      let x = Math.ceil(bounds.minX / xStep - 1e-9) * xStep;
-      x <= bounds.maxX + 1e-9;
-      x += xStep
-    ) {
-      const [sx, y0] = v.toScreen([x, bounds.minY]);
-      const [, y1] = v.toScreen([x, bounds.maxY]);
-      c.moveTo(sx, y0);
-      c.lineTo(sx, y1);
-    }
-    c.stroke();
-    c.strokeStyle = this.theme.axis;
-    c.lineWidth = Math.max(1, this.sizes.thin);
-    const axisY = bounds.minY <= 0 && bounds.maxY >= 0 ? 0 : bounds.minY;
-    c.beginPath();
-    const [ax0, ay] = v.toScreen([bounds.minX, axisY]);
-    const [ax1] = v.toScreen([bounds.maxX, axisY]);
-    c.moveTo(ax0, ay);
-    c.lineTo(ax1, ay);
-    const [lx, ly0] = v.toScreen([bounds.minX, bounds.minY]);
-    const [, ly1] = v.toScreen([bounds.minX, bounds.maxY]);
-    c.moveTo(lx, ly0);
-    c.lineTo(lx, ly1);
-    c.stroke();
-    c.restore();
-    const fmt = (n: number) => String(Number(n.toFixed(6)));
-    for (
-      let x = Math.ceil(bounds.minX / xStep - 1e-9) * xStep;
-      x <= bounds.maxX + 1e-9;
-      x += xStep
-    ) {
-      const [sx, sy] = v.toScreen([x, bounds.minY]);
-      this.screenLabel(fmt(x), sx, sy + small * 0.9, {
-        size: small,
-        align: 'center',
-        color: this.theme.muted,
-      });
-    }
-    for (
-      let y = Math.ceil(bounds.minY / yStep - 1e-9) * yStep;
-      y <= bounds.maxY + 1e-9;
-      y += yStep
-    ) {
-      const [sx, sy] = v.toScreen([bounds.minX, y]);
-      this.screenLabel(fmt(y), sx - small * 0.5, sy, {
-        size: small,
-        align: 'right',
-        color: this.theme.muted,
-      });
-    }
-    if (xName) {
-      const [sx, sy] = v.toScreen([bounds.maxX, bounds.minY]);
-      this.screenLabel(xName, sx, sy + small * 2.1, {
-        size: small * 1.1,
-        align: 'right',
-        color: this.theme.muted,
-      });
-    }
-    if (yName) {
-      const [sx, sy] = v.toScreen([bounds.minX, bounds.maxY]);
-      this.screenLabel(yName, sx + small * 0.4, sy - small * 0.2, {
-        size: small * 1.1,
-        color: this.theme.muted,
-      });
-    }
+    drawPlotAxes(this, bounds, xStep, yStep, xName, yName);
   }
-}
-
-/** Splits `P_{1,2}x_3` into runs of normal and subscript text. */
-export function splitSubscripts(text: string): { text: string; sub: boolean }[] {
-  const runs: { text: string; sub: boolean }[] = [];
-  let i = 0;
-  let plain = '';
-  while (i < text.length) {
-    if (text[i] === '_' && i + 1 < text.length) {
-      if (plain) runs.push({ text: plain, sub: false });
-      plain = '';
-      if (text[i + 1] === '{') {
-        const end = text.indexOf('}', i + 2);
-        const stop = end < 0 ? text.length : end;
-        runs.push({ text: text.slice(i + 2, stop), sub: true });
-        i = stop + 1;
-      } else {
-        runs.push({ text: text[i + 1], sub: true });
-        i += 2;
-      }
-    } else {
-      plain += text[i];
-      i += 1;
-    }
-  }
-  if (plain) runs.push({ text: plain, sub: false });
-  return runs;
 }

@@ -1,42 +1,20 @@
 /**
- * The one mapping between lesson coordinates (y up) and CSS pixels (y down).
- * Device pixels are the canvas's business (see canvasFigure.ts); everything a
- * lesson draws goes through here.
+ * The 2D projection: lesson coordinates (y up) to CSS pixels (y down).
+ * Device pixels are the canvas's business; everything a 2D figure draws goes
+ * through here.
  */
-export type Point2 = readonly [number, number];
+import { type Bounds, type Projection, readNumbers, viewNumber } from './projection';
 
-export interface Bounds {
-  minX: number;
-  minY: number;
-  maxX: number;
-  maxY: number;
-}
+export type { Bounds } from './projection';
+export { boundsOf, unionBounds, niceStep } from './projection';
 
-export function boundsOf(points: readonly (readonly number[])[]): Bounds {
-  let minX = Infinity;
-  let minY = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  for (const p of points) {
-    if (p[0] < minX) minX = p[0];
-    if (p[0] > maxX) maxX = p[0];
-    if (p[1] < minY) minY = p[1];
-    if (p[1] > maxY) maxY = p[1];
-  }
-  if (!Number.isFinite(minX)) return { minX: -1, minY: -1, maxX: 1, maxY: 1 };
-  return { minX, minY, maxX, maxY };
-}
+/** Zoom limits in pixels per unit: from a continent to a hair, and no further. */
+const MIN_SCALE = 1e-6;
+const MAX_SCALE = 1e9;
 
-export function unionBounds(a: Bounds, b: Bounds): Bounds {
-  return {
-    minX: Math.min(a.minX, b.minX),
-    minY: Math.min(a.minY, b.minY),
-    maxX: Math.max(a.maxX, b.maxX),
-    maxY: Math.max(a.maxY, b.maxY),
-  };
-}
-
-export class Viewport {
+export class Viewport implements Projection {
+  readonly dimension = 2;
+  readonly affine = true;
   /** World coordinates at the centre of the view. */
   centerX = 0;
   centerY = 0;
@@ -61,7 +39,11 @@ export class Viewport {
     ];
   }
 
-  toWorld(p: readonly number[]): [number, number] {
+  depth(): number {
+    return 0;
+  }
+
+  toWorld(p: readonly number[]): number[] {
     return [
       this.centerX + (p[0] - this.width / 2) / this.scaleX,
       this.centerY - (p[1] - this.height / 2) / this.scaleY,
@@ -97,6 +79,10 @@ export class Viewport {
     this.centerY = (bounds.minY + bounds.maxY) / 2;
   }
 
+  dragBy(dx: number, dy: number): void {
+    this.panBy(dx, dy);
+  }
+
   panBy(dxPixels: number, dyPixels: number): void {
     this.centerX -= dxPixels / this.scaleX;
     this.centerY += dyPixels / this.scaleY;
@@ -105,7 +91,7 @@ export class Viewport {
   /** Zooms by `factor` keeping the world point under `screen` fixed. */
   zoomAt(screen: readonly number[], factor: number): void {
     const before = this.toWorld(screen);
-    const clamp = (s: number) => Math.min(Math.max(s * factor, 1e-6), 1e9);
+    const clamp = (s: number) => Math.min(Math.max(s * factor, MIN_SCALE), MAX_SCALE);
     this.scaleX = clamp(this.scaleX);
     this.scaleY = clamp(this.scaleY);
     const after = this.toWorld(screen);
@@ -119,13 +105,21 @@ export class Viewport {
     const b = this.toWorld([this.width, 0]);
     return { minX: a[0], minY: a[1], maxX: b[0], maxY: b[1] };
   }
-}
 
-/** A "nice" step (1, 2 or 5 × 10^k) close to `rough`: for grids and keyboard moves. */
-export function niceStep(rough: number): number {
-  if (!(rough > 0) || !Number.isFinite(rough)) return 1;
-  const power = Math.pow(10, Math.floor(Math.log10(rough)));
-  const m = rough / power;
-  const nice = m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10;
-  return nice * power;
+  /** `cx,cy,scale` (a geometry figure's scale is the same on both axes). */
+  encode(): string {
+    return [this.centerX, this.centerY, this.scaleX].map(viewNumber).join(',');
+  }
+
+  decode(text: string): boolean {
+    const values = readNumbers(text, 3);
+    if (!values) return false;
+    const [cx, cy, s] = values;
+    if (Math.abs(cx) > 1e9 || Math.abs(cy) > 1e9 || !(s >= MIN_SCALE && s <= MAX_SCALE))
+      return false;
+    this.centerX = cx;
+    this.centerY = cy;
+    this.scaleX = this.scaleY = s;
+    return true;
+  }
 }

@@ -1,34 +1,28 @@
 import type { FigureSpec } from '../../app/lesson';
-import { deCasteljau, sampleBezier, splitBezier } from '../../math';
-import { boundsOf } from '../../render/viewport';
-import { type DeCasteljauState, MAX_POINTS, degree } from './state';
 import { insertPoint } from '../../interact/editPoints';
+import { boundsOf } from '../../render/projection';
+import type { DeCasteljauModel } from './model';
+import { type DeCasteljauState, MAX_POINTS } from './state';
 
 /** Labels for every constructed point stay readable up to this degree. */
 const LABEL_ALL_UP_TO = 5;
 
-export const constructionFigure: FigureSpec<DeCasteljauState> = {
+export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> = {
   id: 'construction',
   title: 'Bézier curve with the de Casteljau construction at t',
   kind: 'geometry',
-  bounds: (state) => boundsOf(state.p),
-  draw(painter, state, info) {
+  bounds: (m) => boundsOf(m.state.p),
+  draw(painter, m, info) {
     const theme = painter.theme;
-    const n = degree(state);
-    const levels = deCasteljau(state.p, state.t);
-    const samples = Math.max(64, 24 * n);
+    const { state, n, levels } = m;
 
     // The whole curve, faintly; then the part traced so far (0 … t) strongly.
-    painter.polylineFlat(sampleBezier(state.p, samples), {
-      color: theme.curveFaint,
-      width: theme.sizes.curve * 0.8,
-    });
-    const [left, right] = splitBezier(state.p, state.t);
+    painter.polylineFlat(m.curve, { color: theme.curveFaint, width: theme.sizes.curve * 0.8 });
     if (state.split) {
-      painter.polylineFlat(sampleBezier(left, samples), { color: painter.color(0) });
-      painter.polylineFlat(sampleBezier(right, samples), { color: painter.color(1) });
+      painter.polylineFlat(m.leftCurve, { color: painter.color(0) });
+      painter.polylineFlat(m.rightCurve, { color: painter.color(1) });
     } else if (state.t > 0) {
-      painter.polylineFlat(sampleBezier(left, samples), { color: theme.curve });
+      painter.polylineFlat(m.leftCurve, { color: theme.curve });
     }
 
     // Level 0 is the control polygon.
@@ -57,30 +51,24 @@ export const constructionFigure: FigureSpec<DeCasteljauState> = {
     }
 
     if (state.split && !info.thumbnail) {
-      painter.polyline(left, {
-        color: painter.color(0),
-        width: theme.sizes.line * 1.6,
-        alpha: 0.85,
-      });
-      painter.polyline(right, {
-        color: painter.color(1),
-        width: theme.sizes.line * 1.6,
-        alpha: 0.85,
-      });
-      for (const q of left) painter.dot(q, painter.color(0), theme.sizes.point * 0.9);
-      for (const q of right) painter.dot(q, painter.color(1), theme.sizes.point * 0.9);
+      for (const [half, k] of [
+        [m.left, 0],
+        [m.right, 1],
+      ] as const) {
+        painter.polyline(half, { color: painter.color(k), width: theme.sizes.line * 1.6, alpha: 0.85 });
+        for (const q of half) painter.dot(q, painter.color(k), theme.sizes.point * 0.9);
+      }
     }
   },
-  handles: (state) =>
-    state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
+  handles: (m) => m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
+    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
   },
-  addPoint(state, at) {
+  addPoint(state, at, m) {
     if (state.p.length >= MAX_POINTS) return null;
     const p = insertPoint(state.p, at);
-    return { ...state, p, step: state.step === degree(state) ? p.length - 1 : state.step };
+    return { ...state, p, step: state.step === m.n ? p.length - 1 : state.step };
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;

@@ -1,20 +1,19 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson, type Point } from '../../app/lesson';
 import { constructionFigure } from './figure';
+import { type DeCasteljauModel, derive } from './model';
 import { deCasteljauPanel } from './panel';
 import { type DeCasteljauState, LECTURE_CUBIC, degree, schema } from './state';
 
-const preset = (id: string, label: string, p: [number, number][], t = 0.4) => ({
+const preset = (id: string, label: string, p: Point[], t = 0.4) => ({
   id,
   label,
   apply: (s: DeCasteljauState): DeCasteljauState => ({ ...s, p, t, step: p.length - 1 }),
 });
 
-export const deCasteljau = defineLesson<DeCasteljauState>({
+export default defineLesson<DeCasteljauState, DeCasteljauModel>({
   slug: 'de-casteljau',
-  title: 'The de Casteljau construction',
-  summary: 'Build a point of a Bézier curve by repeated linear interpolation, level by level.',
-  group: 'bezier',
   schema,
+  derive,
   figures: [constructionFigure],
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
   steps: {
@@ -26,11 +25,7 @@ export const deCasteljau = defineLesson<DeCasteljauState>({
         : `Level ${k} of ${degree(state)}`,
   },
   presets: [
-    preset(
-      'cubic',
-      'Lecture cubic',
-      LECTURE_CUBIC.map((p) => [p[0], p[1]]),
-    ),
+    preset('cubic', 'Lecture cubic', LECTURE_CUBIC),
     preset(
       'quadratic',
       'Quadratic',

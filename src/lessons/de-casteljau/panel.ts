@@ -1,18 +1,29 @@
-import { fmt, h, setChildren, dataTable } from '../../app/dom';
+import { dataTable, fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
-import { bernstein, deCasteljau, splitBezier } from '../../math';
-import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
+import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
+import type { DeCasteljauModel } from './model';
 import { type DeCasteljauState, MAX_POINTS, degree } from './state';
 
 /** t as typed: up to four decimals, trailing zeros dropped. */
 const texT = (t: number) => String(Number(t.toFixed(4)));
+const coords = (p: readonly number[]) => p.map((v) => texNumber(v, 3));
 
-export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<DeCasteljauState> {
+/** P_{r,i} = (1−t)·P_{r−1,i} + t·P_{r−1,i+1} = P, with live numbers. */
+const levelShape = (r: number, i: number) =>
+  `\\begin{aligned}P_{${r},${i}} &= ${SLOT}\\cdot${slotPoint()} + ${SLOT}\\cdot${slotPoint()}\\\\ &= ${slotPoint()}\\end{aligned}`;
+
+export function deCasteljauPanel(
+  api: LessonApi<DeCasteljauState, DeCasteljauModel>,
+): LessonPanel<DeCasteljauState, DeCasteljauModel> {
   const stepTitle = h('h2', {});
   const stepText = h('p', {});
   const stepFormulas = h('div', { class: 'step-formulas' });
+  // One live formula per point of a level (at most n of them), typeset when its shape changes.
+  const levelFormulas: LiveFormula[] = [];
+  const check = new LiveFormula(true);
   const split = checkbox(api, {
     id: 'split-toggle',
     label: 'Show subdivision at t: the two halves of the curve and their control polygons',
@@ -20,7 +31,14 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
     set: (s, on) => ({ ...s, split: on }),
   });
   const splitInfo = h('div', { class: 'split-info' });
+  const leftTitle = h('p', {});
+  const rightTitle = h('p', {});
+  const leftPoints = new LiveFormula(true);
+  const rightPoints = new LiveFormula(true);
+  const leftSwatch = h('span', { class: 'swatch' });
+  const rightSwatch = h('span', { class: 'swatch' });
   const tableBody = h('tbody', {});
+  const table = new LiveRows(tableBody);
   const pointCount = pointButtons(api, {
     addLabel: 'Add a control point',
     removeLabel: 'Remove the last control point',
@@ -62,13 +80,14 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
     h('h2', {}, 'Every constructed point'),
     dataTable('Constructed points', ['Point', 'x', 'y'], tableBody),
   );
+  let shownLevel = -1;
+  let shownSplit: boolean | null = null;
 
   return {
     element,
-    update(state) {
-      const n = degree(state);
+    update(m, state) {
+      const { n, levels } = m;
       const t = state.t;
-      const levels = deCasteljau(state.p, t);
       const palette = api.theme().palette;
       const r = state.step;
       split.update(state);
@@ -76,82 +95,80 @@ export function deCasteljauPanel(api: LessonApi<DeCasteljauState>): LessonPanel<
 
       stepTitle.textContent =
         r === 0 ? `Step 0 of ${n}: the control points` : `Step ${r} of ${n}: level ${r}`;
-      if (r === 0) {
-        stepText.textContent = `Level 0 is the control polygon itself, P_{0,i} = P_i. At t = ${texT(t)} every edge will be cut ${fmt(t * 100, 0)}% of the way along. Step forward to build level 1.`;
-        setChildren(stepFormulas);
-      } else {
-        stepText.textContent =
-          r === n
+      stepText.textContent =
+        r === 0
+          ? `Level 0 is the control polygon itself: P0,i = Pi. At t = ${texT(t)} every edge will be cut ${fmt(t * 100, 0)}% of the way along. Step forward to build level 1.`
+          : r === n
             ? `The last level has a single point: it is the point on the curve at t = ${texT(t)}.`
             : `Level ${r} has ${n - r + 1} points, each between two neighbours of level ${r - 1}.`;
-        const lines = levels[r].map((point, i) =>
-          formula(
-            `\\begin{aligned}P_{${r},${i}} &= ${texT(1 - t)}\\cdot${texPoint(levels[r - 1][i], 3)} + ${texT(t)}\\cdot${texPoint(levels[r - 1][i + 1], 3)}\\\\ &= ${texPoint(point, 3)}\\end{aligned}`,
-            true,
-          ),
-        );
+      if (r > 0) {
+        levels[r].forEach((point, i) => {
+          levelFormulas[i] ??= new LiveFormula(true);
+          levelFormulas[i].set(levelShape(r, i), [
+            texT(1 - t),
+            ...coords(levels[r - 1][i]),
+            texT(t),
+            ...coords(levels[r - 1][i + 1]),
+            ...coords(point),
+          ]);
+        });
         if (r === n) {
           // The same point from the Bernstein form, as a check students can read.
-          const weights = state.p.map((_, i) => bernstein(n, i, t));
-          const sum = [0, 1].map((d) => weights.reduce((acc, w, i) => acc + w * state.p[i][d], 0));
-          const check = h('div', {});
-          renderFormula(
-            check,
-            `\\text{Check: } P(${texT(t)}) = \\sum_{i=0}^{${n}} W(${n},i,${texT(t)})\\,P_i = ${texPoint(sum, 3)}`,
-            true,
+          check.set(
+            `\\text{Check: } P(${SLOT}) = \\sum_{i=0}^{${n}} W(${n},i,${SLOT})\\,P_i = ${slotPoint()}`,
+            [texT(t), texT(t), ...coords(m.bernsteinPoint)],
           );
-          lines.push(check);
         }
-        setChildren(stepFormulas, lines);
+      }
+      // The list of formulas changes only when the level or the degree does.
+      const levelKey = r === 0 ? 0 : r * 100 + n;
+      if (levelKey !== shownLevel) {
+        shownLevel = levelKey;
+        const shown = r === 0 ? [] : levelFormulas.slice(0, levels[r].length).map((f) => f.element);
+        setChildren(stepFormulas, shown, r === n && r > 0 ? check.element : null);
       }
 
-      if (state.split) {
-        const [left, right] = splitBezier(state.p, t);
+      if (state.split !== shownSplit) {
+        shownSplit = state.split;
         setChildren(
           splitInfo,
-          h(
-            'p',
-            {},
-            h('span', { class: 'swatch', style: `background:${palette[0]}` }),
-            `Left half (t from 0 to ${texT(t)}): P_{0,0}, P_{1,0}, …, P_{${n},0}`,
-          ),
-          formula(left.map((q) => texPoint(q, 3)).join(',\\ '), true),
-          h(
-            'p',
-            {},
-            h('span', { class: 'swatch', style: `background:${palette[1]}` }),
-            `Right half (t from ${texT(t)} to 1): P_{${n},0}, P_{${n - 1},1}, …, P_{0,${n}}`,
-          ),
-          formula(right.map((q) => texPoint(q, 3)).join(',\\ '), true),
+          state.split
+            ? [
+                h('p', {}, leftSwatch, leftTitle),
+                leftPoints.element,
+                h('p', {}, rightSwatch, rightTitle),
+                rightPoints.element,
+              ]
+            : [],
         );
-      } else setChildren(splitInfo);
+      }
+      if (state.split) {
+        leftSwatch.style.background = palette[0];
+        rightSwatch.style.background = palette[1];
+        leftTitle.textContent = `Left half (t from 0 to ${texT(t)}): P0,0, P1,0, …, P${n},0`;
+        rightTitle.textContent = `Right half (t from ${texT(t)} to 1): P${n},0, P${n - 1},1, …, P0,${n}`;
+        const list = (half: readonly (readonly number[])[]) =>
+          half.map(() => slotPoint()).join(',\\ ');
+        leftPoints.set(list(m.left), m.left.flatMap(coords));
+        rightPoints.set(list(m.right), m.right.flatMap(coords));
+      }
 
-      const rows: HTMLElement[] = [];
-      levels.forEach((level, k) => {
-        level.forEach((point, i) => {
-          const shown = k <= r;
-          rows.push(
-            h(
-              'tr',
-              { class: k === r ? 'current' : shown ? '' : 'future', 'data-level': k },
-              h(
-                'td',
-                {},
-                k > 0
-                  ? h('span', {
-                      class: 'swatch',
-                      style: `background:${palette[(k - 1) % palette.length]}`,
-                    })
-                  : null,
-                `P${k},${i}`,
-              ),
-              h('td', {}, shown ? texNumber(point[0], 4) : '—'),
-              h('td', {}, shown ? texNumber(point[1], 4) : '—'),
-            ),
-          );
-        });
-      });
-      setChildren(tableBody, rows);
+      table.set(
+        levels.flatMap((level, k) =>
+          level.map((point, i) => {
+            const shown = k <= r;
+            return {
+              className: k === r ? 'current' : shown ? '' : 'future',
+              data: { level: String(k) },
+              cells: [
+                { text: `P${k},${i}`, swatch: k > 0 ? palette[(k - 1) % palette.length] : undefined },
+                shown ? texNumber(point[0], 4) : '—',
+                shown ? texNumber(point[1], 4) : '—',
+              ],
+            };
+          }),
+        ),
+      );
     },
   };
 }

@@ -1,10 +1,11 @@
-import type { Point2 } from '../../app/lesson';
+import { bool, int, number, points } from '../../app/fields';
+import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
 /** Everything the de Casteljau lesson shows, and all of it goes in the link. */
 export interface DeCasteljauState {
   /** Control points P0 … Pn. */
-  p: Point2[];
+  p: Point[];
   t: number;
   /** Levels of the construction shown: 0 (control polygon) … n (the point on the curve). */
   step: number;
@@ -15,7 +16,7 @@ export interface DeCasteljauState {
 export const MAX_POINTS = 16;
 
 /** The lecture's cubic. */
-export const LECTURE_CUBIC: Point2[] = [
+export const LECTURE_CUBIC: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2],
@@ -23,10 +24,10 @@ export const LECTURE_CUBIC: Point2[] = [
 ];
 
 export const schema: Schema<DeCasteljauState> = {
-  p: { kind: 'points', default: LECTURE_CUBIC, min: 2, max: MAX_POINTS },
-  t: { kind: 'number', default: 0.4, min: 0, max: 1 },
-  step: { kind: 'int', default: 3, min: 0, max: MAX_POINTS - 1 },
-  split: { kind: 'bool', default: false },
+  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
+  t: number({ default: 0.4, min: 0, max: 1 }),
+  step: int({ default: 3, min: 0, max: MAX_POINTS - 1 }),
+  split: bool({ default: false }),
 };
 
 /** Degree of the curve. */

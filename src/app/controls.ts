@@ -1,0 +1,197 @@
+/**
+ * The construction's controls under the figures: the parameter (slider,
+ * number field, Play) and the steps (back, status, forward). Each shows the
+ * state through `update`, writing to the DOM only what changed.
+ */
+import { fmt, h } from './dom';
+import type { ParameterSpec, StepsSpec } from './lesson';
+import { prefersReducedMotion } from './settings';
+
+type Record_ = Record<string, number>;
+
+export interface ControlHost<S> {
+  get(): S;
+  set(next: S, options?: { coalesce?: string; windowMs?: number; record?: boolean }): void;
+}
+
+/** The parameter slider with its number field and Play. */
+export class ParameterControl<S> {
+  readonly element: HTMLElement;
+  readonly slider: HTMLInputElement;
+  readonly number: HTMLInputElement;
+  readonly play: HTMLButtonElement;
+  private playing: { last: number; timer: number } | null = null;
+  private shown = NaN;
+
+  constructor(
+    private readonly spec: ParameterSpec<S>,
+    private readonly host: ControlHost<S>,
+  ) {
+    const common = { min: spec.min, max: spec.max, step: spec.step };
+    this.slider = h('input', {
+      type: 'range',
+      ...common,
+      'aria-label': spec.label,
+      class: 'param-slider',
+    });
+    this.number = h('input', {
+      type: 'number',
+      ...common,
+      'aria-label': `${spec.label} value`,
+      class: 'param-number',
+    });
+    this.slider.addEventListener('input', () => this.setValue(Number(this.slider.value), 'slider'));
+    this.number.addEventListener('change', () => this.setValue(Number(this.number.value), 'number'));
+    this.play = h(
+      'button',
+      {
+        type: 'button',
+        class: 'play',
+        'aria-label': 'Play',
+        title: 'Play / pause (K)',
+        onclick: () => this.toggle(),
+      },
+      '▶',
+    );
+    this.element = h(
+      'div',
+      { class: 'param' },
+      h('span', { class: 'param-name', 'aria-hidden': 'true' }, spec.label),
+      this.slider,
+      this.number,
+      this.play,
+    );
+  }
+
+  private value(state: S): number {
+    return (state as Record_)[this.spec.key];
+  }
+
+  private setValue(value: number, coalesce: string): void {
+    if (!Number.isFinite(value)) return;
+    const clamped = Math.min(this.spec.max, Math.max(this.spec.min, value));
+    this.host.set({ ...this.host.get(), [this.spec.key]: clamped }, { coalesce, windowMs: 1500 });
+  }
+
+  /** Moves the parameter by `delta` twentieths of its range (keys on a lesson without steps). */
+  nudge(delta: number): void {
+    const span = this.spec.max - this.spec.min;
+    const v = this.value(this.host.get()) + (delta * span) / 20;
+    const clamped = Math.min(this.spec.max, Math.max(this.spec.min, v));
+    this.host.set(
+      { ...this.host.get(), [this.spec.key]: Number(clamped.toPrecision(12)) },
+      { coalesce: 'step-parameter', windowMs: 1500 },
+    );
+  }
+
+  update(state: S): void {
+    const value = this.value(state);
+    if (value === this.shown) return;
+    this.shown = value;
+    if (Number(this.slider.value) !== value) this.slider.value = String(value);
+    this.slider.setAttribute('aria-valuetext', `${this.spec.label} = ${fmt(value, 3)}`);
+    if (document.activeElement !== this.number) this.number.value = fmt(value, 3);
+  }
+
+  toggle(): void {
+    if (this.playing) this.stop();
+    else this.start();
+  }
+
+  private start(): void {
+    const spec = this.spec;
+    const span = spec.max - spec.min;
+    this.play.textContent = '❚❚';
+    this.play.setAttribute('aria-label', 'Pause');
+    const advance = (amount: number) => {
+      let v = this.value(this.host.get()) + amount;
+      if (v > spec.max + 1e-12) v = spec.min;
+      this.host.set(
+        { ...this.host.get(), [spec.key]: Math.min(spec.max, Number(v.toPrecision(12))) },
+        { record: false },
+      );
+    };
+    if (prefersReducedMotion()) {
+      // No continuous motion: one calm jump a second.
+      this.playing = { last: 0, timer: window.setInterval(() => advance(span / 10), 1000) };
+      return;
+    }
+    this.playing = { last: performance.now(), timer: 0 };
+    const tick = (now: number) => {
+      if (!this.playing) return;
+      const dt = Math.min(0.1, (now - this.playing.last) / 1000);
+      this.playing.last = now;
+      advance((dt * span) / 5);
+      this.playing.timer = requestAnimationFrame(tick);
+    };
+    this.playing.timer = requestAnimationFrame(tick);
+  }
+
+  stop(): void {
+    if (!this.playing) return;
+    cancelAnimationFrame(this.playing.timer);
+    window.clearInterval(this.playing.timer);
+    this.playing = null;
+    this.play.textContent = '▶';
+    this.play.setAttribute('aria-label', 'Play');
+  }
+}
+
+/** Step back / status / step forward for a construction with discrete steps. */
+export class StepControl<S> {
+  readonly element: HTMLElement;
+  private readonly back: HTMLButtonElement;
+  private readonly forward: HTMLButtonElement;
+  private readonly status: HTMLElement;
+  private shown = '';
+
+  constructor(
+    private readonly spec: StepsSpec<S>,
+    private readonly host: ControlHost<S>,
+  ) {
+    this.back = h(
+      'button',
+      { type: 'button', onclick: () => this.step(-1), title: 'Step back (PageUp, ←)' },
+      '◀ Step back',
+    );
+    this.forward = h(
+      'button',
+      { type: 'button', onclick: () => this.step(1), title: 'Step forward (PageDown, →, space)' },
+      'Step forward ▶',
+    );
+    this.status = h('span', { class: 'step-status', 'aria-live': 'polite' });
+    this.element = h('div', { class: 'steps' }, this.back, this.status, this.forward);
+  }
+
+  private current(state: S): number {
+    return (state as Record_)[this.spec.key];
+  }
+
+  step(delta: number): void {
+    const state = this.host.get();
+    const count = this.spec.count(state);
+    const k = Math.min(count, Math.max(0, this.current(state) + delta));
+    if (k !== this.current(state))
+      this.host.set({ ...state, [this.spec.key]: k }, { coalesce: 'step', windowMs: 0 });
+  }
+
+  stepTo(end: 'first' | 'last'): void {
+    const state = this.host.get();
+    const k = end === 'first' ? 0 : this.spec.count(state);
+    if (k !== this.current(state)) this.host.set({ ...state, [this.spec.key]: k });
+  }
+
+  update(state: S): void {
+    const k = this.current(state);
+    const count = this.spec.count(state);
+    const text = this.spec.describe(state, k);
+    const key = `${k}/${count}/${text}`;
+    if (key === this.shown) return;
+    this.shown = key;
+    // A lesson whose current figure has nothing to step hides the buttons.
+    this.element.style.display = count === 0 ? 'none' : '';
+    this.back.disabled = k <= 0;
+    this.forward.disabled = k >= count;
+    this.status.textContent = text;
+  }
+}

@@ -1,0 +1,96 @@
+/**
+ * Table rows updated in place: a panel's table keeps its row and cell
+ * elements, and each frame writes only the texts, classes and swatch colours
+ * that changed, instead of building the table again.
+ */
+import { h } from './dom';
+
+export interface Cell {
+  text: string;
+  /** A colour key drawn before the text. */
+  swatch?: string;
+}
+
+export interface RowSpec {
+  cells: readonly (string | Cell)[];
+  /** `current`, `future`, … (see the data-table styles). */
+  className?: string;
+  /** `data-*` attributes, e.g. `{ level: '2' }`. */
+  data?: Readonly<Record<string, string>>;
+  /** The first cell is a row heading (`th scope="row"`). */
+  heading?: boolean;
+}
+
+interface LiveCell {
+  element: HTMLTableCellElement;
+  text: Text;
+  swatch: HTMLElement | null;
+  swatchColor: string;
+}
+
+interface LiveRow {
+  element: HTMLTableRowElement;
+  cells: LiveCell[];
+  className: string;
+  data: string;
+}
+
+export class LiveRows {
+  private rows: LiveRow[] = [];
+
+  constructor(readonly body: HTMLTableSectionElement) {}
+
+  set(specs: readonly RowSpec[]): void {
+    specs.forEach((spec, i) => {
+      let row = this.rows[i];
+      if (!row || row.cells.length !== spec.cells.length) {
+        const fresh = this.create(spec);
+        if (row) row.element.replaceWith(fresh.element);
+        else this.body.append(fresh.element);
+        this.rows[i] = row = fresh;
+      }
+      const className = spec.className ?? '';
+      if (row.className !== className) {
+        row.className = className;
+        row.element.className = className;
+      }
+      const data = spec.data ? JSON.stringify(spec.data) : '';
+      if (row.data !== data) {
+        row.data = data;
+        for (const [key, value] of Object.entries(spec.data ?? {})) row.element.dataset[key] = value;
+      }
+      spec.cells.forEach((cell, c) => this.fill(row.cells[c], cell));
+    });
+    for (const extra of this.rows.splice(specs.length)) extra.element.remove();
+  }
+
+  private create(spec: RowSpec): LiveRow {
+    const cells: LiveCell[] = spec.cells.map((_, c) => {
+      const element = h(spec.heading && c === 0 ? 'th' : 'td', spec.heading && c === 0 ? { scope: 'row' } : {});
+      const text = document.createTextNode('');
+      element.append(text);
+      return { element, text, swatch: null, swatchColor: '' };
+    });
+    const element = h('tr', {}, ...cells.map((c) => c.element));
+    return { element, cells, className: '', data: '' };
+  }
+
+  private fill(live: LiveCell, cell: string | Cell): void {
+    const { text, swatch } = typeof cell === 'string' ? { text: cell, swatch: undefined } : cell;
+    if (live.text.data !== text) live.text.data = text;
+    if (swatch && !live.swatch) {
+      live.swatch = h('span', { class: 'swatch' });
+      live.element.prepend(live.swatch);
+    }
+    if (live.swatch) {
+      if (!swatch) {
+        live.swatch.remove();
+        live.swatch = null;
+        live.swatchColor = '';
+      } else if (live.swatchColor !== swatch) {
+        live.swatchColor = swatch;
+        live.swatch.style.background = swatch;
+      }
+    }
+  }
+}

@@ -1,0 +1,64 @@
+/**
+ * Keeps the address bar and this device's memory in step with a lesson: the
+ * link is written shortly after a change (at once when a gesture ends), with
+ * the views the user moved, and the same text is kept in localStorage for
+ * the next visit without a link.
+ */
+import { storageKey } from './lessonState';
+
+export class UrlSync {
+  private timer = 0;
+  private written = '';
+
+  constructor(
+    private readonly slug: string,
+    /** The query of the current state and views. */
+    private readonly query: () => string,
+    /** Called after each write (a link was just written). */
+    private readonly onWrite: () => void = () => undefined,
+  ) {}
+
+  /** The shareable link of the current state. */
+  link(): string {
+    return `#/${this.slug}?${this.query()}`;
+  }
+
+  /** Writes the link a little later; many changes in a row write once. */
+  schedule(delay = 100): void {
+    window.clearTimeout(this.timer);
+    this.timer = window.setTimeout(() => this.write(), delay);
+  }
+
+  write(): void {
+    window.clearTimeout(this.timer);
+    this.timer = 0;
+    const hash = this.link();
+    if (location.hash !== hash) history.replaceState(history.state, '', hash);
+    if (hash !== this.written) {
+      this.written = hash;
+      this.remember();
+    }
+    this.onWrite();
+  }
+
+  /** A write is waiting. */
+  get pending(): boolean {
+    return this.timer !== 0;
+  }
+
+  /** Keeps the state on this device, for the next visit without a link. */
+  remember(): void {
+    try {
+      localStorage.setItem(storageKey(this.slug), this.query());
+    } catch {
+      // Storage unavailable: the link still carries the state.
+    }
+  }
+
+  /** Stops writing to the address bar (the page is going); only remember. */
+  close(): void {
+    window.clearTimeout(this.timer);
+    this.timer = 0;
+    this.remember();
+  }
+}

@@ -1,0 +1,128 @@
+/**
+ * Axes and grids: the light grid of a geometry figure (visible lines only,
+ * about 60 px apart at any zoom) and the labelled axes of a function plot.
+ * Lines are counted by an integer index, never by adding a step to a large
+ * coordinate (which stops moving once the step is below its precision).
+ */
+import type { Painter } from './painter';
+import { type Bounds, niceStep } from './projection';
+
+/** Most lines a grid or an axis draws, whatever the numbers say. */
+const MAX_LINES = 400;
+
+/** The multiples k·step from `min` to `max` (at most MAX_LINES of them). */
+export function ticks(min: number, max: number, step: number): number[] {
+  if (!(step > 0) || !Number.isFinite(min) || !Number.isFinite(max)) return [];
+  const first = Math.ceil(min / step - 1e-9);
+  const last = Math.floor(max / step + 1e-9);
+  const values: number[] = [];
+  for (let k = first; k <= last && values.length < MAX_LINES; k++) values.push(k * step);
+  return values;
+}
+
+export function drawGrid(painter: Painter): void {
+  const v = painter.view;
+  if (v.dimension !== 2) return;
+  const a = v.toWorld([0, v.height]);
+  const b = v.toWorld([v.width, 0]);
+  const unitX = v.toScreen([1, 0])[0] - v.toScreen([0, 0])[0];
+  const unitY = v.toScreen([0, 0])[1] - v.toScreen([0, 1])[1];
+  const c = painter.ctx;
+  c.save();
+  c.strokeStyle = painter.theme.grid;
+  c.lineWidth = 1;
+  c.setLineDash([]);
+  c.globalAlpha = 1;
+  c.beginPath();
+  for (const x of ticks(a[0], b[0], niceStep(60 / unitX))) {
+    const sx = Math.round(v.toScreen([x, 0])[0]) + 0.5;
+    c.moveTo(sx, 0);
+    c.lineTo(sx, v.height);
+  }
+  for (const y of ticks(a[1], b[1], niceStep(60 / unitY))) {
+    const sy = Math.round(v.toScreen([0, y])[1]) + 0.5;
+    c.moveTo(0, sy);
+    c.lineTo(v.width, sy);
+  }
+  c.stroke();
+  c.strokeStyle = painter.theme.axis;
+  c.beginPath();
+  const [ox, oy] = v.toScreen([0, 0]);
+  if (ox >= 0 && ox <= v.width) {
+    c.moveTo(Math.round(ox) + 0.5, 0);
+    c.lineTo(Math.round(ox) + 0.5, v.height);
+  }
+  if (oy >= 0 && oy <= v.height) {
+    c.moveTo(0, Math.round(oy) + 0.5);
+    c.lineTo(v.width, Math.round(oy) + 0.5);
+  }
+  c.stroke();
+  c.restore();
+}
+
+export function drawPlotAxes(
+  painter: Painter,
+  bounds: Bounds,
+  xStep: number,
+  yStep: number,
+  xName = '',
+  yName = '',
+): void {
+  const c = painter.ctx;
+  const v = painter.view;
+  const theme = painter.theme;
+  const small = theme.sizes.small;
+  const xs = ticks(bounds.minX, bounds.maxX, xStep);
+  const ys = ticks(bounds.minY, bounds.maxY, yStep);
+  c.save();
+  c.setLineDash([]);
+  c.globalAlpha = 1;
+  c.strokeStyle = theme.grid;
+  c.lineWidth = 1;
+  c.beginPath();
+  for (const y of ys) {
+    const [x0, sy] = v.toScreen([bounds.minX, y]);
+    const [x1] = v.toScreen([bounds.maxX, y]);
+    c.moveTo(x0, sy);
+    c.lineTo(x1, sy);
+  }
+  for (const x of xs) {
+    const [sx, y0] = v.toScreen([x, bounds.minY]);
+    const [, y1] = v.toScreen([x, bounds.maxY]);
+    c.moveTo(sx, y0);
+    c.lineTo(sx, y1);
+  }
+  c.stroke();
+  c.strokeStyle = theme.axis;
+  c.lineWidth = Math.max(1, theme.sizes.thin);
+  const axisY = bounds.minY <= 0 && bounds.maxY >= 0 ? 0 : bounds.minY;
+  c.beginPath();
+  const [ax0, ay] = v.toScreen([bounds.minX, axisY]);
+  const [ax1] = v.toScreen([bounds.maxX, axisY]);
+  c.moveTo(ax0, ay);
+  c.lineTo(ax1, ay);
+  const [lx, ly0] = v.toScreen([bounds.minX, bounds.minY]);
+  const [, ly1] = v.toScreen([bounds.minX, bounds.maxY]);
+  c.moveTo(lx, ly0);
+  c.lineTo(lx, ly1);
+  c.stroke();
+  c.restore();
+  const fmt = (n: number) => String(Number(n.toFixed(6)));
+  const muted = { size: small, color: theme.muted };
+  for (const x of xs) {
+    const [sx, sy] = v.toScreen([x, bounds.minY]);
+    painter.screenLabel(fmt(x), sx, sy + small * 0.9, { ...muted, align: 'center' });
+  }
+  for (const y of ys) {
+    const [sx, sy] = v.toScreen([bounds.minX, y]);
+    painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...muted, align: 'right' });
+  }
+  if (xName) {
+    const [sx, sy] = v.toScreen([bounds.maxX, bounds.minY]);
+    painter.screenLabel(xName, sx, sy + small * 2.1, { ...muted, size: small * 1.1, align: 'right' });
+  }
+  if (yName) {
+    const [sx, sy] = v.toScreen([bounds.minX, bounds.maxY]);
+    painter.screenLabel(yName, sx + small * 0.4, sy - small * 0.2, { ...muted, size: small * 1.1 });
+  }
+}
