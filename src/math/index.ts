@@ -102,6 +102,7 @@ export { bezierJointContinuity } from './continuity';
 export { bezierArcLength } from './arcLength';
 export { convexHull, convexHullContains } from './convexHull';
 export { flattenBezier } from './flatten';
+export { bezierPieceBoxes, nearestOnBezierPieces } from './nearestOnBezierPieces';
 
 // Cost of solving the spline's system, and the counting argument
 export type { ConstraintCount } from './solveCost';
