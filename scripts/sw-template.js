@@ -34,7 +34,7 @@ self.addEventListener('fetch', (event) => {
     event.respondWith(
       fetch(request).catch(() =>
         caches
-          .match('./', { ignoreSearch: true })
+          .match('./', { ignoreSearch: true, ignoreVary: true })
           .then((hit) => hit || caches.match('./index.html')),
       ),
     );
@@ -42,7 +42,7 @@ self.addEventListener('fetch', (event) => {
   }
   // Every other file is named by its content (or listed above): the stored copy is right.
   event.respondWith(
-    caches.match(request, { ignoreSearch: true }).then(
+    caches.match(request, { ignoreSearch: true, ignoreVary: true }).then(
       (hit) =>
         hit ||
         fetch(request).catch(

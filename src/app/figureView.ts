@@ -288,6 +288,7 @@ export class FigureView<S, M> {
           depth: handle.position.length > 2,
         };
       }),
+      this.view,
     );
   }
 

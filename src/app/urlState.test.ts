@@ -80,7 +80,7 @@ describe('URL state', () => {
   });
 
   it('an empty query gives the defaults with no notice', () => {
-    expect(decodeState(schema, '')).toEqual({ state: defaultsOf(schema), issues: [] });
+    expect(decodeState(schema, '')).toEqual({ state: defaultsOf(schema), issues: [], views: {} });
   });
 
   it('keeps the valid fields of a damaged link and says what it ignored', () => {
@@ -154,5 +154,20 @@ describe('URL state', () => {
     const a = defaultsOf(schema);
     (a.p[0] as unknown as number[])[0] = 99;
     expect(defaultsOf(schema).p[0][0]).toBe(0);
+  });
+});
+
+describe('figure views in the link', () => {
+  it('reads the view of a named figure apart from the state, and reports one of an unknown figure', () => {
+    const decoded = decodeState(schema, 't=0.25&view.map=1,2,80&view.nope=1,2,3', ['map']);
+    expect(decoded.state.t).toBe(0.25);
+    expect(decoded.views).toEqual({ map: '1,2,80' });
+    expect(decoded.issues).toEqual(['unknown setting "view.nope"']);
+  });
+
+  it('writes the views after the state, so a prepared link opens the picture shared', () => {
+    const query = encodeState(schema, defaultsOf(schema), { map: '1,2,80' });
+    expect(query.endsWith('&view.map=1,2,80')).toBe(true);
+    expect(decodeState(schema, query, ['map']).views).toEqual({ map: '1,2,80' });
   });
 });

@@ -50,7 +50,8 @@ export class HandleKeys {
     private readonly cb: HandleKeyCallbacks,
   ) {}
 
-  sync(handles: readonly KeyHandle[]): void {
+  /** Places one stand-in per handle; `size` is the figure's, in CSS pixels. */
+  sync(handles: readonly KeyHandle[], size: { width: number; height: number }): void {
     const seen = new Set<string>();
     for (const handle of handles) {
       seen.add(handle.id);
@@ -63,8 +64,13 @@ export class HandleKeys {
       const before = this.shown.get(handle.id);
       const depth = handle.depth === true;
       if (before?.name !== handle.name) el.setAttribute('aria-label', handle.name);
-      if (before?.x !== handle.x || before?.y !== handle.y)
-        el.style.transform = `translate(${handle.x}px, ${handle.y}px)`;
+      if (before?.x !== handle.x || before?.y !== handle.y) {
+        // A point far off the figure waits at its edge (still reachable by Tab),
+        // not millions of pixels away where the browser would have to place it.
+        const x = Math.max(-16, Math.min(handle.x, size.width + 16));
+        const y = Math.max(-16, Math.min(handle.y, size.height + 16));
+        el.style.transform = `translate(${x}px, ${y}px)`;
+      }
       if (before?.depth !== depth)
         el.setAttribute(
           'aria-description',

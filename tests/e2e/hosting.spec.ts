@@ -89,3 +89,45 @@ test('once loaded, the app works offline', async ({ page, context }) => {
   await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
   await context.setOffline(false);
 });
+
+test('after one visit to the gallery, every lesson opens offline with its formula fonts, even with the HTTP cache cleared', async ({
+  page,
+  context,
+}) => {
+  test.setTimeout(90_000);
+  await page.goto('./#/');
+  const slugs = await page
+    .locator('a.card')
+    .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
+  expect(slugs.length).toBeGreaterThan(0);
+  // The worker stores every file of the build when it installs.
+  await page.evaluate(async () => {
+    await navigator.serviceWorker.ready;
+  });
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Network.clearBrowserCache');
+  await context.setOffline(true);
+  for (const slug of slugs) {
+    await page.goto(`./#/${slug}`);
+    await expect(page.locator('.lesson-page h1')).toBeVisible();
+    await expect(page.locator('.katex').first()).toBeVisible();
+    const fonts = await page.evaluate(async () => {
+      await document.fonts.ready;
+      const faces = [...document.fonts];
+      return {
+        failed: faces.filter((f) => f.status === 'error').map((f) => f.family),
+        main: faces.some((f) => f.family === 'KaTeX_Main' && f.status === 'loaded'),
+      };
+    });
+    expect(fonts.failed, `${slug}: fonts that failed offline`).toEqual([]);
+    expect(fonts.main, `${slug}: KaTeX_Main loaded offline`).toBe(true);
+  }
+  // A file the build does not have is an error, not the page.
+  const missing = await page.evaluate(async () => {
+    const response = await fetch('./assets/no-such-file.js');
+    return { status: response.status, type: response.headers.get('content-type') };
+  });
+  expect(missing.status).toBeGreaterThanOrEqual(400);
+  expect(missing.type ?? '').not.toContain('text/html');
+  await context.setOffline(false);
+});

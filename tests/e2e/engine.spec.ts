@@ -1,0 +1,141 @@
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures';
+
+/** Every lesson, as the gallery lists it (no list kept by hand). */
+async function lessonSlugs(page: Page): Promise<string[]> {
+  await page.goto('./#/');
+  await expect(page.locator('a.card').first()).toBeVisible();
+  return page.locator('a.card').evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
+}
+
+const nextFrame = (page: Page) =>
+  page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+/** Starts collecting the durations of animation frames that took over 50 ms (Long Animation Frames). */
+async function watchLongFrames(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const store = window as unknown as { longFrames: number[] };
+    store.longFrames = [];
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) store.longFrames.push(entry.duration);
+    }).observe({ type: 'long-animation-frame' });
+  });
+}
+
+const longFrames = (page: Page) =>
+  page.evaluate(() => (window as unknown as { longFrames: number[] }).longFrames);
+
+/** Opens the preset with the most movable points (the busiest figure). */
+async function openBusiestPreset(page: Page): Promise<void> {
+  const presets = page.locator('[data-preset]');
+  const count = await presets.count();
+  let best = -1;
+  let most = -1;
+  for (let i = 0; i < count; i++) {
+    await presets.nth(i).click();
+    await nextFrame(page);
+    const handles = await page.locator('.handle-proxy').count();
+    if (handles > most) {
+      most = handles;
+      best = i;
+    }
+  }
+  if (best >= 0) await presets.nth(best).click();
+  await nextFrame(page);
+}
+
+test('zooming 100 notches in and out keeps every frame under 50 ms, on every lesson', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  for (const slug of await lessonSlugs(page)) {
+    await page.goto(`./#/${slug}`);
+    await expect(page.locator('canvas').first()).toBeVisible();
+    await openBusiestPreset(page);
+    const canvas = page.locator('.figure-geometry canvas, .figure-space canvas').first();
+    if ((await canvas.count()) === 0) continue;
+    const box = (await canvas.boundingBox())!;
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await watchLongFrames(page);
+    for (const direction of [-1, 1]) {
+      for (let notch = 0; notch < 100; notch++) {
+        await page.mouse.wheel(0, direction * 120);
+        await nextFrame(page);
+      }
+    }
+    expect(await longFrames(page), `${slug}: frames over 50 ms`).toEqual([]);
+  }
+});
+
+test('a link to points a million units apart opens without a long frame, on every lesson', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  for (const slug of await lessonSlugs(page)) {
+    await page.goto(`./#/${slug}`);
+    await expect(page.locator('canvas').first()).toBeVisible();
+    // Zoom in first: the far point must not make the kept view expensive.
+    const canvas = page.locator('.figure-geometry canvas').first();
+    if (await canvas.count()) {
+      const box = (await canvas.boundingBox())!;
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      for (let notch = 0; notch < 30; notch++) await page.mouse.wheel(0, -120);
+    }
+    await nextFrame(page);
+    await expect.poll(() => new URL(page.url()).hash).toContain('?');
+    const hash = new URL(page.url()).hash;
+    // The first list of 2D points in the link: its last point goes a million units away.
+    const far = hash.replace(/=(-?[\d.]+,-?[\d.]+(?:;-?[\d.]+,-?[\d.]+)+)/, (_, list: string) => {
+      const points = list.split(';');
+      points[points.length - 1] = '1000000,-1000000';
+      return `=${points.join(';')}`;
+    });
+    if (far === hash) continue;
+    await watchLongFrames(page);
+    await page.evaluate((h) => (location.hash = h), far);
+    await expect.poll(() => new URL(page.url()).hash).toContain('1000000');
+    for (let i = 0; i < 5; i++) await nextFrame(page);
+    expect(await longFrames(page), `${slug}: frames over 50 ms`).toEqual([]);
+  }
+});
+
+test('a moved view is part of the link and opens exactly as shared', async ({ page }) => {
+  await page.goto('./#/de-casteljau');
+  const p1 = page.getByRole('button', { name: /^P1 at/ });
+  const canvas = page.locator('canvas[data-figure="construction"]');
+  const box = (await canvas.boundingBox())!;
+  await page.mouse.move(box.x + 40, box.y + 40);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 160, box.y + 100, { steps: 5 });
+  await page.mouse.up();
+  await page.mouse.move(box.x + 300, box.y + 200);
+  await page.mouse.wheel(0, -240);
+  await expect.poll(() => new URL(page.url()).hash).toMatch(/view\.construction=/);
+  const shared = await p1.boundingBox();
+  const link = page.url();
+  await page.goto('./#/');
+  await page.goto(link);
+  await expect.poll(async () => (await p1.boundingBox())?.x).toBeCloseTo(shared!.x, 0);
+  expect((await p1.boundingBox())!.y).toBeCloseTo(shared!.y, 0);
+  // A view that cannot be read is fitted, and the notice says so.
+  await page.goto('./#/de-casteljau?view.construction=1,2,-3');
+  await expect(page.getByRole('status').getByText(/view of .* could not be read/)).toBeVisible();
+});
+
+test('the gallery loads no lesson code and no formula typesetting', async ({ page }) => {
+  const scripts: string[] = [];
+  page.on('request', (r) => {
+    if (r.resourceType() === 'script') scripts.push(new URL(r.url()).pathname);
+  });
+  await page.goto('./#/');
+  await expect(page.locator('a.card img').first()).toBeVisible();
+  await page.evaluate(() => document.fonts.ready);
+  expect(scripts.filter((s) => /lesson|katex/i.test(s))).toEqual([]);
+  // Each card's thumbnail is an image drawn at build time, and it is there.
+  const broken = await page
+    .locator('a.card img')
+    .evaluateAll((images) =>
+      (images as HTMLImageElement[]).filter((i) => !i.complete || i.naturalWidth === 0).length,
+    );
+  expect(broken).toBe(0);
+});
