@@ -117,3 +117,7 @@ export { projectiveMap } from './projectiveMap';
 export type { Deviation } from './curveDeviation';
 export { bezierDeviation, sampledDeviation } from './curveDeviation';
 export { controlPolygonGap } from './controlPolygonGap';
+export { rationalBezierPoint, sampleRationalBezier } from './rationalBezier';
+export { subdivisionLevels } from './subdivision';
+export { multiplyPlaneMatrices, translationMatrix, homogeneousWeight } from './homogeneousMatrix';
+export { signedAngle } from './signedAngle';
