@@ -1,12 +1,11 @@
-import type { RoadState } from './state';
+import type { Point } from '../../math';
 
 /**
  * What is unusual about these villages, in words for the lecture: villages on
  * top of each other, all in one line, all in one place. Each method still
  * draws something; these sentences say why it looks as it does.
  */
-export function villageNotes(state: RoadState): string[] {
-  const v = state.v;
+export function villageNotes(v: readonly Point[]): string[] {
   const notes: string[] = [];
   let minX = Infinity;
   let maxX = -Infinity;

@@ -1,21 +1,19 @@
 import { fmt, h, setChildren } from '../../app/dom';
+import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
-import type { DrawInfo, LessonApi, LessonPanel } from '../../app/lesson';
-import { bezierToPowerBasis } from '../../math';
-import { renderFormula, texNumber } from '../../render/formula';
-import { localParameter, primaryRoad } from './figure';
+import { setText } from './liveDom';
 import { methodSection } from './methodPanel';
-import { villageNotes } from './notes';
+import type { RoadModel } from './model';
+import { segmentSection } from './segmentPanel';
 import { solveSection } from './solvePanel';
 import { MAX_VILLAGES, type RoadState, insertVillage, keepStepEnd, segmentCount } from './state';
 import './road.css';
 
-const LETTERS = ['a', 'b', 'c', 'd'];
-
-export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
+export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<RoadState, RoadModel> {
   const method = methodSection(api);
   const solve = solveSection();
+  const segment = segmentSection();
 
   const slider = h('input', {
     type: 'range',
@@ -27,9 +25,6 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
     api.set({ ...api.get(), s: Number(slider.value) }, { coalesce: 'road-s', windowMs: 1500 }),
   );
   const sliderValue = h('span', {});
-  const segmentTitle = h('h2', {});
-  const segmentText = h('p', { class: 'note' });
-  const segmentFormula = h('div', {});
 
   const comb = checkbox(api, {
     id: 'road-comb',
@@ -47,6 +42,8 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
     remove: (s) => keepStepEnd(s, { ...s, v: s.v.slice(0, -1) }),
   });
   const notes = h('div', {});
+  let shownNotes: readonly string[] = [];
+  let hover: string | null = null;
 
   const element = h(
     'div',
@@ -75,81 +72,34 @@ export function roadPanel(api: LessonApi<RoadState>): LessonPanel<RoadState> {
       slider,
       sliderValue,
     ),
-    h(
-      'section',
-      { 'aria-label': 'Segment coefficients' },
-      segmentTitle,
-      segmentText,
-      segmentFormula,
-    ),
+    segment.element,
   );
 
   return {
     element,
-    update(state: RoadState, info: DrawInfo) {
-      method.update(state);
-      solve.update(state);
+    update(m, state) {
+      method.update(m, state);
+      solve.update(m);
       comb.update(state);
       pointCount.update(state);
-      const count = segmentCount(state);
-      slider.max = String(count);
+      const max = String(segmentCount(state));
+      if (slider.max !== max) slider.max = max;
       if (Number(slider.value) !== state.s) slider.value = String(state.s);
-      const { piece, p } = localParameter(state.s, count);
-      sliderValue.textContent = `p̄ = ${fmt(state.s, 2)}: segment ${piece}, p = ${fmt(p, 2)}`;
-      updateSegment(state, info, segmentTitle, segmentText, segmentFormula);
-      const lines = villageNotes(state);
-      setChildren(
-        notes,
-        lines.map((line) => h('p', { class: 'note', role: 'note' }, line)),
-      );
+      const { piece, p } = m.along;
+      setText(sliderValue, `p̄ = ${fmt(state.s, 2)}: segment ${piece}, p = ${fmt(p, 2)}`);
+      segment.update(m, hover);
+      // The list of notes changes only when the villages' oddities do.
+      if (m.notes.join('\n') !== shownNotes.join('\n')) {
+        shownNotes = m.notes;
+        setChildren(
+          notes,
+          m.notes.map((line) => h('p', { class: 'note', role: 'note' }, line)),
+        );
+      }
+    },
+    hover(id) {
+      hover = id;
+      segment.update(api.model(), hover);
     },
   };
-}
-
-/** The coefficients of one segment: the one under the pointer, else the one the marker is on. */
-function updateSegment(
-  state: RoadState,
-  info: DrawInfo,
-  title: HTMLElement,
-  text: HTMLElement,
-  formula: HTMLElement,
-): void {
-  const road = state.overlay ? null : primaryRoad(state);
-  const pieces = road?.kind === 'pieces' ? road.pieces : [];
-  if (!pieces.length) {
-    title.textContent = 'Coefficients of a segment';
-    text.textContent = state.overlay
-      ? 'Turn off the comparison to read the coefficients of one road.'
-      : 'No segment of this road is drawn yet.';
-    renderFormula(formula, '', true);
-    return;
-  }
-  // While the solve is under way only the last pieces exist, newest first.
-  const offset = segmentCount(state) - pieces.length;
-  const hovered = info.hover?.startsWith('seg') ? Number(info.hover.slice(3)) : NaN;
-  const i =
-    Number.isInteger(hovered) && hovered < pieces.length
-      ? hovered
-      : offset > 0
-        ? 0
-        : localParameter(state.s, pieces.length).piece;
-  const index = offset + i;
-  const coefficients = bezierToPowerBasis(pieces[i]);
-  title.textContent = `Segment ${index}: from P${index} to P${(index + 1) % state.v.length}`;
-  text.textContent =
-    'Hover over the road, or move p̄, to choose a segment. Its coefficients, with the local parameter p from 0 to 1:';
-  const power = (k: number) => (k === 0 ? '' : k === 1 ? '\\,p' : `\\,p^{${k}}`);
-  const names = coefficients.map((_, k) => `${LETTERS[k]}_{${index}}${power(k)}`).join(' + ');
-  const poly = (d: number) =>
-    coefficients
-      .map((c, k) => {
-        const sign = k === 0 ? '' : c[d] < 0 ? ' - ' : ' + ';
-        return `${sign}${texNumber(k === 0 ? c[d] : Math.abs(c[d]), 3)}${power(k)}`;
-      })
-      .join('');
-  renderFormula(
-    formula,
-    `\\begin{aligned}P(p) &= ${names}\\\\ x(p) &= ${poly(0)}\\\\ y(p) &= ${poly(1)}\\end{aligned}`,
-    true,
-  );
 }

@@ -5,6 +5,7 @@ import {
   clampedCubicTangents,
   closedCubicTangents,
   cubicSplineSegments,
+  elevateDegree,
   lagrangePoint,
   naturalCubicTangents,
   quadraticSplineC1,
@@ -60,12 +61,21 @@ export type Road =
   | { kind: 'polyline'; coords: Float64Array }
   | { kind: 'missing'; why: string };
 
+/** Pieces of degree 1 or 2 as the cubics they equal, so every road draws as exact cubics. */
+export function asCubics(pieces: readonly Point[][]): Point[][] {
+  return pieces.map((piece) => {
+    let cubic = piece;
+    while (cubic.length < 4) cubic = elevateDegree(cubic);
+    return cubic;
+  });
+}
+
 /** The start and end gradients chosen with the handles. */
 export const startGradient = (state: RoadState): Point => state.a;
 export const endGradient = (state: RoadState): Point => state.b;
 
 /** The first control point of the quadratic pieces: P0 + D0/2 (a quadratic's P′(0) = 2(B0 − P0)). */
-export const quadraticControl = (state: RoadState): [number, number] => [
+export const quadraticControl = (state: RoadState): Point => [
   state.v[0][0] + state.q[0] / 2,
   state.v[0][1] + state.q[1] / 2,
 ];
@@ -95,8 +105,15 @@ export function roadGradients(id: CurveId, state: RoadState): Point[] | undefine
   }
 }
 
-/** The road a curve draws through the state's villages. */
-export function buildRoad(id: CurveId, state: RoadState): Road {
+/**
+ * The road a curve draws through the state's villages; a Hermite-type curve
+ * uses `gradients` when given (the ones the lesson's solve found), else its own.
+ */
+export function buildRoad(
+  id: CurveId,
+  state: RoadState,
+  gradients: readonly Point[] | undefined = roadGradients(id, state),
+): Road {
   const v = state.v;
   const n = v.length;
   switch (id) {
@@ -116,7 +133,7 @@ export function buildRoad(id: CurveId, state: RoadState): Road {
     case 'clamped':
       return {
         kind: 'pieces',
-        pieces: cubicSplineSegments(v, roadGradients(id, state)!),
+        pieces: cubicSplineSegments(v, gradients!),
         closed: false,
       };
     case 'ring':
@@ -128,7 +145,7 @@ export function buildRoad(id: CurveId, state: RoadState): Road {
       }
       return {
         kind: 'pieces',
-        pieces: cubicSplineSegments(v, roadGradients(id, state)!, true),
+        pieces: cubicSplineSegments(v, gradients!, true),
         closed: true,
       };
     case 'lagrange':

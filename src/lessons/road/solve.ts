@@ -69,18 +69,19 @@ export function solveProgress(n: number, step: number): SolveProgress {
 /** Is D_i known at this point of the solve? */
 export const isFixed = (n: number, progress: SolveProgress, i: number) => i >= n - progress.fixed;
 
+/** The gradients D0 … Dm the solve found, as vectors (x from one trace, y from the other). */
+export const solvedGradients = (solve: RoadSolve): Point[] =>
+  solve.trace[0].solution.map((dx, i) => [dx, solve.trace[1].solution[i]]);
+
 /** The pieces of road whose two end gradients are known: segments n−fixed … n−2. */
 export function builtPieces(
-  state: RoadState,
-  solve: RoadSolve,
+  villages: readonly Point[],
+  gradients: readonly Point[],
   progress: SolveProgress,
 ): Point[][] {
-  const from = solve.n - progress.fixed;
   if (progress.fixed < 2) return [];
-  const tangents = state.v
-    .slice(from)
-    .map((_, k) => [solve.trace[0].solution[from + k], solve.trace[1].solution[from + k]]);
-  return cubicSplineSegments(state.v.slice(from), tangents);
+  const from = villages.length - progress.fixed;
+  return cubicSplineSegments(villages.slice(from), gradients.slice(from));
 }
 
 /** Text for the step status: what step k shows. */

@@ -1,7 +1,8 @@
-import { fmt, h, dataTable } from '../../app/dom';
+import { dataTable, fmt, h, setChildren } from '../../app/dom';
+import { type RowSpec, LiveRows } from '../../app/liveTable';
+import { markForFit } from '../../render/fit';
 import type { RoadSolve, SolveProgress } from './solve';
 import { isFixed } from './solve';
-import { markForFit } from '../../render/fit';
 
 /** Up to this many rows the matrix is written out in full; beyond, by its three diagonals. */
 export const FULL_MATRIX_ROWS = 8;
@@ -19,64 +20,77 @@ const entry = (value: number) => (Number.isInteger(value) ? String(value) : fmt(
  * row, as it stands at this step: rows already swept read [0 1 γi | Γi],
  * gradients already fixed by back substitution fill the D columns. Both
  * coordinates share the matrix, so x and y are two right-hand-side columns.
+ * Beside it, the gradients it yields. The tables keep their rows and cells;
+ * a step or a drag writes only the texts and classes that changed.
  */
-export function systemTable(solve: RoadSolve, progress: SolveProgress): HTMLElement {
-  const n = solve.n;
-  const full = n <= FULL_MATRIX_ROWS;
-  const head = h(
-    'tr',
-    {},
-    h('th', { scope: 'col' }, 'Row'),
-    full
-      ? Array.from({ length: n }, (_, j) => h('th', { scope: 'col' }, `D${j}`))
-      : [
-          h('th', { scope: 'col' }, 'a'),
-          h('th', { scope: 'col' }, 'b'),
-          h('th', { scope: 'col' }, 'c'),
-        ],
-    h('th', { scope: 'col', class: 'rhs' }, 'rhs x'),
-    h('th', { scope: 'col' }, 'rhs y'),
-  );
+export function systemTables() {
+  const head = h('tr', {});
   const body = h('tbody', {});
-  const gradients = h('tbody', {});
-  let previous = -1;
-  const span = full ? n + 3 : 6;
-  for (const i of shownRows(n, progress.row)) {
-    if (i > previous + 1) {
-      body.append(gapRow(i - previous - 1, span));
-      gradients.append(gapRow(i - previous - 1, 3));
-    }
-    body.append(matrixRow(solve, progress, i, full));
-    gradients.append(gradientRow(solve, progress, i));
-    previous = i;
-  }
-  if (previous < n - 1) {
-    body.append(gapRow(n - 1 - previous, span));
-    gradients.append(gapRow(n - 1 - previous, 3));
-  }
+  const gradientBody = h('tbody', {});
+  const rows = new LiveRows(body);
+  const gradients = new LiveRows(gradientBody);
   // Two tables, the system and the gradients it yields, so each fits a narrow
   // panel (and a projector) without losing columns; marked to shrink if need be.
-  return markForFit(
+  const element = h(
+    'div',
+    { class: 'road-system' },
     h(
-      'div',
-      { class: 'road-system' },
-      h(
-        'table',
-        { class: 'data-table', 'aria-label': 'Tridiagonal system' },
-        h('thead', {}, head),
-        body,
-      ),
-      dataTable('Gradients found', ['Gradient', 'Dx', 'Dy'], gradients, 'road-gradients'),
+      'table',
+      { class: 'data-table', 'aria-label': 'Tridiagonal system' },
+      h('thead', {}, head),
+      body,
     ),
+    dataTable('Gradients found', ['Gradient', 'Dx', 'Dy'], gradientBody, 'road-gradients'),
   );
+  let shownColumns = '';
+  let shownWidths = '';
+
+  return {
+    element,
+    update(solve: RoadSolve, progress: SolveProgress) {
+      const n = solve.n;
+      const full = n <= FULL_MATRIX_ROWS;
+      const columns = full ? Array.from({ length: n }, (_, j) => `D${j}`) : ['a', 'b', 'c'];
+      if (columns.join() !== shownColumns) {
+        shownColumns = columns.join();
+        setChildren(
+          head,
+          h('th', { scope: 'col' }, 'Row'),
+          columns.map((name) => h('th', { scope: 'col' }, name)),
+          h('th', { scope: 'col', class: 'rhs' }, 'rhs x'),
+          h('th', { scope: 'col' }, 'rhs y'),
+        );
+      }
+      const matrix: RowSpec[] = [];
+      const found: RowSpec[] = [];
+      let previous = -1;
+      const gap = (count: number) => {
+        const text = `⋮ ${count} more row${count === 1 ? '' : 's'} of the same form`;
+        matrix.push({ className: 'gap', cells: [text] });
+        found.push({ className: 'gap', cells: [text] });
+      };
+      for (const i of shownRows(n, progress.row)) {
+        if (i > previous + 1) gap(i - previous - 1);
+        matrix.push(matrixRow(solve, progress, i, full));
+        found.push(gradientRow(solve, progress, i));
+        previous = i;
+      }
+      if (previous < n - 1) gap(n - 1 - previous);
+      rows.set(matrix);
+      gradients.set(found);
+      styleCells(body, full, columns.length + 3);
+      styleCells(gradientBody, false, 3);
+      // The tables are monospaced: their width follows the longest text of each column.
+      const widths = `${columnWidths(matrix)}|${columnWidths(found)}`;
+      if (widths !== shownWidths) {
+        shownWidths = widths;
+        markForFit(element);
+      }
+    },
+  };
 }
 
-function matrixRow(
-  solve: RoadSolve,
-  progress: SolveProgress,
-  i: number,
-  full: boolean,
-): HTMLElement {
+function matrixRow(solve: RoadSolve, progress: SolveProgress, i: number, full: boolean): RowSpec {
   const n = solve.n;
   const { sub, diag, sup } = solve.matrix;
   const swept = i < progress.swept;
@@ -86,57 +100,74 @@ function matrixRow(
   const b = swept ? 1 : diag[i];
   const c = i < n - 1 ? (swept ? gamma : sup[i]) : null;
   const rhs = [0, 1].map((k) => (swept ? solve.trace[k].Gamma[i] : solve.rhs[k][i]));
-  const cells: HTMLElement[] = [];
-  if (full) {
-    for (let j = 0; j < n; j++) {
-      const value = j === i - 1 ? a : j === i ? b : j === i + 1 ? c : 0;
-      cells.push(
-        h('td', { class: j === i - 1 || j === i || j === i + 1 ? '' : 'zero' }, entry(value ?? 0)),
-      );
-    }
-  } else {
-    cells.push(
-      h('td', {}, a === null ? '' : entry(a)),
-      h('td', {}, entry(b)),
-      h('td', {}, c === null ? '' : entry(c)),
-    );
-  }
-  const classes = [i === progress.row ? 'current' : '', swept ? 'swept' : '']
-    .filter(Boolean)
-    .join(' ');
-  return h(
-    'tr',
-    {
-      class: classes,
-      'data-row': i,
-      'data-swept': swept ? 1 : 0,
-    },
-    h('th', { scope: 'row' }, `row ${i}`),
-    cells,
-    h('td', { class: 'rhs' }, number(rhs[0])),
-    h('td', {}, number(rhs[1])),
-  );
+  const entries = full
+    ? Array.from({ length: n }, (_, j) =>
+        entry((j === i - 1 ? a : j === i ? b : j === i + 1 ? c : 0) ?? 0),
+      )
+    : [a === null ? '' : entry(a), entry(b), c === null ? '' : entry(c)];
+  return {
+    heading: true,
+    className: [i === progress.row ? 'current' : '', swept ? 'swept' : '']
+      .filter(Boolean)
+      .join(' '),
+    data: { row: String(i), swept: swept ? '1' : '0' },
+    cells: [`row ${i}`, ...entries, number(rhs[0]), number(rhs[1])],
+  };
 }
 
 /** Row i of the gradients table: Di for x and y once back substitution has fixed it. */
-function gradientRow(solve: RoadSolve, progress: SolveProgress, i: number): HTMLElement {
+function gradientRow(solve: RoadSolve, progress: SolveProgress, i: number): RowSpec {
   const fixed = isFixed(solve.n, progress, i);
-  const current = i === progress.row && fixed;
-  return h(
-    'tr',
-    { class: current ? 'current' : '', 'data-row': i, 'data-fixed': fixed ? 1 : 0 },
-    h('th', { scope: 'row' }, `D${i}`),
-    h('td', {}, fixed ? number(solve.trace[0].solution[i]) : '—'),
-    h('td', {}, fixed ? number(solve.trace[1].solution[i]) : '—'),
-  );
+  return {
+    heading: true,
+    className: i === progress.row && fixed ? 'current' : '',
+    data: { row: String(i), fixed: fixed ? '1' : '0' },
+    cells: [
+      `D${i}`,
+      fixed ? number(solve.trace[0].solution[i]) : '—',
+      fixed ? number(solve.trace[1].solution[i]) : '—',
+    ],
+  };
 }
 
-function gapRow(count: number, span: number): HTMLElement {
-  return h(
-    'tr',
-    { class: 'gap' },
-    h('td', { colspan: span }, `⋮ ${count} more row${count === 1 ? '' : 's'} of the same form`),
-  );
+/**
+ * What LiveRows does not set: a gap row spans the table; in a full matrix
+ * the entries off the three diagonals are faint zeros; the right-hand side
+ * for x is set off by a rule.
+ */
+function styleCells(body: HTMLTableSectionElement, full: boolean, span: number): void {
+  for (const row of body.rows) {
+    if (row.classList.contains('gap')) {
+      if (row.cells[0].colSpan !== span) row.cells[0].colSpan = span;
+      continue;
+    }
+    if (span === 3) continue;
+    const i = Number(row.dataset.row);
+    const cells = row.cells;
+    for (let c = 1; c < cells.length; c++) {
+      const j = c - 1;
+      const zero = full && j < span - 3 && Math.abs(j - i) > 1;
+      const rhs = c === cells.length - 2;
+      setClass(cells[c], zero ? 'zero' : rhs ? 'rhs' : '');
+    }
+  }
+}
+
+function setClass(cell: HTMLTableCellElement, name: string): void {
+  if (cell.className !== name) cell.className = name;
+}
+
+/** The longest text of each column, as a key: a monospaced table is as wide as these. */
+function columnWidths(rows: readonly RowSpec[]): string {
+  const widths: number[] = [];
+  for (const row of rows) {
+    if (row.className === 'gap') continue;
+    row.cells.forEach((cell, c) => {
+      const text = typeof cell === 'string' ? cell : cell.text;
+      widths[c] = Math.max(widths[c] ?? 0, text.length);
+    });
+  }
+  return widths.join(',');
 }
 
 /** Which rows a long system shows: its first and last few and those around the current row. */

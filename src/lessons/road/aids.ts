@@ -1,0 +1,106 @@
+import type { DrawInfo } from '../../app/lesson';
+import type { Painter } from '../../render/painter';
+import { LABEL_VILLAGES } from './handles';
+import { drawRoadway } from './mapDrawing';
+import type { RoadModel } from './model';
+import { isFixed } from './solve';
+
+// What the map draws around the road to show how it was built: the chosen
+// gradients and control points of each method, the roads it must join, and
+// the solve as it goes. Every position comes from the model.
+
+/** Up to this many villages the quadratic's control polygon is drawn. */
+const POLYGON_VILLAGES = 60;
+
+/** Construction lines of each method: gradients, control points, chosen ends. */
+export function drawMethodAids(painter: Painter, m: RoadModel, info: DrawInfo): void {
+  if (info.thumbnail) return;
+  const { theme } = painter;
+  const { state } = m;
+  const v = state.v;
+  const arrow = { color: theme.accent, width: theme.sizes.line };
+  if (m.usesQuadraticHandle) {
+    const controls = m.quadraticPolygon;
+    if (controls && v.length <= POLYGON_VILLAGES) {
+      // The control polygon P0 B0 P1 B1 …: each Bi is the reflection of B(i−1) in Pi.
+      painter.polyline(controls.polygon, {
+        color: theme.polygon,
+        width: theme.sizes.thin,
+        dash: [5, 5],
+      });
+      for (const b of controls.controls) painter.dot(b, theme.polygon, theme.sizes.point * 0.7);
+    }
+    painter.arrow(v[0], m.quadraticControl, arrow);
+  }
+  if (m.usesEndGradients) {
+    painter.arrow(v[0], m.endHandles[0], arrow);
+    painter.arrow(v[v.length - 1], m.endHandles[1], arrow);
+  }
+  if (!state.overlay && state.road === 'hermite' && v.length <= LABEL_VILLAGES && m.gradientTips) {
+    // The gradient of each piece at each village, from the parabola through it and its neighbours.
+    m.gradientTips.forEach((tip, i) => {
+      if (state.ends && (i === 0 || i === v.length - 1)) return;
+      painter.arrow(v[i], tip, { color: painter.color(0), width: theme.sizes.line });
+    });
+  }
+}
+
+/** The roads the new one must join at P0 and Pm, leaving along the chosen gradients. */
+export function drawOtherRoads(painter: Painter, m: RoadModel): void {
+  const [start, end] = m.otherRoads;
+  const faint = painter.theme.curveFaint;
+  for (const roadway of m.otherRoadways) drawRoadway(painter, [roadway], faint);
+  const style = {
+    size: painter.theme.sizes.small,
+    color: painter.theme.muted,
+    halo: true,
+    align: 'center' as const,
+    dy: -painter.theme.sizes.curve * 3,
+  };
+  painter.label('existing road', start, style);
+  painter.label('existing road', end, style);
+}
+
+/** While the solve is under way: the road not yet built, and the rows swept so far. */
+export function drawSolveProgress(painter: Painter, m: RoadModel): void {
+  const { theme } = painter;
+  const { state, progress, solve } = m;
+  painter.polyline(state.v, { color: theme.curveFaint, width: theme.sizes.line, dash: [6, 6] });
+  if (!progress || !solve || state.v.length > LABEL_VILLAGES) return;
+  // Row i of the system belongs to village Pi: mark the rows swept so far.
+  state.v.forEach((p, i) => {
+    if (i >= progress.swept) return;
+    const current = i === progress.row && state.step <= solve.n;
+    painter.ring(p, theme.sizes.handle * (current ? 2.4 : 1.7), {
+      color: current ? theme.accent : painter.color(0),
+      width: current ? theme.sizes.line * 1.5 : theme.sizes.thin,
+    });
+  });
+}
+
+/** Each gradient fixed so far, as an arrow D/3: over the villages' labels, so the new one is seen. */
+export function drawFixedGradients(painter: Painter, m: RoadModel): void {
+  const { theme } = painter;
+  const { state, progress, solve, gradientTips } = m;
+  if (!m.solving || !progress || !solve || !gradientTips || state.v.length > LABEL_VILLAGES) return;
+  state.v.forEach((p, i) => {
+    if (!isFixed(solve.n, progress, i)) return;
+    const current = i === progress.row;
+    painter.arrow(p, gradientTips[i], {
+      color: current ? theme.accent : painter.color(0),
+      width: theme.sizes.line * (current ? 1.4 : 1),
+    });
+  });
+}
+
+/** "p̄ = 2.40: segment 2, p = 0.40" beside the marker. */
+export function drawMarkerLabel(painter: Painter, m: RoadModel): void {
+  const marker = m.shown?.marker;
+  if (!marker) return;
+  const { sizes } = painter.theme;
+  painter.label(
+    `p̄ = ${m.state.s.toFixed(2)}: segment ${marker.piece}, p = ${marker.p.toFixed(2)}`,
+    marker.point,
+    { dx: sizes.handle + 6, dy: sizes.handle + sizes.small, size: sizes.small, box: true },
+  );
+}

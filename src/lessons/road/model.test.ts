@@ -1,0 +1,219 @@
+import { describe, expect, it } from 'vitest';
+import type { Point } from '../../math';
+import { derive } from './model';
+import { LECTURE_VILLAGES, type RoadState, normalize, schema, stepCount } from './state';
+import { defaultsOf } from '../../app/urlState';
+
+/** A state of the lesson: its defaults with some fields changed, then its cross-field rules. */
+function state(change: Partial<RoadState>): RoadState {
+  const next = { ...defaultsOf(schema), ...change };
+  return normalize({ ...next, step: Math.min(next.step, stepCount(next)) }).state;
+}
+
+/** Three villages whose y goes 0, 1, 0 and whose x goes 0, 1, 2. */
+const hill: Point[] = [
+  [0, 0],
+  [1, 1],
+  [2, 0],
+];
+
+const close = (actual: readonly number[], expected: readonly number[]) =>
+  expected.forEach((value, i) => expect(actual[i]).toBeCloseTo(value, 12));
+
+describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
+  // The system (lecture notes): [2 1 | 3(y1 − y0)], [1 4 1 | 3(y2 − y0)], [1 2 | 3(y2 − y1)].
+  // For y = 0, 1, 0: right-hand side 3, 0, −3, solved by D = 3/2, 0, −3/2
+  // (2·3/2 + 0 = 3, 3/2 + 0 − 3/2 = 0, 0 − 3 = −3). For x = 0, 1, 2: 3, 6, 3, so D = 1, 1, 1.
+  const m = derive(state({ v: hill, road: 'natural' }));
+
+  it('solves the system for both coordinates', () => {
+    const solve = m.solve!;
+    expect(solve.matrix.diag).toEqual([2, 4, 2]);
+    expect(solve.rhs).toEqual([
+      [3, 6, 3],
+      [3, 0, -3],
+    ]);
+    close(solve.trace[1].solution, [1.5, 0, -1.5]);
+    close(solve.trace[0].solution, [1, 1, 1]);
+    // γ0 = 1/2, γ1 = 1/(4 − 1/2) = 2/7; for y, Γ0 = 3/2, Γ1 = (0 − 3/2)/(7/2) = −3/7.
+    close(solve.trace[1].gamma, [1 / 2, 2 / 7]);
+    close(solve.trace[1].Gamma, [3 / 2, -3 / 7, -3 / 2]);
+  });
+
+  it('builds each piece from the gradients: [Pi, Pi + Di/3, P(i+1) − D(i+1)/3, P(i+1)]', () => {
+    const pieces = m.shown!.pieces;
+    expect(pieces).toHaveLength(2);
+    [
+      [0, 0],
+      [1 / 3, 1 / 2],
+      [2 / 3, 1],
+      [1, 1],
+    ].forEach((point, k) => close(pieces[0][k], point));
+    close(m.gradientTips![2], [2 + 1 / 3, -1 / 2]);
+  });
+
+  it('gives the power form of a piece: P(p) = a + b p + c p² + d p³', () => {
+    // Segment 0 in y: a = 0, b = D0 = 3/2, c = 3(y1 − y0) − 2D0 − D1 = 0, d = 2(y0 − y1) + D0 + D1 = −1/2.
+    const coefficients = m.coefficients(0);
+    close(
+      coefficients.map((c) => c[1]),
+      [0, 1.5, 0, -0.5],
+    );
+    close(
+      coefficients.map((c) => c[0]),
+      [0, 1, 0, 0],
+    );
+  });
+
+  it('while the solve is stepped through, shows only the pieces whose gradients are known', () => {
+    // 3 rows: steps 1–3 sweep, 4 fixes D2, 5 fixes D1: segment 1 (P1 to P2) can be drawn.
+    const fixing = derive(state({ v: hill, road: 'natural', step: 4 }));
+    expect(fixing.solving).toBe(true);
+    expect(fixing.progress).toEqual({ swept: 3, fixed: 1, row: 2 });
+    expect(fixing.shown!.pieces).toEqual([]);
+    const half = derive(state({ v: hill, road: 'natural', step: 5 }));
+    expect(half.shown!.offset).toBe(1);
+    [
+      [1, 1],
+      [4 / 3, 1],
+      [5 / 3, 1 / 2],
+      [2, 0],
+    ].forEach((point, k) => close(half.shown!.pieces[0][k], point));
+    expect(half.shown!.marker).toBeNull();
+  });
+
+  it('counts the conditions and the cost of the solve', () => {
+    // Two cubic segments: 8 unknowns, 4 conditions at the inner village, 2 end positions: 2 free.
+    expect(m.count).toEqual({ segments: 2, unknowns: 8, inner: 4, ends: 2, free: 2 });
+    expect(m.cost?.unknowns).toBe(8);
+  });
+});
+
+describe('the other roads', () => {
+  it('Roman road: straight pieces, with the marker halfway along at p̄ = ½', () => {
+    const m = derive(
+      state({
+        v: [
+          [0, 0],
+          [4, 2],
+          [4, 6],
+        ],
+        road: 'roman',
+        s: 1.5,
+      }),
+    );
+    expect(m.shown!.pieces).toEqual([
+      [
+        [0, 0],
+        [4, 2],
+      ],
+      [
+        [4, 2],
+        [4, 6],
+      ],
+    ]);
+    expect(m.shown!.marker).toEqual({ piece: 1, p: 0.5, point: [4, 4] });
+    expect(m.along).toEqual({ piece: 1, p: 0.5 });
+    expect(m.coefficients(0)).toEqual([
+      [0, 0],
+      [4, 2],
+    ]);
+    // Ticks at p̄ = 0, ¼, …, 2: five on the first piece, four more on the second.
+    expect(m.shown!.ticks!.length / 5).toBe(9);
+  });
+
+  it('quadratic pieces: B0 = P0 + D0/2, then each Bi is B(i−1) reflected in Pi', () => {
+    const m = derive(state({ v: LECTURE_VILLAGES, road: 'quadratic', q: [30, 0] }));
+    expect(m.quadraticControl).toEqual([15, 0]);
+    // B1 = 2·(20, 16) − (15, 0) = (25, 32); B2 = 2·(42, 10) − (25, 32) = (59, −12).
+    expect(m.quadraticPolygon!.controls.slice(0, 2)).toEqual([
+      [25, 32],
+      [59, -12],
+    ]);
+    expect(m.quadraticPolygon!.polygon.slice(0, 4)).toEqual([
+      [0, 0],
+      [15, 0],
+      [20, 16],
+      [25, 32],
+    ]);
+    expect(m.solve).toBeNull();
+  });
+
+  it('Hermite: the gradient at Pi is half the chord between its neighbours, zero at the ends', () => {
+    const m = derive(state({ v: LECTURE_VILLAGES, road: 'hermite' }));
+    // D1 = ((42, 10) − (0, 0))/2 = (21, 5).
+    expect(m.gradients!.slice(0, 2)).toEqual([
+      [0, 0],
+      [21, 5],
+    ]);
+  });
+
+  it('ring road: one more segment, and the first right-hand side 3(x1 − xm)', () => {
+    const m = derive(state({ v: LECTURE_VILLAGES, road: 'ring' }));
+    expect(m.shown!.pieces).toHaveLength(6);
+    expect(m.ringRhs).toBe(3 * (20 - 92));
+    expect(m.shown!.pieces[5][3]).toEqual([0, 0]);
+  });
+
+  it('a ring through two villages is not drawn, and the map says why first', () => {
+    const m = derive(
+      state({
+        v: [
+          [0, 0],
+          [60, 25],
+        ],
+        road: 'ring',
+      }),
+    );
+    expect(m.shown!.missing).toMatch(/at least three villages/);
+    expect(m.count).toBeNull();
+    expect(m.mapNotes[0]).toBe(
+      'A ring road needs at least three villages: with two it would only go there and back.',
+    );
+    expect(m.mapNotes[1]).toBe(
+      'Two villages: one segment, a straight road for every method without a chosen gradient.',
+    );
+  });
+
+  it('clamped: the end handles are the tips of D0/3 and Dm/3', () => {
+    const m = derive(state({ v: hill, road: 'clamped', a: [3, 6], b: [-3, 3] }));
+    expect(m.usesEndGradients).toBe(true);
+    expect(m.endHandles).toEqual([
+      [1, 2],
+      [1, 1],
+    ]);
+    expect(m.solve!.rhs[0]).toEqual([3, 6, -3]);
+  });
+});
+
+describe('the overlay', () => {
+  it('builds each chosen curve once, in order, and says which it cannot draw', () => {
+    const m = derive(state({ v: hill, overlay: true, compare: [10, 0, 6] }));
+    expect(m.shown).toBeNull();
+    expect(m.overlay.map((curve) => curve.index)).toEqual([0, 6, 10]);
+    expect(m.overlay.map((curve) => curve.road.kind)).toEqual(['pieces', 'polyline', 'missing']);
+    // The Roman road's first piece elevated to a cubic: control points a third of the way along.
+    [
+      [0, 0],
+      [1 / 3, 1 / 3],
+      [2 / 3, 2 / 3],
+      [1, 1],
+    ].forEach((point, k) => close(m.overlay[0].cubics![0][k], point));
+  });
+});
+
+describe('notes about the villages', () => {
+  it('names villages on one spot', () => {
+    const m = derive(
+      state({
+        v: [
+          [0, 0],
+          [1, 1],
+          [1, 1],
+          [3, 0],
+        ],
+      }),
+    );
+    expect(m.notes[0]).toMatch(/on top of each other \(P1 = P2\)/);
+  });
+});

@@ -1,0 +1,68 @@
+import { h } from '../../app/dom';
+import { texNumber } from '../../render/formula';
+import { hoveredSegment } from './figure';
+import { joined, live, tex } from './formulaParts';
+import { AnnotatedFormula, setHidden, setText } from './liveDom';
+import type { RoadModel } from './model';
+
+const LETTERS = ['a', 'b', 'c', 'd'];
+const power = (k: number) => (k === 0 ? '' : k === 1 ? '\\,p' : `\\,p^{${k}}`);
+
+/** The coefficients of one segment: the one under the pointer, else the one the marker is on. */
+export function segmentSection() {
+  const title = h('h2', {});
+  const text = h('p', { class: 'note' });
+  const formula = new AnnotatedFormula(true);
+  const element = h(
+    'section',
+    { 'aria-label': 'Segment coefficients' },
+    title,
+    text,
+    formula.element,
+  );
+
+  return {
+    element,
+    update(m: RoadModel, hover: string | null) {
+      const shown = m.shown;
+      const pieces = shown?.pieces ?? [];
+      setHidden(formula.element, !shown || !pieces.length);
+      if (!shown || !pieces.length) {
+        setText(title, 'Coefficients of a segment');
+        setText(
+          text,
+          shown
+            ? 'No segment of this road is drawn yet.'
+            : 'Turn off the comparison to read the coefficients of one road.',
+        );
+        return;
+      }
+      // While the solve is under way only the last pieces exist, newest first.
+      const hovered = hoveredSegment(hover);
+      const i =
+        Number.isInteger(hovered) && hovered >= 0 && hovered < pieces.length
+          ? hovered
+          : (shown.marker?.piece ?? 0);
+      const index = shown.offset + i;
+      const coefficients = m.coefficients(i);
+      setText(title, `Segment ${index}: from P${index} to P${(index + 1) % m.state.v.length}`);
+      setText(
+        text,
+        'Hover over the road, or move p̄, to choose a segment. Its coefficients, with the local parameter p from 0 to 1:',
+      );
+      const names = coefficients.map((_, k) => `${LETTERS[k]}_{${index}}${power(k)}`).join(' + ');
+      // x(p) = a + b p + c p² + d p³ with the signs in the shape, so a number is never "+ −3".
+      const poly = (d: number) =>
+        joined(
+          coefficients.map((c, k) => {
+            const sign = k === 0 ? '' : c[d] < 0 ? ' - ' : ' + ';
+            return tex`${sign}${live(texNumber(k === 0 ? c[d] : Math.abs(c[d]), 3))}${power(k)}`;
+          }),
+          '',
+        );
+      formula.set(
+        tex`\begin{aligned}P(p) &= ${names}\\ x(p) &= ${poly(0)}\\ y(p) &= ${poly(1)}\end{aligned}`,
+      );
+    },
+  };
+}
