@@ -32,6 +32,7 @@ export { bezierBasisMatrix, bezierToPowerBasis, powerBasisToBezier } from './pow
 export { parabolaThrough, parametricQuadratic, parametricQuadraticPoint } from './parabola';
 export { chordLengthMu, centripetalMu, parameterValues } from './parameterisation';
 export { lagrangeBasis, lagrangePoint } from './lagrange';
+export { lebesgueConstant } from './lebesgueConstant';
 export {
   hermiteMatrix,
   hermiteBasis,
@@ -103,6 +104,7 @@ export { bezierArcLength } from './arcLength';
 export { convexHull, convexHullContains } from './convexHull';
 export { flattenBezier } from './flatten';
 export { bezierPieceBoxes, nearestOnBezierPieces } from './nearestOnBezierPieces';
+export { clipToBand } from './clipToBand';
 
 // Cost of solving the spline's system, and the counting argument
 export type { ConstraintCount } from './solveCost';
