@@ -4,7 +4,9 @@ import { Bezier } from 'bezier-js';
 import { curveBasis, curveNatural } from 'd3-shape';
 import {
   bezierPoint,
+  cubicSplineC2,
   naturalCubicBezierBatch,
+  naturalCubicDerivatives,
   naturalCubicDerivativesBatch,
   sampleUniformBSpline,
   sampleBezier,
@@ -74,23 +76,65 @@ function naturalSpline(n: number): Row {
     () => undefined,
     () => naturalCubicBezierBatch([xs, ys], out),
   );
-  // d3 collects points in point() and solves in lineEnd(); feed it untimed and
-  // time lineEnd alone (solve both coordinates + emit every bezierCurveTo).
-  const peer = measure(
-    () => {
-      const curve = curveNatural(silentContext());
-      curve.lineStart();
-      for (let i = 0; i < n; i++) curve.point(xs[i], ys[i]);
-      return curve;
-    },
-    (curve) => curve.lineEnd(),
-  );
   return {
     task: `natural cubic spline, ${label(n)} points → control points`,
     ours,
     peerName: 'd3-shape curveNatural',
-    peer,
+    peer: d3Natural(xs, ys, silentContext),
   };
+}
+
+/**
+ * d3's natural spline through the points: d3 collects points in point() and
+ * solves in lineEnd(); it is fed untimed and lineEnd alone is timed (solve both
+ * coordinates + emit every bezierCurveTo to `context`).
+ */
+function d3Natural(
+  xs: Float64Array,
+  ys: Float64Array,
+  context: () => CanvasRenderingContext2D,
+): Timing {
+  return measure(
+    () => {
+      const curve = curveNatural(context());
+      curve.lineStart();
+      for (let i = 0; i < xs.length; i++) curve.point(xs[i], ys[i]);
+      return curve;
+    },
+    (curve) => curve.lineEnd(),
+  );
+}
+
+/**
+ * The contract's own spline functions on plain arrays (what a lesson or another
+ * tool calls), each returning fresh arrays, against the same d3 solve.
+ */
+function naturalSplineContract(n: number): Row[] {
+  const { xs, ys } = wiggle(n);
+  const points: Point[] = Array.from(xs, (x, i) => [x, ys[i]]);
+  const xValues = Array.from(xs);
+  const yValues = Array.from(ys);
+  const segments = measure(
+    () => undefined,
+    () => cubicSplineC2(points),
+  );
+  const derivatives = measure(
+    () => undefined,
+    () => [naturalCubicDerivatives(xValues), naturalCubicDerivatives(yValues)],
+  );
+  const silent = d3Natural(xs, ys, silentContext);
+  const recorded = d3Natural(xs, ys, () => recordingContext(n));
+  const task = `cubicSplineC2, ${label(n)} 2D points → Point[][]`;
+  return [
+    { task, ours: segments, peerName: 'd3-shape curveNatural', peer: silent },
+    { task, ours: segments, peerName: 'd3-shape curveNatural, recording context', peer: recorded },
+    {
+      task: `naturalCubicDerivatives of x and of y, ${label(n)} values each`,
+      ours: derivatives,
+      peerName: 'd3-shape curveNatural',
+      peer: silent,
+    },
+  ];
 }
 
 function bezierEvaluations(n: number): Row[] {
@@ -100,23 +144,7 @@ function bezierEvaluations(n: number): Row[] {
     [70, -40],
     [100, 10],
   ];
-  const curve = new Bezier(points.map(([x, y]) => ({ x, y })));
-  const peer = measure(
-    () => undefined,
-    () => {
-      let sum = 0;
-      for (let i = 0; i < n; i++) sum += curve.compute(i / (n - 1)).x;
-      return sum;
-    },
-  );
-  const perCall = measure(
-    () => undefined,
-    () => {
-      let sum = 0;
-      for (let i = 0; i < n; i++) sum += bezierPoint(points, i / (n - 1))[0];
-      return sum;
-    },
-  );
+  const peer = bezierJsCompute(points, n);
   const buffer = new Float64Array(2 * n);
   const batch = measure(
     () => undefined,
@@ -125,7 +153,7 @@ function bezierEvaluations(n: number): Row[] {
   return [
     {
       task: `cubic Bézier, ${label(n)} evaluations (bezierPoint per call)`,
-      ours: perCall,
+      ours: bezierPointCalls(points, n),
       peerName: 'bezier-js compute',
       peer,
     },
@@ -136,6 +164,47 @@ function bezierEvaluations(n: number): Row[] {
       peer,
     },
   ];
+}
+
+/** The same through the contract on a 3D cubic (bezier-js takes {x, y, z}). */
+function bezierEvaluations3D(n: number): Row {
+  const points: Point[] = [
+    [0, 0, 0],
+    [30, 90, 20],
+    [70, -40, 60],
+    [100, 10, -30],
+  ];
+  return {
+    task: `3D cubic Bézier, ${label(n)} evaluations (bezierPoint per call)`,
+    ours: bezierPointCalls(points, n),
+    peerName: 'bezier-js compute',
+    peer: bezierJsCompute(points, n),
+  };
+}
+
+/** n calls of bezierPoint at t = 0 … 1, each result read. */
+function bezierPointCalls(points: readonly Point[], n: number): Timing {
+  return measure(
+    () => undefined,
+    () => {
+      let sum = 0;
+      for (let i = 0; i < n; i++) sum += bezierPoint(points, i / (n - 1))[0];
+      return sum;
+    },
+  );
+}
+
+/** n calls of bezier-js compute at t = 0 … 1, each result read. */
+function bezierJsCompute(points: readonly Point[], n: number): Timing {
+  const curve = new Bezier(points.map(([x, y, z]) => (z === undefined ? { x, y } : { x, y, z })));
+  return measure(
+    () => undefined,
+    () => {
+      let sum = 0;
+      for (let i = 0; i < n; i++) sum += curve.compute(i / (n - 1)).x;
+      return sum;
+    },
+  );
 }
 
 function uniformBSpline(n: number): Row[] {
@@ -231,7 +300,9 @@ function printTable(rows: readonly Row[]): void {
 const rows: Row[] = [
   naturalSpline(1e5),
   naturalSpline(1e6),
+  ...naturalSplineContract(1e5),
   ...bezierEvaluations(1e6),
+  bezierEvaluations3D(1e6),
   ...uniformBSpline(1e5),
 ];
 console.log(
