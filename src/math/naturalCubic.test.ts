@@ -115,6 +115,28 @@ describe('naturalCubicDerivatives', () => {
     expect(() => naturalCubicDerivatives([0, NaN])).toThrow(/ys\[1\] is NaN/);
     expect(() => naturalCubicDerivatives([0, 1, -Infinity])).toThrow(RangeError);
   });
+
+  it('rejects what is not a number, and values whose gradients overflow', () => {
+    const bad = (ys: unknown) => () => naturalCubicDerivatives(ys as number[]);
+    expect(bad([0, '1', 2])).toThrow('naturalCubicDerivatives: ys[1] is a string;');
+    expect(bad([0, null, 2])).toThrow('naturalCubicDerivatives: ys[1] is null;');
+    expect(bad([0, 1, , 3])).toThrow('naturalCubicDerivatives: ys[2] is undefined;'); // eslint-disable-line no-sparse-arrays
+    expect(bad(null)).toThrow(
+      'naturalCubicDerivatives: ys is null; it must be an array of numbers.',
+    );
+    expect(bad([-1e308, 1e308, -1e308])).toThrow(/so large that the result overflows/);
+  });
+
+  it('returns a fresh array of numbers, whatever the input array holds', () => {
+    const integers = [0, 3, 1, 4];
+    const result = naturalCubicDerivatives(integers);
+    expect(Array.isArray(result)).toBe(true);
+    expect(result).not.toBe(integers);
+    expect(integers).toEqual([0, 3, 1, 4]);
+    expect(naturalCubicDerivatives(Float64Array.of(0, 3, 1, 4) as unknown as number[])).toEqual(
+      result,
+    );
+  });
 });
 
 describe('clampedCubicDerivatives', () => {

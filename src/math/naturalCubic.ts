@@ -1,7 +1,14 @@
 import { cubicSplineCoefficients, sampleCubicSpline } from './cubicSpline';
 import { fillNaturalDerivatives } from './naturalSolver';
 import { thomas, type TridiagonalSystem } from './tridiagonal';
-import { checkNumber, checkNumbers, checkPoint, checkPoints } from './validate';
+import {
+  checkNumber,
+  checkNumbers,
+  checkPoint,
+  checkPoints,
+  copyCheckedNumbers,
+  nonFiniteError,
+} from './validate';
 import type { Point } from './vec';
 
 // The natural cubic spline through y0 … ym with uniform local parameter
@@ -55,11 +62,19 @@ export function clampedCubicSystem(
  * ys (one value gives `[0]`), by the Thomas algorithm in O(m).
  */
 export function naturalCubicDerivatives(ys: readonly number[]): number[] {
-  checkNumbers('naturalCubicDerivatives', 'ys', ys, 1);
   // The solver works on Float64Arrays only, so its loops stay monomorphic.
-  const derivatives = new Float64Array(ys.length);
-  fillNaturalDerivatives(Float64Array.from(ys), derivatives);
-  return Array.from(derivatives);
+  const values = copyCheckedNumbers('naturalCubicDerivatives', 'ys', ys, 1);
+  const n = values.length;
+  const derivatives = new Float64Array(n);
+  fillNaturalDerivatives(values, derivatives);
+  // Finite values can still overflow; a non-finite gradient spreads to both ends.
+  if (!Number.isFinite(derivatives[0]) || !Number.isFinite(derivatives[n - 1])) {
+    throw nonFiniteError('naturalCubicDerivatives', 'ys', values);
+  }
+  // An index loop into a sized array, not Array.from, which iterates.
+  const result = new Array<number>(n);
+  for (let i = 0; i < n; i++) result[i] = derivatives[i];
+  return result;
 }
 
 /**

@@ -9,6 +9,7 @@ import {
   checkPoint,
   checkPoints,
   checkSameLength,
+  copyCheckedNumbers,
 } from './validate';
 import type { Point } from './vec';
 
@@ -77,6 +78,25 @@ describe('input checks', () => {
     expect(() => checkCoordinateArrays('f', [[1, 2] as unknown as Float64Array], 1)).toThrow(
       /not a Float64Array/,
     );
+  });
+
+  it('copy numbers into a Float64Array while checking them, with checkNumbers’ messages', () => {
+    const values = [1, -2.5, 0];
+    const copy = copyCheckedNumbers('f', 'ys', values, 1);
+    expect(copy).toBeInstanceOf(Float64Array);
+    expect(Array.from(copy)).toEqual(values);
+    expect(copyCheckedNumbers('f', 'ys', [], 0)).toHaveLength(0);
+    for (const bad of [[1, NaN], [1, Infinity], [1, '2'], [1, null], [1, undefined], [], 7, null]) {
+      const message = (() => {
+        try {
+          checkNumbers('f', 'ys', bad as number[], 1);
+        } catch (error) {
+          return (error as Error).message;
+        }
+        return 'no error';
+      })();
+      expect(() => copyCheckedNumbers('f', 'ys', bad as number[], 1)).toThrow(message);
+    }
   });
 
   it('throw RangeError', () => {

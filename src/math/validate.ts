@@ -192,6 +192,35 @@ export function checkNumbers(
   }
 }
 
+/**
+ * checkNumbers and a copy into a new Float64Array in the same pass, for the
+ * solvers that work on typed arrays. Only a failing call goes on to
+ * checkNumbers, which finds the first bad value and throws it in words.
+ */
+export function copyCheckedNumbers(
+  caller: string,
+  name: string,
+  values: ArrayLike<number>,
+  minimum: number,
+): Float64Array {
+  if (values === null || typeof values !== 'object' || !(values.length >= minimum)) {
+    checkNumbers(caller, name, values, minimum);
+  }
+  const n = values.length;
+  const copy = new Float64Array(n);
+  // v − v is 0 exactly when v is finite, so one sum tests every value.
+  let finite = 0;
+  let i = 0;
+  for (; i < n; i++) {
+    const value = values[i];
+    if (typeof value !== 'number') break;
+    copy[i] = value;
+    finite += value - value;
+  }
+  if (i < n || finite !== 0) checkNumbers(caller, name, values, minimum);
+  return copy;
+}
+
 /** Throws unless the two arrays have the same length. */
 export function checkSameLength(
   caller: string,
