@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { expectClose, point, polygon } from './arbitraries.test-helpers';
 import { bezierDerivative, bezierPoint } from './bezier';
 import { bezierSplinePoint, cubicSplineC2, quadraticSplineC1 } from './bezierSpline';
+import { naturalCubicDerivatives } from './naturalCubic';
 import type { Point } from './vec';
 
 const derivativeAt = (points: readonly Point[], t: number, order: number): Point => {
@@ -96,6 +97,76 @@ describe('cubicSplineC2', () => {
     ]);
     expect(segments.flat().flat().every(Number.isFinite)).toBe(true);
     expect(cubicSplineC2([[4, 5, 6]])).toEqual([]);
+  });
+});
+
+describe('cubicSplineC2 from the gradients', () => {
+  it('has Bi = Pi + Di/3 and Ci = P(i+1) − D(i+1)/3 with naturalCubicDerivatives per coordinate', () => {
+    // 1D and 4D take the general path, 2D and 3D their own.
+    const points = fc
+      .integer({ min: 1, max: 4 })
+      .chain((dimension) => fc.array(point(dimension), { minLength: 1, maxLength: 40 }));
+    fc.assert(
+      fc.property(points, (points) => {
+        const dimension = points[0].length;
+        const gradients = Array.from({ length: dimension }, (_, d) =>
+          naturalCubicDerivatives(points.map((p) => p[d])),
+        );
+        const segments = cubicSplineC2(points);
+        expect(segments).toHaveLength(points.length - 1);
+        segments.forEach((segment, i) => {
+          expect(segment).toHaveLength(4);
+          expect(segment[0]).toEqual(points[i]);
+          expect(segment[3]).toEqual(points[i + 1]);
+          expect(segment[0]).not.toBe(points[i]);
+          expect(segment[3]).not.toBe(points[i + 1]);
+          const first = points[i].map((value, d) => value + gradients[d][i] / 3);
+          const second = points[i + 1].map((value, d) => value - gradients[d][i + 1] / 3);
+          expectClose(segment[1], first, 1e-12);
+          expectClose(segment[2], second, 1e-12);
+        });
+      }),
+    );
+  });
+
+  it('returns fresh arrays and leaves its input alone', () => {
+    const points: Point[] = [
+      [0, 0, 1],
+      [1, 2, 3],
+      [4, 1, 0],
+    ];
+    const copy = structuredClone(points);
+    const segments = cubicSplineC2(points);
+    expect(points).toEqual(copy);
+    expect(segments[0][3]).not.toBe(segments[1][0]);
+    expect(segments[0][3]).toEqual(segments[1][0]);
+  });
+
+  it('rejects bad points with a RangeError that names it, and points that overflow', () => {
+    const bad = (points: unknown) => () => cubicSplineC2(points as Point[]);
+    expect(bad([])).toThrow('cubicSplineC2: points needs at least 1 point, but got 0.');
+    expect(bad([[0, 0], [1]])).toThrow(/^cubicSplineC2: points\[1\] has 1 coordinates/);
+    expect(
+      bad([
+        [0, 0],
+        [1, NaN],
+      ]),
+    ).toThrow(/^cubicSplineC2: points\[1\]\[1\] is NaN/);
+    expect(
+      bad([
+        [0, 0],
+        [1, '2'],
+      ]),
+    ).toThrow(/^cubicSplineC2: points\[1\]\[1\] is a string/);
+    expect(bad([[0, 0], null])).toThrow(/^cubicSplineC2: points\[1\] is null/);
+    expect(bad('points')).toThrow(/^cubicSplineC2: points is a string/);
+    expect(
+      bad([
+        [0, -1e308],
+        [1, 1e308],
+        [2, -1e308],
+      ]),
+    ).toThrow(/^cubicSplineC2: points holds values so large that the result overflows/);
   });
 });
 

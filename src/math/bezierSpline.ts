@@ -1,7 +1,6 @@
 import { evaluateBezier } from './bezier';
-import { cubicSplineSegments } from './cubicSpline';
-import { naturalCubicTangents } from './naturalCubic';
-import { checkParameter, checkPoint, checkPoints } from './validate';
+import { fillNaturalBezierControls, type CubicBezierControls } from './naturalCubicBatch';
+import { checkParameter, checkPoint, checkPoints, nonFiniteError } from './validate';
 import type { Point } from './vec';
 
 // Splines built from Bézier segments (lecture notes): a quadratic spline is C¹
@@ -33,8 +32,86 @@ export function quadraticSplineC1(points: readonly Point[], firstControl: Point)
  * from the natural spline's gradients, second derivative zero at both ends.
  */
 export function cubicSplineC2(points: readonly Point[]): Point[][] {
-  checkPoints('cubicSplineC2', 'points', points, 1);
-  return cubicSplineSegments(points, naturalCubicTangents(points));
+  const caller = 'cubicSplineC2';
+  const dimension = checkPoints(caller, 'points', points, 1);
+  const m = points.length - 1;
+  if (m === 0) return [];
+  // One pass to validate; then the typed-array solver of naturalCubicBezierBatch,
+  // and the output arrays built once from its results.
+  const coordinates = coordinateArrays(points, dimension);
+  const controls: CubicBezierControls = {
+    firstControl: coordinates.map(() => new Float64Array(m)),
+    secondControl: coordinates.map(() => new Float64Array(m)),
+  };
+  const failed = fillNaturalBezierControls(coordinates, controls);
+  if (failed >= 0) throw nonFiniteError(caller, 'points', coordinates[failed]);
+  return cubicSegments(coordinates, controls);
+}
+
+/** Coordinate d of every point as one Float64Array per d (`[xs, ys]`). */
+function coordinateArrays(points: readonly Point[], dimension: number): Float64Array[] {
+  const n = points.length;
+  const coordinates = new Array<Float64Array>(dimension);
+  for (let d = 0; d < dimension; d++) {
+    const values = new Float64Array(n);
+    for (let i = 0; i < n; i++) values[i] = points[i][d];
+    coordinates[d] = values;
+  }
+  return coordinates;
+}
+
+/**
+ * The segments `[Pi, Bi, Ci, P(i+1)]` as fresh arrays. 2D and 3D are written
+ * out as array literals, which V8 allocates inline; other dimensions loop.
+ */
+function cubicSegments(
+  coordinates: readonly Float64Array[],
+  { firstControl, secondControl }: CubicBezierControls,
+): Point[][] {
+  const m = coordinates[0].length - 1;
+  const segments = new Array<Point[]>(m);
+  if (coordinates.length === 2) {
+    const [xs, ys] = [coordinates[0], coordinates[1]];
+    const [bx, by] = [firstControl[0], firstControl[1]];
+    const [cx, cy] = [secondControl[0], secondControl[1]];
+    for (let i = 0; i < m; i++) {
+      segments[i] = [
+        [xs[i], ys[i]],
+        [bx[i], by[i]],
+        [cx[i], cy[i]],
+        [xs[i + 1], ys[i + 1]],
+      ];
+    }
+  } else if (coordinates.length === 3) {
+    const [xs, ys, zs] = [coordinates[0], coordinates[1], coordinates[2]];
+    const [bx, by, bz] = [firstControl[0], firstControl[1], firstControl[2]];
+    const [cx, cy, cz] = [secondControl[0], secondControl[1], secondControl[2]];
+    for (let i = 0; i < m; i++) {
+      segments[i] = [
+        [xs[i], ys[i], zs[i]],
+        [bx[i], by[i], bz[i]],
+        [cx[i], cy[i], cz[i]],
+        [xs[i + 1], ys[i + 1], zs[i + 1]],
+      ];
+    }
+  } else {
+    for (let i = 0; i < m; i++) {
+      segments[i] = [
+        pointAt(coordinates, i),
+        pointAt(firstControl, i),
+        pointAt(secondControl, i),
+        pointAt(coordinates, i + 1),
+      ];
+    }
+  }
+  return segments;
+}
+
+/** The point whose coordinate d is `arrays[d][i]`. */
+function pointAt(arrays: readonly Float64Array[], i: number): number[] {
+  const point = new Array<number>(arrays.length);
+  for (let d = 0; d < arrays.length; d++) point[d] = arrays[d][i];
+  return point;
 }
 
 /**

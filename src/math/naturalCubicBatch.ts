@@ -60,20 +60,33 @@ export function naturalCubicBezierBatch(
     secondControl: coordinates.map(() => new Float64Array(m)),
   };
   checkOutput(caller, result, coordinates.length, m);
+  const failed = fillNaturalBezierControls(coordinates, result);
+  if (failed >= 0) throw nonFiniteError(caller, `coordinates[${failed}]`, coordinates[failed]);
+  return result;
+}
+
+/**
+ * naturalCubicBezierBatch without its checks, for callers that have checked the
+ * arrays (n ≥ 1 points, `out` long enough). Returns the index of the first
+ * coordinate whose values are or overflow to NaN or ±Infinity, or −1. Internal.
+ */
+export function fillNaturalBezierControls(
+  coordinates: readonly Float64Array[],
+  out: CubicBezierControls,
+): number {
+  const m = coordinates[0].length - 1;
   for (let c = 0; c < coordinates.length; c++) {
     const values = coordinates[c];
     if (m === 0) {
-      if (!Number.isFinite(values[0])) throw nonFiniteError(caller, `coordinates[${c}]`, values);
+      if (!Number.isFinite(values[0])) return c;
       continue;
     }
-    const first = result.firstControl[c];
-    const second = result.secondControl[c];
+    const first = out.firstControl[c];
+    const second = out.secondControl[c];
     // Γ0 … Γ(m−1) then D0 … D(m−1) live in `first`, Dm in a local: no scratch array.
     const last = naturalForwardSweep(values, first);
     naturalBackSubstitution(first, m, last);
-    if (!Number.isFinite(first[0]) || !Number.isFinite(last)) {
-      throw nonFiniteError(caller, `coordinates[${c}]`, values);
-    }
+    if (!Number.isFinite(first[0]) || !Number.isFinite(last)) return c;
     const third = 1 / 3;
     for (let i = 0; i < m - 1; i++) {
       second[i] = values[i + 1] - first[i + 1] * third;
@@ -82,7 +95,7 @@ export function naturalCubicBezierBatch(
     second[m - 1] = values[m] - last * third;
     first[m - 1] = values[m - 1] + first[m - 1] * third;
   }
-  return result;
+  return -1;
 }
 
 function checkOutput(caller: string, out: CubicBezierControls, dimension: number, m: number): void {
