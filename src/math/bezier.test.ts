@@ -291,6 +291,64 @@ describe('sampleBezier', () => {
   });
 });
 
+describe('bezierPoint on 2D and 3D cubics (its straight-line paths)', () => {
+  const cubic = (dimension: number) => fc.array(point(dimension), { minLength: 4, maxLength: 4 });
+
+  it('gives exactly de Casteljau’s point, in 2D and 3D', () => {
+    fc.assert(
+      fc.property(fc.oneof(cubic(2), cubic(3)), unitParameter, (points, t) => {
+        const result = bezierPoint(points, t);
+        expect(result).toEqual(deCasteljau(points, t)[3][0]);
+        expect(Array.isArray(result)).toBe(true);
+        expect(result).not.toBe(points[0]);
+      }),
+    );
+  });
+
+  it('agrees with the general loop of any other degree or dimension to 1e-12', () => {
+    // Raising the degree keeps the curve but sends it down the general path.
+    fc.assert(
+      fc.property(fc.oneof(cubic(2), cubic(3)), unitParameter, (points, t) => {
+        expectClose(bezierPoint(points, t), bezierPoint(elevateDegree(points), t), 1e-12);
+        const lifted = points.map((p) => [...p, 0, 0]);
+        expectClose(
+          bezierPoint(lifted, t).slice(0, points[0].length),
+          bezierPoint(points, t),
+          1e-12,
+        );
+      }),
+    );
+  });
+
+  it('still rejects anything wrong in a cubic, in words', () => {
+    const withCoordinate = (value: unknown, dimension: number) =>
+      lectureCubic.map((p, i) =>
+        i === 2 ? [value, ...p.slice(1), 0].slice(0, dimension) : [...p, 0].slice(0, dimension),
+      ) as Point[];
+    for (const dimension of [2, 3]) {
+      for (const [value, described] of [
+        [NaN, 'NaN'],
+        [Infinity, 'Infinity'],
+        [null, 'null'],
+        ['1', 'a string'],
+        [undefined, 'undefined'],
+        [[1], 'an array'],
+      ] as const) {
+        expect(() => bezierPoint(withCoordinate(value, dimension), 0.5)).toThrow(
+          `bezierPoint: points[2][0] is ${described}; every coordinate must be a finite number.`,
+        );
+      }
+    }
+    expect(() => bezierPoint(lectureCubic, '0.5' as unknown as number)).toThrow(
+      'bezierPoint: t = a string is outside the allowed range [0, 1].',
+    );
+    const mixed = [...lectureCubic.slice(0, 3), [4, 0, 0]];
+    expect(() => bezierPoint(mixed, 0.5)).toThrow(/points\[3\] has 3 coordinates/);
+    const notArray = [...lectureCubic.slice(0, 3), { 0: 4, 1: 0, length: 2 }] as unknown as Point[];
+    expect(() => bezierPoint(notArray, 0.5)).toThrow(/points\[3\] is an? object/);
+  });
+});
+
 describe('bad input', () => {
   const functions = [
     (points: Point[], t: number) => deCasteljau(points, t),

@@ -36,71 +36,81 @@ export function deCasteljau(points: readonly Point[], t: number): Point[][] {
 
 /** The point at parameter t ∈ [0, 1] on the Bézier curve with these control points. */
 export function bezierPoint(points: readonly Point[], t: number): Point {
-  if (points.length === 4 && t >= 0 && t <= 1) {
-    const cubic = planarCubicPoint(points, t);
-    if (cubic !== null) return cubic;
+  // The lessons' everyday curves, 2D and 3D cubics, take straight-line code
+  // small enough for V8 to inline into the caller's loop. Anything else, or
+  // anything wrong, takes the general path, which words the error.
+  if (points.length === 4 && typeof t === 'number' && t >= 0 && t <= 1) {
+    const p0 = points[0];
+    const p1 = points[1];
+    const p2 = points[2];
+    const p3 = points[3];
+    if (Array.isArray(p0) && Array.isArray(p1) && Array.isArray(p2) && Array.isArray(p3)) {
+      const dimension = p0.length;
+      if (p1.length === dimension && p2.length === dimension && p3.length === dimension) {
+        if (dimension === 2) return planarCubicPoint(points, p0, p1, p2, p3, t);
+        if (dimension === 3) return spatialCubicPoint(points, p0, p1, p2, p3, t);
+      }
+    }
   }
+  return checkedBezierPoint(points, t);
+}
+
+function checkedBezierPoint(points: readonly Point[], t: number): Point {
   const dimension = checkPoints('bezierPoint', 'points', points, 1);
   checkParameter('bezierPoint', 't', t, 0, 1);
   return evaluateBezier(points, dimension, t);
 }
 
-/**
- * The everyday case, a 2D cubic, checked and evaluated in one pass: `v - v` is
- * 0 exactly when v is a finite number, so one sum tests all eight coordinates.
- * Returns null for anything else, which then takes the general path (and gets
- * its error message there).
- */
-function planarCubicPoint(points: readonly Point[], t: number): Point | null {
-  const p0 = points[0];
-  const p1 = points[1];
-  const p2 = points[2];
-  const p3 = points[3];
+// The fast paths check their input by their output: cubicCoordinate gives NaN
+// for a coordinate that is not a number, and a NaN or ±Infinity coordinate
+// cannot give a finite result (every coordinate enters it through products
+// with s and t and sums, and 0·∞ is NaN). So a finite result (v − v = 0) means
+// the input was good; otherwise checkedBezierPoint finds what was wrong.
+
+function planarCubicPoint(
+  points: readonly Point[],
+  p0: Point,
+  p1: Point,
+  p2: Point,
+  p3: Point,
+  t: number,
+): Point {
+  const x = cubicCoordinate(p0[0], p1[0], p2[0], p3[0], t);
+  const y = cubicCoordinate(p0[1], p1[1], p2[1], p3[1], t);
+  if (x - x + (y - y) === 0) return [x, y];
+  return checkedBezierPoint(points, t);
+}
+
+function spatialCubicPoint(
+  points: readonly Point[],
+  p0: Point,
+  p1: Point,
+  p2: Point,
+  p3: Point,
+  t: number,
+): Point {
+  const x = cubicCoordinate(p0[0], p1[0], p2[0], p3[0], t);
+  const y = cubicCoordinate(p0[1], p1[1], p2[1], p3[1], t);
+  const z = cubicCoordinate(p0[2], p1[2], p2[2], p3[2], t);
+  if (x - x + (y - y) + (z - z) === 0) return [x, y, z];
+  return checkedBezierPoint(points, t);
+}
+
+/** One coordinate of a cubic by de Casteljau's six interpolations; NaN unless all four are numbers. */
+function cubicCoordinate(v0: number, v1: number, v2: number, v3: number, t: number): number {
   if (
-    !Array.isArray(p0) ||
-    !Array.isArray(p1) ||
-    !Array.isArray(p2) ||
-    !Array.isArray(p3) ||
-    p0.length !== 2 ||
-    p1.length !== 2 ||
-    p2.length !== 2 ||
-    p3.length !== 2
+    typeof v0 !== 'number' ||
+    typeof v1 !== 'number' ||
+    typeof v2 !== 'number' ||
+    typeof v3 !== 'number'
   ) {
-    return null;
-  }
-  const x0 = p0[0];
-  const y0 = p0[1];
-  const x1 = p1[0];
-  const y1 = p1[1];
-  const x2 = p2[0];
-  const y2 = p2[1];
-  const x3 = p3[0];
-  const y3 = p3[1];
-  if (
-    typeof x0 !== 'number' ||
-    typeof y0 !== 'number' ||
-    typeof x1 !== 'number' ||
-    typeof y1 !== 'number' ||
-    typeof x2 !== 'number' ||
-    typeof y2 !== 'number' ||
-    typeof x3 !== 'number' ||
-    typeof y3 !== 'number' ||
-    x0 - x0 + (y0 - y0) + (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) !==
-      0
-  ) {
-    return null;
+    return NaN;
   }
   const s = 1 - t;
-  const ax = s * x0 + t * x1;
-  const bx = s * x1 + t * x2;
-  const cx = s * x2 + t * x3;
-  const ay = s * y0 + t * y1;
-  const by = s * y1 + t * y2;
-  const cy = s * y2 + t * y3;
-  return [
-    s * (s * ax + t * bx) + t * (s * bx + t * cx),
-    s * (s * ay + t * by) + t * (s * by + t * cy),
-  ];
+  const a = s * v0 + t * v1;
+  const b = s * v1 + t * v2;
+  const c = s * v2 + t * v3;
+  return s * (s * a + t * b) + t * (s * b + t * c);
 }
 
 /** de Casteljau without checks, for callers that have already validated. */
