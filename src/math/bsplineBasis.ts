@@ -86,15 +86,29 @@ export function fillBasis(
         out[o] = 0;
         continue;
       }
-      const left = out[o];
-      const right = j + 1 <= span ? out[o + 1] : 0;
-      const leftWidth = knots[j + d] - knots[j];
-      const rightWidth = knots[j + d + 1] - knots[j + 1];
-      const leftTerm = leftWidth > 0 ? ((t - knots[j]) / leftWidth) * left : 0;
-      const rightTerm = rightWidth > 0 ? ((knots[j + d + 1] - t) / rightWidth) * right : 0;
-      out[o] = leftTerm + rightTerm;
+      out[o] = coxDeBoorStep(knots, j, d, t, out[o], j + 1 <= span ? out[o + 1] : 0);
     }
   }
+}
+
+/**
+ * One step of the recursion: N(j, d)(t) from `left` = N(j, d−1)(t) and `right`
+ * = N(j+1, d−1)(t), with 0/0 read as 0. Internal; shared with coxDeBoorTable so
+ * that both give the same bits.
+ */
+export function coxDeBoorStep(
+  knots: readonly number[],
+  j: number,
+  d: number,
+  t: number,
+  left: number,
+  right: number,
+): number {
+  const leftWidth = knots[j + d] - knots[j];
+  const rightWidth = knots[j + d + 1] - knots[j + 1];
+  const leftTerm = leftWidth > 0 ? ((t - knots[j]) / leftWidth) * left : 0;
+  const rightTerm = rightWidth > 0 ? ((knots[j + d + 1] - t) / rightWidth) * right : 0;
+  return leftTerm + rightTerm;
 }
 
 /** Throws unless degree is a whole number ≥ 0 and knots are finite, non-decreasing and enough. */

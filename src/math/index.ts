@@ -87,6 +87,7 @@ export {
   uniformBSplineBezierBatch,
 } from './uniformBSpline';
 export { bsplineBasis, clampedUniformKnots, uniformKnots } from './bsplineBasis';
+export { coxDeBoorTable } from './coxDeBoorTable';
 export type { NurbsCurve } from './nurbs';
 export { nurbsPoint, nurbsCircle } from './nurbs';
 
