@@ -97,6 +97,7 @@ export { bezierSurfacePoint, bezierSurfaceDerivatives, bezierSurfaceNormal } fro
 export { bezierTangent, bezierCurvature } from './curvature';
 export type { FrenetFrame } from './frenetFrame';
 export { bezierFrenetFrame, bezierNormal } from './frenetFrame';
+export { bezierTorsion } from './bezierTorsion';
 export type { Circle } from './osculatingCircle';
 export { osculatingCircle } from './osculatingCircle';
 export type { Continuity } from './continuity';
