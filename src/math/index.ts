@@ -105,6 +105,7 @@ export { bezierJointContinuity } from './continuity';
 export { bezierArcLength } from './arcLength';
 export { convexHull, convexHullContains } from './convexHull';
 export { flattenBezier } from './flatten';
+export { rasterizeLine } from './rasterizeLine';
 export { bezierPieceBoxes, nearestOnBezierPieces } from './nearestOnBezierPieces';
 export { clipToBand } from './clipToBand';
 

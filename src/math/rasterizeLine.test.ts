@@ -1,0 +1,157 @@
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { rasterizeLine } from './rasterizeLine';
+
+describe('rasterizeLine', () => {
+  it('lights the pixels worked out by hand', () => {
+    const cases: [[number, number, number, number], [number, number][]][] = [
+      // Horizontal, vertical (drawn downwards) and the two diagonals.
+      [
+        [0, 0, 3, 0],
+        [
+          [0, 0],
+          [1, 0],
+          [2, 0],
+          [3, 0],
+        ],
+      ],
+      [
+        [2, 1, 2, -2],
+        [
+          [2, 1],
+          [2, 0],
+          [2, -1],
+          [2, -2],
+        ],
+      ],
+      [
+        [0, 0, 3, 3],
+        [
+          [0, 0],
+          [1, 1],
+          [2, 2],
+          [3, 3],
+        ],
+      ],
+      [
+        [0, 0, -2, 2],
+        [
+          [0, 0],
+          [-1, 1],
+          [-2, 2],
+        ],
+      ],
+      // Bresenham's shallow line: ideal y = 0, 0.4, 0.8, 1.2, 1.6, 2.
+      [
+        [0, 0, 5, 2],
+        [
+          [0, 0],
+          [1, 0],
+          [2, 1],
+          [3, 1],
+          [4, 2],
+          [5, 2],
+        ],
+      ],
+      // Steep: y is the major axis, ideal x = 0, 0.4, 0.8, 1.2, 1.6, 2.
+      [
+        [0, 0, 2, 5],
+        [
+          [0, 0],
+          [0, 1],
+          [1, 2],
+          [1, 3],
+          [2, 4],
+          [2, 5],
+        ],
+      ],
+      // Ties (ideal y = 0.5, −0.5) go to the larger coordinate.
+      [
+        [0, 0, 2, 1],
+        [
+          [0, 0],
+          [1, 1],
+          [2, 1],
+        ],
+      ],
+      [
+        [0, 0, 2, -1],
+        [
+          [0, 0],
+          [1, 0],
+          [2, -1],
+        ],
+      ],
+      // Ends rounded first: (0.4, −0.6) → (0, −1) and (3.5, 1.49) → (4, 1);
+      // ideal y = −1, −0.5, 0, 0.5, 1.
+      [
+        [0.4, -0.6, 3.5, 1.49],
+        [
+          [0, -1],
+          [1, 0],
+          [2, 0],
+          [3, 1],
+          [4, 1],
+        ],
+      ],
+      // Both ends in one pixel: a single pixel, with no −0.
+      [[0.2, 0.4, -0.3, 0.1], [[0, 0]]],
+      [[1.4, 2.6, 1.4, 2.6], [[1, 3]]],
+    ];
+    for (const [[x0, y0, x1, y1], pixels] of cases) {
+      expect(rasterizeLine(x0, y0, x1, y1), `${x0}, ${y0} → ${x1}, ${y1}`).toEqual(pixels);
+    }
+  });
+
+  const end = fc.double({ min: -200, max: 200, noNaN: true });
+  const integer = fc.integer({ min: -300, max: 300 });
+
+  it('has one pixel per step along the major axis, 8-connected, within ½ of the line', () => {
+    fc.assert(
+      fc.property(end, end, end, end, (x0, y0, x1, y1) => {
+        const pixels = rasterizeLine(x0, y0, x1, y1);
+        const [startX, startY, endX, endY] = [x0, y0, x1, y1].map((v) => Math.round(v) + 0);
+        const [dx, dy] = [endX - startX, endY - startY];
+        const xMajor = Math.abs(dx) >= Math.abs(dy);
+        expect(pixels).toHaveLength(Math.max(Math.abs(dx), Math.abs(dy)) + 1);
+        expect(pixels[0]).toEqual([startX, startY]);
+        expect(pixels[pixels.length - 1]).toEqual([endX, endY]);
+        pixels.forEach(([x, y], k) => {
+          expect(Number.isInteger(x) && Number.isInteger(y)).toBe(true);
+          if (k > 0) {
+            const [px, py] = pixels[k - 1];
+            // Exactly one unit along the major axis, at most one across it.
+            expect(Math.abs(xMajor ? x - px : y - py)).toBe(1);
+            expect(Math.abs(xMajor ? y - py : x - px)).toBeLessThanOrEqual(1);
+          }
+          // Across the major axis, the ideal line through the end pixels.
+          const across = xMajor
+            ? y - (startY + ((x - startX) * dy) / dx)
+            : x - (startX + ((y - startY) * dx) / dy);
+          if (dx !== 0 || dy !== 0) expect(Math.abs(across)).toBeLessThanOrEqual(0.5 + 1e-12);
+        });
+      }),
+    );
+  });
+
+  it('lights the same pixels drawn backwards, transposed or moved by whole pixels', () => {
+    fc.assert(
+      fc.property(integer, integer, integer, integer, integer, integer, (x0, y0, x1, y1, a, b) => {
+        const pixels = rasterizeLine(x0, y0, x1, y1);
+        expect(rasterizeLine(x1, y1, x0, y0)).toEqual(pixels.slice().reverse());
+        expect(rasterizeLine(y0, x0, y1, x1)).toEqual(pixels.map(([x, y]) => [y, x]));
+        expect(rasterizeLine(x0 + a, y0 + b, x1 + a, y1 + b)).toEqual(
+          pixels.map(([x, y]) => [x + a, y + b]),
+        );
+      }),
+    );
+  });
+
+  it('rejects coordinates that are not finite numbers', () => {
+    expect(() => rasterizeLine(NaN, 0, 1, 1)).toThrow(
+      'rasterizeLine: x0 is NaN; it must be a finite number.',
+    );
+    expect(() => rasterizeLine(0, 0, 1, Infinity)).toThrow(/^rasterizeLine: y1 is Infinity/);
+    expect(() => rasterizeLine(0, '1' as unknown as number, 1, 1)).toThrow(RangeError);
+  });
+});
