@@ -31,6 +31,12 @@ const withInfinity: Point[] = [
   [4, 0],
 ];
 const knots = [0, 0, 0, 0, 1, 1, 1, 1];
+const helix: Point[] = [
+  [1, 0, 0],
+  [1, 1, 1],
+  [0, 1, 2],
+  [-1, 1, 3],
+];
 
 /** Each contract function as a function of its point list and its parameter. */
 const curves: [string, (points: Point[], parameter: number) => unknown, number][] = [
@@ -49,6 +55,10 @@ const curves: [string, (points: Point[], parameter: number) => unknown, number][
   ['bezierSurfacePoint', (p, u) => math.bezierSurfacePoint([p, good2D], u, 0.5), 0.5],
   ['bezierCurvature', (p, t) => math.bezierCurvature(p, t), 0.5],
   ['flattenBezier', (p) => math.flattenBezier(p, 0.1), 0.5],
+  ['catmullRomSegments', (p, alpha) => math.catmullRomSegments(p, alpha), 0.5],
+  ['catmullRomPoint', (p, s) => math.catmullRomPoint(p, 0.5, s), 1.5],
+  ['bezierJointContinuity', (p) => math.bezierJointContinuity(p, good2D), 0.5],
+  ['bezierFrenetFrame', (p, t) => math.bezierFrenetFrame(p, t), 0.5],
 ];
 
 describe('every contract function rejects bad points', () => {
@@ -78,6 +88,12 @@ describe('every parameter has its range', () => {
     ['bezierSurfacePoint v', () => math.bezierSurfacePoint([good2D], 0.5, 7)],
     ['bezierCurvature t', () => math.bezierCurvature(good2D, 1.5)],
     ['flattenBezier tolerance', () => math.flattenBezier(good2D, 0)],
+    ['catmullRomSegments alpha', () => math.catmullRomSegments(good2D, 1.5)],
+    ['catmullRomPoint s', () => math.catmullRomPoint(good2D, 0.5, 3.5)],
+    ['bezierFrenetFrame t', () => math.bezierFrenetFrame(good2D, -1)],
+    ['bezierTorsion t', () => math.bezierTorsion(helix, 2)],
+    ['coxDeBoorTable t', () => math.coxDeBoorTable(knots, 3, 1.5)],
+    ['rasterizeLine x1', () => math.rasterizeLine(0, 0, NaN, 0)],
   ];
   it.each(cases)('%s', (_, call) => {
     expect(call).toThrow(RangeError);
@@ -113,6 +129,11 @@ describe('the other named failures', () => {
     ).toThrow(/zero speed/);
   });
 
+  it('torsion needs a 3D curve with a well-defined osculating plane', () => {
+    expect(() => math.bezierTorsion(good2D, 0.5)).toThrow(/^bezierTorsion: points are 2D/);
+    expect(() => math.bezierTorsion(helix.slice(0, 2), 0.5)).toThrow(/P′ × P″ = 0/);
+  });
+
   it('non-finite scalar values', () => {
     expect(() => math.naturalCubicDerivatives([0, NaN, 1])).toThrow(/ys\[1\] is NaN/);
     expect(() => math.binomial(Infinity, 1)).toThrow(RangeError);
@@ -146,5 +167,10 @@ describe('degenerate but legal input works', () => {
     finite(math.bsplineBasis([0, 1], 0, 0, 1));
     finite(math.nurbsPoint([[1, 2]], [1], [0, 1], 0, 0.5));
     finite(math.bezierSurfacePoint([[[1, 2, 3]]], 0.5, 0.5));
+    finite(math.bezierTorsion(helix.slice(0, 3), 0.5));
+    finite(math.coxDeBoorTable([0, 1], 0, 1));
+    finite(math.rasterizeLine(0.2, 0.2, 0.3, 0.3));
+    finite(math.cubicSplineC2(repeated.map(([x, y]) => [x, y, 0])));
+    finite(math.naturalCubicDerivatives([5, 5, 5]));
   });
 });

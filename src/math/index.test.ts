@@ -28,6 +28,13 @@ const contract = [
   'bezierSurfacePoint',
   'bezierCurvature',
   'flattenBezier',
+  'catmullRomSegments',
+  'catmullRomPoint',
+  'bezierJointContinuity',
+  'bezierFrenetFrame',
+  'bezierTorsion',
+  'coxDeBoorTable',
+  'rasterizeLine',
 ];
 
 describe('src/math/index.ts', () => {
