@@ -76,6 +76,8 @@ export class FigureView<S, M> {
   /** The user moved the view: keep it (and put it in the link), unless asked to fit. */
   private userView = false;
   private size = { width: 0, height: 0 };
+  /** The figure's box as last observed (CSS pixels), or null before the first observation. */
+  private box: { width: number; height: number } | null = null;
 
   constructor(
     readonly spec: FigureSpec<S, M>,
@@ -118,7 +120,11 @@ export class FigureView<S, M> {
       add: spec.addPoint ? (at) => this.add(at) : undefined,
       remove: spec.removeHandle ? (id) => this.remove(id) : undefined,
     });
-    this.resizeObserver = new ResizeObserver(() => host.invalidate(this));
+    this.resizeObserver = new ResizeObserver(([entry]) => {
+      // The size is read here, once per change, never while drawing a frame.
+      this.box = { width: entry.contentRect.width, height: entry.contentRect.height };
+      host.invalidate(this);
+    });
     this.resizeObserver.observe(this.element);
   }
 
@@ -195,7 +201,7 @@ export class FigureView<S, M> {
 
   /** Sizes the canvas to its box (device pixels); true if the size changed. */
   private sizeCanvas(): boolean {
-    const rect = this.element.getBoundingClientRect();
+    const rect = this.box ?? this.element.getBoundingClientRect();
     const width = Math.max(1, Math.round(rect.width));
     const height = Math.max(1, Math.round(rect.height));
     const dpr = window.devicePixelRatio || 1;

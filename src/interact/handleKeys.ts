@@ -65,10 +65,10 @@ export class HandleKeys {
       const depth = handle.depth === true;
       if (before?.name !== handle.name) el.setAttribute('aria-label', handle.name);
       if (before?.x !== handle.x || before?.y !== handle.y) {
-        // A point far off the figure waits at its edge (still reachable by Tab),
-        // not millions of pixels away where the browser would have to place it.
-        const x = Math.max(-16, Math.min(handle.x, size.width + 16));
-        const y = Math.max(-16, Math.min(handle.y, size.height + 16));
+        // A point far off the figure waits a figure's width beyond it (still
+        // reachable by Tab), not millions of pixels away.
+        const x = Math.max(-size.width, Math.min(handle.x, 2 * size.width));
+        const y = Math.max(-size.height, Math.min(handle.y, 2 * size.height));
         el.style.transform = `translate(${x}px, ${y}px)`;
       }
       if (before?.depth !== depth)
