@@ -82,7 +82,9 @@ export function serviceWorker(): Plugin {
     },
     generateBundle(_options, bundle) {
       const built = Object.keys(bundle);
-      const copied = listFiles(publicDir).map((path) => relative(publicDir, path).split('\\').join('/'));
+      const copied = listFiles(publicDir).map((path) =>
+        relative(publicDir, path).split('\\').join('/'),
+      );
       const files = [...new Set([...built, ...copied])].filter((f) => f !== 'sw.js').sort();
       // The version changes whenever any file's name or content changes, so the
       // browser installs the new worker and its fresh cache.

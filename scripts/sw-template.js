@@ -2,7 +2,7 @@
 // version and the list of every file it produced). On install it stores every
 // file, so each lesson opens offline after the first visit even when the
 // browser's HTTP cache is cleared. A missing file gets an error, never the page.
-/* global self, caches, fetch, Request, Response, URL, __VERSION__, __PRECACHE__ */
+/* global __VERSION__, __PRECACHE__ */
 const VERSION = __VERSION__;
 const PRECACHE = __PRECACHE__;
 const CACHE = `spline-lab-${VERSION}`;
@@ -42,12 +42,14 @@ self.addEventListener('fetch', (event) => {
   }
   // Every other file is named by its content (or listed above): the stored copy is right.
   event.respondWith(
-    caches.match(request, { ignoreSearch: true, ignoreVary: true }).then(
-      (hit) =>
-        hit ||
-        fetch(request).catch(
-          () => new Response('', { status: 504, statusText: 'Offline and not stored' }),
-        ),
-    ),
+    caches
+      .match(request, { ignoreSearch: true, ignoreVary: true })
+      .then(
+        (hit) =>
+          hit ||
+          fetch(request).catch(
+            () => new Response('', { status: 504, statusText: 'Offline and not stored' }),
+          ),
+      ),
   );
 });

@@ -41,7 +41,9 @@ export class ParameterControl<S> {
       class: 'param-number',
     });
     this.slider.addEventListener('input', () => this.setValue(Number(this.slider.value), 'slider'));
-    this.number.addEventListener('change', () => this.setValue(Number(this.number.value), 'number'));
+    this.number.addEventListener('change', () =>
+      this.setValue(Number(this.number.value), 'number'),
+    );
     this.play = h(
       'button',
       {

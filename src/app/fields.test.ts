@@ -37,18 +37,19 @@ describe('field kinds', () => {
     const grid = pointGrid({ default: [], rows: 4, columns: 4, dimension: 3 });
     fc.assert(
       fc.property(
-        fc.array(fc.array(fc.tuple(coordinate, coordinate, coordinate), { minLength: 4, maxLength: 4 }), {
-          minLength: 4,
-          maxLength: 4,
-        }),
+        fc.array(
+          fc.array(fc.tuple(coordinate, coordinate, coordinate), { minLength: 4, maxLength: 4 }),
+          {
+            minLength: 4,
+            maxLength: 4,
+          },
+        ),
         (net) => {
           const back = grid.decode(grid.encode(net));
           expect(back.ok).toBe(true);
           if (back.ok)
             back.value.forEach((row, r) =>
-              row.forEach((p, c) =>
-                p.forEach((v, k) => expect(v).toBeCloseTo(net[r][c][k], 6)),
-              ),
+              row.forEach((p, c) => p.forEach((v, k) => expect(v).toBeCloseTo(net[r][c][k], 6))),
             );
         },
       ),

@@ -86,10 +86,7 @@ export function bool(options: { default: boolean }): Field<boolean> {
 }
 
 /** One of a few named values. */
-export function choice<V extends string>(options: {
-  default: V;
-  values: readonly V[];
-}): Field<V> {
+export function choice<V extends string>(options: { default: V; values: readonly V[] }): Field<V> {
   return {
     default: options.default,
     encode: (v) => v,
@@ -112,7 +109,10 @@ export interface ListOptions {
 
 /** A list of numbers, each in [low, high], separated by commas. */
 export function numbers(
-  options: ListOptions & { default: readonly number[]; check?: (values: number[]) => string | null },
+  options: ListOptions & {
+    default: readonly number[];
+    check?: (values: number[]) => string | null;
+  },
 ): Field<number[]> {
   const noun = options.noun ?? 'value';
   return {
@@ -138,7 +138,9 @@ export function numbers(
 }
 
 /** A knot vector: numbers that never decrease. */
-export function knots(options: Omit<ListOptions, 'noun'> & { default: readonly number[] }): Field<number[]> {
+export function knots(
+  options: Omit<ListOptions, 'noun'> & { default: readonly number[] },
+): Field<number[]> {
   return numbers({
     ...options,
     noun: 'knot',
@@ -177,7 +179,8 @@ function readPoint(item: string, dimension: number, limit: number): FieldResult<
   const point: number[] = [];
   for (const text of coords) {
     const v = parseNumber(text);
-    if (v === null) return fail(`${quote(item)} is not a point of ${dimension === 3 ? "three" : "two"} numbers`);
+    if (v === null)
+      return fail(`${quote(item)} is not a point of ${dimension === 3 ? 'three' : 'two'} numbers`);
     if (Math.abs(v) > limit) return fail(`${quote(item)} is beyond ±${limit}`);
     point.push(v);
   }

@@ -331,7 +331,15 @@ export class FigureView<S, M> {
     const handle = this.handleById(id);
     if (!handle) {
       // Grabbed by pickAt (e.g. a cursor line): no handle to stack with.
-      this.dragging = { id, stack: null, start: at, offset: [0, 0], anchor: this.view.toWorld(at), axis: null, key: `drag:${++dragSerial}` };
+      this.dragging = {
+        id,
+        stack: null,
+        start: at,
+        offset: [0, 0],
+        anchor: this.view.toWorld(at),
+        axis: null,
+        key: `drag:${++dragSerial}`,
+      };
       return;
     }
     const screen = this.view.toScreen(handle.position);
@@ -363,7 +371,9 @@ export class FigureView<S, M> {
         if (!pull) return;
         const anchor = this.handleById(id)!.position;
         const a = this.view.toScreen(anchor);
-        const b = this.view.toScreen(anchor.map((v, k) => v + (pull[k] ?? 0) * this.view.worldLength(40, anchor)));
+        const b = this.view.toScreen(
+          anchor.map((v, k) => v + (pull[k] ?? 0) * this.view.worldLength(40, anchor)),
+        );
         const length = hypot(a, b) || 1;
         const score = ((b[0] - a[0]) * motion[0] + (b[1] - a[1]) * motion[1]) / length;
         if (score > bestScore) {

@@ -52,7 +52,12 @@ export const LESSON_KEYS: readonly Binding[] = [
     help: ['PageDown, →, space', 'Next step of the construction (a presentation clicker works)'],
     run: (t) => t.step(1),
   },
-  { keys: ['ArrowRight', 'ArrowDown', ' '], help: ['', ''], yieldsTo: 'controls', run: (t) => t.step(1) },
+  {
+    keys: ['ArrowRight', 'ArrowDown', ' '],
+    help: ['', ''],
+    yieldsTo: 'controls',
+    run: (t) => t.step(1),
+  },
   { keys: ['PageUp'], help: ['PageUp, ←', 'Previous step'], run: (t) => t.step(-1) },
   { keys: ['ArrowLeft', 'ArrowUp'], help: ['', ''], yieldsTo: 'controls', run: (t) => t.step(-1) },
   { keys: ['Home'], help: ['Home / End', 'First / last step'], run: (t) => t.stepTo('first') },

@@ -14,7 +14,9 @@ export function buildLayout(
     return h('div', { class: `figures layout-${layout ?? 'row'}` }, ...figures.values());
   }
   const root = node(layout, figures);
-  return root.classList.contains('figures') ? root : h('div', { class: 'figures layout-row' }, root);
+  return root.classList.contains('figures')
+    ? root
+    : h('div', { class: 'figures layout-row' }, root);
 }
 
 function node(layout: LayoutNode, figures: ReadonlyMap<string, HTMLElement>): HTMLElement {
@@ -30,7 +32,8 @@ function node(layout: LayoutNode, figures: ReadonlyMap<string, HTMLElement>): HT
       style: `grid-template-columns: auto repeat(${columns.length}, minmax(0, 1fr)); grid-template-rows: auto repeat(${rows.length}, minmax(160px, 1fr))`,
     });
     grid.append(h('div', { class: 'grid-corner' }));
-    for (const title of columns) grid.append(h('div', { class: 'grid-heading grid-column' }, title));
+    for (const title of columns)
+      grid.append(h('div', { class: 'grid-heading grid-column' }, title));
     rows.forEach((title, r) => {
       grid.append(h('div', { class: 'grid-heading grid-row' }, title));
       for (const id of cells[r] ?? []) grid.append(node(id, figures));

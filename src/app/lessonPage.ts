@@ -287,8 +287,7 @@ export class LessonPage<S, M> implements KeyTarget {
   applyQuery(loaded: Loaded<S>): void {
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
-    const same =
-      this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();
+    const same = this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();
     if (same) {
       // Nothing changed, but the address bar must show the state in force.
       this.url.write();

@@ -60,7 +60,11 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
       };
   }
   // Defaults go through the same rules, so a lesson may default a step to "the end".
-  return { state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state, issues: [], views: {} };
+  return {
+    state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state,
+    issues: [],
+    views: {},
+  };
 }
 
 function readStorage(storage: Storage | null, key: string): string | null {

@@ -57,7 +57,8 @@ export class LiveRows {
       const data = spec.data ? JSON.stringify(spec.data) : '';
       if (row.data !== data) {
         row.data = data;
-        for (const [key, value] of Object.entries(spec.data ?? {})) row.element.dataset[key] = value;
+        for (const [key, value] of Object.entries(spec.data ?? {}))
+          row.element.dataset[key] = value;
       }
       spec.cells.forEach((cell, c) => this.fill(row.cells[c], cell));
     });
@@ -66,7 +67,10 @@ export class LiveRows {
 
   private create(spec: RowSpec): LiveRow {
     const cells: LiveCell[] = spec.cells.map((_, c) => {
-      const element = h(spec.heading && c === 0 ? 'th' : 'td', spec.heading && c === 0 ? { scope: 'row' } : {});
+      const element = h(
+        spec.heading && c === 0 ? 'th' : 'td',
+        spec.heading && c === 0 ? { scope: 'row' } : {},
+      );
       const text = document.createTextNode('');
       element.append(text);
       return { element, text, swatch: null, swatchColor: '' };

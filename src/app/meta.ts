@@ -14,7 +14,12 @@ export const GROUP_TITLES: Record<LessonGroup, string> = {
   surfaces: 'Surfaces and drawing',
 };
 
-export const GROUP_ORDER: readonly LessonGroup[] = ['interpolation', 'bezier', 'splines', 'surfaces'];
+export const GROUP_ORDER: readonly LessonGroup[] = [
+  'interpolation',
+  'bezier',
+  'splines',
+  'surfaces',
+];
 
 export interface LessonMeta {
   slug: string;

@@ -95,7 +95,8 @@ export function decodeState<S>(
     if (key.startsWith(VIEW_PREFIX) && figures.includes(key.slice(VIEW_PREFIX.length))) {
       seen.add(key);
       if (SAFE_VALUE.test(raw)) views[key.slice(VIEW_PREFIX.length)] = raw;
-      else issues.push(`${key}: ${quote(raw)} has characters that do not belong; the view was fitted`);
+      else
+        issues.push(`${key}: ${quote(raw)} has characters that do not belong; the view was fitted`);
       continue;
     }
     if (!Object.prototype.hasOwnProperty.call(schema, key)) {

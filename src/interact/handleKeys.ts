@@ -43,7 +43,10 @@ export function arrowDirection(key: string): [number, number] | null {
 export class HandleKeys {
   private readonly elements = new Map<string, HTMLElement>();
   /** What each element shows now, so unchanged handles cost no DOM write. */
-  private readonly shown = new Map<string, { name: string; x: number; y: number; depth: boolean }>();
+  private readonly shown = new Map<
+    string,
+    { name: string; x: number; y: number; depth: boolean }
+  >();
 
   constructor(
     private readonly layer: HTMLElement,
@@ -74,7 +77,9 @@ export class HandleKeys {
       if (before?.depth !== depth)
         el.setAttribute(
           'aria-description',
-          depth ? 'Arrow keys move it in x and y, Ctrl with up and down in z' : 'Arrow keys move it',
+          depth
+            ? 'Arrow keys move it in x and y, Ctrl with up and down in z'
+            : 'Arrow keys move it',
         );
       this.shown.set(handle.id, { name: handle.name, x: handle.x, y: handle.y, depth });
     }

@@ -119,7 +119,11 @@ export function drawPlotAxes(
   }
   if (xName) {
     const [sx, sy] = v.toScreen([bounds.maxX, bounds.minY]);
-    painter.screenLabel(xName, sx, sy + small * 2.1, { ...muted, size: small * 1.1, align: 'right' });
+    painter.screenLabel(xName, sx, sy + small * 2.1, {
+      ...muted,
+      size: small * 1.1,
+      align: 'right',
+    });
   }
   if (yName) {
     const [sx, sy] = v.toScreen([bounds.minX, bounds.maxY]);

@@ -51,13 +51,16 @@ describe('clipPolyline', () => {
 
   it('keeps a visible polyline joined (drops vertices closer than the tolerance, never the ends)', () => {
     fc.assert(
-      fc.property(fc.array(fc.double({ min: 1, max: 49, noNaN: true }), { minLength: 4, maxLength: 40 }), (ys) => {
-        const xy = ys.flatMap((y, i) => [1 + (i * 98) / (ys.length - 1), y]);
-        const sink = recorder();
-        clipPolyline(xy, rect, sink);
-        expect(sink.calls.filter((c) => c.op === 'M')).toHaveLength(1);
-        expect(sink.calls[sink.calls.length - 1].xy).toEqual(xy.slice(-2));
-      }),
+      fc.property(
+        fc.array(fc.double({ min: 1, max: 49, noNaN: true }), { minLength: 4, maxLength: 40 }),
+        (ys) => {
+          const xy = ys.flatMap((y, i) => [1 + (i * 98) / (ys.length - 1), y]);
+          const sink = recorder();
+          clipPolyline(xy, rect, sink);
+          expect(sink.calls.filter((c) => c.op === 'M')).toHaveLength(1);
+          expect(sink.calls[sink.calls.length - 1].xy).toEqual(xy.slice(-2));
+        },
+      ),
     );
   });
 });

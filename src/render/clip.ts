@@ -79,7 +79,12 @@ export function clipPolyline(
     const ay = xy[2 * i - 1];
     const bx = xy[2 * i];
     const by = xy[2 * i + 1];
-    if (!(Number.isFinite(ax) && Number.isFinite(ay) && Number.isFinite(bx) && Number.isFinite(by))) {
+    if (!(
+      Number.isFinite(ax) &&
+      Number.isFinite(ay) &&
+      Number.isFinite(bx) &&
+      Number.isFinite(by)
+    )) {
       connected = false;
       continue;
     }
@@ -91,8 +96,14 @@ export function clipPolyline(
     let endCut = false;
     // Both ends inside is the common case: no arithmetic beyond the test.
     const inside =
-      ax >= r.minX && ax <= r.maxX && ay >= r.minY && ay <= r.maxY &&
-      bx >= r.minX && bx <= r.maxX && by >= r.minY && by <= r.maxY;
+      ax >= r.minX &&
+      ax <= r.maxX &&
+      ay >= r.minY &&
+      ay <= r.maxY &&
+      bx >= r.minX &&
+      bx <= r.maxX &&
+      by >= r.minY &&
+      by <= r.maxY;
     if (!inside) {
       const cut = clipSegment(ax, ay, bx, by, r);
       if (!cut) {
@@ -172,13 +183,7 @@ export function clipCubic(
   const cx = mid(l2x, r1x);
   const cy = mid(l2y, r1y);
   const left = clipCubic([q[0], q[1], l1x, l1y, l2x, l2y, cx, cy], r, sink, pen, depth + 1);
-  const right = clipCubic(
-    [cx, cy, r1x, r1y, r2x, r2y, q[6], q[7]],
-    r,
-    sink,
-    left,
-    depth + 1,
-  );
+  const right = clipCubic([cx, cy, r1x, r1y, r2x, r2y, q[6], q[7]], r, sink, left, depth + 1);
   return right ?? left;
 }
 
@@ -207,8 +212,14 @@ export function clipPolygon(points: readonly (readonly number[])[], r: ClipRect)
   return out;
 }
 
-const atX = (a: number[], b: number[], x: number) => [x, a[1] + ((b[1] - a[1]) * (x - a[0])) / (b[0] - a[0])];
-const atY = (a: number[], b: number[], y: number) => [a[0] + ((b[0] - a[0]) * (y - a[1])) / (b[1] - a[1]), y];
+const atX = (a: number[], b: number[], x: number) => [
+  x,
+  a[1] + ((b[1] - a[1]) * (x - a[0])) / (b[0] - a[0]),
+];
+const atY = (a: number[], b: number[], y: number) => [
+  a[0] + ((b[0] - a[0]) * (y - a[1])) / (b[1] - a[1]),
+  y,
+];
 
 /** Does a circle (screen) reach into the rectangle? */
 export function circleVisible(x: number, y: number, radius: number, r: ClipRect): boolean {

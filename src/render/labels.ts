@@ -90,7 +90,13 @@ export function drawScreenLabel(
   const margin = 2 + (style.box ? size * 0.35 : 0);
   left = Math.max(margin, Math.min(left, view.width - total - margin));
   middleY = Math.max(size * 0.7 + margin, Math.min(middleY, view.height - size * 0.7 - margin));
-  painter.labels.push({ text, x: left, y: middleY - size * 0.65, width: total, height: size * 1.3 });
+  painter.labels.push({
+    text,
+    x: left,
+    y: middleY - size * 0.65,
+    width: total,
+    height: size * 1.3,
+  });
   if (style.box) {
     const pad = size * 0.35;
     const box: [number, number, number, number] = [

@@ -177,13 +177,7 @@ export class OrbitCamera implements Projection {
 
   /** `yaw,pitch,scale,tx,ty,tz,perspective` with angles in degrees. */
   encode(): string {
-    return [
-      this.yaw / DEG,
-      this.pitch / DEG,
-      this.scale,
-      ...this.target,
-      this.perspective ? 1 : 0,
-    ]
+    return [this.yaw / DEG, this.pitch / DEG, this.scale, ...this.target, this.perspective ? 1 : 0]
       .map(viewNumber)
       .join(',');
   }

@@ -74,7 +74,12 @@ export class Painter {
   /** Is a world point on screen (within `margin` pixels of the figure)? */
   visible(p: P, margin = 0): boolean {
     const [x, y] = this.view.toScreen(p);
-    return x >= -margin && y >= -margin && x <= this.view.width + margin && y <= this.view.height + margin;
+    return (
+      x >= -margin &&
+      y >= -margin &&
+      x <= this.view.width + margin &&
+      y <= this.view.height + margin
+    );
   }
 
   applyStroke(style: StrokeStyle, fallbackWidth: number, fallbackColor: string): void {
@@ -185,7 +190,11 @@ export class Painter {
       const t = i / 48;
       const s = 1 - t;
       const w = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
-      samples.push(seg[0].map((_, d) => w[0] * seg[0][d] + w[1] * seg[1][d] + w[2] * seg[2][d] + w[3] * seg[3][d]));
+      samples.push(
+        seg[0].map(
+          (_, d) => w[0] * seg[0][d] + w[1] * seg[1][d] + w[2] * seg[2][d] + w[3] * seg[3][d],
+        ),
+      );
     }
     return clipPolyline(this.project(samples), this.clip, this.ctx) > 0;
   }

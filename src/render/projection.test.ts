@@ -41,7 +41,9 @@ describe('Viewport (the plane)', () => {
     view.scaleX = view.scaleY = 87.5;
     const copy = new Viewport(640, 480);
     expect(copy.decode(view.encode())).toBe(true);
-    expect([copy.centerX, copy.centerY, copy.scaleX, copy.scaleY]).toEqual([1.25, -3.5, 87.5, 87.5]);
+    expect([copy.centerX, copy.centerY, copy.scaleX, copy.scaleY]).toEqual([
+      1.25, -3.5, 87.5, 87.5,
+    ]);
     for (const bad of ['', '1,2', '1,2,0', '1,2,-5', 'a,b,c', '1,2,1e99', 'NaN,1,1'])
       expect(new Viewport().decode(bad)).toBe(false);
   });
@@ -69,7 +71,13 @@ describe('OrbitCamera (space)', () => {
     it(`${name}: the drag plane faces the viewer (moving on it keeps the depth)`, () => {
       const camera = new OrbitCamera({ yaw: -60, pitch: 25, perspective });
       camera.resize(800, 600);
-      camera.fit(boundsOf([[-1, -1, -1], [1, 1, 1]]), 20);
+      camera.fit(
+        boundsOf([
+          [-1, -1, -1],
+          [1, 1, 1],
+        ]),
+        20,
+      );
       const anchor = [0.3, -0.2, 0.5];
       const [sx, sy] = camera.toScreen(anchor);
       const moved = camera.toWorld([sx + 70, sy - 40], anchor);
@@ -80,14 +88,26 @@ describe('OrbitCamera (space)', () => {
   it('z is up: with the camera above, a higher point is drawn higher', () => {
     const camera = new OrbitCamera({ yaw: -60, pitch: 25, perspective: false });
     camera.resize(400, 400);
-    camera.fit(boundsOf([[-1, -1, -1], [1, 1, 1]]), 20);
+    camera.fit(
+      boundsOf([
+        [-1, -1, -1],
+        [1, 1, 1],
+      ]),
+      20,
+    );
     expect(camera.toScreen([0, 0, 1])[1]).toBeLessThan(camera.toScreen([0, 0, 0])[1]);
   });
 
   it('a point dragged along an axis changes only that coordinate', () => {
     const camera = new OrbitCamera({ yaw: -50, pitch: 30, perspective: true });
     camera.resize(800, 600);
-    camera.fit(boundsOf([[-2, -2, -2], [2, 2, 2]]), 20);
+    camera.fit(
+      boundsOf([
+        [-2, -2, -2],
+        [2, 2, 2],
+      ]),
+      20,
+    );
     const anchor = [0.5, 1, -0.25];
     const [sx, sy] = camera.toScreen(anchor);
     for (const axis of [

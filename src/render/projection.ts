@@ -65,7 +65,9 @@ export function boundsOf(points: readonly WorldPoint[]): Bounds {
     }
   }
   if (!Number.isFinite(minX)) return { minX: -1, minY: -1, maxX: 1, maxY: 1 };
-  return Number.isFinite(minZ) ? { minX, minY, maxX, maxY, minZ, maxZ } : { minX, minY, maxX, maxY };
+  return Number.isFinite(minZ)
+    ? { minX, minY, maxX, maxY, minZ, maxZ }
+    : { minX, minY, maxX, maxY };
 }
 
 export function unionBounds(a: Bounds, b: Bounds): Bounds {

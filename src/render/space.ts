@@ -70,7 +70,9 @@ export class SpaceScene {
    * between its normal and the light, whichever side faces the viewer.
    */
   quad(points: P[], color: string, options: { alpha?: number; edge?: StrokeStyle } = {}): void {
-    const n = normalize(cross(sub(points[2], points[0]), sub(points[points.length - 1], points[1])));
+    const n = normalize(
+      cross(sub(points[2], points[0]), sub(points[points.length - 1], points[1])),
+    );
     const back = this.camera.towardsViewer();
     // The light is fixed to the viewer: express it in world coordinates.
     const facing = n[0] * back[0] + n[1] * back[1] + n[2] * back[2];
@@ -90,7 +92,9 @@ export class SpaceScene {
 
   private lightInWorld(): number[] {
     const { right, up, back } = this.camera;
-    return normalize([0, 1, 2].map((i) => LIGHT[0] * right[i] + LIGHT[1] * up[i] + LIGHT[2] * back[i]));
+    return normalize(
+      [0, 1, 2].map((i) => LIGHT[0] * right[i] + LIGHT[1] * up[i] + LIGHT[2] * back[i]),
+    );
   }
 
   dot(p: P, color: string, radius = this.painter.sizes.point): void {

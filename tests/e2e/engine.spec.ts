@@ -5,7 +5,9 @@ import { expect, test } from './fixtures';
 async function lessonSlugs(page: Page): Promise<string[]> {
   await page.goto('./#/');
   await expect(page.locator('a.card').first()).toBeVisible();
-  return page.locator('a.card').evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
+  return page
+    .locator('a.card')
+    .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
 }
 
 const nextFrame = (page: Page) =>
@@ -148,8 +150,9 @@ test('the gallery loads no lesson code and no formula typesetting', async ({ pag
   // Each card's thumbnail is an image drawn at build time, and it is there.
   const broken = await page
     .locator('a.card img')
-    .evaluateAll((images) =>
-      (images as HTMLImageElement[]).filter((i) => !i.complete || i.naturalWidth === 0).length,
+    .evaluateAll(
+      (images) =>
+        (images as HTMLImageElement[]).filter((i) => !i.complete || i.naturalWidth === 0).length,
     );
   expect(broken).toBe(0);
 });
