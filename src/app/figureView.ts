@@ -1,9 +1,9 @@
-import { HandleKeys, type KeySize } from '../interact/handleKeys';
+import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/handleDrag';
+import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
-import type { Point } from '../math';
 import { OrbitCamera } from '../render/orbitCamera';
 import { Painter, splitSubscripts } from '../render/painter';
-import { type Projection, niceStep } from '../render/projection';
+import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
 import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
@@ -33,31 +33,7 @@ export const plainLabel = (label: string) =>
     .map((r) => r.text)
     .join('');
 
-/** How far (pixels) a stacked grab moves before its direction picks the handle. */
-const PULL_SLOP = 4;
-const AXES: Point[] = [
-  [1, 0, 0],
-  [0, 1, 0],
-  [0, 0, 1],
-];
-
-interface Drag {
-  id: string;
-  /** Handles on the one spot grabbed, until the drag's direction picks one. */
-  stack: string[] | null;
-  start: Screen;
-  /** Screen offset from the pointer to the handle's centre. */
-  offset: [number, number];
-  /** Where the handle was when grabbed (the drag plane passes through it). */
-  anchor: Point;
-  /** Along one world axis (space, Shift held), chosen by the first motion. */
-  axis: Point | null;
-  key: string;
-}
-
 let dragSerial = 0;
-
-const hypot = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 
 /** One canvas of a lesson, sharp at any devicePixelRatio, with its handles. */
 export class FigureView<S, M> {
@@ -70,7 +46,7 @@ export class FigureView<S, M> {
   /** The handles of the model last drawn, computed once per model. */
   private handles: Handle[] = [];
   private handlesOf: M | null = null;
-  private dragging: Drag | null = null;
+  private dragging: { drag: HandleDrag; key: string } | null = null;
   private focused: string | null = null;
   private fitted = false;
   /** The user moved the view: keep it (and put it in the link), unless asked to fit. */
@@ -254,7 +230,7 @@ export class FigureView<S, M> {
     if (info.thumbnail) return painter;
     for (const handle of handles) {
       const state =
-        this.dragging?.id === handle.id
+        this.dragging?.drag.id === handle.id
           ? 'drag'
           : this.focused === handle.id
             ? 'focus'
@@ -298,128 +274,33 @@ export class FigureView<S, M> {
     );
   }
 
-  /** Handles within reach of `at`, nearest first (later handles win ties: they are drawn on top). */
-  private within(at: Screen, reach: number): { id: string; d: number; screen: Screen }[] {
-    const found: { id: string; d: number; screen: Screen }[] = [];
-    this.handles.forEach((handle, order) => {
-      const screen = this.view.toScreen(handle.position);
-      const d = hypot(screen, at);
-      if (d <= reach) found.push({ id: handle.id, d: d - order * 1e-9, screen });
-    });
-    return found.sort((a, b) => a.d - b.d);
-  }
-
   private pick(at: Screen, pointerType: string): string | null {
     const reach = this.host.theme().sizes.handle + hitTolerance(pointerType);
-    const nearest = this.within(at, reach)[0];
-    if (nearest) return nearest.id;
-    if (this.spec.pickAt) {
-      return this.spec.pickAt(
-        this.host.model(),
-        this.view.toWorld(at),
-        this.view.worldLength(reach),
-      );
-    }
-    return null;
-  }
-
-  private handleById(id: string): Handle | undefined {
-    return this.handles.find((h) => h.id === id);
+    const nearest = nearestHandle(this.handles, this.view, at, reach);
+    if (nearest !== null || !this.spec.pickAt) return nearest;
+    return this.spec.pickAt(this.host.model(), this.view.toWorld(at), this.view.worldLength(reach));
   }
 
   private dragStart(id: string, at: Screen): void {
-    const handle = this.handleById(id);
-    if (!handle) {
-      // Grabbed by pickAt (e.g. a cursor line): no handle to stack with.
-      this.dragging = {
-        id,
-        stack: null,
-        start: at,
-        offset: [0, 0],
-        anchor: this.view.toWorld(at),
-        axis: null,
-        key: `drag:${++dragSerial}`,
-      };
-      return;
-    }
-    const screen = this.view.toScreen(handle.position);
-    // Every handle on the same spot as the one grabbed: the drag's direction will pick.
-    const stack = this.handles
-      .filter((h) => hypot(this.view.toScreen(h.position), screen) < 1)
-      .map((h) => h.id);
     this.dragging = {
-      id,
-      stack: stack.length > 1 ? stack : null,
-      start: at,
-      offset: [screen[0] - at[0], screen[1] - at[1]],
-      anchor: handle.position,
-      axis: null,
+      drag: new HandleDrag(this.view, this.handles, id, at),
       key: `drag:${++dragSerial}`,
     };
     this.canvas.classList.add('dragging');
     this.host.invalidate(this);
   }
 
-  /** Of handles stacked on one spot, the one this pull direction (screen) means. */
-  private choose(stack: string[], motion: [number, number]): string {
-    const pulls = stack.map((id) => this.handleById(id)?.pull);
-    if (pulls.some(Boolean)) {
-      let best = stack[0];
-      let bestScore = -Infinity;
-      stack.forEach((id, i) => {
-        const pull = pulls[i];
-        if (!pull) return;
-        const anchor = this.handleById(id)!.position;
-        const a = this.view.toScreen(anchor);
-        const b = this.view.toScreen(
-          anchor.map((v, k) => v + (pull[k] ?? 0) * this.view.worldLength(40, anchor)),
-        );
-        const length = hypot(a, b) || 1;
-        const score = ((b[0] - a[0]) * motion[0] + (b[1] - a[1]) * motion[1]) / length;
-        if (score > bestScore) {
-          bestScore = score;
-          best = id;
-        }
-      });
-      return best;
-    }
-    // Right or up (screen y down) picks the last of the stack, left or down the first.
-    return motion[0] - motion[1] >= 0 ? stack[stack.length - 1] : stack[0];
-  }
-
   private dragMove(at: Screen, shift: boolean): void {
-    const drag = this.dragging;
-    if (!drag || !this.spec.moveHandle) return;
-    const motion: [number, number] = [at[0] - drag.start[0], at[1] - drag.start[1]];
-    if (drag.stack) {
-      if (Math.hypot(motion[0], motion[1]) < PULL_SLOP) return;
-      drag.id = this.choose(drag.stack, motion);
-      drag.stack = null;
-    }
-    const screen: Screen = [at[0] + drag.offset[0], at[1] + drag.offset[1]];
-    let to: Point;
-    if (this.view instanceof OrbitCamera) {
-      if (shift && !drag.axis && Math.hypot(motion[0], motion[1]) >= PULL_SLOP) {
-        // Along the world axis whose screen direction is closest to the motion.
-        const camera = this.view;
-        const scores = AXES.map((axis) => {
-          const [dx, dy] = camera.screenDirection(drag.anchor, axis);
-          return Math.abs(dx * motion[0] + dy * motion[1]);
-        });
-        drag.axis = AXES[scores.indexOf(Math.max(...scores))];
-      }
-      if (!shift) drag.axis = null;
-      to = drag.axis
-        ? this.view.closestOnAxis(screen, drag.anchor, [...drag.axis])
-        : this.view.toWorld(screen, drag.anchor);
-    } else to = this.view.toWorld(screen);
-    this.host.set(this.spec.moveHandle(this.host.get(), drag.id, to, this.host.model()), {
-      coalesce: drag.key,
+    if (!this.dragging || !this.spec.moveHandle) return;
+    const moved = this.dragging.drag.move(at, shift);
+    if (!moved) return;
+    this.host.set(this.spec.moveHandle(this.host.get(), moved.id, moved.to, this.host.model()), {
+      coalesce: this.dragging.key,
     });
   }
 
   private dragEnd(): void {
-    const id = this.dragging?.id;
+    const id = this.dragging?.drag.id;
     this.dragging = null;
     this.host.settle();
     this.canvas.classList.remove('dragging');
@@ -444,21 +325,9 @@ export class FigureView<S, M> {
   }
 
   private keyMove(id: string, delta: readonly number[], size: KeySize): void {
-    const handle = this.handleById(id);
+    const handle = this.handles.find((h) => h.id === id);
     if (!handle || !this.spec.moveHandle) return;
-    // About 8 pixels a press, on each axis's own scale (a plot's axes differ).
-    const factor = size === 'big' ? 10 : size === 'fine' ? 0.1 : 1;
-    const p = handle.position;
-    const origin = this.view.toScreen(p);
-    const stepFor = (axis: number) => {
-      if (this.view.dimension === 3) return niceStep(this.view.worldLength(8, p)) * factor;
-      const unit = p.map((_, k) => (k === axis ? p[k] + 1 : p[k]));
-      const pixels = hypot(this.view.toScreen(unit), origin);
-      return niceStep(8 / pixels) * factor;
-    };
-    const snap = (v: number, step: number) => Number((Math.round(v / step) * step).toPrecision(12));
-    // Only the axis that moves lands on the step grid; the others stay exact.
-    const to = p.map((v, k) => (delta[k] ? snap(v + delta[k] * stepFor(k), stepFor(k)) : v));
+    const to = keyStep(this.view, handle.position, delta, size);
     this.host.set(this.spec.moveHandle(this.host.get(), id, to, this.host.model()), {
       coalesce: `key:${id}`,
       windowMs: 1000,

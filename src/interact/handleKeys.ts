@@ -4,6 +4,8 @@
  * screen readers can find it). Tab moves between points, the arrow keys move
  * the focused one (Shift: big steps, Alt: fine steps), Delete removes it.
  */
+import type { KeySize } from './handleDrag';
+
 export interface KeyHandle {
   id: string;
   /** Accessible name, e.g. "P1 at (1.00, 2.00)". */
@@ -14,8 +16,6 @@ export interface KeyHandle {
   /** A point in space: Ctrl (or ⌘) with ↑/↓ moves it along z. */
   depth?: boolean;
 }
-
-export type KeySize = 'normal' | 'big' | 'fine';
 
 export interface HandleKeyCallbacks {
   /** Move by whole steps along each world axis ([dx, dy] or [dx, dy, dz]). */

@@ -156,3 +156,34 @@ test('the gallery loads no lesson code and no formula typesetting', async ({ pag
     );
   expect(broken).toBe(0);
 });
+
+test('points stacked on one spot are pulled apart by the direction of the drag', async ({
+  page,
+}) => {
+  // P0 and P1 both at the origin: a drag to the right takes the last of the stack, to the left the first.
+  await page.goto('./#/de-casteljau?p=0,0;0,0;3,2;4,0&t=0.4&step=0&split=0');
+  const p0 = page.getByRole('button', { name: /^P0 at/ });
+  await expect(p0).toHaveAccessibleName('P0 at (0.00, 0.00)');
+  const box = (await p0.boundingBox())!;
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  const pull = async (dx: number) => {
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    await page.mouse.move(x + dx, y, { steps: 6 });
+    await page.mouse.up();
+  };
+  await pull(80);
+  await expect(page.getByRole('button', { name: /^P1 at/ })).not.toHaveAccessibleName(
+    'P1 at (0.00, 0.00)',
+  );
+  await expect(p0).toHaveAccessibleName('P0 at (0.00, 0.00)');
+  await page.keyboard.press('Control+z');
+  await expect(page.getByRole('button', { name: /^P1 at/ })).toHaveAccessibleName(
+    'P1 at (0.00, 0.00)',
+  );
+  await pull(-80);
+  await expect(p0).not.toHaveAccessibleName('P0 at (0.00, 0.00)');
+  await expect(page.getByRole('button', { name: /^P1 at/ })).toHaveAccessibleName(
+    'P1 at (0.00, 0.00)',
+  );
+});

@@ -1,0 +1,63 @@
+import { describe, expect, it } from 'vitest';
+import { OrbitCamera } from './orbitCamera';
+import { Painter } from './painter';
+import { boundsOf } from './projection';
+import { SpaceScene, shade } from './space';
+import { SvgContext } from './svgContext';
+import { makeTheme } from './theme';
+
+function scene(yaw: number, pitch: number) {
+  const camera = new OrbitCamera({ yaw, pitch, perspective: false });
+  camera.resize(400, 300);
+  camera.fit(
+    boundsOf([
+      [-1, -1, -1],
+      [1, 1, 1],
+    ]),
+    20,
+  );
+  const svg = new SvgContext();
+  const painter = new Painter(svg, camera, makeTheme(false, false));
+  return { camera, svg, space: new SpaceScene(painter, camera) };
+}
+
+const square = (z: number) => [
+  [-1, -1, z],
+  [1, -1, z],
+  [1, 1, z],
+  [-1, 1, z],
+];
+
+describe('SpaceScene: drawing in space far to near', () => {
+  it('draws the farther of two squares first, whichever order they were given in', () => {
+    for (const [pitch, first] of [
+      [60, '#ff0000'], // looking down: the low (red) square is farther
+      [-60, '#0000ff'], // looking up: the high (blue) one is
+    ] as const) {
+      const { svg, space } = scene(-30, pitch);
+      space.quad(square(1), '#0000ff');
+      space.quad(square(-1), '#ff0000');
+      space.flush();
+      const fills = svg.elements
+        .map((e) => /fill="(#[0-9a-f]{6})"/i.exec(e)?.[1])
+        .filter((f): f is string => !!f && f !== '#ffffff');
+      // Shading darkens each colour but keeps its hue: the first drawn is the far one.
+      const hue = (f: string) => (f.slice(1, 3) !== '00' ? '#ff0000' : '#0000ff');
+      expect(hue(fills[0])).toBe(first);
+    }
+  });
+
+  it('lights a face turned to the light more than one edge-on, never to black', () => {
+    const { space, svg } = scene(0, 89);
+    // Seen from straight above, the flat square faces both the viewer and (mostly) the light.
+    space.quad(square(0), '#808080');
+    space.flush();
+    const fill = /fill="(#[0-9a-f]{6})"/i.exec(
+      svg.elements.find((e) => e.includes('fill="#') && !e.includes('#ffffff'))!,
+    )![1];
+    const level = parseInt(fill.slice(1, 3), 16);
+    expect(level).toBeGreaterThan(0x80 * 0.7);
+    expect(level).toBeLessThanOrEqual(0x80);
+    expect(shade('#808080', 0)).toBe('#000000');
+  });
+});
