@@ -1,0 +1,48 @@
+// Checks the per-frame measurement before trusting it: the same traced drag
+// over a page that does nothing should cost about nothing a frame, and over a
+// page whose pointermove listener spins BUSY_MS, about BUSY_MS a frame.
+import type { Browser } from '@playwright/test';
+import { circlePath, tracedDrag, type DragLimits, type DragResult } from './drag';
+import { freshContext, nextFrames } from './page';
+import { BUSY_MS } from './server';
+
+export interface MethodCheck {
+  readonly page: string;
+  readonly expected: string;
+  readonly result: DragResult;
+}
+
+export async function checkMethod(
+  browser: Browser,
+  base: string,
+  limits: DragLimits,
+): Promise<MethodCheck[]> {
+  const pages = [
+    { file: 'idle.html', page: 'idle page (no listeners)', expected: '≈ 0 + harness' },
+    {
+      file: 'busy.html',
+      page: `busy page (pointermove spins ${BUSY_MS} ms)`,
+      expected: `idle + ${BUSY_MS}`,
+    },
+  ];
+  const checks: MethodCheck[] = [];
+  for (const { file, page: name, expected } of pages) {
+    const context = await freshContext(browser, { watchFigure: false });
+    try {
+      const page = await context.newPage();
+      await page.goto(`${base}__bench/${file}`);
+      for (let i = 0; i < 5; i++) await nextFrames(page);
+      const result = await tracedDrag(
+        browser,
+        page,
+        circlePath([960, 540], [960, 0], limits.frames),
+        { selector: 'body', index: 0, property: 'transform' },
+        limits,
+      );
+      checks.push({ page: name, expected, result });
+    } finally {
+      await context.close();
+    }
+  }
+  return checks;
+}
