@@ -1,32 +1,64 @@
-import type { FigureSpec, Point2 } from '../../app/lesson';
-import { boundsOf } from '../../render/viewport';
+import type { DrawInfo, FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
-import { EXPERIMENTS } from './experiments';
-import { MAX_POINTS, type PropertiesState, controlPoints, needsCubic } from './state';
+import type { Painter } from '../../render/painter';
+import { boundsOf } from '../../render/projection';
+import { drawAffine } from './affine/draw';
+import { drawClosed } from './closed/draw';
+import { drawCubic } from './cubic/draw';
+import { drawElevate } from './elevate/draw';
+import { drawEnds } from './ends/draw';
+import { drawHermite } from './hermite/draw';
+import { drawHull } from './hull/draw';
+import { drawLocal } from './local/draw';
+import type { ModelOf, PropertiesModel } from './model';
+import { drawRepeat } from './repeat/draw';
+import { drawSplit } from './split/draw';
+import { type ExperimentId, MAX_POINTS, type PropertiesState, needsCubic } from './state';
 
-const copy = (points: readonly Point2[]): Point2[] => points.map((point) => [point[0], point[1]]);
+type Drawings = {
+  [X in ExperimentId]: (painter: Painter, m: ModelOf<X>, info: DrawInfo) => void;
+};
 
-export const propertiesFigure: FigureSpec<PropertiesState> = {
+/** Each experiment's drawing, reading that experiment's model. */
+const DRAWINGS: Drawings = {
+  ends: drawEnds,
+  hull: drawHull,
+  local: drawLocal,
+  repeat: drawRepeat,
+  closed: drawClosed,
+  elevate: drawElevate,
+  split: drawSplit,
+  affine: drawAffine,
+  cubic: drawCubic,
+  hermite: drawHermite,
+};
+
+function drawExperiment<X extends ExperimentId>(
+  painter: Painter,
+  x: X,
+  m: ModelOf<X>,
+  info: DrawInfo,
+): void {
+  DRAWINGS[x](painter, m, info);
+}
+
+const copy = (points: readonly Point[]): Point[] => points.map((point) => [...point]);
+
+export const propertiesFigure: FigureSpec<PropertiesState, PropertiesModel> = {
   id: 'experiment',
   title: 'Bézier curve set up for the experiment',
   kind: 'geometry',
-  bounds(state) {
-    const extra = EXPERIMENTS[state.x].extent?.(state) ?? [];
-    const before = state.x === 'local' ? state.q : [];
-    return boundsOf([...state.p, ...controlPoints(state), ...before, ...extra]);
-  },
-  draw(painter, state, info) {
-    EXPERIMENTS[state.x].draw(painter, state, info);
-  },
-  handles: (state) =>
-    state.p.map((point, i) => ({
+  bounds: (m) => boundsOf(m.extent),
+  draw: (painter, m, info) => drawExperiment(painter, m.x, m, info),
+  handles: (m) =>
+    m.state.p.map((point, i) => ({
       id: `p${i}`,
-      label: state.x === 'closed' && i === 0 ? `P_0 = P_{${state.p.length}}` : `P_{${i}}`,
+      label: m.x === 'closed' && i === 0 ? `P_0 = P_{${m.state.p.length}}` : `P_{${i}}`,
       position: point,
     })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
+    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
   },
   addPoint(state, at) {
     if (needsCubic(state.x) || state.p.length >= MAX_POINTS) return null;

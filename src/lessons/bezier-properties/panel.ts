@@ -1,84 +1,55 @@
-import { h, setChildren } from '../../app/dom';
-import type { LessonApi, LessonPanel, Point2 } from '../../app/lesson';
-import { EXPERIMENTS, PROPERTY_NUMBER } from './experiments';
-import {
-  MAX_COPIES,
-  MAX_ELEVATIONS,
-  MAX_SPLITS,
-  type MapKind,
-  type PropertiesState,
-  controlPoints,
-} from './state';
-import { radioGroup } from '../../app/panelControls';
+import { h } from '../../app/dom';
+import type { LessonPanel } from '../../app/lesson';
+import { affinePanel } from './affine/details';
+import { closedPanel } from './closed/details';
+import { cubicPanel } from './cubic/details';
+import { elevatePanel } from './elevate/details';
+import { endsPanel } from './ends/details';
+import type { Details, ExperimentPanel, PanelApi } from './experimentPanel';
+import { hermitePanel } from './hermite/details';
+import { hullPanel } from './hull/details';
+import { localPanel } from './local/details';
+import type { ModelOf, PropertiesModel } from './model';
+import { repeatPanel } from './repeat/details';
+import { splitPanel } from './split/details';
+import type { ExperimentId, PropertiesState } from './state';
+import { experimentTools } from './tools';
 
-const MAPS: { value: MapKind; label: string }[] = [
-  { value: 'rotate', label: 'Rotation' },
-  { value: 'scale', label: 'Scaling' },
-  { value: 'shear', label: 'Shear' },
-  { value: 'perspective', label: 'Perspective (projective)' },
-];
+/** What the panel says about each experiment, in the order of the lesson's list of properties. */
+const PANELS: { [X in ExperimentId]: ExperimentPanel<ModelOf<X>> } = {
+  ends: endsPanel,
+  hull: hullPanel,
+  local: localPanel,
+  repeat: repeatPanel,
+  closed: closedPanel,
+  elevate: elevatePanel,
+  split: splitPanel,
+  affine: affinePanel,
+  cubic: cubicPanel,
+  hermite: hermitePanel,
+};
 
-const button = (label: string, onclick: () => void) =>
-  h('button', { type: 'button', onclick }, label);
-
-export function propertiesPanel(api: LessonApi<PropertiesState>): LessonPanel<PropertiesState> {
-  const change = (f: (s: PropertiesState) => Partial<PropertiesState>) => {
-    const s = api.get();
-    api.set({ ...s, ...f(s) });
-  };
+export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, PropertiesModel> {
   const title = h('h2', {});
   const sentence = h('p', { class: 'experiment-sentence' });
   const details = h('div', { class: 'experiment-details', 'aria-live': 'off' });
-
-  // Controls stay the same elements across updates, so keyboard focus survives a press.
-  const raise = button('Raise the degree', () =>
-    change((s) => ({ k: Math.min(MAX_ELEVATIONS, s.k + 1) })),
-  );
-  const original = button('Back to the original degree', () => change(() => ({ k: 0 })));
-  const splitAgain = button('Split every piece', () =>
-    change((s) => ({ k: Math.min(MAX_SPLITS, s.k + 1) })),
-  );
-  const unsplit = button('Undo the splits', () => change(() => ({ k: 0 })));
-  const addCopy = button('Add a copy', () => change((s) => ({ k: Math.min(MAX_COPIES, s.k + 1) })));
-  const removeCopy = button('Remove a copy', () => change((s) => ({ k: Math.max(0, s.k - 1) })));
-  const repeated = h('select', { id: 'repeated-point', 'aria-label': 'Repeated point' });
-  repeated.addEventListener('change', () => change(() => ({ r: Number(repeated.value) })));
-  const remember = button('Make this the "before" curve', () =>
-    change((s) => ({ q: s.p.map((point): Point2 => [point[0], point[1]]) })),
-  );
-  const mapChoice = radioGroup(api, {
-    name: 'map',
-    choices: MAPS,
-    get: (s) => s.m,
-    set: (s, m) => ({ ...s, m }),
-  });
-
-  const groups = {
-    elevate: h('div', { class: 'lesson-tools' }, raise, original),
-    split: h('div', { class: 'lesson-tools' }, splitAgain, unsplit),
-    repeat: h(
-      'div',
-      { class: 'lesson-tools' },
-      h('label', { for: 'repeated-point' }, 'Repeat '),
-      repeated,
-      addCopy,
-      removeCopy,
-    ),
-    local: h('div', { class: 'lesson-tools' }, remember),
-    affine: h(
-      'fieldset',
-      { style: 'border:0;padding:0;margin:0' },
-      h('legend', { class: 'visually-hidden' }, 'Map applied'),
-      mapChoice.labels,
-    ),
+  const tools = experimentTools(api);
+  // Each experiment's details are built the first time it is shown, then kept.
+  const built = new Map<ExperimentId, Details<PropertiesModel>>();
+  const detailsOf = (x: ExperimentId) => {
+    let made = built.get(x);
+    if (!made) built.set(x, (made = PANELS[x].build(api)));
+    return made;
   };
+  let shownX: ExperimentId | null = null;
+  let shownNodes: readonly Node[] = [];
 
   const element = h(
     'div',
     { class: 'lesson-text' },
     title,
     sentence,
-    Object.values(groups),
+    tools.elements,
     details,
     h(
       'p',
@@ -89,31 +60,20 @@ export function propertiesPanel(api: LessonApi<PropertiesState>): LessonPanel<Pr
 
   return {
     element,
-    update(state) {
-      const experiment = EXPERIMENTS[state.x];
-      title.textContent = `${PROPERTY_NUMBER[state.x]}. ${experiment.title}`;
-      sentence.textContent = experiment.sentence;
-      for (const [id, group] of Object.entries(groups)) {
-        group.style.display = id === state.x ? '' : 'none';
+    update(m, state) {
+      if (state.x !== shownX) {
+        shownX = state.x;
+        const panel = PANELS[state.x];
+        title.textContent = `${panel.number}. ${panel.title}`;
+        sentence.textContent = panel.sentence;
       }
-      raise.disabled = state.k >= MAX_ELEVATIONS;
-      original.disabled = state.k === 0;
-      splitAgain.disabled = state.k >= MAX_SPLITS;
-      unsplit.disabled = state.k === 0;
-      addCopy.disabled = state.k >= MAX_COPIES;
-      removeCopy.disabled = state.k === 0;
-      addCopy.textContent = `Add a copy of P${state.r}`;
-      removeCopy.textContent = `Remove a copy of P${state.r}`;
-      if (repeated.options.length !== state.p.length) {
-        setChildren(
-          repeated,
-          state.p.map((_, i) => h('option', { value: i }, `P${i}`)),
-        );
+      tools.update(state);
+      const nodes = detailsOf(m.x).update(m);
+      if (nodes !== shownNodes) {
+        shownNodes = nodes;
+        details.replaceChildren(...nodes);
       }
-      repeated.value = String(state.r);
-      mapChoice.update(state);
-      setChildren(details, experiment.explain(state, api));
-      details.dataset.controlPoints = String(controlPoints(state).length);
+      details.dataset.controlPoints = String(m.controls.length);
     },
   };
 }

@@ -1,6 +1,6 @@
-import type { Point2 } from '../../app/lesson';
+import { choice, int, number, points } from '../../app/fields';
+import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
-import { elevateDegree } from '../../math';
 
 /** The experiments of the lesson, one per property (`x=hull` in the link). */
 export type ExperimentId =
@@ -23,9 +23,9 @@ export interface PropertiesState {
   /** The experiment shown. */
   x: ExperimentId;
   /** The control points the user moves (for `repeat` and `closed`, before repeating). */
-  p: Point2[];
+  p: Point[];
   /** The "before" control points of the local-control experiment. */
-  q: Point2[];
+  q: Point[];
   /** A parameter: the point P(t), the split parameter. */
   t: number;
   /** Steps: degree elevations, levels of subdivision, extra copies of the repeated point. */
@@ -41,7 +41,7 @@ export const MAX_ELEVATIONS = 12;
 export const MAX_SPLITS = 5;
 export const MAX_COPIES = 5;
 
-export const LECTURE_CUBIC: Point2[] = [
+export const LECTURE_CUBIC: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2],
@@ -61,14 +61,16 @@ export const EXPERIMENT_IDS: readonly ExperimentId[] = [
   'hermite',
 ];
 
+export const MAP_KINDS: readonly MapKind[] = ['rotate', 'scale', 'shear', 'perspective'];
+
 export const schema: Schema<PropertiesState> = {
-  x: { kind: 'enum', default: 'ends', values: EXPERIMENT_IDS },
-  p: { kind: 'points', default: LECTURE_CUBIC, min: 2, max: MAX_POINTS },
-  q: { kind: 'points', default: [], min: 0, max: MAX_POINTS },
-  t: { kind: 'number', default: 0.3, min: 0, max: 1 },
-  k: { kind: 'int', default: 0, min: 0, max: MAX_ELEVATIONS },
-  r: { kind: 'int', default: 1, min: 0, max: MAX_POINTS - 1 },
-  m: { kind: 'enum', default: 'shear', values: ['rotate', 'scale', 'shear', 'perspective'] },
+  x: choice({ default: 'ends', values: EXPERIMENT_IDS }),
+  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
+  q: points({ default: [], min: 0, max: MAX_POINTS }),
+  t: number({ default: 0.3, min: 0, max: 1 }),
+  k: int({ default: 0, min: 0, max: MAX_ELEVATIONS }),
+  r: int({ default: 1, min: 0, max: MAX_POINTS - 1 }),
+  m: choice({ default: 'shear', values: MAP_KINDS }),
 };
 
 /** Experiments about cubics only. */
@@ -88,24 +90,23 @@ export function stepCount(state: PropertiesState): number {
   }
 }
 
-/** The control points of the curve drawn: the user's points, repeated, closed or elevated. */
-export function controlPoints(state: PropertiesState): Point2[] {
+/** What the steps of the experiment show, e.g. "Degree 3 → 5". */
+export function describeStep(state: PropertiesState, k: number): string {
   switch (state.x) {
+    case 'elevate':
+      return k === 0
+        ? `Degree ${state.p.length - 1}`
+        : `Degree ${state.p.length - 1} → ${state.p.length - 1 + k}`;
+    case 'split':
+      return `${k} split${k === 1 ? '' : 's'}: ${2 ** k} piece${k === 0 ? '' : 's'}`;
     case 'repeat':
-      return state.p.flatMap((point, i) =>
-        i === state.r ? Array.from({ length: state.k + 1 }, () => point) : [point],
-      );
-    case 'closed':
-      return [...state.p, state.p[0]];
-    case 'elevate': {
-      let points: readonly (readonly number[])[] = state.p;
-      for (let j = 0; j < state.k; j++) points = elevateDegree(points);
-      return points.map((point) => [point[0], point[1]]);
-    }
+      return `P${state.r} × ${k + 1}`;
     default:
-      return state.p;
+      return '';
   }
 }
+
+const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
 
 /** Cross-field rules: a cubic for the cubic experiments, a "before" that matches, a valid repeated point. */
 export function normalize(state: PropertiesState): { state: PropertiesState; issues: string[] } {
@@ -115,7 +116,7 @@ export function normalize(state: PropertiesState): { state: PropertiesState; iss
     issues.push(
       `this experiment is about cubics, which have 4 control points, not ${next.p.length}; the lecture cubic is shown`,
     );
-    next = { ...next, p: LECTURE_CUBIC.map((point) => [point[0], point[1]]) };
+    next = { ...next, p: copy(LECTURE_CUBIC) };
   }
   if (next.x === 'local' && next.q.length !== next.p.length) {
     if (next.q.length > 0) {
@@ -123,7 +124,7 @@ export function normalize(state: PropertiesState): { state: PropertiesState; iss
         `the "before" curve had ${next.q.length} control points and the curve ${next.p.length}; the current curve is now the "before" one`,
       );
     }
-    next = { ...next, q: next.p.map((point) => [point[0], point[1]]) };
+    next = { ...next, q: copy(next.p) };
   }
   if (next.r >= next.p.length) {
     issues.push(`there is no P${next.r} to repeat; P1 is repeated instead`);

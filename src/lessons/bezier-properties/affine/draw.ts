@@ -1,0 +1,41 @@
+import type { DrawInfo } from '../../../app/lesson';
+import type { Painter } from '../../../render/painter';
+import type { ModelOf } from '../model';
+import { drawPolygon } from '../painting';
+
+export function drawAffine(painter: Painter, m: ModelOf<'affine'>, info: DrawInfo): void {
+  const theme = painter.theme;
+  drawPolygon(painter, m.controls);
+  painter.polylineFlat(m.curve, { color: theme.curve });
+  const images = m.images;
+  if (!images.ok) return;
+  const mapped = painter.color(0);
+  const map = painter.color(1);
+  painter.polyline(images.mappedControls, { color: mapped, width: theme.sizes.line, dash: [6, 5] });
+  for (const point of images.mappedControls) painter.dot(point, mapped, theme.sizes.point);
+  painter.polylineFlat(images.curveOfMapped, { color: mapped, width: theme.sizes.curve * 1.6 });
+  painter.polylineFlat(images.mappedCurve, {
+    color: map,
+    width: theme.sizes.curve * 0.8,
+    dash: [10, 6],
+  });
+  painter.dot(m.point, theme.accent, theme.sizes.point * 1.3);
+  painter.dot(images.onMapped, mapped, theme.sizes.point * 1.4);
+  painter.ring(images.imageOfPoint, theme.sizes.point * 1.8, {
+    color: map,
+    width: theme.sizes.line * 1.3,
+  });
+  if (info.thumbnail) return;
+  // Name each image at its middle: the map of the curve above, the curve of the mapped points below.
+  const name = { align: 'center', halo: true, bold: true } as const;
+  painter.label('map of the curve', images.middles.mappedCurve, {
+    ...name,
+    dy: -theme.sizes.label * 1.3,
+    color: map,
+  });
+  painter.label('curve of the mapped points', images.middles.curveOfMapped, {
+    ...name,
+    dy: theme.sizes.label * 1.3,
+    color: mapped,
+  });
+}

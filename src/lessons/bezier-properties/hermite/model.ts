@@ -1,0 +1,61 @@
+import {
+  type Point,
+  add,
+  bezierPoint,
+  bezierToHermite,
+  bezierToPowerBasis,
+  hermitePoint,
+  sampleBezier,
+  sampledDeviation,
+} from '../../../math';
+import type { ExperimentBase } from '../curve';
+import type { PropertiesState } from '../state';
+
+/** Both forms are drawn and compared at this many segments (201 samples). */
+export const SAMPLES = 200;
+
+export interface HermiteModel extends ExperimentBase {
+  x: 'hermite';
+  /** The Bézier form and the Hermite form, sampled at the same t. */
+  curve: Float64Array;
+  hermiteCurve: Float64Array;
+  /** Largest distance between them: rounding only. */
+  deviation: number;
+  point: Point;
+  /** Power form a0 + a1μ + a2μ² + a3μ³ (equation 11 of the notes). */
+  power: Point[];
+  /** Hermite data: end points x0, x1 and end tangents x0′, x1′, and the tangents' tips. */
+  x0: Point;
+  d0: Point;
+  x1: Point;
+  d1: Point;
+  tips: [Point, Point];
+  /** P(t) from the Hermite form. */
+  hermiteAtT: Point;
+}
+
+export function deriveHermite(state: PropertiesState): HermiteModel {
+  const controls = state.p;
+  const [x0, d0, x1, d1] = bezierToHermite(controls);
+  const hermiteCurve = new Float64Array(2 * (SAMPLES + 1));
+  for (let k = 0; k <= SAMPLES; k++)
+    hermiteCurve.set(hermitePoint(x0, d0, x1, d1, k / SAMPLES), 2 * k);
+  const curve = sampleBezier(controls, SAMPLES);
+  const tips: [Point, Point] = [add(x0, d0), add(x1, d1)];
+  return {
+    x: 'hermite',
+    controls,
+    extra: tips,
+    curve,
+    hermiteCurve,
+    deviation: sampledDeviation(curve, hermiteCurve).distance,
+    point: bezierPoint(controls, state.t),
+    power: bezierToPowerBasis(controls),
+    x0,
+    d0,
+    x1,
+    d1,
+    tips,
+    hermiteAtT: hermitePoint(x0, d0, x1, d1, state.t),
+  };
+}

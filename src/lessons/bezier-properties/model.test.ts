@@ -1,0 +1,274 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import type { Point } from '../../math';
+import { type ModelOf, derive } from './model';
+import { type ExperimentId, LECTURE_CUBIC, type PropertiesState, schema } from './state';
+
+// Every expected value below is worked out by hand from the lecture's formulas.
+
+const state = (changes: Partial<PropertiesState>): PropertiesState => ({
+  ...defaultsOf(schema),
+  ...changes,
+});
+
+function modelOf<X extends ExperimentId>(x: X, changes: Partial<PropertiesState>): ModelOf<X> {
+  const m = derive(state({ ...changes, x }));
+  if (m.x !== x) throw new Error(`derive gave the ${m.x} model for ${x}`);
+  return m as ModelOf<X>;
+}
+
+const closeTo = (actual: readonly number[], expected: readonly number[], digits = 12) =>
+  expected.forEach((v, i) => expect(actual[i]).toBeCloseTo(v, digits));
+
+describe('end points and end tangents', () => {
+  const m = modelOf('ends', { p: LECTURE_CUBIC, t: 0.5 });
+  it('has P′(0) = 3(P1 − P0), P′(1) = 3(P3 − P2) and P′(½) from the hodograph', () => {
+    const [start, end, at] = m.tangents;
+    expect(start.vector).toEqual([3, 6]);
+    expect(end.vector).toEqual([3, -6]);
+    // Hodograph (3,6), (6,0), (3,−6) at ½: ¼(3,6) + ½(6,0) + ¼(3,−6) = (4.5, 0), at P(½) = (2, 1.5).
+    closeTo(at.vector, [4.5, 0]);
+    closeTo(m.point, [2, 1.5]);
+    expect(start.speed).toBeCloseTo(3 * Math.sqrt(5), 12);
+  });
+  it('shows the arrows at half length: their tips are in the view', () => {
+    expect(m.tangents[0].tip).toEqual([1.5, 3]);
+    expect(m.extent).toContainEqual([1.5, 3]);
+    expect(m.stillAtStart).toBe(false);
+  });
+});
+
+describe('convex hull', () => {
+  it('finds five corners for the preset and keeps all 401 samples inside', () => {
+    const m = modelOf('hull', {
+      p: [
+        [0, 0],
+        [1, 3],
+        [3, 3.5],
+        [2.5, 1],
+        [5, 2],
+        [6, 0],
+      ],
+    });
+    // (2.5, 1) lies inside the pentagon of the other five points.
+    expect(m.hull).toHaveLength(5);
+    expect(m.hull).not.toContainEqual([2.5, 1]);
+    expect(m.inside).toBe(401);
+    expect(m.total).toBe(401);
+  });
+  it('is a segment for collinear points', () => {
+    const m = modelOf('hull', {
+      p: [
+        [0, 0],
+        [1, 1],
+        [2, 2],
+        [3, 3],
+      ],
+    });
+    expect(m.hull).toEqual([
+      [0, 0],
+      [3, 3],
+    ]);
+    expect(m.inside).toBe(m.total);
+  });
+});
+
+describe('no local control', () => {
+  it('moves the curve by at most W(11, 5, 5/11) times the shift of P5', () => {
+    const before: Point[] = Array.from({ length: 12 }, (_, i) => [i, 0]);
+    const after = before.map((q, i) => (i === 5 ? [5, 2] : q));
+    const m = modelOf('local', { p: after, q: before });
+    // W(11, 5, 5/11) = C(11, 5)·5⁵·6⁶ / 11¹¹ = 462·3125·46656 / 11¹¹ ≈ 0.2361.
+    const peak = (462 * 3125 * 46656) / 11 ** 11;
+    expect(m.moved).toEqual([5]);
+    expect(m.single?.peak).toBeCloseTo(peak, 14);
+    expect(m.single?.shift).toBe(2);
+    // Sampled at t = k/1000, the largest displacement is just below 2·peak.
+    expect(m.largest.distance).toBeLessThanOrEqual(2 * peak);
+    expect(m.largest.distance).toBeGreaterThan(2 * peak * 0.9999);
+    expect(m.largest.at).toBeCloseTo(5 / 11, 3);
+  });
+});
+
+describe('repeated and closing points', () => {
+  it('sums the weights of the copies: P1 three times in a cubic is degree 5', () => {
+    const m = modelOf('repeat', {
+      p: [
+        [0, 0],
+        [1, 3],
+        [4, 3],
+        [5, 0],
+      ],
+      r: 1,
+      k: 2,
+      t: 0.5,
+    });
+    expect(m.controls).toHaveLength(6);
+    // W(5, 1..3, ½) = (5 + 10 + 10)/32; once: W(3, 1, ½) = 3/8.
+    expect(m.weight).toBeCloseTo(25 / 32, 14);
+    expect(m.weightOnce).toBeCloseTo(3 / 8, 14);
+  });
+  it('measures the corner where a closed curve meets itself', () => {
+    const square = modelOf('closed', {
+      p: [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+        [0, 1],
+      ],
+    });
+    // Leaving along 4(P1 − P0) = (4, 0), arriving along 4(P0 − P3) = (0, −4): a right angle.
+    expect(square.n).toBe(4);
+    expect(square.corner).toBeCloseTo(90, 12);
+    expect(square.smooth).toBe(false);
+    const smooth = modelOf('closed', {
+      p: [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+        [-1, 0],
+      ],
+    });
+    expect(smooth.corner).toBe(0);
+    expect(smooth.smooth).toBe(true);
+  });
+});
+
+describe('degree elevation', () => {
+  const m = modelOf('elevate', { p: LECTURE_CUBIC, k: 1 });
+  it('gives Qi = i/4·P(i−1) + (1 − i/4)·Pi on the same curve', () => {
+    expect(m.controls).toEqual([
+      [0, 0],
+      [0.75, 1.5],
+      [2, 2],
+      [3.25, 1.5],
+      [4, 0],
+    ]);
+    expect(m.deviation).toBeLessThan(1e-12);
+    expect(m.lastStep).toEqual({ from: 3, q1: [0.75, 1.5] });
+  });
+  it('measures the gap of each polygon: |P1 − P(1/3)| for the cubic', () => {
+    // P(1/3) = (34/27, 36/27).
+    expect(m.gaps[0]).toBeCloseTo(Math.hypot(1 - 34 / 27, 2 - 36 / 27), 12);
+    expect(m.gaps[1]).toBeLessThan(m.gaps[0]);
+  });
+});
+
+describe('subdivision', () => {
+  it('splits at ½ into the de Casteljau polygons, twice', () => {
+    const m = modelOf('split', { p: LECTURE_CUBIC, t: 0.5, k: 2 });
+    expect(m.levels.map((level) => level.length)).toEqual([1, 2, 4]);
+    expect(m.first?.[0]).toEqual([
+      [0, 0],
+      [0.5, 1],
+      [1.25, 1.5],
+      [2, 1.5],
+    ]);
+    expect(m.gaps[1]).toBeLessThan(m.gaps[0] / 3);
+    expect(m.atEnd).toBe(false);
+  });
+  it('says when t = 0 splits off a single point', () => {
+    expect(modelOf('split', { t: 0, k: 1 }).atEnd).toBe(true);
+  });
+});
+
+describe('affine and perspective maps', () => {
+  it('shears about (2, 1) and shifts 6 right: images agree', () => {
+    const m = modelOf('affine', { p: LECTURE_CUBIC, m: 'shear' });
+    if (!m.images.ok) throw new Error(m.images.why);
+    // (x, y) ↦ (x + 0.8(y − 1) + 6, y): P0 = (0, 0) ↦ (5.2, 0), P1 = (1, 2) ↦ (7.8, 2).
+    closeTo(m.images.mappedControls[0], [5.2, 0]);
+    closeTo(m.images.mappedControls[1], [7.8, 2]);
+    expect(m.images.weights).toEqual([1, 1, 1, 1]);
+    expect(m.images.distance).toBeLessThan(1e-12);
+    expect(m.images.rationalDistance).toBeNull();
+  });
+  it('divides by w = 1 + 0.22(x − 2) + 0.12(y − 1) in perspective, and weights repair it', () => {
+    const m = modelOf('affine', { p: LECTURE_CUBIC, m: 'perspective' });
+    if (!m.images.ok) throw new Error(m.images.why);
+    closeTo(m.images.weights, [0.44, 0.9, 1.34, 1.32]);
+    closeTo(m.images.weightRange, [0.44, 1.34]);
+    expect(m.images.distance).toBeGreaterThan(0.1);
+    expect(m.images.rationalDistance).toBeLessThan(1e-9);
+  });
+  it('draws no image when a point is beyond the vanishing line', () => {
+    // w(−5, 0) = 1 + 0.22·(−7) + 0.12·(−1) = −0.66.
+    const m = modelOf('affine', {
+      p: [[-5, 0], ...LECTURE_CUBIC.slice(1)],
+      m: 'perspective',
+    });
+    expect(m.images.ok).toBe(false);
+    expect(m.extra).toEqual([]);
+  });
+});
+
+describe('inflection and self-intersection', () => {
+  it('finds the inflection of a cubic symmetric about (2, 1) at t = ½', () => {
+    const m = modelOf('cubic', {
+      p: [
+        [0, 0],
+        [1.5, 3],
+        [2.5, -1],
+        [4, 2],
+      ],
+    });
+    expect(m.inflections).toHaveLength(1);
+    expect(m.inflections[0].t).toBeCloseTo(0.5, 12);
+    closeTo(m.inflections[0].point, [2, 1]);
+    expect(m.loop).toBeNull();
+    // It starts turning right: the legs (1.5, 3) then (1, −4) have cross product −9; it ends turning left.
+    expect(m.runs[0].sign).toBe(-1);
+    expect(m.runs[m.runs.length - 1].sign).toBe(1);
+  });
+  it('finds the loop where x(t) = 2: t = ½ ± √33/22, at (2, 18/11)', () => {
+    // x(t) − 2 = 22t³ − 33t² + 15t − 2 = (2t − 1)(11t² − 11t + 2); y = 9t(1 − t) = 18/11 there.
+    const m = modelOf('cubic', {
+      p: [
+        [0, 0],
+        [5, 3],
+        [-1, 3],
+        [4, 0],
+      ],
+    });
+    expect(m.loop?.t[0]).toBeCloseTo(0.5 - Math.sqrt(33) / 22, 9);
+    expect(m.loop?.t[1]).toBeCloseTo(0.5 + Math.sqrt(33) / 22, 9);
+    closeTo(m.loop!.point, [2, 18 / 11], 9);
+    expect(m.inflections).toEqual([]);
+  });
+  it('gives κ(½) = −16/27 for the lecture cubic, and nothing for a straight one', () => {
+    // P′(½) = (4.5, 0), P″(½) = (0, −12): κ = 4.5·(−12) / 4.5³.
+    expect(modelOf('cubic', { p: LECTURE_CUBIC, t: 0.5 }).curvature).toBeCloseTo(-16 / 27, 12);
+    const line = modelOf('cubic', {
+      p: [
+        [0, 0],
+        [1, 1],
+        [2, 2],
+        [3, 3],
+      ],
+    });
+    expect(line.straight).toBe(true);
+  });
+});
+
+describe('the Hermite form of a cubic', () => {
+  const m = modelOf('hermite', { p: LECTURE_CUBIC, t: 0.4 });
+  it('has the power form of equation 11 and the end data x0, x0′, x1, x1′', () => {
+    expect(m.power).toEqual([
+      [0, 0],
+      [3, 6],
+      [3, -6],
+      [-2, 0],
+    ]);
+    expect([m.x0, m.d0, m.x1, m.d1]).toEqual([
+      [0, 0],
+      [3, 6],
+      [4, 0],
+      [3, -6],
+    ]);
+  });
+  it('gives the same point: P(0.4) = a0 + 0.4a1 + 0.16a2 + 0.064a3 = (1.552, 1.44)', () => {
+    closeTo(m.hermiteAtT, [1.552, 1.44]);
+    closeTo(m.point, [1.552, 1.44]);
+    expect(m.deviation).toBeLessThan(1e-12);
+  });
+});
