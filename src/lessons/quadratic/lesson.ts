@@ -1,21 +1,19 @@
-import { defineLesson, type Point2 } from '../../app/lesson';
+import { defineLesson, type Point } from '../../app/lesson';
 import { quadraticFigure } from './figure';
+import { type QuadraticModel, derive } from './model';
 import { quadraticPanel } from './panel';
 import { MU_MAX, MU_MIN, type QuadraticState, STEP_TITLES, schema } from './state';
 
-const preset = (id: string, label: string, p: Point2[], step: number, mu = 0.5) => ({
+const preset = (id: string, label: string, p: Point[], step: number, mu = 0.5) => ({
   id,
   label,
   apply: (s: QuadraticState): QuadraticState => ({ ...s, p, step, mu }),
 });
 
-export const quadratic = defineLesson<QuadraticState>({
+export default defineLesson<QuadraticState, QuadraticModel>({
   slug: 'quadratic',
-  title: 'A curve through three points: parabola or parametric quadratic',
-  summary:
-    'The parabola y(x) through three points fails when the points turn back; a parametric quadratic needs a choice of μ₁.',
-  group: 'interpolation',
   schema,
+  derive,
   figures: [quadraticFigure],
   parameter: { key: 'mu', label: 'μ₁', min: MU_MIN, max: MU_MAX, step: 0.01 },
   steps: {

@@ -1,0 +1,55 @@
+import type { Painter } from '../../render/painter';
+import type { Member } from './model';
+
+/**
+ * Each member's μ1 in a box, at the first of its label spots (ranked in the
+ * model: where its curve strays furthest from the polygon P0 P1 P2) that is
+ * on screen and does not cover a label already placed; if every spot on
+ * screen does, at the best of them. Only the screen is looked at here.
+ */
+export function placeMemberLabels(
+  painter: Painter,
+  members: readonly Member[],
+  colour: (member: Member) => string,
+): void {
+  const theme = painter.theme;
+  const view = painter.view;
+  const size = theme.sizes.label * 0.9;
+  const height = size * 1.6;
+  const placed: { x: number; y: number; w: number }[] = [];
+  for (const member of members) {
+    const spots = member.labelSpots;
+    const width = member.text.length * size * 0.52 + size;
+    let first = -1;
+    let free = -1;
+    for (let i = 0; i < spots.length; i++) {
+      const [x, y] = view.toScreen(spots[i]);
+      const inside =
+        x > width / 2 + 4 &&
+        x < view.width - width / 2 - 4 &&
+        y > height &&
+        y < view.height - height;
+      if (!inside) continue;
+      if (first < 0) first = i;
+      const overlaps = placed.some(
+        (box) => Math.abs(box.x - x) < (box.w + width) / 2 && Math.abs(box.y - y) < height,
+      );
+      if (!overlaps) {
+        free = i;
+        break;
+      }
+    }
+    const chosen = free >= 0 ? free : first;
+    if (chosen < 0) continue;
+    const [x, y] = view.toScreen(spots[chosen]);
+    placed.push({ x, y, w: width });
+    painter.dot(spots[chosen], colour(member), theme.sizes.point * 0.6);
+    painter.label(member.text, spots[chosen], {
+      align: 'center',
+      box: true,
+      color: colour(member),
+      size,
+      bold: true,
+    });
+  }
+}

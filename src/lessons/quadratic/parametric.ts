@@ -1,0 +1,121 @@
+import { distanceToSegment } from '../../interact/editPoints';
+import {
+  centripetalMu,
+  chordLengthMu,
+  distance,
+  parametricQuadratic,
+  parametricQuadraticPoint,
+  type Point,
+} from '../../math';
+import { FAMILY, type QuadraticState } from './state';
+
+// Steps 1–3: the parametric quadratic P(μ) = a2μ² + a1μ + a0 through P0
+// (μ = 0), P1 (μ = μ1) and P2 (μ = 1), its family, and the rules for μ1.
+
+/** Segments each drawn curve is sampled with: a multiple of 10, so the tenths of μ are samples. */
+const SEGMENTS = 100;
+
+export interface MuRule {
+  id: 'uniform' | 'chord' | 'centripetal';
+  name: string;
+  /** μ1 chosen by the rule; 0 or 1 when P1 coincides with an end point. */
+  mu: number;
+  /** The rule's μ1 lies in the slider's range, so its curve exists and can be drawn. */
+  usable: boolean;
+}
+
+/** One drawn quadratic: the slider's, a member of the family, or a rule's. */
+export interface Member {
+  mu: number;
+  /** Index into the figure's palette; null for the slider's own curve (ink). */
+  colour: number | null;
+  /** Its label on the figure (`μ_1` is written with a subscript). */
+  text: string;
+  /** The curve, sampled at μ = 0, 1/100, …, 1. */
+  curve: Point[];
+  /** Points at μ = 0, 0.1, …, 1 (equal steps of the parameter). */
+  ticks: Point[];
+  /**
+   * Where its label may go, best first: points of the curve by how far they
+   * stray from the polygon P0 P1 P2 (where the members differ most).
+   */
+  labelSpots: Point[];
+}
+
+/** The three rules of the notes for choosing μ1 from the points. */
+export function muRules(p: readonly Point[]): MuRule[] {
+  const rules: Omit<MuRule, 'usable'>[] = [
+    { id: 'uniform', name: 'Uniform', mu: 0.5 },
+    { id: 'chord', name: 'Chord length', mu: chordLengthMu(p[0], p[1], p[2]) },
+    { id: 'centripetal', name: 'Centripetal', mu: centripetalMu(p[0], p[1], p[2]) },
+  ];
+  return rules.map((rule) => ({ ...rule, usable: rule.mu > 0 && rule.mu < 1 }));
+}
+
+const fmtMu = (mu: number) => String(Number(mu.toFixed(2)));
+
+function member(p: readonly Point[], mu: number, colour: number | null, text: string): Member {
+  const curve = Array.from({ length: SEGMENTS + 1 }, (_, k) =>
+    parametricQuadraticPoint(p[0], p[1], p[2], mu, k / SEGMENTS),
+  );
+  const away = (q: Point) =>
+    Math.min(distanceToSegment(q, p[0], p[1]), distanceToSegment(q, p[1], p[2]));
+  const labelSpots = curve
+    .slice(4, -4)
+    .map((point) => ({ point, away: away(point) }))
+    .sort((a, b) => b.away - a.away)
+    .map((spot) => spot.point);
+  const ticks = Array.from({ length: 11 }, (_, k) => curve[(k * SEGMENTS) / 10]);
+  return { mu, colour, text, curve, ticks, labelSpots };
+}
+
+/** The curves a step draws under the slider's: Figure 2's family, or the rules' choices. */
+function others(state: QuadraticState, rules: readonly MuRule[]): Member[] {
+  const p = state.p;
+  if (state.step === 2) {
+    return FAMILY.map((mu, k) => ({ mu, k }))
+      .filter(({ mu }) => Math.abs(mu - state.mu) > 1e-9) // the slider's curve is drawn on top anyway
+      .map(({ mu, k }) => member(p, mu, k, `μ_1 = ${fmtMu(mu)}`));
+  }
+  if (state.step === 3) {
+    return rules
+      .map((rule, k) => ({ rule, k }))
+      .filter(({ rule }) => rule.usable)
+      .map(({ rule, k }) => member(p, rule.mu, k, `${rule.name}: μ_1 = ${fmtMu(rule.mu)}`));
+  }
+  return [];
+}
+
+export interface Parametric {
+  /** a0, a1, a2 of equation 3. */
+  coefficients: [Point, Point, Point];
+  /** P(μ1) from the coefficients' curve, as a check that it is P1. */
+  atMu: Point;
+  rules: MuRule[];
+  /** |P1 − P0| and |P2 − P1|, the lengths the rules use. */
+  d0: number;
+  d1: number;
+  /** The slider's curve (steps 1–3; null at step 0, where it is not drawn). */
+  current: Member | null;
+  /** The curves drawn beneath it (steps 2 and 3). */
+  members: Member[];
+}
+
+export function deriveParametric(state: QuadraticState): Parametric {
+  const { p, mu } = state;
+  const rules = muRules(p);
+  const members = others(state, rules);
+  const current =
+    state.step >= 1
+      ? member(p, mu, null, members.length ? `slider: μ_1 = ${fmtMu(mu)}` : `μ_1 = ${fmtMu(mu)}`)
+      : null;
+  return {
+    coefficients: parametricQuadratic(p[0], p[1], p[2], mu),
+    atMu: parametricQuadraticPoint(p[0], p[1], p[2], mu, mu),
+    rules,
+    d0: distance(p[0], p[1]),
+    d1: distance(p[1], p[2]),
+    current,
+    members,
+  };
+}
