@@ -1,0 +1,46 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { Painter } from '../../render/painter';
+import { SvgContext } from '../../render/svgContext';
+import { makeTheme } from '../../render/theme';
+import { Viewport } from '../../render/viewport';
+import { propertiesFigure } from './figure';
+import { derive } from './model';
+import { PRESETS } from './presets';
+import { normalize, schema } from './state';
+
+/** Draws a preset's figure into a recording context, as the shell would (fitted to its bounds). */
+function draw(id: string, thumbnail = false): SvgContext {
+  const preset = PRESETS.find((p) => p.id === id)!;
+  const model = derive(normalize(preset.apply(defaultsOf(schema))).state);
+  const view = new Viewport(800, 500);
+  view.resize(800, 500);
+  view.fit(propertiesFigure.bounds(model), 18, true);
+  const svg = new SvgContext();
+  propertiesFigure.draw(new Painter(svg, view, makeTheme(false, false)), model, {
+    hover: null,
+    thumbnail,
+  });
+  return svg;
+}
+
+describe('the experiment figure', () => {
+  it('draws every preset, and no label in a thumbnail', () => {
+    for (const { id } of PRESETS) {
+      expect(draw(id).elements.length, id).toBeGreaterThan(3);
+      expect(draw(id, true).texts, id).toEqual([]);
+    }
+  });
+
+  it('names what each experiment measures', () => {
+    // The loop of (0,0), (5,3), (−1,3), (4,0) is crossed at t = ½ ± √33/22 ≈ 0.24 and 0.76.
+    expect(draw('loop').texts).toContain('crossing, t = 0.24 and 0.76');
+    // P5 of twelve moved by 2: the curve moves at most 2·W(11, 5, 5/11) ≈ 0.472.
+    expect(draw('local').texts).toContain('max 0.472');
+    expect(draw('perspective').texts).toEqual(
+      expect.arrayContaining(['map of the curve', 'curve of the mapped points']),
+    );
+    // Three copies of P1: the ring says so.
+    expect(draw('repeat').texts).toContain('×3');
+  });
+});
