@@ -125,12 +125,7 @@ export function evaluateBezier(points: readonly Point[], dimension: number, t: n
     const p1 = points[1];
     const p2 = points[2];
     const p3 = points[3];
-    for (let d = 0; d < dimension; d++) {
-      const a = s * p0[d] + t * p1[d];
-      const b = s * p1[d] + t * p2[d];
-      const c = s * p2[d] + t * p3[d];
-      result[d] = s * (s * a + t * b) + t * (s * b + t * c);
-    }
+    for (let d = 0; d < dimension; d++) result[d] = cubicCoordinate(p0[d], p1[d], p2[d], p3[d], t);
     return result;
   }
   if (scratch.length < count) scratch = new Float64Array(2 * count);
