@@ -46,6 +46,7 @@ export class FigureView<S, M> {
   /** The handles of the model last drawn, computed once per model. */
   private handles: Handle[] = [];
   private handlesOf: M | null = null;
+  private names: string[] = [];
   private dragging: { drag: HandleDrag; key: string } | null = null;
   private focused: string | null = null;
   private fitted = false;
@@ -216,6 +217,10 @@ export class FigureView<S, M> {
     if (this.handlesOf !== model) {
       this.handles = this.spec.handles?.(model) ?? [];
       this.handlesOf = model;
+      // Spoken names change with the model only, not with a pan or a zoom.
+      this.names = this.handles.map(
+        (handle) => `${plainLabel(handle.label)} at ${fmtPoint(handle.position)}`,
+      );
     }
     return this.handles;
   }
@@ -260,11 +265,11 @@ export class FigureView<S, M> {
 
   private syncKeys(): void {
     this.keys.sync(
-      this.handles.map((handle) => {
+      this.handles.map((handle, i) => {
         const [x, y] = this.view.toScreen(handle.position);
         return {
           id: handle.id,
-          name: `${plainLabel(handle.label)} at ${fmtPoint(handle.position)}`,
+          name: this.names[i],
           x,
           y,
           depth: handle.position.length > 2,

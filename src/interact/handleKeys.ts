@@ -45,8 +45,10 @@ export class HandleKeys {
   /** What each element shows now, so unchanged handles cost no DOM write. */
   private readonly shown = new Map<
     string,
-    { name: string; x: number; y: number; depth: boolean }
+    { name: string; x: number; y: number; depth: boolean | null }
   >();
+  /** The ids in the order last laid out. */
+  private order: string[] = [];
 
   constructor(
     private readonly layer: HTMLElement,
@@ -55,34 +57,52 @@ export class HandleKeys {
 
   /** Places one stand-in per handle; `size` is the figure's, in CSS pixels. */
   sync(handles: readonly KeyHandle[], size: { width: number; height: number }): void {
-    const seen = new Set<string>();
+    let added = false;
     for (const handle of handles) {
-      seen.add(handle.id);
       let el = this.elements.get(handle.id);
       if (!el) {
         el = this.create(handle.id);
         this.elements.set(handle.id, el);
         this.layer.appendChild(el);
+        added = true;
       }
-      const before = this.shown.get(handle.id);
-      const depth = handle.depth === true;
-      if (before?.name !== handle.name) el.setAttribute('aria-label', handle.name);
-      if (before?.x !== handle.x || before?.y !== handle.y) {
-        // A point far off the figure waits a figure's width beyond it (still
-        // reachable by Tab), not millions of pixels away.
-        const x = Math.max(-size.width, Math.min(handle.x, 2 * size.width));
-        const y = Math.max(-size.height, Math.min(handle.y, 2 * size.height));
+      let shown = this.shown.get(handle.id);
+      if (!shown) {
+        shown = { name: '', x: NaN, y: NaN, depth: null };
+        this.shown.set(handle.id, shown);
+      }
+      if (shown.name !== handle.name) {
+        shown.name = handle.name;
+        el.setAttribute('aria-label', handle.name);
+      }
+      // A point far off the figure waits a figure's width beyond it (still
+      // reachable by Tab), not millions of pixels away.
+      const x = Math.max(-size.width, Math.min(handle.x, 2 * size.width));
+      const y = Math.max(-size.height, Math.min(handle.y, 2 * size.height));
+      if (shown.x !== x || shown.y !== y) {
+        shown.x = x;
+        shown.y = y;
         el.style.transform = `translate(${x}px, ${y}px)`;
       }
-      if (before?.depth !== depth)
+      const depth = handle.depth === true;
+      if (shown.depth !== depth) {
+        shown.depth = depth;
         el.setAttribute(
           'aria-description',
           depth
             ? 'Arrow keys move it in x and y, Ctrl with up and down in z'
             : 'Arrow keys move it',
         );
-      this.shown.set(handle.id, { name: handle.name, x: handle.x, y: handle.y, depth });
+      }
     }
+    // The list of points changed (one added or removed, or reordered): fix the DOM and the tab order.
+    const same =
+      !added &&
+      handles.length === this.order.length &&
+      handles.every((h, i) => h.id === this.order[i]);
+    if (same) return;
+    this.order = handles.map((h) => h.id);
+    const seen = new Set(this.order);
     for (const [id, el] of this.elements) {
       if (!seen.has(id)) {
         el.remove();
