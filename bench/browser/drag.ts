@@ -38,7 +38,12 @@ export interface DragResult {
   readonly dispatched: number;
   /** Moves after which the watched element had changed. */
   readonly changed: number;
+  /** The page's own work per frame (its `spline-lab:frame` measures: derive + draw + panel), if it measures it. */
+  readonly appPerFrame: readonly number[];
 }
+
+/** The name under which the app measures each frame's work. */
+export const FRAME_MEASURE = 'spline-lab:frame';
 
 const CATEGORIES = ['devtools.timeline', 'disabled-by-default-devtools.timeline'];
 export const CIRCLE_RADIUS = 40;
@@ -64,6 +69,7 @@ export async function tracedDrag(
   let last = await readAfterFrame(page, watched);
   let changed = 0;
   let moves = 0;
+  await page.evaluate((name) => performance.clearMeasures(name), FRAME_MEASURE);
   await browser.startTracing(page, { categories: CATEGORIES });
   const deadline = performance.now() + limits.seconds * 1000;
   while (moves <= limits.frames && performance.now() < deadline) {
@@ -75,10 +81,14 @@ export async function tracedDrag(
     last = now;
   }
   const trace = await browser.stopTracing();
+  const appPerFrame = await page.evaluate(
+    (name) => performance.getEntriesByName(name).map((e) => e.duration),
+    FRAME_MEASURE,
+  );
   await page.mouse.up();
   await nextFrames(page);
   const { perFrame, cpuPerFrame, dispatchedMoves } = mainThreadPerFrame(trace.toString('utf8'));
-  return { perFrame, cpuPerFrame, moves, dispatched: dispatchedMoves, changed };
+  return { perFrame, cpuPerFrame, moves, dispatched: dispatchedMoves, changed, appPerFrame };
 }
 
 /** Waits for the next animation frame, then reads the watched element's state (no layout). */

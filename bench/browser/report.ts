@@ -1,6 +1,6 @@
 // Printing: Markdown tables a reader can paste, figures with their budgets.
 import type { MethodCheck } from './check';
-import type { DragLimits, DragResult } from './drag';
+import { type DragLimits, type DragResult, FRAME_MEASURE } from './drag';
 import type { DragRow } from './lessonDrags';
 import type { LoadTimes, ScriptFile } from './load';
 import { FALLBACK_METHOD, FIRST_DRAW_MARK } from './page';
@@ -30,7 +30,13 @@ export function kb(bytes: number): string {
   return `${(bytes / 1000).toFixed(1)} KB`;
 }
 
-const frameColumns = (p95: string) => ['p50 (ms)', p95, 'CPU p50 / p95 (ms)', 'frames measured'];
+const frameColumns = (p95: string) => [
+  'p50 (ms)',
+  p95,
+  'CPU p50 / p95 (ms)',
+  'app p50 / p95 (ms)',
+  'frames measured',
+];
 
 /** p50, p95, CPU p50 / p95, frames measured (and any moves the page merged). */
 function frameFigures(result: DragResult): string[] {
@@ -41,6 +47,9 @@ function frameFigures(result: DragResult): string[] {
     ms(quantile(result.perFrame, 0.5)),
     ms(quantile(result.perFrame, 0.95)),
     `${ms(quantile(cpu, 0.5))} / ${ms(quantile(cpu, 0.95))}`,
+    result.appPerFrame.length
+      ? `${ms(quantile(result.appPerFrame, 0.5))} / ${ms(quantile(result.appPerFrame, 0.95))}`
+      : '—',
     `${result.perFrame.length}${merged}`,
   ];
 }
@@ -157,7 +166,8 @@ export function printReport(report: Report): void {
     `busy − idle at the median: ${ms(busy - idle)} ms (expected ${BUSY_MS}). The idle page's figure ` +
       `is the harness's own main-thread cost (routing the mouse move, the frame it waits for, the ` +
       `evaluate, tracing); it is inside every figure below. CPU = the same tasks' thread time, which ` +
-      `other processes on the machine do not stretch.`,
+      `other processes on the machine do not stretch. app = the page's own work in each frame it ` +
+      `drew (derive + draw + panel, its "${FRAME_MEASURE}" measures), without the harness.`,
   );
   console.log('\nDrag: main-thread time per frame');
   printDrags(report.drags);

@@ -8,7 +8,7 @@ type Attrs = Record<string, string | number | boolean | null | undefined | Event
 export function h<K extends keyof HTMLElementTagNameMap>(
   tag: K,
   attrs: Attrs = {},
-  ...children: (Child | Child[])[]
+  ...children: (Child | readonly Child[])[]
 ): HTMLElementTagNameMap[K] {
   const el = document.createElement(tag);
   for (const [name, value] of Object.entries(attrs)) {
@@ -25,7 +25,7 @@ export function h<K extends keyof HTMLElementTagNameMap>(
   return el;
 }
 
-export function append(parent: Node, children: (Child | Child[])[]): void {
+export function append(parent: Node, children: (Child | readonly Child[])[]): void {
   for (const child of children.flat()) {
     if (child === null || child === undefined || child === false) continue;
     parent.appendChild(typeof child === 'object' ? child : document.createTextNode(String(child)));
@@ -33,7 +33,7 @@ export function append(parent: Node, children: (Child | Child[])[]): void {
 }
 
 /** Replaces all children of `el`. */
-export function setChildren(el: Element, ...children: (Child | Child[])[]): void {
+export function setChildren(el: Element, ...children: (Child | readonly Child[])[]): void {
   el.replaceChildren();
   append(el, children);
 }

@@ -68,7 +68,8 @@ export class LiveFormula {
     // Each slot starts as a unique marker, so its MathML twin can be found too.
     const tex = shape.split(SLOT).reduce((acc, part, i) => {
       if (i === 0) return part;
-      const slot = `\\htmlData{slot=${k}}{\\text{§${k}§}}`;
+      // \mathord keeps a slot apart from a space or text before it (else KaTeX merges them).
+      const slot = `\\htmlData{slot=${k}}{\\mathord{\\text{§${k}§}}}`;
       k++;
       return acc + slot + part;
     });
@@ -77,9 +78,14 @@ export class LiveFormula {
     const mtexts = [...this.element.querySelectorAll('mtext')];
     this.slots = [];
     for (let i = 0; i < k; i++) {
+      const marker = `§${i}§`;
       const enclosing = this.element.querySelector(`[data-slot="${i}"]`);
-      const inner = enclosing?.querySelector('.mord.text .mord') ?? enclosing;
-      const mathml = mtexts.find((m) => m.textContent === `§${i}§`) ?? null;
+      // The innermost element holding the marker's text: its text is what changes.
+      const inner =
+        [...(enclosing?.querySelectorAll('*') ?? [])].find(
+          (e) => e.childElementCount === 0 && e.textContent === marker,
+        ) ?? enclosing;
+      const mathml = mtexts.find((m) => m.textContent === marker) ?? null;
       if (inner) this.slots.push({ html: inner, mathml, text: '' });
     }
     if (this.display) markForFit(this.element);

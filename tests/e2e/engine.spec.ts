@@ -187,3 +187,22 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
     'P1 at (0.00, 0.00)',
   );
 });
+
+test('live formulas show their numbers to screen readers too, on every lesson', async ({
+  page,
+}) => {
+  for (const slug of await lessonSlugs(page)) {
+    await page.goto(`./#/${slug}`);
+    await expect(page.locator('.katex').first()).toBeVisible();
+    // Every preset, so formulas of every shape are typeset and filled in.
+    const presets = page.locator('[data-preset]');
+    for (let i = 0; i < (await presets.count()); i++) {
+      await presets.nth(i).click();
+      await nextFrame(page);
+      const markers = await page
+        .locator('.katex')
+        .evaluateAll((all) => all.filter((k) => k.textContent?.includes('§')).length);
+      expect(markers, `${slug}, preset ${i + 1}: unfilled number slots`).toBe(0);
+    }
+  }
+});
