@@ -1,6 +1,6 @@
 import { dataTable, h } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
-import { LiveFormula, SLOT, texNumber } from '../../render/formula';
+import { LiveFormula, SLOT, slotPoint, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
 
 /** Every digit a reader may want to check by hand (12 significant). */
@@ -8,18 +8,11 @@ const allDigits = (v: number) => String(Number(v.toPrecision(12)));
 const texMu = (mu: number) => String(Number(mu.toFixed(4)));
 const coords = (p: readonly number[], digits: number) => p.map((v) => texNumber(v, digits));
 
-/**
- * A point with live coordinates. Not slotPoint(): its `,\ ` is merged by
- * KaTeX into the next slot's MathML text, where LiveFormula no longer finds
- * it, so a screen reader would read "§1§"; `\;` is as wide and stays apart.
- */
-const POINT = `(${SLOT},\\;${SLOT})`;
-
 // Equation 2 of the notes: the three conditions.
-const CONDITIONS = `\\begin{aligned}P(0) &= a_0 = P_0 = ${POINT}\\\\ P(${SLOT}) &= a_2\\cdot ${SLOT}^2 + a_1\\cdot ${SLOT} + a_0 = P_1 = ${POINT}\\\\ P(1) &= a_2 + a_1 + a_0 = P_2 = ${POINT}\\end{aligned}`;
+const CONDITIONS = `\\begin{aligned}P(0) &= a_0 = P_0 = ${slotPoint()}\\\\ P(${SLOT}) &= a_2\\cdot ${SLOT}^2 + a_1\\cdot ${SLOT} + a_0 = P_1 = ${slotPoint()}\\\\ P(1) &= a_2 + a_1 + a_0 = P_2 = ${slotPoint()}\\end{aligned}`;
 // Equation 3: their solution.
-const SOLUTION = `\\begin{aligned}a_0 &= P_0 = ${POINT}\\\\ a_2 &= \\frac{P_1 - P_0 - \\mu_1 (P_2 - P_0)}{\\mu_1(\\mu_1 - 1)} = ${POINT}\\\\ a_1 &= P_2 - P_0 - a_2 = ${POINT}\\end{aligned}`;
-const CHECK = `\\text{Check: } P(${SLOT}) = ${POINT} = P_1`;
+const SOLUTION = `\\begin{aligned}a_0 &= P_0 = ${slotPoint()}\\\\ a_2 &= \\frac{P_1 - P_0 - \\mu_1 (P_2 - P_0)}{\\mu_1(\\mu_1 - 1)} = ${slotPoint()}\\\\ a_1 &= P_2 - P_0 - a_2 = ${slotPoint()}\\end{aligned}`;
+const CHECK = `\\text{Check: } P(${SLOT}) = ${slotPoint()} = P_1`;
 
 /** "The parametric quadratic": equations 2 and 3 with the numbers, and every digit in a table. */
 export function parametricSection() {
