@@ -27,6 +27,7 @@ export {
   sampleBezier,
 } from './bezier';
 export { bezierBasisMatrix, bezierToPowerBasis, powerBasisToBezier } from './powerBasis';
+export { type BasisExtreme, type BasisSamples, basisValuesAt, sampleBasis } from './basisSamples';
 
 // Interpolation through points
 export { parabolaThrough, parametricQuadratic, parametricQuadraticPoint } from './parabola';
