@@ -13,7 +13,7 @@ import {
   uniformBSplineBezierBatch,
   type Point,
 } from '../src/math/index';
-import { measure, type Timing } from './measure';
+import { clock, measure, type Timing } from './measure';
 
 interface Row {
   readonly task: string;
@@ -333,7 +333,7 @@ const rows: Row[] = [
   ...uniformBSpline(1e5),
 ];
 console.log(
-  `Spline Lab maths benchmark — node ${process.version}, median of 9 runs after 3 warm-ups${(globalThis as { gc?: unknown }).gc ? ', GC between runs' : ''}\n`,
+  `Spline Lab maths benchmark — node ${process.version}, ${clock}, median of 9 runs after 3 warm-ups${(globalThis as { gc?: unknown }).gc ? ', GC between runs' : ''}\n`,
 );
 printTable(rows);
 const { solve, copy, memcpy } = bandwidth(1e6);
