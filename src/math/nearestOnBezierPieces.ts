@@ -45,20 +45,22 @@ export function bezierPieceBoxes(pieces: readonly (readonly Point[])[]): Float64
   const caller = 'bezierPieceBoxes';
   const dimension = pieces.length ? checkPoints(caller, 'pieces[0]', pieces[0], 1) : 0;
   const boxes = new Float64Array(2 * dimension * pieces.length);
-  pieces.forEach((piece, index) => {
-    checkPoints(caller, `pieces[${index}]`, piece, 1, dimension);
+  for (let index = 0; index < pieces.length; index++) {
+    const piece = pieces[index];
+    checkPiece(caller, pieces, index, dimension);
     const base = 2 * dimension * index;
     for (let d = 0; d < dimension; d++) {
-      let low = Infinity;
-      let high = -Infinity;
-      for (const point of piece) {
-        low = Math.min(low, point[d]);
-        high = Math.max(high, point[d]);
+      let low = piece[0][d];
+      let high = low;
+      for (let k = 1; k < piece.length; k++) {
+        const value = piece[k][d];
+        if (value < low) low = value;
+        else if (value > high) high = value;
       }
       boxes[base + d] = low;
       boxes[base + dimension + d] = high;
     }
-  });
+  }
   return boxes;
 }
 
@@ -94,19 +96,36 @@ export function nearestOnBezierPieces(
     best = { piece, t, point: point.slice(), distance };
     reach = distance;
   };
+  // A piece whose box is out of reach is passed over (bezierPieceBoxes has checked it).
+  const outOfReach = (index: number) =>
+    boxes !== undefined && boxDistance(boxes, index, at) > reach;
   // The ends of every piece first: a cheap first answer that lets most pieces be skipped.
   pieces.forEach((piece, index) => {
-    checkPoints(caller, `pieces[${index}]`, piece, 1, dimension);
+    if (outOfReach(index)) return;
+    checkPiece(caller, pieces, index, dimension);
     consider(index, 0, piece[0]);
     consider(index, 1, piece[piece.length - 1]);
   });
   pieces.forEach((piece, index) => {
-    if (piece.length < 2) return;
-    if (boxes && boxDistance(boxes, index, at) > reach) return;
+    if (piece.length < 2 || outOfReach(index)) return;
     for (const t of perpendicularFeet(piece, at))
       consider(index, t, evaluateBezier(piece, dimension, t));
   });
   return best;
+}
+
+/** checkPoints for pieces[index]; the name with its index is only built to word a failure. */
+function checkPiece(
+  caller: string,
+  pieces: readonly (readonly Point[])[],
+  index: number,
+  dimension: number,
+): void {
+  try {
+    checkPoints(caller, 'a piece', pieces[index], 1, dimension);
+  } catch {
+    checkPoints(caller, `pieces[${index}]`, pieces[index], 1, dimension);
+  }
 }
 
 const earlier = (piece: number, t: number, than: NearestOnPieces) =>

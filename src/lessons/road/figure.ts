@@ -17,7 +17,8 @@ import {
   drawParameterTicks,
   drawRoadway,
 } from './mapDrawing';
-import type { RoadModel, ShownRoad } from './model';
+import type { RoadModel } from './model';
+import type { ShownRoad } from './shownRoad';
 import type { RoadState } from './state';
 
 /** The segment under the pointer (`seg3`), as an index into the shown pieces, else −1. */

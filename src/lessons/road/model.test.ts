@@ -49,7 +49,16 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
       [2 / 3, 1],
       [1, 1],
     ].forEach((point, k) => close(pieces[0][k], point));
-    close(m.gradientTips![2], [2 + 1 / 3, -1 / 2]);
+    m.gradients!.forEach((d, i) =>
+      close(
+        d,
+        [
+          [1, 1.5],
+          [1, 0],
+          [1, -1.5],
+        ][i],
+      ),
+    );
   });
 
   it('gives the power form of a piece: P(p) = a + b p + c p² + d p³', () => {
@@ -80,6 +89,8 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
       [2, 0],
     ].forEach((point, k) => close(half.shown!.pieces[0][k], point));
     expect(half.shown!.marker).toBeNull();
+    // The arrows of the gradients found so far end at Pi + Di/3.
+    close(half.gradientTips![2], [2 + 1 / 3, -1 / 2]);
   });
 
   it('counts the conditions and the cost of the solve', () => {

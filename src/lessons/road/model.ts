@@ -1,18 +1,16 @@
 import {
   type ConstraintCount,
   type Point,
-  bezierPieceBoxes,
-  bezierPoint,
   bezierToPowerBasis,
   closedCubicSystem,
   constraintCount,
   gaussianEliminationOperationCount,
   thomasOperationCount,
 } from '../../math';
-import { type Bounds, boundsOf } from '../../render/projection';
+import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
 import { SHAPE } from './methods';
 import { villageNotes } from './notes';
-import { type CurvatureComb, curvatureComb, parameterTicks } from './roadMarks';
+import { type ShownRoad, localParameter, showRoad } from './shownRoad';
 import {
   CURVES,
   type Road,
@@ -27,36 +25,13 @@ import {
   type RoadSolve,
   type SolveProgress,
   buildSolve,
-  builtPieces,
   solveProgress,
   solvedGradients,
 } from './solve';
 import { type RoadState, isSolving, segmentCount } from './state';
 
-/** Up to this many segments the ticks of p̄ are worked out (and drawn). */
-export const TICK_SEGMENTS = 60;
 /** Up to this many pieces the method's road is fitted into the map whole (control points and all). */
 const FIT_PIECES = 100;
-
-/** The road as the map shows it: the finished road, or the pieces the solve has built so far. */
-export interface ShownRoad {
-  /** Bézier pieces (degree 1, 2 or 3); piece i is segment offset + i. Empty when there are none (yet). */
-  pieces: Point[][];
-  /** The same pieces as cubics, for drawing. */
-  cubics: Point[][];
-  /** The box of each piece's control points, for hit tests (see bezierPieceBoxes). */
-  boxes: Float64Array;
-  /** The segment of pieces[0]: while the solve runs only the last segments are built. */
-  offset: number;
-  /** Why the method draws no road here (a ring through two villages), else null. */
-  missing: string | null;
-  /** The marker at p̄ once the road is built: its piece, local p and place. */
-  marker: { piece: number; p: number; point: Point } | null;
-  /** Ticks at every quarter of p̄ (see parameterTicks), on a built road of at most TICK_SEGMENTS segments. */
-  ticks: Float64Array | null;
-  /** The curvature comb, when it is switched on. */
-  comb: CurvatureComb | null;
-}
 
 /** One curve of the overlay. */
 export interface OverlayCurve {
@@ -95,7 +70,7 @@ export interface RoadModel {
   road: Road;
   /** The method's gradients D0 … Dm (Hermite, natural, clamped, ring), else undefined. */
   gradients: Point[] | undefined;
-  /** Pi + Di/3 for each village: the tips of the gradient arrows. */
+  /** Pi + Di/3 for each village, where the map draws gradient arrows (Hermite, or the solve under way). */
   gradientTips: Point[] | undefined;
   /** The tridiagonal system and its solve (natural and clamped roads), else null. */
   solve: RoadSolve | null;
@@ -124,12 +99,6 @@ export interface RoadModel {
   cost: SolveCost | null;
   /** The power-basis coefficients of shown piece i (worked out when first asked for, once per state). */
   coefficients(piece: number): Point[];
-}
-
-/** The piece and local parameter p of the global p̄ on a road of `count` pieces. */
-export function localParameter(s: number, count: number): { piece: number; p: number } {
-  const piece = Math.max(0, Math.min(Math.floor(s), count - 1));
-  return { piece, p: s - piece };
 }
 
 /** Are the handles for the end gradients (the other roads) in play? */
@@ -166,6 +135,7 @@ export function derive(state: RoadState): RoadModel {
   const reach = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1) * 0.25;
   const unit = (g: Point) => reach / Math.max(1e-9, Math.hypot(g[0], g[1]));
   const otherRoads: [Point, Point] = [plus(v[0], a, -unit(a)), plus(last, b, unit(b))];
+  const notes = villageNotes(v);
   const model: Omit<RoadModel, 'bounds'> = {
     state,
     span,
@@ -180,7 +150,10 @@ export function derive(state: RoadState): RoadModel {
     ]),
     road,
     gradients,
-    gradientTips: gradients?.map((d, i) => plus(v[i], d, 1 / 3)),
+    gradientTips:
+      (state.road === 'hermite' && !state.overlay) || solving
+        ? gradients?.map((d, i) => plus(v[i], d, 1 / 3))
+        : undefined,
     solve,
     progress,
     solving,
@@ -188,8 +161,8 @@ export function derive(state: RoadState): RoadModel {
     overlay: state.overlay ? overlayCurves(state, road) : [],
     quadraticPolygon:
       !state.overlay && state.road === 'quadratic' ? controlPolygon(road, last) : null,
-    notes: villageNotes(v),
-    mapNotes: [],
+    notes,
+    mapNotes: [...(shown?.missing ? [shown.missing] : []), ...notes].map(shorten),
     along: localParameter(state.s, segmentCount(state)),
     ringRhs:
       state.road === 'ring' && v.length >= 3 ? closedCubicSystem(v.map((p) => p[0])).rhs[0] : null,
@@ -197,34 +170,7 @@ export function derive(state: RoadState): RoadModel {
     cost: solve ? solveCost(state, solve) : null,
     coefficients: powerBasisOf(shown?.pieces ?? []),
   };
-  model.mapNotes = [...(shown?.missing ? [shown.missing] : []), ...model.notes].map(shorten);
-  return { ...model, bounds: fitBounds(model) };
-}
-
-function showRoad(
-  state: RoadState,
-  road: Road,
-  gradients: Point[] | undefined,
-  progress: SolveProgress | null,
-  span: number,
-): ShownRoad {
-  const pieces = progress
-    ? builtPieces(state.v, gradients!, progress)
-    : road.kind === 'pieces'
-      ? road.pieces
-      : [];
-  const built = !progress && pieces.length > 0;
-  const marker = built ? localParameter(state.s, pieces.length) : null;
-  return {
-    pieces,
-    cubics: asCubics(pieces),
-    boxes: bezierPieceBoxes(pieces),
-    offset: segmentCount(state) - pieces.length,
-    missing: road.kind === 'missing' ? road.why : null,
-    marker: marker && { ...marker, point: bezierPoint(pieces[marker.piece], marker.p) },
-    ticks: built && pieces.length <= TICK_SEGMENTS ? parameterTicks(pieces) : null,
-    comb: state.comb ? curvatureComb(pieces, span / 10, pieces.length > 100 ? 6 : 16) : null,
-  };
+  return { ...model, bounds: fitBounds(model, box) };
 }
 
 /** Each curve of the overlay built once; the method's own road is not built again. */
@@ -278,9 +224,9 @@ function powerBasisOf(pieces: readonly Point[][]): (piece: number) => Point[] {
  * villages. The quadratic's may fly far off: its swings are the lesson,
  * shown to the edge of the map.
  */
-function fitBounds(model: Omit<RoadModel, 'bounds'>): Bounds {
+function fitBounds(model: Omit<RoadModel, 'bounds'>, villages: Bounds): Bounds {
   const { state } = model;
-  const points: Point[] = [...state.v];
+  const points: Point[] = [];
   if (model.usesQuadraticHandle) points.push(model.quadraticControl);
   if (model.usesEndGradients) points.push(...model.endHandles, ...model.otherRoads);
   const road = model.road;
@@ -288,5 +234,5 @@ function fitBounds(model: Omit<RoadModel, 'bounds'>): Bounds {
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
   }
-  return boundsOf(points);
+  return points.length ? unionBounds(villages, boundsOf(points)) : villages;
 }

@@ -45,8 +45,6 @@ export const CURVES: readonly CurveInfo[] = [
   { id: 'bspline', name: 'Cubic B-spline (approximating)', dash: [14, 6] },
 ];
 
-export const curveIndex = (id: CurveId) => CURVES.findIndex((c) => c.id === id);
-
 /** Above this many villages the Lagrange polynomial is not drawn (its values overflow the map). */
 export const LAGRANGE_LIMIT = 30;
 const LAGRANGE_SAMPLES_PER_SEGMENT = 24;

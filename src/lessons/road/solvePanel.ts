@@ -25,6 +25,7 @@ export function solveSection() {
   );
 
   let shownStep = -1;
+  let shownCost = '';
 
   return {
     element,
@@ -43,12 +44,15 @@ export function solveSection() {
       );
       tables.update(solve, progress);
 
+      // The cost changes only with the number of villages: written and typeset again only then.
       const { unknowns: N, thomas, elimination, inverse } = counts;
+      const key = `${N} ${n}`;
+      if (key === shownCost) return;
+      shownCost = key;
       setText(
         cost,
         `Why not invert the ${N} × ${N} matrix of all 4m coefficients? Inverting it costs about 2N³ operations, and even Gaussian elimination with both right-hand sides about 2N³/3; the Thomas algorithm sweeps once down and once up the ${n} rows: O(m) against O(m³).`,
       );
-      // Its numbers change only with the number of villages: typeset again only then.
       renderFormula(
         costFormula,
         `\\underbrace{${count(thomas)}}_{\\text{Thomas, } x \\text{ and } y}\\ \\ll\\ \\underbrace{${count(elimination)}}_{\\text{elimination, } ${N}\\times${N}}\\ <\\ \\underbrace{${count(inverse)}}_{\\text{inverting } ${N}\\times${N}}`,

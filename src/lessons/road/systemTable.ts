@@ -5,7 +5,7 @@ import type { RoadSolve, SolveProgress } from './solve';
 import { isFixed } from './solve';
 
 /** Up to this many rows the matrix is written out in full; beyond, by its three diagonals. */
-export const FULL_MATRIX_ROWS = 8;
+const FULL_MATRIX_ROWS = 8;
 /** Rows shown at the top, the bottom and around the current row of a long system. */
 const EDGE_ROWS = 3;
 const AROUND_ROWS = 2;
@@ -43,6 +43,7 @@ export function systemTables() {
     dataTable('Gradients found', ['Gradient', 'Dx', 'Dy'], gradientBody, 'road-gradients'),
   );
   let shownColumns = '';
+  let shownLayout = '';
   let shownWidths = '';
 
   return {
@@ -78,8 +79,13 @@ export function systemTables() {
       if (previous < n - 1) gap(n - 1 - previous);
       rows.set(matrix);
       gradients.set(found);
-      styleCells(body, full, columns.length + 3);
-      styleCells(gradientBody, false, 3);
+      // Which matrix row sits in which table row: cell styles change only with it.
+      const layout = `${shownColumns}|${matrix.map((row) => row.data?.row ?? 'gap').join()}`;
+      if (layout !== shownLayout) {
+        shownLayout = layout;
+        styleCells(body, full, columns.length + 3);
+        styleCells(gradientBody, false, 3);
+      }
       // The tables are monospaced: their width follows the longest text of each column.
       const widths = `${columnWidths(matrix)}|${columnWidths(found)}`;
       if (widths !== shownWidths) {

@@ -1,0 +1,79 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { bezierPoint, type Point } from '../../math';
+import { Painter } from '../../render/painter';
+import { SvgContext } from '../../render/svgContext';
+import { makeTheme } from '../../render/theme';
+import { Viewport } from '../../render/viewport';
+import { mapFigure } from './figure';
+import { derive } from './model';
+import { type RoadState, normalize, schema, stepCount } from './state';
+
+function state(change: Partial<RoadState>): RoadState {
+  const next = { ...defaultsOf(schema), ...change };
+  return normalize({ ...next, step: Math.min(next.step, stepCount(next)) }).state;
+}
+
+/** Draws the map of `s` to a recording context, as the shell does (without the handles). */
+function drawn(s: RoadState, hover: string | null = null): SvgContext {
+  const m = derive(s);
+  const view = new Viewport(800, 500);
+  view.fit(mapFigure.bounds(m), 20);
+  const svg = new SvgContext();
+  const painter = new Painter(svg, view, makeTheme(false, false));
+  mapFigure.draw(painter, m, { hover, thumbnail: false });
+  mapFigure.drawOver?.(painter, m, { hover, thumbnail: false });
+  return svg;
+}
+
+describe('the map', () => {
+  const lecture = state({});
+  const m = derive(lecture);
+
+  it('knows the segment under the pointer, within twice the tolerance of the road', () => {
+    const onSegment2 = bezierPoint(m.shown!.pieces[2], 0.5);
+    expect(mapFigure.hoverAt!(m, onSegment2, 0.5)).toBe('seg2');
+    expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 0.9], 0.5)).toBe('seg2');
+    expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 30], 0.5)).toBeNull();
+    expect(mapFigure.hoverAt!(derive(state({ overlay: true })), onSegment2, 0.5)).toBeNull();
+  });
+
+  it('moves the marker p̄ to the road point nearest the pointer, to 0.01', () => {
+    const at: Point = bezierPoint(m.shown!.pieces[3], 0.25);
+    const next = mapFigure.moveHandle!(lecture, 's', [at[0], at[1] + 0.01], m);
+    expect(next.s).toBe(3.25);
+  });
+
+  it('keeps villages to 0.01 and gradients as the vector to their handle', () => {
+    expect(mapFigure.moveHandle!(lecture, 'p2', [40.123, 11.987], m).v[2]).toEqual([40.12, 11.99]);
+    const clamped = state({ road: 'clamped' });
+    // D0/3 ends at the handle: a handle at P0 + (10, −5) is the gradient (30, −15).
+    expect(mapFigure.moveHandle!(clamped, 'a', [10, -5], derive(clamped)).a).toEqual([30, -15]);
+  });
+
+  it('draws the marker label and, over a segment, highlights it', () => {
+    const plain = drawn(lecture);
+    expect(plain.texts).toContain('p̄ = 2.40: segment 2, p = 0.40');
+    const hovered = drawn(lecture, 'seg2');
+    expect(hovered.elements.length).toBe(plain.elements.length + 1);
+  });
+
+  it('says on the map why the ring through two villages is missing', () => {
+    const svg = drawn(
+      state({
+        v: [
+          [0, 0],
+          [60, 25],
+        ],
+        road: 'ring',
+      }),
+    );
+    expect(svg.texts.join(' ')).toMatch(/A ring road needs at least three villages/);
+  });
+
+  it('draws 500 villages without a label for each', () => {
+    const villages: Point[] = Array.from({ length: 500 }, (_, i) => [i, Math.sin(i / 10) * 20]);
+    const svg = drawn(state({ v: villages }));
+    expect(svg.texts).toEqual(['p̄ = 2.40: segment 2, p = 0.40']);
+  });
+});
