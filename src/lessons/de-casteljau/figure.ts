@@ -55,12 +55,17 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
         [m.left, 0],
         [m.right, 1],
       ] as const) {
-        painter.polyline(half, { color: painter.color(k), width: theme.sizes.line * 1.6, alpha: 0.85 });
+        painter.polyline(half, {
+          color: painter.color(k),
+          width: theme.sizes.line * 1.6,
+          alpha: 0.85,
+        });
         for (const q of half) painter.dot(q, painter.color(k), theme.sizes.point * 0.9);
       }
     }
   },
-  handles: (m) => m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
+  handles: (m) =>
+    m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };

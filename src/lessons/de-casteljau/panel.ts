@@ -161,7 +161,10 @@ export function deCasteljauPanel(
               className: k === r ? 'current' : shown ? '' : 'future',
               data: { level: String(k) },
               cells: [
-                { text: `P${k},${i}`, swatch: k > 0 ? palette[(k - 1) % palette.length] : undefined },
+                {
+                  text: `P${k},${i}`,
+                  swatch: k > 0 ? palette[(k - 1) % palette.length] : undefined,
+                },
                 shown ? texNumber(point[0], 4) : '—',
                 shown ? texNumber(point[1], 4) : '—',
               ],
