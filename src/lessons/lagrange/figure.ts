@@ -1,53 +1,25 @@
 import type { FigureSpec } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
-import { boundsOf } from '../../render/viewport';
-import { interpolant, polynomialPoint, samplePolynomial, splineSegments } from './model';
-import { type LagrangeState, MAX_POINTS, degree } from './state';
+import type { LagrangeModel } from './model';
+import { type LagrangeState, MAX_POINTS } from './state';
 
 /** Every point is labelled up to this many; beyond, only the first and the last. */
 const LABEL_ALL_UP_TO = 9;
 
-export const curveFigure: FigureSpec<LagrangeState> = {
+export const curveFigure: FigureSpec<LagrangeState, LagrangeModel> = {
   id: 'curve',
   title: 'The points with the Lagrange interpolating polynomial through them',
   kind: 'geometry',
   weight: 1.6,
-  bounds(state) {
-    // The points, and the polynomial's swings up to a point: a wild polynomial
-    // may leave the view, which is the lesson, but the points must stay large.
-    const points = boundsOf(state.p);
-    const size = Math.max(points.maxX - points.minX, points.maxY - points.minY, 1);
-    const curve = samplePolynomial(state, interpolant(state).ts, 200);
-    const xs: number[] = [];
-    const ys: number[] = [];
-    for (let i = 0; i < curve.length; i += 2) {
-      xs.push(curve[i]);
-      ys.push(curve[i + 1]);
-    }
-    const reach = 0.6 * size;
-    const bounds = {
-      minX: Math.max(points.minX - reach, Math.min(points.minX, ...xs)),
-      maxX: Math.min(points.maxX + reach, Math.max(points.maxX, ...xs)),
-      minY: Math.max(points.minY - reach, Math.min(points.minY, ...ys)),
-      maxY: Math.min(points.maxY + reach, Math.max(points.maxY, ...ys)),
-    };
-    // Room at the top for the legend, and for the note when there is one.
-    const headroom = interpolant(state).collapsed ? 0.7 : 0.2;
-    return { ...bounds, maxY: bounds.maxY + headroom * (bounds.maxY - bounds.minY || 1) };
-  },
-  draw(painter, state, info) {
+  bounds: (m) => m.curveBounds,
+  draw(painter, m, info) {
     const theme = painter.theme;
-    const { ts, collapsed } = interpolant(state);
+    const { state, at } = m;
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [5, 5] });
-    painter.polylineFlat(samplePolynomial(state, ts), { color: theme.curve });
+    painter.polylineFlat(m.curve, { color: theme.curve });
     // The spline on top: where the two agree, it is the spline one sees.
-    if (state.spline) {
-      painter.cubicSegments(splineSegments(state), {
-        color: painter.color(2),
-        width: theme.sizes.curve,
-      });
-    }
-    const at = polynomialPoint(state, ts, state.t);
+    if (m.spline)
+      painter.cubicSegments(m.spline, { color: painter.color(2), width: theme.sizes.curve });
     painter.dot(at, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
     const hovered = /^L\d+$/.test(info.hover ?? '') ? Number(info.hover!.slice(1)) : -1;
@@ -58,29 +30,25 @@ export const curveFigure: FigureSpec<LagrangeState> = {
       });
     }
     painter.label('P(t)', at, { dx: 10, dy: theme.sizes.label, halo: true, bold: true });
-    let top = painter.theme.sizes.label * 0.5;
-    if (collapsed) {
-      top = painter.note(
-        `P${collapsed[0]} and P${collapsed[1]} coincide, so chord length gives them the same t, and no polynomial is at two places at one t: equally spaced values are used instead.`,
-      );
-    }
-    legend(painter, state, top);
+    let top = theme.sizes.label * 0.5;
+    if (m.collapsedNote) top = painter.note(m.collapsedNote);
+    legend(painter, m, top);
   },
-  handles: (state) =>
-    state.p.map((point, i) => ({
+  handles: (m) =>
+    m.state.p.map((point, i) => ({
       id: `p${i}`,
       label: `P_{${i}}`,
       position: point,
       // Many close points: name only the ends, so the labels stay readable.
-      showLabel: state.p.length <= LABEL_ALL_UP_TO || i === 0 || i === state.p.length - 1,
+      showLabel: m.state.p.length <= LABEL_ALL_UP_TO || i === 0 || i === m.state.p.length - 1,
     })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
+    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: [...state.p, at] };
+    return { ...state, p: [...state.p, [at[0], at[1]]] };
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
@@ -89,24 +57,26 @@ export const curveFigure: FigureSpec<LagrangeState> = {
   },
 };
 
-function legend(painter: Painter, state: LagrangeState, top: number) {
+/** What each line is, in the top left corner (screen pixels). */
+function legend(painter: Painter, m: LagrangeModel, top: number) {
   const theme = painter.theme;
   const size = theme.sizes.label;
   const x = size * 0.8;
   let y = top + size * 0.8;
   const entry = (text: string, color: string) => {
-    painter.ctx.save();
-    painter.ctx.strokeStyle = color;
-    painter.ctx.lineWidth = theme.sizes.curve;
-    painter.ctx.setLineDash([]);
-    painter.ctx.beginPath();
-    painter.ctx.moveTo(x, y);
-    painter.ctx.lineTo(x + size * 1.6, y);
-    painter.ctx.stroke();
-    painter.ctx.restore();
+    const c = painter.ctx;
+    c.save();
+    c.strokeStyle = color;
+    c.lineWidth = theme.sizes.curve;
+    c.setLineDash([]);
+    c.beginPath();
+    c.moveTo(x, y);
+    c.lineTo(x + size * 1.6, y);
+    c.stroke();
+    c.restore();
     painter.screenLabel(text, x + size * 2.1, y, { halo: true });
     y += size * 1.5;
   };
-  entry(`Lagrange polynomial, degree ${degree(state)}`, theme.curve);
-  if (state.spline) entry('natural cubic spline', painter.color(2));
+  entry(`Lagrange polynomial, degree ${m.n}`, theme.curve);
+  if (m.spline) entry('natural cubic spline', painter.color(2));
 }

@@ -1,13 +1,14 @@
-import { defineLesson, type Point2 } from '../../app/lesson';
+import { defineLesson, type Point } from '../../app/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
+import { type LagrangeModel, derive } from './model';
 import { lagrangePanel } from './panel';
 import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, type Spacing, schema } from './state';
 
 const preset = (
   id: string,
   label: string,
-  p: Point2[],
+  p: Point[],
   options: { spacing?: Spacing; spline?: boolean; t?: number } = {},
 ) => ({
   id,
@@ -21,13 +22,10 @@ const preset = (
   }),
 });
 
-export const lagrange = defineLesson<LagrangeState>({
+export default defineLesson<LagrangeState, LagrangeModel>({
   slug: 'lagrange',
-  title: 'One polynomial through n + 1 points: Lagrange interpolation',
-  summary:
-    'The Lagrange polynomial through any number of points, its basis, and why it wiggles (Runge).',
-  group: 'interpolation',
   schema,
+  derive,
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },

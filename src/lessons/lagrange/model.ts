@@ -1,24 +1,61 @@
 import {
+  type BasisSamples,
+  clipToBand,
   cubicSplineSegments,
   lagrangeBasis,
-  lagrangePoint,
+  lebesgueConstant,
   naturalCubicTangents,
   parameterValues,
   type Point,
+  sampleBasis,
 } from '../../math';
-import type { LagrangeState } from './state';
+import { type Bounds, boundsOf } from '../../render/projection';
+import { type LagrangeState, degree } from './state';
 
-// What the figures and the panel share, computed once per state from src/math.
+/**
+ * The basis is sampled at t = i / SAMPLES, once: the plot, the curve
+ * Σ L_k(t) P_k, the largest Σ|L_k(t)| and the hover over a basis curve all
+ * read these numbers.
+ */
+export const SAMPLES = 800;
+/** The plot shows L_k between ±CLIP; beyond, the curves are cut and the figure says so. */
+export const CLIP = 3;
 
-export interface Interpolant {
+/** Everything the two figures and the panel show, computed once per state. */
+export interface LagrangeModel {
+  state: LagrangeState;
+  /** Degree n = number of points − 1. */
+  n: number;
   /** The parameter values t_k actually used. */
   ts: number[];
   /** Chord length was asked for but two neighbours coincide: which ones (then ts are uniform). */
   collapsed: [number, number] | null;
+  /** Why the values are uniform after all: on the figure, and in the panel. */
+  collapsedNote: string | null;
+  collapsedWarning: string | null;
+  /** Each L_k at t = i / SAMPLES (`basis.curves[k]`, interleaved [t, L_k(t), …]), and their extremes. */
+  basis: BasisSamples;
+  /** The polynomial at the same t's, interleaved [x, y, …]. */
+  curve: Float64Array;
+  /** The weights L_k(t) at the slider's t, their sum, and the point they give. */
+  weights: number[];
+  weightSum: number;
+  at: Point;
+  /** The natural cubic spline through the same points, as cubic Béziers (when asked for). */
+  spline: Point[][] | null;
+  /** The largest Σ|L_k(t)| (the Lebesgue constant, sampled) and where it is reached. */
+  lebesgue: { value: number; t: number };
+  /** "Fit view" of the curve figure: the points, and the polynomial's swings up to a point. */
+  curveBounds: Bounds;
+  /** The basis plot's range, and each L_k cut to it. */
+  plotBounds: Bounds;
+  basisPieces: Float64Array[][];
+  /** Some L_k leaves ±CLIP. */
+  basisCut: boolean;
 }
 
 /** t_k by the chosen spacing; chord length with two equal neighbours falls back to uniform. */
-export function interpolant(state: LagrangeState): Interpolant {
+export function parameters(state: LagrangeState): Pick<LagrangeModel, 'ts' | 'collapsed'> {
   if (state.spacing === 'chord') {
     const ts = parameterValues(state.p, 1);
     for (let k = 1; k < ts.length; k++) {
@@ -30,47 +67,76 @@ export function interpolant(state: LagrangeState): Interpolant {
   return { ts: parameterValues(state.p, 0), collapsed: null };
 }
 
-/** The Lagrange polynomial sampled over t ∈ [0, 1], as a flat [x0, y0, x1, y1, …]. */
-export function samplePolynomial(state: LagrangeState, ts: readonly number[], count = 600) {
-  const out = new Float64Array(2 * (count + 1));
-  for (let i = 0; i <= count; i++) {
-    const q = lagrangePoint(ts, state.p, i / count);
-    out[2 * i] = q[0];
-    out[2 * i + 1] = q[1];
-  }
+export function derive(state: LagrangeState): LagrangeModel {
+  const { p, t } = state;
+  const { ts, collapsed } = parameters(state);
+  const basis = sampleBasis((at) => lagrangeBasis(ts, at), SAMPLES);
+  const curves = basis.curves;
+  const weights = lagrangeBasis(ts, t);
+  const curve = combine(curves, p);
+  const plotBounds = basisBounds(basis);
+  return {
+    state,
+    n: degree(state),
+    ts,
+    collapsed,
+    collapsedNote: collapsed
+      ? `P${collapsed[0]} and P${collapsed[1]} coincide, so chord length gives them the same t, and no polynomial is at two places at one t: equally spaced values are used instead.`
+      : null,
+    collapsedWarning: collapsed
+      ? `P${collapsed[0]} and P${collapsed[1]} are the same point, so chord length gives them the same parameter value and no polynomial can pass both "at once". The curve uses equally spaced values until you move one of them.`
+      : null,
+    basis,
+    curve,
+    weights,
+    weightSum: weights.reduce((a, b) => a + b, 0),
+    at: [0, 1].map((d) => weights.reduce((sum, w, k) => sum + w * p[k][d], 0)),
+    spline: state.spline ? cubicSplineSegments(p, naturalCubicTangents(p)) : null,
+    lebesgue: lebesgueConstant(curves),
+    curveBounds: curveBounds(p, curve, collapsed !== null),
+    plotBounds,
+    basisPieces: curves.map((c) => clipToBand(c, plotBounds.minY, plotBounds.maxY)),
+    basisCut: basis.lowest.value < -CLIP || basis.highest.value > CLIP,
+  };
+}
+
+/** P(t_i) = Σ_k L_k(t_i) P_k at every sampled t_i, interleaved [x, y, …]. */
+function combine(basis: readonly Float64Array[], p: readonly Point[]): Float64Array {
+  const out = new Float64Array(basis[0].length);
+  basis.forEach((curve, k) => {
+    for (let i = 1; i < curve.length; i += 2) {
+      out[i - 1] += curve[i] * p[k][0];
+      out[i] += curve[i] * p[k][1];
+    }
+  });
   return out;
 }
 
-export const polynomialPoint = (state: LagrangeState, ts: readonly number[], t: number) =>
-  lagrangePoint(ts, state.p, t);
-
-/** The natural cubic spline through the same points, as cubic Bézier segments. */
-export const splineSegments = (state: LagrangeState): Point[][] =>
-  cubicSplineSegments(state.p, naturalCubicTangents(state.p));
-
-/** Each L_k sampled over [0, 1]: curves[k] = [t0, L_k(t0), t1, L_k(t1), …]. */
-export function sampleBasis(ts: readonly number[], count = 400): Float64Array[] {
-  const curves = ts.map(() => new Float64Array(2 * (count + 1)));
-  for (let i = 0; i <= count; i++) {
-    const t = i / count;
-    lagrangeBasis(ts, t).forEach((value, k) => {
-      curves[k][2 * i] = t;
-      curves[k][2 * i + 1] = value;
-    });
+function curveBounds(p: readonly Point[], curve: Float64Array, note: boolean): Bounds {
+  // A wild polynomial may leave the view, which is the lesson, but the points must stay large.
+  const points = boundsOf(p);
+  const reach = 0.6 * Math.max(points.maxX - points.minX, points.maxY - points.minY, 1);
+  let [minX, maxX, minY, maxY] = [points.minX, points.maxX, points.minY, points.maxY];
+  for (let i = 0; i < curve.length; i += 2) {
+    minX = Math.min(minX, curve[i]);
+    maxX = Math.max(maxX, curve[i]);
+    minY = Math.min(minY, curve[i + 1]);
+    maxY = Math.max(maxY, curve[i + 1]);
   }
-  return curves;
+  const bounds = {
+    minX: Math.max(points.minX - reach, minX),
+    maxX: Math.min(points.maxX + reach, maxX),
+    minY: Math.max(points.minY - reach, minY),
+    maxY: Math.min(points.maxY + reach, maxY),
+  };
+  // Room at the top for the legend, and for the note when there is one.
+  const headroom = note ? 0.7 : 0.2;
+  return { ...bounds, maxY: bounds.maxY + headroom * (bounds.maxY - bounds.minY || 1) };
 }
 
-/**
- * The largest Σ|L_k(t)| over [0, 1] (the Lebesgue constant, sampled) and where:
- * moving every point by at most ε moves the curve by at most this times ε.
- */
-export function amplification(ts: readonly number[], count = 800) {
-  let best = { value: 0, t: 0 };
-  for (let i = 0; i <= count; i++) {
-    const t = i / count;
-    const value = lagrangeBasis(ts, t).reduce((sum, w) => sum + Math.abs(w), 0);
-    if (value > best.value) best = { value, t };
-  }
-  return best;
+/** From a little below 0 to a little above 1, and as far as the L_k swing, up to ±CLIP. */
+function basisBounds({ lowest, highest }: BasisSamples): Bounds {
+  const low = Math.min(-0.3, lowest.value);
+  const high = Math.max(1.2, highest.value);
+  return { minX: 0, maxX: 1, minY: Math.max(-CLIP, low * 1.05), maxY: Math.min(CLIP, high * 1.05) };
 }

@@ -1,18 +1,24 @@
-import { fmt, h, setChildren, dataTable } from '../../app/dom';
+import { dataTable, fmt, h } from '../../app/dom';
+import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
-import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { lagrangeBasis } from '../../math';
-import { formula, renderFormula, texNumber, texPoint } from '../../render/formula';
-import { amplification, interpolant, polynomialPoint } from './model';
-import { type LagrangeState, MAX_POINTS, type Spacing, degree } from './state';
+import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
+import type { LagrangeModel } from './model';
+import { type LagrangeState, MAX_POINTS, type Spacing } from './state';
 
 const SPACINGS: [Spacing, string][] = [
   ['uniform', 'Equally spaced: tₖ = k / n'],
   ['chord', 'Chord length: gaps in t proportional to |Pₖ₊₁ − Pₖ|'],
 ];
 
-export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<LagrangeState> {
+/** P(t) = Σ L_k(t) P_k = (x, y): the degree is part of the shape, t and the point are numbers. */
+const pointShape = (n: number) =>
+  `P(${SLOT}) = \\sum_{k=0}^{${n}} L_k(${SLOT})\\,P_k = ${slotPoint()}`;
+
+export function lagrangePanel(
+  api: LessonApi<LagrangeState, LagrangeModel>,
+): LessonPanel<LagrangeState, LagrangeModel> {
   const spacing = radioGroup(api, {
     name: 'spacing',
     choices: SPACINGS.map(([value, label]) => ({ value, label })),
@@ -36,10 +42,12 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
   });
   const heading = h('h2', {});
   const warning = h('p', { class: 'warning', role: 'note' });
-  const pointFormula = h('div', { class: 'formula display' });
+  const pointFormula = new LiveFormula(true);
   const tableBody = h('tbody', {});
+  const table = new LiveRows(tableBody);
   const sumLine = h('p', {});
   const rungeText = h('p', {});
+  let hovered: string | null = null;
 
   const element = h(
     'div',
@@ -63,58 +71,49 @@ export function lagrangePanel(api: LessonApi<LagrangeState>): LessonPanel<Lagran
       'Drag a point or move it with Tab and the arrow keys; double-click to add one after the last, Delete to remove one. Drag the cursor in the lower plot (or Tab to it) to move t.',
     ),
     heading,
-    pointFormula,
+    pointFormula.element,
     dataTable('Weights at t', ['k', 'tₖ', 'Lₖ(t)', 'Pₖ'], tableBody),
     sumLine,
     h('h2', {}, "Runge's phenomenon"),
     rungeText,
   );
 
+  /** The row of the basis curve under the pointer is marked, in whichever figure. */
+  const markHovered = () => {
+    [...tableBody.rows].forEach((row, k) => row.classList.toggle('current', hovered === `L${k}`));
+  };
+
   return {
     element,
-    update(state, info) {
-      const n = degree(state);
-      const { ts, collapsed } = interpolant(state);
-      const weights = lagrangeBasis(ts, state.t);
-      const at = polynomialPoint(state, ts, state.t);
+    update(m, state) {
+      const { n, ts, weights, at, lebesgue } = m;
       const palette = api.theme().palette;
       spacing.update(state);
       spline.update(state);
       pointCount.update(state);
-      warning.hidden = !collapsed;
-      if (collapsed) {
-        warning.textContent = `P${collapsed[0]} and P${collapsed[1]} are the same point, so chord length gives them the same parameter value and no polynomial can pass both "at once". The curve uses equally spaced values until you move one of them.`;
-      }
+      warning.hidden = m.collapsedWarning === null;
+      if (m.collapsedWarning) warning.textContent = m.collapsedWarning;
       heading.textContent = `Degree ${n}, at t = ${fmt(state.t, 3)}`;
-      renderFormula(
-        pointFormula,
-        `P(${texNumber(state.t, 3)}) = \\sum_{k=0}^{${n}} L_k(${texNumber(state.t, 3)})\\,P_k = ${texPoint(at, 3)}`,
-        true,
+      const t = texNumber(state.t, 3);
+      pointFormula.set(pointShape(n), [t, t, ...at.map((v) => texNumber(v, 3))]);
+      table.set(
+        state.p.map((point, k) => ({
+          cells: [
+            { text: `L${k}`, swatch: palette[k % palette.length] },
+            fmt(ts[k], 4),
+            fmt(weights[k], 4),
+            `(${fmt(point[0], 2)}, ${fmt(point[1], 2)})`,
+          ],
+        })),
       );
-      setChildren(
-        tableBody,
-        state.p.map((point, k) =>
-          h(
-            'tr',
-            { class: info.hover === `L${k}` ? 'current' : '' },
-            h(
-              'td',
-              {},
-              h('span', { class: 'swatch', style: `background:${palette[k % palette.length]}` }),
-              `L${k}`,
-            ),
-            h('td', {}, fmt(ts[k], 4)),
-            h('td', {}, fmt(weights[k], 4)),
-            h('td', {}, `(${fmt(point[0], 2)}, ${fmt(point[1], 2)})`),
-          ),
-        ),
-      );
-      sumLine.textContent = `The weights add up to ${fmt(
-        weights.reduce((a, b) => a + b, 0),
-        6,
-      )} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
-      const worst = amplification(ts);
-      rungeText.textContent = `With many points the weights swing far beyond 0 and 1 near the ends. Here Σ|Lₖ(t)| reaches ${fmt(worst.value, 1)} at t = ${fmt(worst.t, 2)}: moving the points by 0.01 can move the curve by up to ${fmt(worst.value * 0.01, 2)}. Try the Runge preset (twelve nearly collinear points): the polynomial oscillates wildly between them, while a cubic spline through the same points stays calm, because each of its pieces only listens to nearby points. That is the reason for splines.`;
+      // Rows added for new points are marked too.
+      markHovered();
+      sumLine.textContent = `The weights add up to ${fmt(m.weightSum, 6)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
+      rungeText.textContent = `With many points the weights swing far beyond 0 and 1 near the ends. Here Σ|Lₖ(t)| reaches ${fmt(lebesgue.value, 1)} at t = ${fmt(lebesgue.t, 2)}: moving the points by 0.01 can move the curve by up to ${fmt(lebesgue.value * 0.01, 2)}. Try the Runge preset (twelve nearly collinear points): the polynomial oscillates wildly between them, while a cubic spline through the same points stays calm, because each of its pieces only listens to nearby points. That is the reason for splines.`;
+    },
+    hover(id) {
+      hovered = id;
+      markHovered();
     },
   };
 }

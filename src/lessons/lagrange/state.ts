@@ -1,4 +1,5 @@
-import type { Point2 } from '../../app/lesson';
+import { bool, choice, number, points } from '../../app/fields';
+import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
 export type Spacing = 'uniform' | 'chord';
@@ -6,7 +7,7 @@ export type Spacing = 'uniform' | 'chord';
 /** Everything the Lagrange lesson shows, and all of it goes in the link. */
 export interface LagrangeState {
   /** The points P0 … Pn to interpolate. */
-  p: Point2[];
+  p: Point[];
   /** The parameter at which the polynomial is evaluated and the basis is read. */
   t: number;
   /** Parameter values t_k: equally spaced, or by chord length. */
@@ -17,7 +18,7 @@ export interface LagrangeState {
 
 export const MAX_POINTS = 16;
 
-export const DEFAULT_POINTS: Point2[] = [
+export const DEFAULT_POINTS: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2.5],
@@ -26,7 +27,7 @@ export const DEFAULT_POINTS: Point2[] = [
 ];
 
 /** Runge's phenomenon: twelve nearly collinear, unevenly spaced points. */
-export const RUNGE_POINTS: Point2[] = [
+export const RUNGE_POINTS: Point[] = [
   [0, 0],
   [1, 0.2],
   [1.6, 0.1],
@@ -42,10 +43,10 @@ export const RUNGE_POINTS: Point2[] = [
 ];
 
 export const schema: Schema<LagrangeState> = {
-  p: { kind: 'points', default: DEFAULT_POINTS, min: 2, max: MAX_POINTS },
-  t: { kind: 'number', default: 0.4, min: 0, max: 1 },
-  spacing: { kind: 'enum', default: 'uniform', values: ['uniform', 'chord'] },
-  spline: { kind: 'bool', default: false },
+  p: points({ default: DEFAULT_POINTS, min: 2, max: MAX_POINTS }),
+  t: number({ default: 0.4, min: 0, max: 1 }),
+  spacing: choice<Spacing>({ default: 'uniform', values: ['uniform', 'chord'] }),
+  spline: bool({ default: false }),
 };
 
 export const degree = (state: LagrangeState) => state.p.length - 1;

@@ -1,0 +1,104 @@
+import { describe, expect, it } from 'vitest';
+import { SAMPLES, derive } from './model';
+import { DEFAULT_POINTS, type LagrangeState } from './state';
+
+const state = (over: Partial<LagrangeState> = {}): LagrangeState => ({
+  p: DEFAULT_POINTS,
+  t: 0.4,
+  spacing: 'uniform',
+  spline: false,
+  ...over,
+});
+
+describe('Lagrange model', () => {
+  it('weighs five equally spaced points at t = 2/5 by the product formula', () => {
+    // t_k = 0, 1/4, 1/2, 3/4, 1. L0(2/5) = (3/20)(−1/10)(−7/20)(−3/5) / ((−1/4)(−1/2)(−3/4)(−1))
+    // = (−63/20000) / (3/32) = −0.0336; L4(2/5) = (2/5)(3/20)(−1/10)(−7/20) / (1 · 3/4 · 1/2 · 1/4) = 0.0224.
+    const m = derive(state());
+    expect(m.n).toBe(4);
+    expect(m.ts).toEqual([0, 0.25, 0.5, 0.75, 1]);
+    expect(m.weights[0]).toBeCloseTo(-0.0336, 12);
+    expect(m.weights[4]).toBeCloseTo(0.0224, 12);
+    expect(m.weightSum).toBeCloseTo(1, 12);
+  });
+
+  it('puts P(1/2) of two points at their midpoint, each weighing one half', () => {
+    const m = derive(
+      state({
+        p: [
+          [0, 0],
+          [3, 2],
+        ],
+        t: 0.5,
+      }),
+    );
+    expect(m.weights).toEqual([0.5, 0.5]);
+    expect(m.at).toEqual([1.5, 1]);
+    // A line never leaves [0, 1]: Σ|L_k| = (1 − t) + t = 1, and the plot keeps its margins.
+    expect(m.lebesgue.value).toBeCloseTo(1, 12);
+    expect(m.plotBounds).toEqual({ minX: 0, maxX: 1, minY: -0.3 * 1.05, maxY: 1.2 * 1.05 });
+    expect(m.basisCut).toBe(false);
+  });
+
+  it('gives chord-length t_k by the lengths of the polygon', () => {
+    // Gaps 5, 5 and 10 (3-4-5 triangles): t = 0, 1/4, 1/2, 1.
+    const m = derive(
+      state({
+        p: [
+          [0, 0],
+          [3, 4],
+          [6, 8],
+          [12, 16],
+        ],
+        spacing: 'chord',
+      }),
+    );
+    expect(m.ts).toEqual([0, 0.25, 0.5, 1]);
+    expect(m.collapsed).toBeNull();
+  });
+
+  it('falls back to equal spacing when two neighbours coincide, and says why', () => {
+    const m = derive(
+      state({
+        p: [
+          [0, 0],
+          [1, 2],
+          [1, 2],
+          [4, 1],
+        ],
+        spacing: 'chord',
+      }),
+    );
+    expect(m.collapsed).toEqual([1, 2]);
+    expect(m.ts).toEqual([0, 1 / 3, 2 / 3, 1]);
+    expect(m.collapsedWarning).toMatch(/^P1 and P2 are the same point, so chord length/);
+    expect(m.collapsedNote).toMatch(/^P1 and P2 coincide/);
+  });
+
+  it('samples the curve at the basis’s t, through every point at its t_k', () => {
+    const m = derive(state());
+    expect(m.curve).toHaveLength(2 * (SAMPLES + 1));
+    // t_k = k/4 is sample i = k · SAMPLES / 4.
+    DEFAULT_POINTS.forEach((point, k) => {
+      const i = (k * SAMPLES) / 4;
+      expect(m.curve[2 * i]).toBeCloseTo(point[0], 12);
+      expect(m.curve[2 * i + 1]).toBeCloseTo(point[1], 12);
+    });
+  });
+
+  it('draws the spline only when asked, one cubic per gap', () => {
+    expect(derive(state()).spline).toBeNull();
+    expect(derive(state({ spline: true })).spline).toHaveLength(4);
+  });
+
+  it('cuts the basis plot at ±3 when the weights swing wider (Runge)', () => {
+    const ts = Array.from({ length: 12 }, (_, k) => [k, (k % 2) * 0.1]);
+    const m = derive(state({ p: ts }));
+    expect(m.plotBounds.minY).toBe(-3);
+    expect(m.plotBounds.maxY).toBe(3);
+    expect(m.basisCut).toBe(true);
+    for (const pieces of m.basisPieces)
+      for (const piece of pieces)
+        for (let i = 1; i < piece.length; i += 2) expect(Math.abs(piece[i])).toBeLessThanOrEqual(3);
+  });
+});
