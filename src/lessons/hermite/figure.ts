@@ -1,33 +1,16 @@
-import type { FigureSpec, Handle, Point2 } from '../../app/lesson';
-import { boundsOf } from '../../render/viewport';
-import { patchAt, patchSegments } from './model';
-import { type HermiteState, MAX_POINTS, gradients, patchCount } from './state';
+import type { FigureSpec, Handle, Point } from '../../app/lesson';
+import { ARROW_SCALE, type HermiteModel } from './model';
+import { type HermiteState, MAX_POINTS, patchCount } from './state';
 
-/** The arrow for a gradient D is drawn D/3 long: its tip is where the Bézier control point sits. */
-export const ARROW_SCALE = 1 / 3;
-
-const tip = (p: Point2, d: Point2): Point2 => [
-  p[0] + d[0] * ARROW_SCALE,
-  p[1] + d[1] * ARROW_SCALE,
-];
-
-export const curveFigure: FigureSpec<HermiteState> = {
+export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   id: 'patches',
   title: 'Cubic Hermite patches through the points, with their gradients',
   kind: 'geometry',
   weight: 1.6,
-  bounds(state) {
-    const D = gradients(state);
-    return boundsOf([
-      ...state.p,
-      ...state.p.map((p, i) => tip(p, D[i])),
-      ...patchSegments(state).flat(),
-    ]);
-  },
-  draw(painter, state, info) {
+  bounds: (m) => m.bounds,
+  draw(painter, m, info) {
     const theme = painter.theme;
-    const segments = patchSegments(state);
-    const patch = patchAt(state);
+    const { state, segments, patch } = m;
     if (state.bezier) {
       segments.forEach((segment, i) => {
         const strong = i === state.patch;
@@ -48,14 +31,12 @@ export const curveFigure: FigureSpec<HermiteState> = {
         width: theme.sizes.curve * 1.2,
       });
     }
-    const D = gradients(state);
     state.p.forEach((p, i) =>
-      painter.arrow(p, tip(p, D[i]), { color: painter.color(2), width: theme.sizes.line * 1.2 }),
+      painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
     );
     painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
-    const crowd = state.p.flatMap((p, i) => [p, tip(p, D[i])]);
-    painter.labelClear('P(μ)', patch.point, crowd, { halo: true, bold: true });
+    painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
     if (state.bezier) {
       patch.bezier.slice(1, 3).forEach((q, j) =>
         painter.label(`B_${j + 1}`, q, {
@@ -66,53 +47,43 @@ export const curveFigure: FigureSpec<HermiteState> = {
         }),
       );
     }
-    const [a, b] = [state.p[state.patch], state.p[state.patch + 1]];
-    const still = (d: Point2) => d[0] === 0 && d[1] === 0;
-    if (a[0] === b[0] && a[1] === b[1] && still(D[state.patch]) && still(D[state.patch + 1])) {
-      painter.note(
-        `P${state.patch} and P${state.patch + 1} are at one spot and both gradients are zero: four conditions that all say "stay here", so the patch is a single point. Drag a point or a gradient tip away.`,
-      );
-    } else if (state.mode === 'catmull-rom' && state.p.length === 2) {
-      painter.note(
-        'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment. Add a point.',
-      );
-    }
+    if (m.note) painter.note(m.note);
   },
-  handles(state) {
-    const D = gradients(state);
-    const points: Handle[] = state.p.map((position, i) => ({
+  handles(m) {
+    const points: Handle[] = m.state.p.map((position, i) => ({
       id: `p${i}`,
       label: `P_${i}`,
       position,
     }));
-    const tips: Handle[] = state.p.map((p, i) => ({
+    const tips: Handle[] = m.tips.map((position, i) => ({
       id: `d${i}`,
       label: `D_${i}`,
-      position: tip(p, D[i]),
+      position,
       shape: 'square',
     }));
     // Each point after its own tip: drawn on top, so with a zero gradient
     // (Catmull-Rom's ends) the point, not the tip, is what one grabs.
     return points.flatMap((point, i) => [tips[i], point]);
   },
-  moveHandle(state, id, to) {
+  moveHandle(state, id, to, m) {
     const i = Number(id.slice(1));
+    const at: Point = [to[0], to[1]];
     if (id.startsWith('p')) {
-      return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
+      return { ...state, p: state.p.map((point, k) => (k === i ? at : point)) };
     }
     // Dragging a tip sets D = 3 (tip − P); an automatic gradient becomes a hand-set one.
-    const D = gradients(state);
     const p = state.p[i];
-    const d = D.map((v, k): Point2 =>
-      k === i ? [(to[0] - p[0]) / ARROW_SCALE, (to[1] - p[1]) / ARROW_SCALE] : v,
+    const d = m.gradients.map((v, k): Point =>
+      k === i ? [(at[0] - p[0]) / ARROW_SCALE, (at[1] - p[1]) / ARROW_SCALE] : v,
     );
     return { ...state, mode: 'hand', d };
   },
-  addPoint(state, at) {
+  addPoint(state, to) {
     if (state.p.length >= MAX_POINTS) return null;
+    const at: Point = [to[0], to[1]];
     const last = state.p[state.p.length - 1];
     // A new point arrives heading away from the last one.
-    const d: Point2 = [at[0] - last[0], at[1] - last[1]];
+    const d: Point = [at[0] - last[0], at[1] - last[1]];
     return { ...state, p: [...state.p, at], d: [...state.d, d] };
   },
   removeHandle(state, id) {

@@ -1,17 +1,26 @@
-import { defineLesson, type Point2 } from '../../app/lesson';
+import { defineLesson, type Point } from '../../app/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
+import { type HermiteModel, derive } from './model';
 import { hermitePanel } from './panel';
-import { type GradientMode, type HermiteState, normalize, patchCount, schema } from './state';
+import {
+  type GradientMode,
+  type HermiteState,
+  ONE_PATCH,
+  ONE_PATCH_GRADIENTS,
+  normalize,
+  patchCount,
+  schema,
+} from './state';
 
-const SEVERAL: Point2[] = [
+const SEVERAL: Point[] = [
   [0, 0],
   [2, 2],
   [5, 1.5],
   [6.5, -1],
   [9, 0.5],
 ];
-const SEVERAL_GRADIENTS: Point2[] = [
+const SEVERAL_GRADIENTS: Point[] = [
   [2, 3],
   [3, 0],
   [2, -2],
@@ -22,8 +31,8 @@ const SEVERAL_GRADIENTS: Point2[] = [
 const preset = (
   id: string,
   label: string,
-  p: Point2[],
-  d: Point2[],
+  p: Point[],
+  d: Point[],
   options: { mode?: GradientMode; bezier?: boolean; patch?: number } = {},
 ) => ({
   id,
@@ -39,17 +48,10 @@ const preset = (
   }),
 });
 
-const ONE: Point2[] = [
-  [0, 0],
-  [4, 0],
-];
-
-export const hermite = defineLesson<HermiteState>({
+export default defineLesson<HermiteState, HermiteModel>({
   slug: 'hermite',
-  title: 'Cubic Hermite patches: points and gradients',
-  summary: 'A cubic from two end points and two end gradients; chained, it is smooth at the joins.',
-  group: 'interpolation',
   schema,
+  derive,
   normalize,
   figures: [curveFigure, basisFigure],
   layout: 'column',
@@ -60,11 +62,8 @@ export const hermite = defineLesson<HermiteState>({
     describe: (state, k) => `Patch ${k + 1} of ${patchCount(state)}`,
   },
   presets: [
-    preset('one', 'One patch', ONE, [
-      [3, 4.5],
-      [3, -4.5],
-    ]),
-    preset('long', 'Long gradients: a loop', ONE, [
+    preset('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),
+    preset('long', 'Long gradients: a loop', ONE_PATCH, [
       [15, 12],
       [15, -12],
     ]),
@@ -73,16 +72,7 @@ export const hermite = defineLesson<HermiteState>({
       mode: 'catmull-rom',
       patch: 1,
     }),
-    preset(
-      'bezier',
-      'As a Bézier curve',
-      ONE,
-      [
-        [3, 4.5],
-        [3, -4.5],
-      ],
-      { bezier: true },
-    ),
+    preset('bezier', 'As a Bézier curve', ONE_PATCH, ONE_PATCH_GRADIENTS, { bezier: true }),
   ],
   panel: hermitePanel,
 });

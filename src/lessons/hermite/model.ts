@@ -1,38 +1,42 @@
 import {
+  type BasisSamples,
+  type Continuity,
+  type Point,
+  add,
   bezierDerivative,
   bezierJointContinuity,
+  catmullRomTangents,
   cubicSplineSegments,
   hermiteBasis,
   hermiteCoefficients,
   hermitePoint,
-  hermiteToBezier,
-  type Continuity,
-  type Point,
+  sampleBasis,
+  scale,
 } from '../../math';
-import { type HermiteState, gradients } from './state';
+import { type Bounds, boundsOf } from '../../render/projection';
+import { type HermiteState, patchCount } from './state';
 
-// What the figures and the panel share, computed from src/math.
+/** The arrow for a gradient D is drawn D/3 long: its tip is where the Bézier control point sits. */
+export const ARROW_SCALE = 1 / 3;
 
-/** Every patch as its cubic Bézier control points [Pi, Pi + Di/3, P(i+1) − D(i+1)/3, P(i+1)]. */
-export const patchSegments = (state: HermiteState): Point[][] =>
-  cubicSplineSegments(state.p, gradients(state));
+/** H0 … H3 over μ ∈ [0, 1]: the same for every state, so sampled once. */
+const BASIS = sampleBasis(hermiteBasis, 200);
 
-/** The chosen patch: its end data, coefficients (equation 7), point and basis at μ. */
-export function patchAt(state: HermiteState) {
-  const i = state.patch;
-  const D = gradients(state);
-  const [p0, p1, d0, d1] = [state.p[i], state.p[i + 1], D[i], D[i + 1]];
-  return {
-    index: i,
-    p0,
-    p1,
-    d0,
-    d1,
-    coefficients: hermiteCoefficients(p0, d0, p1, d1),
-    point: hermitePoint(p0, d0, p1, d1, state.mu),
-    weights: hermiteBasis(state.mu),
-    bezier: hermiteToBezier(p0, d0, p1, d1),
-  };
+/** The chosen patch i: its end data, coefficients (equation 7), point and basis at μ. */
+export interface Patch {
+  index: number;
+  p0: Point;
+  p1: Point;
+  d0: Point;
+  d1: Point;
+  /** a0 … a3 of P(μ) = a3μ³ + a2μ² + a1μ + a0. */
+  coefficients: Point[];
+  /** P(μ) on this patch. */
+  point: Point;
+  /** H0 … H3 at μ. */
+  weights: readonly number[];
+  /** The same cubic as a Bézier curve: B0 = Pi, B1 = Pi + Di/3, B2 = Pi+1 − Di+1/3, B3 = Pi+1. */
+  bezier: readonly Point[];
 }
 
 export interface Join {
@@ -44,17 +48,100 @@ export interface Join {
   after: Point;
 }
 
-/** Continuity at every inner point, measured on the patches (not assumed). */
-export function joins(state: HermiteState): Join[] {
-  const segments = patchSegments(state);
-  return segments.slice(1).map((right, j) => {
-    const left = segments[j];
-    const hodographLeft = bezierDerivative(left);
-    return {
-      k: j + 1,
-      continuity: bezierJointContinuity(left, right),
-      before: hodographLeft[hodographLeft.length - 1],
-      after: bezierDerivative(right)[0],
-    };
-  });
+/** Everything the figures and the panel show, computed once per state. */
+export interface HermiteModel {
+  state: HermiteState;
+  /** Number of patches, m. */
+  m: number;
+  /** The gradients in force: the hand-set ones, or Catmull-Rom's from the neighbours. */
+  gradients: Point[];
+  /** Where each gradient's arrow ends: Pk + Dk/3 (a handle). */
+  tips: Point[];
+  /** Every patch as its cubic Bézier control points [Pi, Pi + Di/3, Pi+1 − Di+1/3, Pi+1]. */
+  segments: Point[][];
+  patch: Patch;
+  /** Continuity at every inner point, measured on the patches (not assumed). */
+  joins: Join[];
+  /** How many joins are C¹ but not C². */
+  onlyC1: number;
+  /** Every point and every tip: what the label of P(μ) keeps clear of. */
+  marks: Point[];
+  /** Points, tips and Bézier control points: what "fit" shows. */
+  bounds: Bounds;
+  /** Catmull-Rom with two points: both gradients are zero, the patch is a straight segment. */
+  straight: boolean;
+  /** Why the figure shows less than one might expect, or null. */
+  note: string | null;
+  /** H0 … H3 over [0, 1], the same for every state. */
+  basis: BasisSamples;
+}
+
+export function derive(state: HermiteState): HermiteModel {
+  const gradients = state.mode === 'hand' ? state.d : catmullRomTangents(state.p);
+  const tips = state.p.map((p, k) => add(p, scale(gradients[k], ARROW_SCALE)));
+  const segments = cubicSplineSegments(state.p, gradients);
+  const joins = measureJoins(segments);
+  const straight = state.mode === 'catmull-rom' && state.p.length === 2;
+  return {
+    state,
+    m: patchCount(state),
+    gradients,
+    tips,
+    segments,
+    patch: patchAt(state, gradients, segments),
+    joins,
+    onlyC1: joins.filter((join) => join.continuity === 'C1').length,
+    marks: state.p.flatMap((p, k) => [p, tips[k]]),
+    bounds: boundsOf([...state.p, ...tips, ...segments.flat()]),
+    straight,
+    note: noteFor(state, gradients, straight),
+    basis: BASIS,
+  };
+}
+
+function patchAt(
+  state: HermiteState,
+  gradients: readonly Point[],
+  segments: readonly Point[][],
+): Patch {
+  const i = state.patch;
+  const [p0, p1, d0, d1] = [state.p[i], state.p[i + 1], gradients[i], gradients[i + 1]];
+  return {
+    index: i,
+    p0,
+    p1,
+    d0,
+    d1,
+    coefficients: hermiteCoefficients(p0, d0, p1, d1),
+    point: hermitePoint(p0, d0, p1, d1, state.mu),
+    weights: hermiteBasis(state.mu),
+    bezier: segments[i],
+  };
+}
+
+function measureJoins(segments: readonly Point[][]): Join[] {
+  const hodographs = segments.map((segment) => bezierDerivative(segment));
+  return segments.slice(1).map((right, j) => ({
+    k: j + 1,
+    continuity: bezierJointContinuity(segments[j], right),
+    before: hodographs[j][hodographs[j].length - 1],
+    after: hodographs[j + 1][0],
+  }));
+}
+
+function noteFor(
+  state: HermiteState,
+  gradients: readonly Point[],
+  straight: boolean,
+): string | null {
+  const i = state.patch;
+  const [a, b] = [state.p[i], state.p[i + 1]];
+  const still = (d: Point) => d[0] === 0 && d[1] === 0;
+  if (a[0] === b[0] && a[1] === b[1] && still(gradients[i]) && still(gradients[i + 1])) {
+    return `P${i} and P${i + 1} are at one spot and both gradients are zero: four conditions that all say "stay here", so the patch is a single point. Drag a point or a gradient tip away.`;
+  }
+  if (straight) {
+    return 'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment. Add a point.';
+  }
+  return null;
 }

@@ -1,4 +1,5 @@
-import type { Point2 } from '../../app/lesson';
+import { bool, choice, int, number, points } from '../../app/fields';
+import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents } from '../../math';
 
@@ -7,9 +8,9 @@ export type GradientMode = 'hand' | 'catmull-rom';
 /** Everything the Hermite lesson shows, and all of it goes in the link. */
 export interface HermiteState {
   /** The points P0 … Pm joined by cubic patches. */
-  p: Point2[];
+  p: Point[];
   /** The gradients D0 … Dm set by hand (one per point). */
-  d: Point2[];
+  d: Point[];
   /** Gradients by hand, or from the neighbours (Catmull-Rom). */
   mode: GradientMode;
   /** The local parameter on the chosen patch. */
@@ -22,37 +23,27 @@ export interface HermiteState {
 
 export const MAX_POINTS = 10;
 
+/** The lecture's one patch: P0 = (0, 0) to P1 = (4, 0), leaving up and arriving down. */
+export const ONE_PATCH: Point[] = [
+  [0, 0],
+  [4, 0],
+];
+export const ONE_PATCH_GRADIENTS: Point[] = [
+  [3, 4.5],
+  [3, -4.5],
+];
+
 export const schema: Schema<HermiteState> = {
-  p: {
-    kind: 'points',
-    default: [
-      [0, 0],
-      [4, 0],
-    ],
-    min: 2,
-    max: MAX_POINTS,
-  },
-  d: {
-    kind: 'points',
-    default: [
-      [3, 4.5],
-      [3, -4.5],
-    ],
-    min: 2,
-    max: MAX_POINTS,
-  },
-  mode: { kind: 'enum', default: 'hand', values: ['hand', 'catmull-rom'] },
-  mu: { kind: 'number', default: 0.3, min: 0, max: 1 },
-  patch: { kind: 'int', default: 0, min: 0, max: MAX_POINTS - 2 },
-  bezier: { kind: 'bool', default: false },
+  p: points({ default: ONE_PATCH, min: 2, max: MAX_POINTS }),
+  d: points({ default: ONE_PATCH_GRADIENTS, min: 2, max: MAX_POINTS }),
+  mode: choice<GradientMode>({ default: 'hand', values: ['hand', 'catmull-rom'] }),
+  mu: number({ default: 0.3, min: 0, max: 1 }),
+  patch: int({ default: 0, min: 0, max: MAX_POINTS - 2 }),
+  bezier: bool({ default: false }),
 };
 
 /** Number of patches, m. */
 export const patchCount = (state: HermiteState) => state.p.length - 1;
-
-/** The gradients in force: the hand-set ones, or Catmull-Rom's from the neighbours. */
-export const gradients = (state: HermiteState): Point2[] =>
-  state.mode === 'hand' ? state.d : catmullRomTangents(state.p).map((v) => [v[0], v[1]] as const);
 
 /** One gradient per point: a link with too few gets Catmull-Rom's, too many are dropped. */
 export function normalize(state: HermiteState): { state: HermiteState; issues: string[] } {
@@ -60,7 +51,7 @@ export function normalize(state: HermiteState): { state: HermiteState; issues: s
   let d = state.d;
   if (d.length !== state.p.length) {
     const fill = catmullRomTangents(state.p);
-    d = state.p.map((_, i) => d[i] ?? ([fill[i][0], fill[i][1]] as const));
+    d = state.p.map((_, i) => d[i] ?? fill[i]);
     issues.push(
       `d: ${state.d.length} gradients for ${state.p.length} points; ${d.length > state.d.length ? 'the missing ones come from the neighbours' : 'the extra ones are dropped'}`,
     );

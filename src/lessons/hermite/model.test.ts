@@ -1,0 +1,113 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { derive } from './model';
+import { type HermiteState, schema } from './state';
+
+// Values worked out by hand from lecture equation 7:
+// a0 = Pi, a1 = Di, a2 = 3(Pi+1 − Pi) − 2Di − Di+1, a3 = 2(Pi − Pi+1) + Di + Di+1.
+
+const lecture: HermiteState = defaultsOf(schema); // P0 = (0, 0), P1 = (4, 0), D0 = (3, 4.5), D1 = (3, −4.5)
+const several: HermiteState = {
+  ...lecture,
+  p: [
+    [0, 0],
+    [2, 2],
+    [5, 1.5],
+    [6.5, -1],
+    [9, 0.5],
+  ],
+  d: [
+    [2, 3],
+    [3, 0],
+    [2, -2],
+    [3, 0],
+    [2, 2],
+  ],
+  mode: 'catmull-rom',
+  patch: 1,
+};
+
+const close = (actual: readonly (readonly number[])[], expected: readonly (readonly number[])[]) =>
+  expected.forEach((row, i) => row.forEach((v, d) => expect(actual[i][d]).toBeCloseTo(v, 12)));
+
+describe('derive (Hermite)', () => {
+  it('solves equation 7 for the lecture patch', () => {
+    const m = derive(lecture);
+    close(m.patch.coefficients, [
+      [0, 0],
+      [3, 4.5],
+      [3, -4.5],
+      [-2, 0],
+    ]);
+    expect(m.m).toBe(1);
+    expect(m.joins).toEqual([]);
+  });
+
+  it('puts the arrow tips at P + D/3, the inner Bézier control points', () => {
+    const m = derive(lecture);
+    close(m.tips, [
+      [1, 1.5],
+      [5, -1.5],
+    ]);
+    close(m.patch.bezier, [
+      [0, 0],
+      [1, 1.5],
+      [3, 1.5],
+      [4, 0],
+    ]);
+    expect(m.patch.bezier).toBe(m.segments[0]);
+  });
+
+  it('blends P(½) = ½P0 + ½P1 + ⅛D0 − ⅛D1 = (2, 1.125)', () => {
+    const m = derive({ ...lecture, mu: 0.5 });
+    close([m.patch.weights], [[0.5, 0.5, 0.125, -0.125]]);
+    close([m.patch.point], [[2, 1.125]]);
+  });
+
+  it('takes Catmull-Rom gradients from the neighbours, zero at the ends, C¹ at every join', () => {
+    const m = derive(several);
+    // Dk = (Pk+1 − Pk−1) / 2, e.g. D2 = ((6.5 − 2) / 2, (−1 − 2) / 2), D3 = ((9 − 5) / 2, (0.5 − 1.5) / 2).
+    close(m.gradients, [
+      [0, 0],
+      [2.5, 0.75],
+      [2.25, -1.5],
+      [2, -0.5],
+      [0, 0],
+    ]);
+    expect(m.patch.p0).toEqual([2, 2]);
+    expect(m.joins.map((j) => j.k)).toEqual([1, 2, 3]);
+    for (const join of m.joins) {
+      expect(['C1', 'C2']).toContain(join.continuity);
+      // A cubic Bézier leaves with 3(B1 − B0) = Di: P′ on both sides is the shared gradient.
+      close([join.before, join.after], [m.gradients[join.k], m.gradients[join.k]]);
+    }
+  });
+
+  it('says why two points in Catmull-Rom mode make a straight segment', () => {
+    const m = derive({ ...lecture, mode: 'catmull-rom' });
+    expect(m.straight).toBe(true);
+    expect(m.note).toMatch(/^Two points have no neighbours/);
+    // a2 = 3(P1 − P0) with both gradients zero.
+    close([m.patch.coefficients[2]], [[12, 0]]);
+  });
+
+  it('says why a patch whose points and gradients are all at one spot is a point', () => {
+    const m = derive({
+      ...lecture,
+      p: [
+        [1, 1],
+        [1, 1],
+      ],
+      d: [
+        [0, 0],
+        [0, 0],
+      ],
+    });
+    expect(m.note).toMatch(/^P0 and P1 are at one spot/);
+    expect(derive(lecture).note).toBeNull();
+  });
+
+  it('fits points, tips and control points', () => {
+    expect(derive(lecture).bounds).toEqual({ minX: 0, minY: -1.5, maxX: 5, maxY: 1.5 });
+  });
+});
