@@ -1,81 +1,34 @@
-import type { FigureSpec } from '../../app/lesson';
-import {
-  type Point,
-  add,
-  bernsteinBasis,
-  bezierPoint,
-  bezierToHermite,
-  lagrangePoint,
-  sampleBezier,
-  uniformBSplinePoint,
-} from '../../math';
-import type { Painter } from '../../render/painter';
-import { boundsOf, unionBounds } from '../../render/viewport';
+import type { FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
-import { equallySpacedNodes } from './bases';
-import { type BlendingState, MAX_POINTS, degree } from './state';
+import type { Painter } from '../../render/painter';
+import { highlightedIndex } from './hover';
+import type { BlendingModel, Compared } from './model';
+import { type BlendingState, MAX_POINTS } from './state';
 
 /** Weight labels beside the points stay readable up to this degree. */
 const LABEL_WEIGHTS_UP_TO = 8;
 
-/** The curve a comparison basis gives with the same control points, if it has one. */
-function comparisonCurve(state: BlendingState, samples: number): number[][] | null {
-  const n = degree(state);
-  const ts = Array.from({ length: samples + 1 }, (_, k) => k / samples);
-  if (state.b === 'lagrange') {
-    const nodes = equallySpacedNodes(n);
-    return ts.map((t) => [...lagrangePoint(nodes, state.p, t)]);
-  }
-  if (state.b === 'bspline' && n >= 3) {
-    return ts.map((t) => [...uniformBSplinePoint(state.p, t * (n - 2))]);
-  }
-  return null;
-}
-
-/** The point the comparison weights at μ give, where they weight these control points. */
-function comparisonPoint(state: BlendingState): { point: Point; label: string } | null {
-  const n = degree(state);
-  if (state.b === 'lagrange') {
-    return { point: lagrangePoint(equallySpacedNodes(n), state.p, state.mu), label: 'L(μ)' };
-  }
-  if (state.b === 'bspline' && n === 3) {
-    return { point: uniformBSplinePoint(state.p, state.mu), label: 'B(μ)' };
-  }
-  return null;
-}
-
-export const curveFigure: FigureSpec<BlendingState> = {
+export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
   id: 'curve',
   title: 'Bézier curve with every control point weighted at μ',
   kind: 'geometry',
-  bounds(state) {
-    let bounds = boundsOf(state.p);
-    const other = comparisonCurve(state, 48);
-    if (other) bounds = unionBounds(bounds, boundsOf(other));
-    if (state.b === 'hermite' && degree(state) === 3) {
-      bounds = unionBounds(bounds, boundsOf(hermiteArrows(state).map(([, tip]) => tip)));
-    }
-    return bounds;
-  },
-  draw(painter, state, info) {
+  bounds: (m) => m.curveBounds,
+  draw(painter, m, info) {
     const theme = painter.theme;
-    const n = degree(state);
-    const weights = bernsteinBasis(n, state.mu);
-    const point = bezierPoint(state.p, state.mu);
+    const { state, n, weights, point, compared } = m;
     const highlighted = highlightedIndex(info.hover);
 
-    const other = comparisonCurve(state, Math.max(96, 24 * n));
-    if (other) {
-      painter.polyline(other, {
+    if (compared?.curve) {
+      painter.polyline(compared.curve, {
         color: theme.muted,
         width: theme.sizes.curve * 0.8,
         dash: [10, 6],
       });
     }
-    if (state.b === 'hermite' && n === 3) drawHermiteData(painter, state);
+    if (compared) drawHermiteData(painter, compared);
 
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    painter.polylineFlat(sampleBezier(state.p, Math.max(64, 24 * n)), { color: theme.curve });
+    painter.polylineFlat(m.curve, { color: theme.curve });
 
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
@@ -108,14 +61,14 @@ export const curveFigure: FigureSpec<BlendingState> = {
       }
     });
 
-    const otherPoint = comparisonPoint(state);
-    if (otherPoint) {
-      painter.ring(otherPoint.point, theme.sizes.point * 1.4, {
+    const other = compared?.point;
+    if (other) {
+      painter.ring(other.at, theme.sizes.point * 1.4, {
         color: theme.muted,
         width: theme.sizes.line * 1.5,
       });
       if (!info.thumbnail) {
-        painter.label(otherPoint.label, otherPoint.point, {
+        painter.label(other.label, other.at, {
           dx: theme.sizes.point + 6,
           dy: -theme.sizes.label * 0.9,
           color: theme.muted,
@@ -127,16 +80,17 @@ export const curveFigure: FigureSpec<BlendingState> = {
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
       // Away from the control points and the weights written under them.
-      const below = (theme.sizes.handle + theme.sizes.small * 1.1) / painter.view.scaleY;
+      const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
       const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
       painter.labelClear('P(μ)', point, crowd, { color: theme.ink, halo: true, bold: true });
     }
   },
-  handles: (state) =>
-    state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
+  handles: (m) =>
+    m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? to : point)) };
+    const at: Point = [to[0], to[1]];
+    return { ...state, p: state.p.map((point, k) => (k === i ? at : point)) };
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
@@ -149,25 +103,10 @@ export const curveFigure: FigureSpec<BlendingState> = {
   },
 };
 
-/** The control point a hover refers to: its handle `p3` or its basis curve `w3`. */
-export function highlightedIndex(hover: string | null): number | null {
-  const match = hover ? /^[pw](\d+)$/.exec(hover) : null;
-  return match ? Number(match[1]) : null;
-}
-
-/** The Hermite data of the same cubic: arrows x0 → x0 + x0′ and x1 → x1 + x1′. */
-function hermiteArrows(state: BlendingState): [Point, Point][] {
-  const [x0, d0, x1, d1] = bezierToHermite(state.p);
-  return [
-    [x0, add(x0, d0)],
-    [x1, add(x1, d1)],
-  ];
-}
-
-/** The end tangents x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) at true length: the H2, H3 data. */
-function drawHermiteData(painter: Painter, state: BlendingState): void {
+/** The Hermite data of the same cubic, x0′ and x1′ at true length, labelled. */
+function drawHermiteData(painter: Painter, compared: Compared): void {
   const theme = painter.theme;
-  hermiteArrows(state).forEach(([from, tip], k) => {
+  compared.arrows.forEach(([from, tip], k) => {
     painter.arrow(from, tip, { color: theme.accent, width: theme.sizes.line });
     painter.label(k === 0 ? "x_0'" : "x_1'", tip, {
       dx: 6,

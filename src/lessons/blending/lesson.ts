@@ -1,35 +1,25 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson, type Point } from '../../app/lesson';
 import { curveFigure } from './curveFigure';
+import { type BlendingModel, derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
 import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
 
-const preset = (
-  id: string,
-  label: string,
-  p: [number, number][],
-  mu: number,
-  b: Comparison = 'none',
-) => ({
+const preset = (id: string, label: string, p: Point[], mu: number, b: Comparison = 'none') => ({
   id,
   label,
   apply: (s: BlendingState): BlendingState => ({ ...s, p, mu, b }),
 });
 
-const cubic = () => LECTURE_CUBIC.map((q): [number, number] => [q[0], q[1]]);
-
-export const blending = defineLesson<BlendingState>({
+export default defineLesson<BlendingState, BlendingModel>({
   slug: 'blending',
-  title: 'A curve as a blend of its control points',
-  summary:
-    'Bernstein blending functions: the weights of every control point at μ, and why they sum to 1.',
-  group: 'bezier',
   schema,
+  derive,
   figures: [curveFigure, plotFigure],
   layout: 'row',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
   presets: [
-    preset('cubic', 'Lecture cubic, μ = 0.5', cubic(), 0.5),
+    preset('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
     preset(
       'linear',
       'N = 1: a straight line',
@@ -66,11 +56,11 @@ export const blending = defineLesson<BlendingState>({
     preset(
       'degree10',
       'N = 10',
-      Array.from({ length: 11 }, (_, i): [number, number] => [i / 2, i % 2 === 0 ? 0 : 3]),
+      Array.from({ length: 11 }, (_, i) => [i / 2, i % 2 === 0 ? 0 : 3]),
       0.5,
     ),
-    preset('hermite', 'Compare: Hermite', cubic(), 0.3, 'hermite'),
-    preset('bspline', 'Compare: B-spline', cubic(), 0.3, 'bspline'),
+    preset('hermite', 'Compare: Hermite', LECTURE_CUBIC, 0.3, 'hermite'),
+    preset('bspline', 'Compare: B-spline', LECTURE_CUBIC, 0.3, 'bspline'),
     preset(
       'lagrange',
       'Compare: Lagrange',

@@ -1,4 +1,5 @@
-import type { Point2 } from '../../app/lesson';
+import { choice, number, points } from '../../app/fields';
+import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
 /** A basis drawn on the same axes as the Bernstein functions, for comparison. */
@@ -7,7 +8,7 @@ export type Comparison = 'none' | 'hermite' | 'bspline' | 'lagrange';
 /** Everything the blending lesson shows, and all of it goes in the link. */
 export interface BlendingState {
   /** Control points P0 … PN. */
-  p: Point2[];
+  p: Point[];
   /** The parameter μ of the point P(μ) and of the plot's cursor. */
   mu: number;
   /** Another basis to compare with (`b=lagrange`). */
@@ -18,7 +19,7 @@ export interface BlendingState {
 export const MAX_POINTS = 13;
 
 /** The lecture's cubic. */
-export const LECTURE_CUBIC: Point2[] = [
+export const LECTURE_CUBIC: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2],
@@ -26,9 +27,9 @@ export const LECTURE_CUBIC: Point2[] = [
 ];
 
 export const schema: Schema<BlendingState> = {
-  p: { kind: 'points', default: LECTURE_CUBIC, min: 2, max: MAX_POINTS },
-  mu: { kind: 'number', default: 0.5, min: 0, max: 1 },
-  b: { kind: 'enum', default: 'none', values: ['none', 'hermite', 'bspline', 'lagrange'] },
+  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
+  mu: number({ default: 0.5, min: 0, max: 1 }),
+  b: choice<Comparison>({ default: 'none', values: ['none', 'hermite', 'bspline', 'lagrange'] }),
 };
 
 /** The degree N of the curve. */

@@ -1,0 +1,139 @@
+import { dataTable, fmt, h } from '../../app/dom';
+import type { LessonApi } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
+import { radioGroup } from '../../app/panelControls';
+import { formula } from '../../render/formula';
+import { comparedIndex } from './hover';
+import type { BlendingModel, Compared } from './model';
+import { type BlendingState, type Comparison, texMu } from './state';
+
+const CHOICES: { value: Comparison; label: string }[] = [
+  { value: 'none', label: 'Bernstein only' },
+  { value: 'hermite', label: 'Hermite H0…H3' },
+  { value: 'bspline', label: 'Uniform cubic B-spline' },
+  { value: 'lagrange', label: 'Lagrange, equally spaced nodes' },
+];
+
+const EXPLAIN: Record<Comparison, string> = {
+  none: 'Pick a basis to draw it dashed on the same axes as the Bernstein functions.',
+  hermite:
+    'The Hermite bases weight the two end points x0, x1 and the two end tangents x0′, x1′ of one cubic patch. H0 + H1 = 1, but H2 and H3 take negative values: they weight vectors, not points, so there is no convex hull to stay in. For the cubic, x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
+  bspline:
+    'The four blending functions of one uniform cubic B-spline segment, which weight four consecutive points. Like Bernstein’s they are never negative and sum to 1, so the curve stays in the convex hull; but none of them reaches 1, so the curve passes through no control point. Dashed in the figure: the uniform B-spline of these control points.',
+  lagrange:
+    'The Lagrange bases for the nodes μ = 0, 1/N, …, 1 also sum to 1, and each is 1 at its own node, so the dashed curve passes through every control point. But they are not non-negative: a negative weight pushes the point away from its control point, and the curve can leave the convex hull.',
+};
+
+const plain = (label: string) => label.replace(/_\{?([^}]*)\}?/, '$1');
+
+/** The switch to compare other bases, with their values at μ and whether they go negative. */
+export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
+  const basisChoice = radioGroup(api, {
+    name: 'compare',
+    choices: CHOICES,
+    get: (s) => s.b,
+    set: (s, b) => ({ ...s, b }),
+  });
+  const explain = h('p', {});
+  const body = h('tbody', {});
+  const rows = new LiveRows(body);
+  const table = dataTable('Comparison weights at μ', ['Function', 'Weights', 'Value at μ'], body);
+  const verdict = h('p', { class: 'note' });
+  // The names in the first two columns are formulas: made again only when the family changes.
+  let shownFamily: Compared | null = null;
+  let lit: number | null = null;
+
+  body.addEventListener('mouseover', (e) => {
+    const row = (e.target as Element).closest('tr');
+    if (row) api.setHover(`c${row.sectionRowIndex}`);
+  });
+  body.addEventListener('mouseleave', () => api.setHover(null));
+
+  function showLit() {
+    [...body.rows].forEach((row, i) => row.classList.toggle('current', i === lit));
+  }
+
+  return {
+    element: h(
+      'div',
+      {},
+      h('h2', {}, 'Compare with other bases'),
+      h(
+        'fieldset',
+        { style: 'border:0;padding:0;margin:0' },
+        h('legend', { class: 'visually-hidden' }, 'Basis drawn for comparison'),
+        basisChoice.labels,
+      ),
+      explain,
+      table,
+      verdict,
+    ),
+    update(m: BlendingModel) {
+      const { state, n, compared } = m;
+      basisChoice.update(state);
+      explain.textContent = EXPLAIN[state.b];
+      table.hidden = compared === null;
+      if (!compared) {
+        rows.set([]);
+        shownFamily = null;
+        verdict.textContent = '';
+        return;
+      }
+      const palette = api.theme().palette;
+      rows.set(
+        compared.atMu.map((v, i) => ({
+          cells: [
+            { text: '', swatch: palette[compared.colors[i] % palette.length] },
+            '',
+            fmt(v, 6),
+          ],
+        })),
+      );
+      if (labelsChanged(shownFamily, compared)) {
+        [...body.rows].forEach((row, i) => {
+          row.cells[0].querySelector('.formula')?.remove();
+          row.cells[1].querySelector('.formula')?.remove();
+          row.cells[0].append(formula(compared.labels[i]));
+          row.cells[1].append(formula(compared.weights[i]));
+        });
+      }
+      shownFamily = compared;
+      showLit();
+
+      const lowest = compared.samples.lowest;
+      const sentences = [
+        `At μ = ${texMu(state.mu)} these values sum to ${fmt(compared.sum, 6)}.`,
+        lowest.value < -1e-12
+          ? `Not non-negative: the lowest value on [0, 1] is ${fmt(lowest.value, 4)}, reached by ${plain(compared.labels[lowest.index])} at μ = ${fmt(lowest.mu, 3)}.`
+          : 'No value on [0, 1] is negative.',
+      ];
+      if (compared.outside !== null)
+        sentences.push(
+          compared.outside > 0
+            ? `The dashed Lagrange curve leaves the convex hull of the control points (${Math.round(100 * compared.outside)}% of its samples lie outside); the Bézier curve never does.`
+            : 'Here the dashed Lagrange curve happens to stay in the convex hull; drag a point (or try the Lagrange preset) to push it out.',
+        );
+      if (state.b === 'hermite' && n !== 3)
+        sentences.push('Set N = 3 to see the Hermite form of this very curve in the figure.');
+      if (state.b === 'bspline' && n < 3)
+        sentences.push(
+          'A cubic B-spline needs at least four control points: add one to see its curve.',
+        );
+      verdict.textContent = sentences.join(' ');
+    },
+    hover(id: string | null) {
+      lit = comparedIndex(id);
+      showLit();
+    },
+  };
+}
+
+/** Whether the rows must show other names: another family, or one of another size. */
+function labelsChanged(before: Compared | null, after: Compared): boolean {
+  return (
+    !before ||
+    before.labels.length !== after.labels.length ||
+    before.labels.some((label, i) => label !== after.labels[i]) ||
+    before.weights.some((weight, i) => weight !== after.weights[i])
+  );
+}

@@ -1,0 +1,114 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { comparedIndex, curveNear, highlightedIndex } from './hover';
+import { derive } from './model';
+import { type BlendingState, schema } from './state';
+
+// Values worked out by hand for the lecture's cubic P0 = (0, 0), P1 = (1, 2),
+// P2 = (3, 2), P3 = (4, 0), with W(3, i, μ) = C(3, i) μⁱ (1 − μ)³⁻ⁱ.
+
+const cubic: BlendingState = defaultsOf(schema); // μ = 0.5, no comparison
+const close = (actual: readonly number[], expected: readonly number[], digits = 12) =>
+  expected.forEach((v, i) => expect(actual[i]).toBeCloseTo(v, digits));
+
+describe('derive (blending)', () => {
+  it('weights the cubic 1/8, 3/8, 3/8, 1/8 at μ = ½, and P(½) = (2, 1.5)', () => {
+    const m = derive(cubic);
+    expect(m.n).toBe(3);
+    expect(m.weights).toEqual([0.125, 0.375, 0.375, 0.125]);
+    expect(m.sum).toBe(1);
+    // ((0 + 3·1 + 3·3 + 4) / 8, (0 + 3·2 + 3·2 + 0) / 8)
+    close(m.point, [2, 1.5]);
+    close(m.centre, [2, 1.5]);
+  });
+
+  it('has the matrix of (1−u)³, 3u(1−u)², 3u²(1−u), u³ by powers of u', () => {
+    expect(derive(cubic).matrix).toEqual([
+      [1, 0, 0, 0],
+      [-3, 3, 0, 0],
+      [3, -6, 3, 0],
+      [-1, 3, -3, 1],
+    ]);
+  });
+
+  it('compares with Hermite: H3 dips to −4/27 at μ = 2/3; the end tangents are 3(P1 − P0), 3(P3 − P2)', () => {
+    const m = derive({ ...cubic, b: 'hermite' });
+    const c = m.compared!;
+    expect(c.labels).toEqual(['H_0', 'H_1', 'H_2', 'H_3']);
+    // H0 weighs x0 = P0, H1 weighs x1 = P3: they share those points' colours.
+    expect(c.colors).toEqual([0, 3, 1, 2]);
+    expect(c.samples.lowest.index).toBe(3);
+    expect(c.samples.lowest.value).toBeCloseTo(-4 / 27, 5);
+    expect(c.samples.lowest.mu).toBeCloseTo(2 / 3, 2);
+    close(c.atMu, [0.5, 0.5, 0.125, -0.125]);
+    expect(c.arrows).toEqual([
+      [
+        [0, 0],
+        [3, 6],
+      ],
+      [
+        [4, 0],
+        [7, -6],
+      ],
+    ]);
+    // The plot reaches below 0 to show the dip, and the fit shows the arrow tips.
+    expect(m.plotBounds.minY).toBeLessThan(-4 / 27);
+    expect(m.curveBounds).toEqual({ minX: 0, minY: -6, maxX: 7, maxY: 6 });
+  });
+
+  it('compares with the uniform B-spline: B(0) = (P0 + 4P1 + P2) / 6, nothing negative', () => {
+    const c = derive({ ...cubic, mu: 0, b: 'bspline' }).compared!;
+    close(c.point!.at, [7 / 6, 10 / 6]);
+    expect(c.point!.label).toBe('B(μ)');
+    expect(c.samples.lowest.value).toBeGreaterThanOrEqual(0);
+    close(c.atMu, [1 / 6, 4 / 6, 1 / 6, 0]);
+  });
+
+  it('compares with Lagrange: through P1 at its node μ = 1/6, outside the hull, weights below 0', () => {
+    const steps: BlendingState = {
+      p: [
+        [0, 0],
+        [1, 0],
+        [2, 0],
+        [3, 1.5],
+        [4, 3],
+        [5, 3],
+        [6, 3],
+      ],
+      mu: 1 / 6,
+      b: 'lagrange',
+    };
+    const c = derive(steps).compared!;
+    close(c.point!.at, [1, 0]);
+    close(c.atMu, [0, 1, 0, 0, 0, 0, 0]);
+    expect(c.sum).toBeCloseTo(1, 12);
+    expect(c.samples.lowest.value).toBeLessThan(0);
+    expect(c.outside).toBeGreaterThan(0);
+    // The curve passes through every control point, at μ = i/6.
+    expect(c.curve).toHaveLength(401);
+  });
+
+  it('has nothing to compare with by default', () => {
+    const m = derive(cubic);
+    expect(m.compared).toBeNull();
+    expect(m.plotBounds).toEqual({ minX: 0, maxX: 1, minY: -0.04, maxY: 1.16 });
+    expect(m.handleY).toBeCloseTo(1.1, 12);
+  });
+});
+
+describe('hover ids', () => {
+  it('a handle p3 and a basis curve w3 both mean control point 3; c1 is a compared function', () => {
+    expect(highlightedIndex('p3')).toBe(3);
+    expect(highlightedIndex('w2')).toBe(2);
+    expect(highlightedIndex('c1')).toBeNull();
+    expect(comparedIndex('c1')).toBe(1);
+    expect(comparedIndex(null)).toBeNull();
+  });
+
+  it('finds the curve under the pointer: W(3, 0, 0) = 1, W(3, 3, 1) = 1', () => {
+    const m = derive(cubic);
+    expect(curveNear(m, [0, 1], 0.05)).toBe('w0');
+    expect(curveNear(m, [1, 0.98], 0.05)).toBe('w3');
+    expect(curveNear(m, [0.5, 0.9], 0.05)).toBeNull();
+  });
+});

@@ -1,0 +1,100 @@
+import { dataTable, fmt, h, setChildren } from '../../app/dom';
+import type { LessonApi } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
+import { LiveFormula } from '../../render/formula';
+import { FittedFormula } from './fittedFormula';
+import { highlightedIndex } from './hover';
+import type { BlendingModel } from './model';
+import { type BlendingState, texMu } from './state';
+import { pointShape, pointValues, weightShape, weightValues } from './tex';
+
+/**
+ * The weights at μ: one row per control point (its W(N, i, μ) worked out),
+ * the bar they fill together, their sum, and the point they make.
+ */
+export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
+  const title = h('h2', {});
+  const body = h('tbody', {});
+  const rows = new LiveRows(body);
+  // One live formula per row, typeset again only when N changes its shape.
+  const formulas: LiveFormula[] = [];
+  const bar = h('div', {
+    class: 'partition-bar',
+    role: 'img',
+    style:
+      'display:flex;height:1.6em;border:1px solid var(--line);border-radius:4px;overflow:hidden;margin:0.5em 0',
+  });
+  let pieces: HTMLElement[] = [];
+  const sum = h('p', {});
+  const point = new FittedFormula();
+  let lit: number | null = null;
+
+  // Hovering a row highlights its control point in both figures.
+  body.addEventListener('mouseover', (e) => {
+    const row = (e.target as Element).closest('tr');
+    if (row) api.setHover(`w${row.sectionRowIndex}`);
+  });
+  body.addEventListener('mouseleave', () => api.setHover(null));
+
+  function showLit() {
+    [...body.rows].forEach((row, i) => row.classList.toggle('current', i === lit));
+    pieces.forEach((piece, i) => {
+      piece.style.outline = i === lit ? '3px solid var(--ink)' : '';
+      piece.style.outlineOffset = i === lit ? '-3px' : '';
+    });
+  }
+
+  return {
+    elements: [
+      title,
+      dataTable('Weights at μ', ['Point', 'W(N, i, μ)', 'Weight'], body),
+      bar,
+      sum,
+      point.element,
+    ],
+    update(m: BlendingModel) {
+      const { n, weights } = m;
+      const { mu, p } = m.state;
+      const palette = api.theme().palette;
+      const color = (i: number) => palette[i % palette.length];
+      title.textContent = `Weights at μ = ${texMu(mu)} (N = ${n})`;
+      rows.set(
+        weights.map((w, i) => ({
+          cells: [{ text: `P${i}`, swatch: color(i) }, '', fmt(w, 6)],
+          data: { value: String(w) },
+        })),
+      );
+      weights.forEach((_, i) => {
+        formulas[i] ??= new LiveFormula();
+        formulas[i].set(weightShape(n, i), weightValues(n, i, mu));
+        const [, middle, weight] = body.rows[i].cells;
+        if (formulas[i].element.parentNode !== middle) {
+          // A new row: LiveRows writes its texts, the formula and the class go in here.
+          middle.append(formulas[i].element);
+          weight.className = 'weight';
+        }
+      });
+
+      if (pieces.length !== weights.length) {
+        pieces = weights.map(() => h('span', {}));
+        setChildren(bar, pieces);
+      }
+      weights.forEach((w, i) => {
+        pieces[i].title = `W(${n}, ${i}, μ) = ${fmt(w, 4)}`;
+        pieces[i].style.width = `${(100 * w).toFixed(3)}%`;
+        pieces[i].style.background = color(i);
+      });
+      bar.setAttribute(
+        'aria-label',
+        `The weights stacked: ${weights.map((w, i) => `P${i} ${fmt(100 * w, 1)}%`).join(', ')}`,
+      );
+      showLit();
+      sum.textContent = `Together they fill the bar: ΣW = ${fmt(m.sum, 12)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`;
+      point.set(pointShape(n), pointValues(mu, weights, p, m.point));
+    },
+    hover(id: string | null) {
+      lit = highlightedIndex(id);
+      showLit();
+    },
+  };
+}
