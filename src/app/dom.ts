@@ -65,3 +65,13 @@ export function dataTable(
     body,
   );
 }
+
+/** Sets an element's text only when it changes (a panel updated every frame writes little). */
+export function setText(element: HTMLElement, text: string): void {
+  if (element.textContent !== text) element.textContent = text;
+}
+
+/** Shows or hides an element only when that changes. */
+export function setHidden(element: HTMLElement, hidden: boolean): void {
+  if (element.hidden !== hidden) element.hidden = hidden;
+}

@@ -47,6 +47,8 @@ export class FigureView<S, M> {
   private handles: Handle[] = [];
   private handlesOf: M | null = null;
   private names: string[] = [];
+  /** Names by label and position, to reuse for handles that did not move. */
+  private named = new Map<string, string>();
   private dragging: { drag: HandleDrag; key: string } | null = null;
   private focused: string | null = null;
   private fitted = false;
@@ -217,10 +219,17 @@ export class FigureView<S, M> {
     if (this.handlesOf !== model) {
       this.handles = this.spec.handles?.(model) ?? [];
       this.handlesOf = model;
-      // Spoken names change with the model only, not with a pan or a zoom.
-      this.names = this.handles.map(
-        (handle) => `${plainLabel(handle.label)} at ${fmtPoint(handle.position)}`,
-      );
+      // Spoken names change with the model only, not with a pan or a zoom; and
+      // of 500 villages one is dragged: the others keep the name they had.
+      const before = this.named;
+      this.named = new Map();
+      this.names = this.handles.map((handle) => {
+        const key = `${handle.label}@${handle.position.join(',')}`;
+        const name =
+          before.get(key) ?? `${plainLabel(handle.label)} at ${fmtPoint(handle.position)}`;
+        this.named.set(key, name);
+        return name;
+      });
     }
     return this.handles;
   }

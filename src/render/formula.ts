@@ -43,23 +43,37 @@ export class LiveFormula {
   readonly element: HTMLElement;
   private shape: string | null = null;
   private slots: { html: Element; mathml: Element | null; text: string }[] = [];
+  private annotation: Element | null = null;
 
   constructor(private readonly display = false) {
     this.element = document.createElement(display ? 'div' : 'span');
     this.element.className = display ? 'formula display live' : 'formula live';
   }
 
-  set(shape: string, values: readonly string[]): void {
-    if (shape !== this.shape) this.typeset(shape);
-    values.forEach((value, i) => {
+  /** The shape and its numbers, as two arguments or as `FormulaParts` (see formulaParts.ts). */
+  set(
+    shape: string | { shape: string; values: readonly string[] },
+    values?: readonly string[],
+  ): void {
+    const parts = typeof shape === 'string' ? { shape, values: values ?? [] } : shape;
+    if (parts.shape !== this.shape) this.typeset(parts.shape);
+    let changed = false;
+    parts.values.forEach((value, i) => {
       const slot = this.slots[i];
       if (!slot) return;
       const text = value.replace(/^-/, '−');
       if (text === slot.text) return;
+      changed = true;
       slot.text = text;
       slot.html.textContent = text;
       if (slot.mathml) slot.mathml.textContent = text;
     });
+    // The MathML keeps the TeX as typeset, numbers filled in (copy as TeX, assistive tools).
+    if (changed && this.annotation) {
+      this.annotation.textContent = parts.shape
+        .split(SLOT)
+        .reduce((filled, part, i) => filled + (parts.values[i - 1] ?? '') + part);
+    }
   }
 
   private typeset(shape: string): void {
@@ -74,7 +88,7 @@ export class LiveFormula {
       return acc + slot + part;
     });
     katex.render(tex, this.element, { ...OPTIONS, displayMode: this.display });
-    this.element.querySelector('annotation')?.remove();
+    this.annotation = this.element.querySelector('annotation');
     const mtexts = [...this.element.querySelectorAll('mtext')];
     this.slots = [];
     for (let i = 0; i < k; i++) {

@@ -1,5 +1,5 @@
 import { texNumber } from '../../render/formula';
-import { type FormulaParts, joined, live, livePoint, tex } from './formulaParts';
+import { type FormulaParts, joined, live, livePoint, tex } from '../../render/formulaParts';
 import type { RoadModel } from './model';
 
 /** The method's defining formula, with the current numbers where it has some. */

@@ -3,7 +3,8 @@ import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
 import { countRows } from './countTable';
-import { AnnotatedFormula, setHidden, setText } from './liveDom';
+import { setHidden, setText } from '../../app/dom';
+import { LiveFormula } from '../../render/formula';
 import { methodFormula } from './methodFormula';
 import { NAMES, TEXT } from './methods';
 import type { RoadModel } from './model';
@@ -62,7 +63,7 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
   });
   const title = h('h2', {});
   const text = h('p', {});
-  const formula = new AnnotatedFormula(true);
+  const formula = new LiveFormula(true);
   const countBody = h('tbody', {});
   const count = new LiveRows(countBody);
   const countTable = h(

@@ -1,8 +1,9 @@
 import { h } from '../../app/dom';
 import { texNumber } from '../../render/formula';
 import { hoveredSegment } from './figure';
-import { joined, live, tex } from './formulaParts';
-import { AnnotatedFormula, setHidden, setText } from './liveDom';
+import { joined, live, tex } from '../../render/formulaParts';
+import { setHidden, setText } from '../../app/dom';
+import { LiveFormula } from '../../render/formula';
 import type { RoadModel } from './model';
 
 const LETTERS = ['a', 'b', 'c', 'd'];
@@ -12,7 +13,7 @@ const power = (k: number) => (k === 0 ? '' : k === 1 ? '\\,p' : `\\,p^{${k}}`);
 export function segmentSection() {
   const title = h('h2', {});
   const text = h('p', { class: 'note' });
-  const formula = new AnnotatedFormula(true);
+  const formula = new LiveFormula(true);
   const element = h(
     'section',
     { 'aria-label': 'Segment coefficients' },

@@ -1,6 +1,7 @@
 import { h } from '../../app/dom';
 import { renderFormula } from '../../render/formula';
-import { AnnotatedFormula, setHidden, setText } from './liveDom';
+import { setHidden, setText } from '../../app/dom';
+import { LiveFormula } from '../../render/formula';
 import type { RoadModel } from './model';
 import { stepFormula, stepText } from './solveSteps';
 import { systemTables } from './systemTable';
@@ -9,7 +10,7 @@ import { systemTables } from './systemTable';
 export function solveSection() {
   const title = h('h2', {});
   const text = h('p', {});
-  const formulas = [new AnnotatedFormula(true), new AnnotatedFormula(true)];
+  const formulas = [new LiveFormula(true), new LiveFormula(true)];
   const tables = systemTables();
   const cost = h('p', { class: 'note' });
   const costFormula = h('div', {});

@@ -1,5 +1,5 @@
 import { texNumber } from '../../render/formula';
-import { type FormulaParts, joined, live, tex } from './formulaParts';
+import { type FormulaParts, joined, live, tex } from '../../render/formulaParts';
 import type { RoadSolve } from './solve';
 import type { RoadState } from './state';
 

@@ -1,4 +1,4 @@
-import { SLOT, texNumber } from '../../render/formula';
+import { SLOT, texNumber } from './formula';
 
 /**
  * A formula for a LiveFormula: its TeX shape, with `\val` where each live
