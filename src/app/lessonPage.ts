@@ -285,6 +285,7 @@ export class LessonPage<S, M> implements KeyTarget {
 
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
+    this.url.adopt();
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     const same = this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();

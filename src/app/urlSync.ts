@@ -9,6 +9,13 @@ import { storageKey } from './lessonState';
 export class UrlSync {
   private timer = 0;
   private written = '';
+  /**
+   * The address as this page last knew it (opened from, applied, or written).
+   * If the address bar now shows something else, a navigation is on its way
+   * (a pasted link, back/forward): its hashchange will apply it, and writing
+   * the old state over it would lose it.
+   */
+  private known = location.hash;
 
   constructor(
     private readonly slug: string,
@@ -29,11 +36,18 @@ export class UrlSync {
     this.timer = window.setTimeout(() => this.write(), delay);
   }
 
+  /** The address bar's link has been applied (the page opened it, or a hashchange did). */
+  adopt(): void {
+    this.known = location.hash;
+  }
+
   write(): void {
     window.clearTimeout(this.timer);
     this.timer = 0;
     const hash = this.link();
+    if (location.hash !== this.known && location.hash !== hash) return;
     if (location.hash !== hash) history.replaceState(history.state, '', hash);
+    this.known = hash;
     if (hash !== this.written) {
       this.written = hash;
       this.remember();
