@@ -53,6 +53,8 @@ export class LessonPage<S, M> implements KeyTarget {
   private readonly panelResize: ResizeObserver;
   private panelWidth = -1;
   private panelWidthChanged = false;
+  /** The panel changed: fit its wide content at the start of the next frame. */
+  private fitPending = false;
 
   constructor(
     readonly meta: LessonMeta,
@@ -245,6 +247,12 @@ export class LessonPage<S, M> implements KeyTarget {
    */
   drawNow(): void {
     const start = performance.now();
+    // Fit what the last frame changed first: its layout is clean now (the
+    // browser laid it out to draw it), so reading widths forces no layout.
+    if (this.fitPending) {
+      this.fitPending = false;
+      fitToWidth(this.panel.element);
+    }
     const state = this.store.state;
     const model = this.model(state);
     const stateChanged = state !== this.drawnState || this.refreshAll;
@@ -261,7 +269,10 @@ export class LessonPage<S, M> implements KeyTarget {
       this.redoButton.disabled = !this.store.canRedo;
     }
     if (this.hoverChanged) this.panel.hover?.(this.hover);
-    if (stateChanged || this.panelWidthChanged) fitToWidth(this.panel.element);
+    if (stateChanged || this.panelWidthChanged) {
+      this.fitPending = true;
+      this.requestFrame();
+    }
     this.drawnState = state;
     this.hoverChanged = false;
     this.refreshAll = false;

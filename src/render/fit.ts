@@ -17,30 +17,32 @@ export function markForFit(el: HTMLElement): HTMLElement {
   return el;
 }
 
-/** Shrinks each marked element under `root` that is wider than its box. */
+/**
+ * Shrinks each marked element under `root` that is wider than its box, or
+ * lets it grow back towards its natural size when it has room: one pass of
+ * reads, then one of writes. Content scales with its font size, so its
+ * natural width is its width now over the scale it has now.
+ */
 export function fitToWidth(root: ParentNode): void {
   const pending = [...root.querySelectorAll<HTMLElement>('[data-fit="pending"]')];
   if (!pending.length) return;
-  const scales = pending.map(() => 1);
-  // Start from the natural size (one write pass).
-  for (const el of pending) el.style.fontSize = '';
-  // Not everything inside scales with the font (borders, a fixed padding), so
-  // a second look corrects what the first ratio left over.
-  for (let pass = 0; pass < 2; pass++) {
-    const sizes = pending.map((el) => [el.clientWidth, el.scrollWidth]);
-    let wrote = false;
-    pending.forEach((el, i) => {
-      const [box, scroll] = sizes[i];
-      if (box > 0 && scroll > box + 1 && scales[i] > SMALLEST) {
-        scales[i] = Math.max(SMALLEST, scales[i] * (box / scroll) * 0.98);
-        el.style.fontSize = `${scales[i].toFixed(3)}em`;
-        wrote = true;
-      }
-      // Not laid out yet (hidden, or not in the page): try again next time.
-      if (pass === 0) el.dataset.fit = box > 0 ? 'done' : 'pending';
-    });
-    if (!wrote) break;
-  }
+  // The content's own width: a formula's typeset line, or the first child (a table).
+  const sizes = pending.map((el) => {
+    const content = el.querySelector('.katex-html') ?? el.firstElementChild;
+    return [el.clientWidth, el.scrollWidth, content?.getBoundingClientRect().width ?? 0];
+  });
+  pending.forEach((el, i) => {
+    const [box, scroll, width] = sizes[i];
+    // Not laid out yet (hidden, or not in the page): try again next time.
+    if (box <= 0) return;
+    el.dataset.fit = 'done';
+    const scale = Number(el.dataset.scale ?? '1');
+    const natural = Math.max(width, scroll > box + 1 ? scroll : 0) / scale;
+    const fitted = natural > box + 1 ? Math.max(SMALLEST, (box / natural) * 0.98) : 1;
+    if (Math.abs(fitted - scale) < 0.005) return;
+    el.dataset.scale = fitted.toFixed(3);
+    el.style.fontSize = fitted === 1 ? '' : `${fitted.toFixed(3)}em`;
+  });
 }
 
 /** Marks everything under `root` that was ever fitted (the panel or the type size changed). */
