@@ -12,6 +12,8 @@ export default defineConfig({
     rollupOptions: {
       output: {
         // Each lesson's chunk is named after it (lesson-road-….js), for people and the bench.
+        // KaTeX is its own chunk, shared by every lesson and named for what it is.
+        manualChunks: (id) => (id.includes('node_modules/katex') ? 'katex' : undefined),
         chunkFileNames: (chunk) => {
           const lesson = /lessons\/([a-z0-9-]+)\/lesson\.ts$/.exec(chunk.facadeModuleId ?? '');
           return lesson ? `assets/lesson-${lesson[1]}-[hash].js` : 'assets/[name]-[hash].js';

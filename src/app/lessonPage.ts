@@ -46,6 +46,7 @@ export class LessonPage<S, M> implements KeyTarget {
   private frame = 0;
   // What the next frame must do.
   private drawnState: S | null = null;
+  private panelState: S | null = null;
   private hoverChanged = false;
   private refreshAll = true;
   private readonly dirtyFigures = new Set<FigureView<S, M>>();
@@ -261,7 +262,11 @@ export class LessonPage<S, M> implements KeyTarget {
       if (all || this.dirtyFigures.has(figure)) figure.draw(model);
     }
     this.dirtyFigures.clear();
-    if (stateChanged) {
+    // On the first frame the figure goes first: the panel (a page of formulas
+    // to typeset) follows in the next frame, so the figure shows sooner.
+    const panelDue = (stateChanged || state !== this.panelState) && this.drawnState !== null;
+    if (panelDue) {
+      this.panelState = state;
       this.panel.update(model, state);
       this.parameter?.update(state);
       this.steps?.update(state);
@@ -269,10 +274,11 @@ export class LessonPage<S, M> implements KeyTarget {
       this.redoButton.disabled = !this.store.canRedo;
     }
     if (this.hoverChanged) this.panel.hover?.(this.hover);
-    if (stateChanged || this.panelWidthChanged) {
+    if (panelDue || this.panelWidthChanged) {
       this.fitPending = true;
       this.requestFrame();
     }
+    if (!panelDue && this.panelState !== state) this.requestFrame();
     this.drawnState = state;
     this.hoverChanged = false;
     this.refreshAll = false;
