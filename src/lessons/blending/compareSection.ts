@@ -1,4 +1,4 @@
-import { dataTable, fmt, h } from '../../app/dom';
+import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
@@ -71,12 +71,12 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     update(m: BlendingModel) {
       const { state, n, compared } = m;
       basisChoice.update(state);
-      explain.textContent = EXPLAIN[state.b];
-      table.hidden = compared === null;
+      setText(explain, EXPLAIN[state.b]);
+      setHidden(table, compared === null);
       if (!compared) {
         rows.set([]);
         shownFamily = null;
-        verdict.textContent = '';
+        setText(verdict, '');
         return;
       }
       const palette = api.theme().palette;
@@ -119,7 +119,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
         sentences.push(
           'A cubic B-spline needs at least four control points: add one to see its curve.',
         );
-      verdict.textContent = sentences.join(' ');
+      setText(verdict, sentences.join(' '));
     },
     hover(id: string | null) {
       lit = comparedIndex(id);

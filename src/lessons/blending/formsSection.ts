@@ -2,14 +2,7 @@ import { dataTable, h } from '../../app/dom';
 import { formula, renderFormula } from '../../render/formula';
 import { FittedFormula } from './fittedFormula';
 import type { BlendingModel } from './model';
-import {
-  centroidShape,
-  centroidValues,
-  expansionTex,
-  matrixFormTex,
-  rowShape,
-  rowValues,
-} from './tex';
+import { centroidFormula, expansionTex, matrixFormTex, rowFormula } from './tex';
 
 /** The same curve written out: the expansions, the matrix form, and x(0.5) worked out. */
 export function formsSection() {
@@ -58,8 +51,8 @@ export function formsSection() {
             ? 'The middle of the cubic is the centroid of its control points with weights 1, 3, 3, 1: a centre-weighted centroid. The inner points count three times as much as the ends.'
             : `The middle of the curve is the centroid of its control points weighted by the binomial coefficients C(${n}, i): the points near the middle of the polygon count most. For the cubic this is (1/8)x0 + (3/8)x1 + (3/8)x2 + (1/8)x3.`;
       }
-      matrixAtMu.set(rowShape(n + 1), rowValues(m.state.mu, m.weights));
-      centroid.set(centroidShape(n), centroidValues(m.centre));
+      matrixAtMu.set(rowFormula(m.state.mu, m.weights));
+      centroid.set(centroidFormula(n, m.centre));
     },
   };
 }

@@ -1,11 +1,10 @@
 import { type Point, binomial } from '../../math';
-import { SLOT, slotPoint, texNumber } from '../../render/formula';
+import { texNumber } from '../../render/formula';
+import { type FormulaParts, joined, live, livePoint, tex } from '../../render/formulaParts';
 import { texMu } from './state';
 
-// TeX for the blending lesson's formulas. A formula with live numbers is a
-// shape with `\val` slots (typeset once per shape) and the numbers for them.
-
-const coords = (p: Point, digits: number) => p.map((v) => texNumber(v, digits));
+// TeX for the blending lesson's formulas. A formula with live numbers is
+// FormulaParts: a shape typeset once per N, and the numbers written into it.
 
 /** `3\mu^2(1-\mu)`: the term C(n, i) μⁱ (1−μ)ⁿ⁻ⁱ with the coefficient worked out. */
 export function blendingTermTex(n: number, i: number): string {
@@ -28,42 +27,32 @@ export function expansionTex(n: number, termsPerLine = Infinity): string {
 }
 
 /** μ and 1 − μ as typed into a power: four decimals at most, no trailing zeros. */
-const power = (v: number) => texNumber(v, 4).replace(/\.?0+$/, '') || '0';
+const power = (v: number) => live(texNumber(v, 4).replace(/\.?0+$/, '') || '0');
+const liveMu = (mu: number) => live(texMu(mu));
 
-/** `W(3,1,\val) = 3\cdot \val\cdot \val^{2}`: a weight with the numbers of μ in. */
-export function weightShape(n: number, i: number): string {
-  const parts = [String(binomial(n, i))];
-  if (i > 0) parts.push(i === 1 ? SLOT : `${SLOT}^{${i}}`);
-  if (n - i > 0) parts.push(n - i === 1 ? SLOT : `${SLOT}^{${n - i}}`);
-  return `W(${n},${i},${SLOT}) = ${parts.join('\\cdot ')}`;
-}
-
-export function weightValues(n: number, i: number, mu: number): string[] {
-  return [texMu(mu), ...(i > 0 ? [power(mu)] : []), ...(n - i > 0 ? [power(1 - mu)] : [])];
+/** `W(3,1,0.3) = 3\cdot 0.3\cdot 0.7^{2}`: a weight with the numbers of μ in. */
+export function weightFormula(n: number, i: number, mu: number): FormulaParts {
+  const factors = [tex`${binomial(n, i)}`];
+  if (i > 0) factors.push(i === 1 ? power(mu) : tex`${power(mu)}^{${i}}`);
+  if (n - i > 0) factors.push(n - i === 1 ? power(1 - mu) : tex`${power(1 - mu)}^{${n - i}}`);
+  return tex`W(${n},${i},${liveMu(mu)}) = ${joined(factors, '\\cdot ')}`;
 }
 
 /** Worked-out weights and the point stay readable on screen up to this degree. */
 const SPELL_OUT_UP_TO = 6;
 
 /** P(μ) as the weighted sum, spelt out term by term for small N. */
-export function pointShape(n: number): string {
-  if (n > SPELL_OUT_UP_TO)
-    return `P(${SLOT}) = \\sum_{i=0}^{${n}} W(${n},i,${SLOT})\\,P_i = ${slotPoint()}`;
-  const terms = Array.from({ length: n + 1 }, () => `${SLOT}\\,${slotPoint()}`);
-  return `\\begin{aligned}P(${SLOT}) &= ${terms.join('\\\\ &\\quad + ')}\\\\ &= ${slotPoint()}\\end{aligned}`;
-}
-
-export function pointValues(
+export function pointFormula(
   mu: number,
   weights: readonly number[],
   p: readonly Point[],
   point: Point,
-): string[] {
-  const terms =
-    p.length - 1 > SPELL_OUT_UP_TO
-      ? [texMu(mu)]
-      : weights.flatMap((w, i) => [texNumber(w, 4), ...coords(p[i], 2)]);
-  return [texMu(mu), ...terms, ...coords(point, 4)];
+): FormulaParts {
+  const n = p.length - 1;
+  if (n > SPELL_OUT_UP_TO)
+    return tex`P(${liveMu(mu)}) = \sum_{i=0}^{${n}} W(${n},i,${liveMu(mu)})\,P_i = ${livePoint(point, 4)}`;
+  const terms = weights.map((w, i) => tex`${live(texNumber(w, 4))}\,${livePoint(p[i], 2)}`);
+  return tex`\begin{aligned}P(${liveMu(mu)}) &= ${joined(terms, '\\\\ &\\quad + ')}\\ &= ${livePoint(point, 4)}\end{aligned}`;
 }
 
 /** The matrix M of x(u) = U M X for degree n: it depends on n alone. */
@@ -78,21 +67,17 @@ export function matrixFormTex(matrix: readonly (readonly number[])[]): string {
 }
 
 /** U·M at u = μ: the weights again, as a row. */
-export const rowShape = (count: number) =>
-  `\\text{at } u = ${SLOT}:\\quad U M = \\begin{pmatrix}${Array.from({ length: count }, () => SLOT).join(' & ')}\\end{pmatrix}`;
-
-export const rowValues = (mu: number, weights: readonly number[]) => [
-  texMu(mu),
-  ...weights.map((w) => texNumber(w, 4)),
-];
+export const rowFormula = (mu: number, weights: readonly number[]) =>
+  tex`\text{at } u = ${liveMu(mu)}:\quad U M = \begin{pmatrix}${joined(
+    weights.map((w) => live(texNumber(w, 4))),
+    ' & ',
+  )}\end{pmatrix}`;
 
 /** x(½) = Σ C(N, i)/2ᴺ xᵢ: the "centre-weighted centroid", then its value. */
-export function centroidShape(n: number): string {
+export function centroidFormula(n: number, centre: Point): FormulaParts {
   const terms = Array.from(
     { length: n + 1 },
     (_, i) => `\\tfrac{${binomial(n, i)}}{${2 ** n}}x_{${i}}`,
   );
-  return `\\begin{aligned}x(0.5) &= ${terms.join(' + ')}\\\\ &= ${slotPoint()}\\end{aligned}`;
+  return tex`\begin{aligned}x(0.5) &= ${terms.join(' + ')}\\ &= ${livePoint(centre, 4)}\end{aligned}`;
 }
-
-export const centroidValues = (centre: Point) => coords(centre, 4);

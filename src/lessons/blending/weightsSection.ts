@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setChildren } from '../../app/dom';
+import { dataTable, fmt, h, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { LiveFormula } from '../../render/formula';
@@ -6,7 +6,7 @@ import { FittedFormula } from './fittedFormula';
 import { highlightedIndex } from './hover';
 import type { BlendingModel } from './model';
 import { type BlendingState, texMu } from './state';
-import { pointShape, pointValues, weightShape, weightValues } from './tex';
+import { pointFormula, weightFormula } from './tex';
 
 /**
  * The weights at μ: one row per control point (its W(N, i, μ) worked out),
@@ -39,8 +39,10 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
   function showLit() {
     [...body.rows].forEach((row, i) => row.classList.toggle('current', i === lit));
     pieces.forEach((piece, i) => {
-      piece.style.outline = i === lit ? '3px solid var(--ink)' : '';
-      piece.style.outlineOffset = i === lit ? '-3px' : '';
+      const outline = i === lit ? '3px solid var(--ink)' : '';
+      if (piece.style.outline === outline) return;
+      piece.style.outline = outline;
+      piece.style.outlineOffset = outline ? '-3px' : '';
     });
   }
 
@@ -57,7 +59,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
       const { mu, p } = m.state;
       const palette = api.theme().palette;
       const color = (i: number) => palette[i % palette.length];
-      title.textContent = `Weights at μ = ${texMu(mu)} (N = ${n})`;
+      setText(title, `Weights at μ = ${texMu(mu)} (N = ${n})`);
       rows.set(
         weights.map((w, i) => ({
           cells: [{ text: `P${i}`, swatch: color(i) }, '', fmt(w, 6)],
@@ -66,7 +68,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
       );
       weights.forEach((_, i) => {
         formulas[i] ??= new LiveFormula();
-        formulas[i].set(weightShape(n, i), weightValues(n, i, mu));
+        formulas[i].set(weightFormula(n, i, mu));
         const [, middle, weight] = body.rows[i].cells;
         if (formulas[i].element.parentNode !== middle) {
           // A new row: LiveRows writes its texts, the formula and the class go in here.
@@ -89,8 +91,11 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
         `The weights stacked: ${weights.map((w, i) => `P${i} ${fmt(100 * w, 1)}%`).join(', ')}`,
       );
       showLit();
-      sum.textContent = `Together they fill the bar: ΣW = ${fmt(m.sum, 12)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`;
-      point.set(pointShape(n), pointValues(mu, weights, p, m.point));
+      setText(
+        sum,
+        `Together they fill the bar: ΣW = ${fmt(m.sum, 12)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`,
+      );
+      point.set(pointFormula(mu, weights, p, m.point));
     },
     hover(id: string | null) {
       lit = highlightedIndex(id);

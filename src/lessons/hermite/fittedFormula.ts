@@ -1,25 +1,27 @@
 import { markForFit } from '../../render/fit';
 import { LiveFormula } from '../../render/formula';
+import type { FormulaParts } from '../../render/formulaParts';
 
 /**
- * A display LiveFormula fitted to the panel again whenever its numbers take
- * another width (a sign or a digit more or fewer; KaTeX's digits are all
- * equally wide, so only that pattern matters). LiveFormula itself asks for a
- * fit only when it typesets a new shape, so a matrix whose numbers grow would
- * run past the panel's edge.
+ * A display LiveFormula fitted to the panel again whenever its numbers
+ * change, not only when its shape is typeset: numbers that grow can push a
+ * matrix past the panel's edge, and the first fit may have been measured
+ * before KaTeX's fonts arrived. (The shell fits at the start of the next
+ * frame, on a clean layout, so this costs one read of the formula's width.)
  */
 export class FittedFormula extends LiveFormula {
-  private pattern = '';
+  private shown = '';
 
   constructor() {
     super(true);
   }
 
-  override set(shape: string, values: readonly string[]): void {
+  override set(shape: string | FormulaParts, values?: readonly string[]): void {
     super.set(shape, values);
-    const pattern = `${shape}|${values.join('|').replace(/\d/g, '0')}`;
-    if (pattern === this.pattern) return;
-    this.pattern = pattern;
+    const parts = typeof shape === 'string' ? { shape, values: values ?? [] } : shape;
+    const shown = `${parts.shape}|${parts.values.join('|')}`;
+    if (shown === this.shown) return;
+    this.shown = shown;
     markForFit(this.element);
   }
 }

@@ -1,4 +1,4 @@
-import { dataTable, fmtPoint, h } from '../../app/dom';
+import { dataTable, fmtPoint, h, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import type { HermiteModel } from './model';
 
@@ -6,17 +6,20 @@ const NONE = 'One patch, no joins yet: add a point to chain a second patch on.';
 
 /** The panel's section on the joins: how smooth the curve is at each inner point. */
 export function joinsSection() {
-  const text = document.createTextNode('');
+  const text = h('p', {});
   const body = h('tbody', {});
   const rows = new LiveRows(body);
   const table = dataTable('Joins', ['Join', 'P′ before', 'P′ after', 'Continuity'], body);
   return {
-    element: h('section', {}, h('h2', {}, 'Joins'), h('p', {}, text), table),
+    element: h('section', {}, h('h2', {}, 'Joins'), text, table),
     update({ joins, onlyC1 }: HermiteModel) {
-      table.hidden = joins.length === 0;
-      text.data = joins.length
-        ? `Both patches at an inner point use its one gradient, so P′ is the same on both sides: every join is C¹, measured here on the patches. ${onlyC1 ? `The second derivatives differ at ${onlyC1} of ${joins.length}: C¹ but not C². A spline that is C² as well is the next step.` : ''}`
-        : NONE;
+      setHidden(table, joins.length === 0);
+      setText(
+        text,
+        joins.length
+          ? `Both patches at an inner point use its one gradient, so P′ is the same on both sides: every join is C¹, measured here on the patches. ${onlyC1 ? `The second derivatives differ at ${onlyC1} of ${joins.length}: C¹ but not C². A spline that is C² as well is the next step.` : ''}`
+          : NONE,
+      );
       rows.set(
         joins.map((join) => ({
           cells: [`P${join.k}`, fmtPoint(join.before, 3), fmtPoint(join.after, 3), join.continuity],

@@ -1,18 +1,11 @@
-import { dataTable, fmt, h } from '../../app/dom';
+import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { formula } from '../../render/formula';
 import { FittedFormula } from './fittedFormula';
-import {
-  BEZIER_POINTS,
-  SYSTEM,
-  basisLine,
-  basisValues,
-  bezierValues,
-  systemValues,
-} from './formulas';
+import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
 import { type GradientMode, type HermiteState, MAX_POINTS } from './state';
@@ -57,13 +50,13 @@ export function hermitePanel(
     { class: 'warning', role: 'note' },
     'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment (with a slow start and a slow finish). Add a point to see the rule at work.',
   );
-  const system = new FittedFormula();
+  const systemFormula = new FittedFormula();
   const coefficientsBody = h('tbody', {});
   const coefficients = new LiveRows(coefficientsBody);
-  const basis = new FittedFormula();
+  const basisFormula = new FittedFormula();
   const weightsBody = h('tbody', {});
   const weights = new LiveRows(weightsBody);
-  const bezierPoints = new FittedFormula();
+  const bezierFormula = new FittedFormula();
   const bezierBody = h('tbody', {});
   const bezierRows = new LiveRows(bezierBody);
   const joins = joinsSection();
@@ -91,10 +84,10 @@ export function hermitePanel(
     pointCount.element,
     patchTitle,
     h('p', {}, 'Equation 7: the four conditions as a matrix, and their solution.'),
-    system.element,
+    systemFormula.element,
     dataTable('Coefficients of the patch', ['Coefficient', 'x', 'y'], coefficientsBody),
     h('h2', {}, 'The Hermite basis at μ'),
-    basis.element,
+    basisFormula.element,
     dataTable('Hermite weights at μ', ['Basis', 'Value at μ', 'Weighs'], weightsBody),
     joins.element,
     h('h2', {}, 'The same patch as a Bézier curve'),
@@ -103,7 +96,7 @@ export function hermitePanel(
       {},
       'A cubic Bézier curve leaves its first control point towards the second with gradient 3(B₁ − B₀). So the Hermite patch is the Bézier curve with B₀ = Pᵢ, B₁ = Pᵢ + Dᵢ/3, B₂ = Pᵢ₊₁ − Dᵢ₊₁/3, B₃ = Pᵢ₊₁: the tips of the arrows are its inner control points. That is the bridge to the next chapter.',
     ),
-    bezierPoints.element,
+    bezierFormula.element,
     dataTable('Bézier control points', ['Point', 'x', 'y'], bezierBody),
   );
 
@@ -115,21 +108,18 @@ export function hermitePanel(
       mode.update(state);
       bezier.update(state);
       pointCount.update(state);
-      warning.hidden = !m.straight;
-      patchTitle.textContent = `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`;
+      setHidden(warning, !m.straight);
+      setText(patchTitle, `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`);
 
-      system.set(
-        SYSTEM,
-        systemValues([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients),
-      );
+      systemFormula.set(system([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients));
       coefficients.set(
         patch.coefficients.map((a, k) => ({ cells: [`a${k}`, fmt(a[0], 4), fmt(a[1], 4)] })),
       );
-      basis.set(basisLine(i), basisValues(state.mu, patch.weights, patch.point));
+      basisFormula.set(basisLine(i, state.mu, patch.weights, patch.point));
       const weighs = [`P${i}`, `P${i + 1}`, `D${i}`, `D${i + 1}`];
       weights.set(patch.weights.map((w, k) => ({ cells: [`H${k}`, fmt(w, 4), weighs[k]] })));
       joins.update(m);
-      bezierPoints.set(BEZIER_POINTS, bezierValues(patch.bezier));
+      bezierFormula.set(bezierPoints(patch.bezier));
       bezierRows.set(
         patch.bezier.map((q, k) => ({ cells: [`B${k}`, fmt(q[0], 4), fmt(q[1], 4)] })),
       );
