@@ -12,6 +12,8 @@ type Record_ = Record<string, number>;
 export interface ControlHost<S> {
   get(): S;
   set(next: S, options?: { coalesce?: string; windowMs?: number; record?: boolean }): void;
+  /** The value is final for now (Play paused): write the link at once. */
+  settle(): void;
 }
 
 /** The parameter slider with its number field and Play. */
@@ -136,6 +138,7 @@ export class ParameterControl<S> {
     this.playing = null;
     this.play.textContent = '▶';
     this.play.setAttribute('aria-label', 'Play');
+    this.host.settle();
   }
 }
 

@@ -92,7 +92,7 @@ export class LessonPage<S, M> implements KeyTarget {
     });
     this.url = new UrlSync(lesson.slug, () => this.store.query(this.views()));
 
-    const host = { get: () => this.store.state, set };
+    const host = { get: () => this.store.state, set, settle: () => this.url.write() };
     if (lesson.parameter) this.parameter = new ParameterControl<S>(lesson.parameter, host);
     if (lesson.steps) this.steps = new StepControl<S>(lesson.steps, host);
     this.undoButton = h(
@@ -379,9 +379,10 @@ export class LessonPage<S, M> implements KeyTarget {
   }
 
   destroy(): void {
-    this.parameter?.stop();
-    // By now the address bar may already show another page: only remember.
+    // By now the address bar may already show another page: only remember
+    // (and a write still pending sees the new address and leaves it alone).
     this.url.close();
+    this.parameter?.stop();
     this.unsubscribe();
     this.panelResize.disconnect();
     cancelAnimationFrame(this.frame);
