@@ -30,6 +30,12 @@ export default defineConfig({
       ],
     },
   },
+  // Frame-time tests run last and alone, so that they time the app and not a
+  // second test sharing the two cores.
+  projects: [
+    { name: 'browser', testIgnore: /timing\.spec\.ts$/ },
+    { name: 'timing', testMatch: /timing\.spec\.ts$/, dependencies: ['browser'] },
+  ],
   // The production build, served as a static host would.
   webServer: {
     command: `npx vite preview --host 127.0.0.1 --port ${port} --strictPort`,

@@ -23,6 +23,8 @@ export interface FigureHost<S, M> {
   invalidate(figure: FigureView<S, M>): void;
   /** The user moved this figure's view: it belongs in the link. */
   viewChanged(): void;
+  /** A drag began: the link waits for its end. */
+  hold(): void;
   /** A gesture ended: the state is final for now (write the link at once). */
   settle(): void;
 }
@@ -296,6 +298,7 @@ export class FigureView<S, M> {
   }
 
   private dragStart(id: string, at: Screen): void {
+    this.host.hold();
     this.dragging = {
       drag: new HandleDrag(this.view, this.handles, id, at),
       key: `drag:${++dragSerial}`,

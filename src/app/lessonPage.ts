@@ -79,6 +79,7 @@ export class LessonPage<S, M> implements KeyTarget {
           announce: (text) => shell.announce(text),
           invalidate: (figure) => this.invalidateFigure(figure),
           viewChanged: () => this.url.schedule(300),
+          hold: () => this.url.hold(),
           settle: () => this.url.write(),
         }),
     );
@@ -143,7 +144,8 @@ export class LessonPage<S, M> implements KeyTarget {
       this.url.schedule();
     });
     this.requestFrame();
-    this.url.schedule();
+    // The link of the state the page opened with is written at once: it is final.
+    this.url.write();
   }
 
   private toolbar(): HTMLElement {

@@ -30,8 +30,18 @@ export class UrlSync {
     return `#/${this.slug}?${this.query()}`;
   }
 
+  /** A drag is on: the link waits for its end (it would only churn meanwhile). */
+  private holding = false;
+
+  hold(): void {
+    this.holding = true;
+    window.clearTimeout(this.timer);
+    this.timer = 0;
+  }
+
   /** Writes the link a little later; many changes in a row write once. */
   schedule(delay = 100): void {
+    if (this.holding) return;
     window.clearTimeout(this.timer);
     this.timer = window.setTimeout(() => this.write(), delay);
   }
@@ -42,6 +52,7 @@ export class UrlSync {
   }
 
   write(): void {
+    this.holding = false;
     window.clearTimeout(this.timer);
     this.timer = 0;
     const hash = this.link();
