@@ -68,6 +68,9 @@ export class LiveFormula {
       slot.html.textContent = text;
       if (slot.mathml) slot.mathml.textContent = text;
     });
+    // New numbers may be wider: a display formula is fitted to the panel again
+    // (at the start of the next frame, on a clean layout: one read of its width).
+    if (changed && this.display) markForFit(this.element);
     // The MathML keeps the TeX as typeset, numbers filled in (copy as TeX, assistive tools).
     if (changed && this.annotation) {
       this.annotation.textContent = parts.shape

@@ -1,14 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, test } from './fixtures';
-
-/** Every lesson, as the gallery lists it (no list kept by hand). */
-async function lessonSlugs(page: Page): Promise<string[]> {
-  await page.goto('./#/');
-  await expect(page.locator('a.card').first()).toBeVisible();
-  return page
-    .locator('a.card')
-    .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
-}
+import { expect, lessonSlugs, test } from './fixtures';
 
 const nextFrame = (page: Page) =>
   page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

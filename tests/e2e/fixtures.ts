@@ -56,3 +56,12 @@ export async function expectHash(
 ): Promise<void> {
   await expect.poll(() => matcher(hashState(page)[key] ?? '')).toBe(true);
 }
+
+/** Every lesson, as the gallery lists it (no list kept by hand). */
+export async function lessonSlugs(page: Page): Promise<string[]> {
+  await page.goto('./#/');
+  await expect(page.locator('a.card').first()).toBeVisible();
+  return page
+    .locator('a.card')
+    .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
+}

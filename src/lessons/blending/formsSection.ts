@@ -1,6 +1,5 @@
 import { dataTable, h } from '../../app/dom';
-import { formula, renderFormula } from '../../render/formula';
-import { FittedFormula } from './fittedFormula';
+import { LiveFormula, formula, renderFormula } from '../../render/formula';
 import type { BlendingModel } from './model';
 import { centroidFormula, expansionTex, matrixFormTex, rowFormula } from './tex';
 
@@ -12,9 +11,9 @@ export function formsSection() {
   );
   const currentExpansion = h('div', { class: 'formula display' });
   const matrix = h('div', { class: 'formula display' });
-  const matrixAtMu = new FittedFormula();
+  const matrixAtMu = new LiveFormula(true);
   const centroidTitle = h('h2', {});
-  const centroid = new FittedFormula();
+  const centroid = new LiveFormula(true);
   const centroidNote = h('p', { class: 'note' });
   let shownN = -1;
 

@@ -2,7 +2,6 @@ import { dataTable, fmt, h, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { LiveFormula } from '../../render/formula';
-import { FittedFormula } from './fittedFormula';
 import { highlightedIndex } from './hover';
 import type { BlendingModel } from './model';
 import { type BlendingState, texMu } from './state';
@@ -26,7 +25,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
   });
   let pieces: HTMLElement[] = [];
   const sum = h('p', {});
-  const point = new FittedFormula();
+  const point = new LiveFormula(true);
   let lit: number | null = null;
 
   // Hovering a row highlights its control point in both figures.

@@ -3,8 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
-import { formula } from '../../render/formula';
-import { FittedFormula } from './fittedFormula';
+import { LiveFormula, formula } from '../../render/formula';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
@@ -50,13 +49,13 @@ export function hermitePanel(
     { class: 'warning', role: 'note' },
     'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment (with a slow start and a slow finish). Add a point to see the rule at work.',
   );
-  const systemFormula = new FittedFormula();
+  const systemFormula = new LiveFormula(true);
   const coefficientsBody = h('tbody', {});
   const coefficients = new LiveRows(coefficientsBody);
-  const basisFormula = new FittedFormula();
+  const basisFormula = new LiveFormula(true);
   const weightsBody = h('tbody', {});
   const weights = new LiveRows(weightsBody);
-  const bezierFormula = new FittedFormula();
+  const bezierFormula = new LiveFormula(true);
   const bezierBody = h('tbody', {});
   const bezierRows = new LiveRows(bezierBody);
   const joins = joinsSection();
