@@ -302,6 +302,12 @@ export class LessonPage<S, M> implements KeyTarget {
     this.url.write();
   }
 
+  /** The address bar names this lesson without a state: it shows the current one again. */
+  keepState(): void {
+    this.url.adopt();
+    this.url.write();
+  }
+
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();

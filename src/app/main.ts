@@ -133,8 +133,11 @@ async function route(): Promise<void> {
   const token = ++routeToken;
   const { slug, query } = parseHash(location.hash);
   if (slug !== null && page && page.lesson.slug === slug) {
-    // Same lesson, new state (typed into the address bar, or back/forward).
-    page.applyQuery(loadState(page.lesson, query, null));
+    // A bare link to the open lesson (“#/de-casteljau”) keeps what is on
+    // screen, as opening it afresh restores the last state; a link with a
+    // state (typed into the address bar, or back/forward) applies it.
+    if (query === '') page.keepState();
+    else page.applyQuery(loadState(page.lesson, query, null));
     return;
   }
   page?.destroy();

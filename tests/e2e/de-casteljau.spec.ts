@@ -132,12 +132,21 @@ test('reloading the copied link restores the exact state', async ({ page, contex
   await other.close();
 });
 
-test('the last state is restored from local storage when the link has none', async ({ page }) => {
+test('the last state is restored from local storage when the link has none', async ({
+  page,
+  context,
+}) => {
   await page.getByRole('button', { name: 'Quadratic' }).click();
   await expectHash(page, 'p', (v) => v.split(';').length === 3);
+  // A later visit on this device, by a bare link, in a page of its own.
+  const later = await context.newPage();
+  await later.goto('./#/de-casteljau');
+  await expectHash(later, 'p', (v) => v === '0,0;2,3;4,0');
+  // The same bare link typed over the open lesson keeps what is on screen.
   await page.goto('./#/');
   await page.goto('./#/de-casteljau');
   await expectHash(page, 'p', (v) => v === '0,0;2,3;4,0');
+  await later.close();
 });
 
 const hostile = [
