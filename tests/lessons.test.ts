@@ -44,7 +44,7 @@ describe('every lesson draws what it says', () => {
       const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
       const states = [
         ['defaults', defaults],
-        ...(lesson.presets ?? []).map((p) => [
+        ...(lesson.scenes ?? []).map((p) => [
           `preset ${p.id}`,
           normalizeState(lesson, p.apply(defaults)).state,
         ]),

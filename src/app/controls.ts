@@ -4,10 +4,13 @@
  * state through `update`, writing to the DOM only what changed.
  */
 import { fmt, h } from './dom';
-import type { ParameterSpec, StepsSpec } from './lesson';
+import type { ParameterSpec } from './lesson';
 import { prefersReducedMotion } from './settings';
 
 type Record_ = Record<string, number>;
+
+/** Play speeds, as multiples of one sweep in five seconds. */
+const SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
 
 export interface ControlHost<S> {
   get(): S;
@@ -24,6 +27,9 @@ export class ParameterControl<S> {
   readonly play: HTMLButtonElement;
   private playing: { last: number; timer: number } | null = null;
   private shown = NaN;
+  /** Play speed, as an index into SPEEDS. */
+  private speed = SPEEDS.indexOf(1);
+  readonly speedButton: HTMLButtonElement;
 
   constructor(
     private readonly spec: ParameterSpec<S>,
@@ -57,6 +63,17 @@ export class ParameterControl<S> {
       },
       '▶',
     );
+    this.speedButton = h(
+      'button',
+      {
+        type: 'button',
+        class: 'play-speed',
+        title: 'Play speed (< slower, > faster)',
+        onclick: () => this.changeSpeed(this.speed === SPEEDS.length - 1 ? -SPEEDS.length : 1),
+      },
+      '1×',
+    );
+    this.speedButton.setAttribute('aria-label', 'Play speed 1×');
     this.element = h(
       'div',
       { class: 'param' },
@@ -64,6 +81,7 @@ export class ParameterControl<S> {
       this.slider,
       this.number,
       this.play,
+      this.speedButton,
     );
   }
 
@@ -102,6 +120,14 @@ export class ParameterControl<S> {
     else this.start();
   }
 
+  /** One speed slower (−1) or faster (+1), within the list (a large step wraps to the slowest). */
+  changeSpeed(delta: number): void {
+    this.speed = Math.min(SPEEDS.length - 1, Math.max(0, this.speed + delta));
+    const text = `${SPEEDS[this.speed]}×`;
+    this.speedButton.textContent = text;
+    this.speedButton.setAttribute('aria-label', `Play speed ${text}`);
+  }
+
   private start(): void {
     const spec = this.spec;
     const span = spec.max - spec.min;
@@ -125,7 +151,7 @@ export class ParameterControl<S> {
       if (!this.playing) return;
       const dt = Math.min(0.1, (now - this.playing.last) / 1000);
       this.playing.last = now;
-      advance((dt * span) / 5);
+      advance((dt * span * SPEEDS[this.speed]) / 5);
       this.playing.timer = requestAnimationFrame(tick);
     };
     this.playing.timer = requestAnimationFrame(tick);
@@ -142,61 +168,39 @@ export class ParameterControl<S> {
   }
 }
 
-/** Step back / status / step forward for a construction with discrete steps. */
-export class StepControl<S> {
+/**
+ * Step back / status / step forward: the clicker's buttons. They walk the
+ * lesson's script (steps, then the next scene), exactly as PageDown/PageUp.
+ */
+export class StepControl {
   readonly element: HTMLElement;
   private readonly back: HTMLButtonElement;
   private readonly forward: HTMLButtonElement;
   private readonly status: HTMLElement;
   private shown = '';
 
-  constructor(
-    private readonly spec: StepsSpec<S>,
-    private readonly host: ControlHost<S>,
-  ) {
+  constructor(advance: (delta: 1 | -1) => void) {
     this.back = h(
       'button',
-      { type: 'button', onclick: () => this.step(-1), title: 'Step back (PageUp, ←)' },
-      '◀ Step back',
+      { type: 'button', onclick: () => advance(-1), title: 'Step back (PageUp, ←)' },
+      '◀ Back',
     );
     this.forward = h(
       'button',
-      { type: 'button', onclick: () => this.step(1), title: 'Step forward (PageDown, →, space)' },
-      'Step forward ▶',
+      { type: 'button', onclick: () => advance(1), title: 'Step forward (PageDown, →, space)' },
+      'Next ▶',
     );
     this.status = h('span', { class: 'step-status', 'aria-live': 'polite' });
     this.element = h('div', { class: 'steps' }, this.back, this.status, this.forward);
   }
 
-  private current(state: S): number {
-    return (state as Record_)[this.spec.key];
-  }
-
-  step(delta: number): void {
-    const state = this.host.get();
-    const count = this.spec.count(state);
-    const k = Math.min(count, Math.max(0, this.current(state) + delta));
-    if (k !== this.current(state))
-      this.host.set({ ...state, [this.spec.key]: k }, { coalesce: 'step', windowMs: 0 });
-  }
-
-  stepTo(end: 'first' | 'last'): void {
-    const state = this.host.get();
-    const k = end === 'first' ? 0 : this.spec.count(state);
-    if (k !== this.current(state)) this.host.set({ ...state, [this.spec.key]: k });
-  }
-
-  update(state: S): void {
-    const k = this.current(state);
-    const count = this.spec.count(state);
-    const text = this.spec.describe(state, k);
-    const key = `${k}/${count}/${text}`;
+  /** Shows where the script is: `first`/`last` say whether there is anything before/after. */
+  update(text: string, first: boolean, last: boolean): void {
+    const key = `${text}/${first}/${last}`;
     if (key === this.shown) return;
     this.shown = key;
-    // A lesson whose current figure has nothing to step hides the buttons.
-    this.element.style.display = count === 0 ? 'none' : '';
-    this.back.disabled = k <= 0;
-    this.forward.disabled = k >= count;
+    this.back.disabled = first;
+    this.forward.disabled = last;
     this.status.textContent = text;
   }
 }

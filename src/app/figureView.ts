@@ -2,13 +2,13 @@ import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/ha
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
 import { OrbitCamera } from '../render/orbitCamera';
-import { Painter, splitSubscripts } from '../render/painter';
+import { Painter, type Shown, SHOW_ALL, splitSubscripts } from '../render/painter';
 import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
 import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { fmtPoint } from './dom';
-import type { DrawInfo, FigureSpec, Handle } from './lesson';
+import type { DrawInfo, FigureSpec, Handle, Point } from './lesson';
 
 /** What a figure needs from the page that hosts it. */
 export interface FigureHost<S, M> {
@@ -27,6 +27,12 @@ export interface FigureHost<S, M> {
   hold(): void;
   /** A gesture ended: the state is final for now (write the link at once). */
   settle(): void;
+  /** What the presenter lets figures show. */
+  shown(): Shown;
+  /** A model to draw faintly under the current one (presenter's ghost), or null. */
+  ghost(): M | null;
+  /** The trail of this figure's moving point (presenter tool), or null. */
+  trail(figure: string): readonly Point[] | null;
 }
 
 /** Plain-text name of a lecture label: `P_{1,2}` → `P1,2`. */
@@ -213,8 +219,31 @@ export class FigureView<S, M> {
     if (!ctx) return;
     const dpr = window.devicePixelRatio || 1;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    this.render(ctx, model, theme, this.host.info());
+    this.render(ctx, model, theme, this.host.info(), this.host.shown());
     this.syncKeys();
+  }
+
+  /** The presenter's ghost: the kept model drawn faintly, without labels or handles. */
+  private drawGhost(surface: DrawingSurface, theme: Theme, info: DrawInfo): void {
+    const ghost = this.host.ghost();
+    if (ghost === null) return;
+    surface.save();
+    // Every stroke sets its own alpha: a faint palette makes the ghost faint.
+    const faint: Theme = {
+      ...theme,
+      curve: theme.curveFaint,
+      ink: theme.curveFaint,
+      polygon: theme.curveFaint,
+      accent: theme.curveFaint,
+      palette: theme.palette.map(() => theme.curveFaint),
+    };
+    const painter = new Painter(surface, this.view, faint, {
+      curve: true,
+      labels: false,
+      numbers: false,
+    });
+    this.spec.draw(painter, ghost, info);
+    surface.restore();
   }
 
   private handlesFor(model: M): Handle[] {
@@ -237,11 +266,21 @@ export class FigureView<S, M> {
   }
 
   /** Draws the figure to any surface at the current view: the canvas, an SVG export, a test recording. */
-  render(surface: DrawingSurface, model: M, theme: Theme, info: DrawInfo): Painter {
-    const painter = new Painter(surface, this.view, theme);
+  render(
+    surface: DrawingSurface,
+    model: M,
+    theme: Theme,
+    info: DrawInfo,
+    shown: Shown = SHOW_ALL,
+  ): Painter {
+    const painter = new Painter(surface, this.view, theme, shown);
     painter.clear();
     if (this.spec.kind === 'geometry' && !info.thumbnail) painter.grid();
+    if (!info.thumbnail) this.drawGhost(surface, theme, info);
     this.spec.draw(painter, model, info);
+    const trail = info.thumbnail ? null : this.host.trail(this.spec.id);
+    if (trail && trail.length > 1)
+      painter.polyline(trail, { color: theme.accent, width: theme.sizes.line, alpha: 0.8 });
     const handles = this.handlesFor(model);
     if (info.thumbnail) return painter;
     for (const handle of handles) {
@@ -260,7 +299,7 @@ export class FigureView<S, M> {
         // A small handle grows to full size while it is held, hovered or focused.
         radius: handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : undefined,
       });
-      if (handle.showLabel !== false) {
+      if (handle.showLabel !== false && shown.labels) {
         painter.label(handle.label, handle.position, {
           dx: theme.sizes.handle + 4,
           dy: -(theme.sizes.handle + theme.sizes.label * 0.45),

@@ -1,5 +1,5 @@
 import { h } from './dom';
-import { lessonKeyHelp } from './keymap';
+import { keyHelp } from './keymap';
 
 const KEYS: [string, string][] = [
   ['Tab / Shift+Tab', 'Focus the next / previous movable point or control'],
@@ -9,12 +9,8 @@ const KEYS: [string, string][] = [
   ['Double-click / long-press', 'Add a point on empty space, where the lesson allows it'],
   ['Drag empty space, wheel, pinch', 'Pan and zoom a figure; in space, drag to turn it'],
   ['Shift+drag (a point in space)', 'Move the point along one axis'],
-  ...lessonKeyHelp(),
-  ['P', 'Projector mode: thick strokes, large labels, high contrast'],
-  ['D', 'Dark theme'],
-  ['F', 'Full screen'],
-  ['G', 'Back to the gallery of lessons'],
-  ['?', 'This help'],
+  ['One finger (touch)', 'Scrolls the page; two fingers pan and zoom a figure'],
+  ...keyHelp(),
 ];
 
 export function helpDialog(): HTMLDialogElement {

@@ -1,111 +1,278 @@
 /**
- * The lesson page's keys, as one table: which keys, what they do, and when a
- * focused control keeps them for itself. The help dialog lists the same table.
+ * Every key of the app, as one table: which keys, what they do, and who owns
+ * them when a control has focus. The help dialog lists the same table, and the
+ * tests walk it in every focus state.
+ *
+ * Ownership decides the clicker's reliability. A presentation clicker sends
+ * PageDown/PageUp (some also B or `.` to blank the screen): those belong to
+ * the page whatever has focus (a slider, a number field, a checkbox, a radio
+ * group, a button, a point), and the focused control never also acts on them.
+ * Keys a control uses itself (arrows and Home/End on a slider, Space on a
+ * checkbox, arrows on a radio group, anything typed into a number field)
+ * stay with that control and never also step.
  */
 
-/** What the keys act on: the lesson page. */
+/** What the keys act on: the app, and the lesson page when one is open. */
 export interface KeyTarget {
   undo(): void;
   redo(): void;
-  step(delta: number): void;
+  /** The clicker's next (+1) or previous (−1): a step, or the next scene. */
+  advance(delta: 1 | -1): void;
+  /** First or last step of the current scene. */
   stepTo(end: 'first' | 'last'): void;
   togglePlay(): void;
+  /** Play slower (−1) or faster (+1). */
+  playSpeed(delta: 1 | -1): void;
   fit(): void;
   zoom(factor: number): void;
   /** Turns the first figure in space, in degrees. */
   orbit(yaw: number, pitch: number): void;
+  presenter(): void;
+  sidePanel(): void;
+  blank(): void;
+  /** The screen is blanked: a clicker key only brings it back. */
+  readonly blanked: boolean;
+  tool(name: PresenterTool): void;
+  clearInk(): void;
+  dark(): void;
+  fullscreen(): void;
+  help(): void;
+  gallery(): void;
 }
+
+/** Presenter tools that are switched on and off. */
+export type PresenterTool =
+  'laser' | 'ink' | 'hideCurve' | 'hideNumbers' | 'hideLabels' | 'ghost' | 'trail';
+
+/**
+ * Who owns a key when something has focus:
+ * - `page`: always the page's (clicker keys), even in a number field;
+ * - `unlessTyping`: the page's, except while typing in a text or number field;
+ * - `unlessControl`: the page's only when no control has focus (a control's
+ *   own keys: arrows and Space on a slider, a checkbox, a radio group, a
+ *   button or a point).
+ */
+export type Owner = 'page' | 'unlessTyping' | 'unlessControl';
 
 export interface Binding {
   keys: readonly string[];
   /** With Ctrl (or ⌘ on a Mac). */
   mod?: boolean;
   shift?: boolean;
-  /** For the help: which keys, and what they do. */
+  owner: Owner;
+  /** For the help: which keys, and what they do ('' for a key listed with another). */
   help: [string, string];
-  /**
-   * Keys a focused button or point uses itself (arrows, space): the binding
-   * leaves them to it. A clicker's PageDown/PageUp always reach the page.
-   */
-  yieldsTo?: 'controls';
+  /** Works on the gallery too (not only in a lesson). */
+  app?: boolean;
   run(target: KeyTarget): void;
 }
 
-export const LESSON_KEYS: readonly Binding[] = [
+export const KEYS: readonly Binding[] = [
+  {
+    keys: ['PageDown'],
+    owner: 'page',
+    help: ['PageDown, →, space', 'Next step; after the last, the next scene (a clicker works)'],
+    run: (t) => t.advance(1),
+  },
+  {
+    keys: ['ArrowRight', 'ArrowDown', ' '],
+    owner: 'unlessControl',
+    help: ['', ''],
+    run: (t) => t.advance(1),
+  },
+  {
+    keys: ['PageUp'],
+    owner: 'page',
+    help: ['PageUp, ←', 'Previous step; before the first, the previous scene'],
+    run: (t) => t.advance(-1),
+  },
+  {
+    keys: ['ArrowLeft', 'ArrowUp'],
+    owner: 'unlessControl',
+    help: ['', ''],
+    run: (t) => t.advance(-1),
+  },
+  {
+    keys: ['Home'],
+    owner: 'unlessTyping',
+    help: ['Home / End', 'First / last step of this scene'],
+    run: (t) => t.stepTo('first'),
+  },
+  { keys: ['End'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.stepTo('last') },
+  {
+    keys: ['b', 'B', '.'],
+    owner: 'unlessTyping',
+    help: ['B or .', 'Blank the screen (any clicker key brings it back)'],
+    run: (t) => t.blank(),
+  },
   {
     keys: ['z', 'Z'],
     mod: true,
     shift: false,
-    help: ['Ctrl+Z', 'Undo'],
+    owner: 'unlessTyping',
+    help: ['Ctrl+Z', 'Undo an edit (steps are not edits)'],
     run: (t) => t.undo(),
   },
   {
     keys: ['z', 'Z'],
     mod: true,
     shift: true,
+    owner: 'unlessTyping',
     help: ['Ctrl+Shift+Z, Ctrl+Y', 'Redo'],
     run: (t) => t.redo(),
   },
-  { keys: ['y', 'Y'], mod: true, help: ['', ''], run: (t) => t.redo() },
+  { keys: ['y', 'Y'], mod: true, owner: 'unlessTyping', help: ['', ''], run: (t) => t.redo() },
   {
-    keys: ['PageDown'],
-    help: ['PageDown, →, space', 'Next step of the construction (a presentation clicker works)'],
-    run: (t) => t.step(1),
+    keys: ['k', 'K'],
+    owner: 'unlessTyping',
+    help: ['K', 'Play / pause the parameter'],
+    run: (t) => t.togglePlay(),
   },
   {
-    keys: ['ArrowRight', 'ArrowDown', ' '],
-    help: ['', ''],
-    yieldsTo: 'controls',
-    run: (t) => t.step(1),
+    keys: ['>'],
+    owner: 'unlessTyping',
+    help: ['< >', 'Play slower / faster'],
+    run: (t) => t.playSpeed(1),
   },
-  { keys: ['PageUp'], help: ['PageUp, ←', 'Previous step'], run: (t) => t.step(-1) },
-  { keys: ['ArrowLeft', 'ArrowUp'], help: ['', ''], yieldsTo: 'controls', run: (t) => t.step(-1) },
-  { keys: ['Home'], help: ['Home / End', 'First / last step'], run: (t) => t.stepTo('first') },
-  { keys: ['End'], help: ['', ''], run: (t) => t.stepTo('last') },
-  { keys: ['k', 'K'], help: ['K', 'Play / pause the parameter'], run: (t) => t.togglePlay() },
-  { keys: ['0'], help: ['0, +, −', 'Fit the view, zoom in, zoom out'], run: (t) => t.fit() },
-  { keys: ['+', '='], help: ['', ''], run: (t) => t.zoom(1.25) },
-  { keys: ['-'], help: ['', ''], run: (t) => t.zoom(0.8) },
+  { keys: ['<'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.playSpeed(-1) },
+  {
+    keys: ['0'],
+    owner: 'unlessTyping',
+    help: ['0, +, −', 'Fit the view, zoom in, zoom out'],
+    run: (t) => t.fit(),
+  },
+  { keys: ['+', '='], owner: 'unlessTyping', help: ['', ''], run: (t) => t.zoom(1.25) },
+  { keys: ['-'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.zoom(0.8) },
   {
     keys: ['['],
+    owner: 'unlessTyping',
     help: ['[ ] and { }', 'Turn a figure in space left / right, tilt it down / up'],
     run: (t) => t.orbit(-15, 0),
   },
-  { keys: [']'], help: ['', ''], run: (t) => t.orbit(15, 0) },
-  { keys: ['{'], help: ['', ''], run: (t) => t.orbit(0, -10) },
-  { keys: ['}'], help: ['', ''], run: (t) => t.orbit(0, 10) },
+  { keys: [']'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.orbit(15, 0) },
+  { keys: ['{'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.orbit(0, -10) },
+  { keys: ['}'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.orbit(0, 10) },
+  {
+    keys: ['p', 'P'],
+    owner: 'unlessTyping',
+    app: true,
+    help: ['P', 'Presenter view: the figure fills the screen, large captions'],
+    run: (t) => t.presenter(),
+  },
+  {
+    keys: ['s', 'S'],
+    owner: 'unlessTyping',
+    help: ['S', 'Show or fold the side panel'],
+    run: (t) => t.sidePanel(),
+  },
+  {
+    keys: ['l', 'L'],
+    owner: 'unlessTyping',
+    help: ['L', 'Laser pointer'],
+    run: (t) => t.tool('laser'),
+  },
+  {
+    keys: ['i', 'I'],
+    owner: 'unlessTyping',
+    help: ['I / E', 'Ink: draw over the figure / erase the ink'],
+    run: (t) => t.tool('ink'),
+  },
+  { keys: ['e', 'E'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.clearInk() },
+  {
+    keys: ['c', 'C'],
+    owner: 'unlessTyping',
+    help: ['C, N, A', 'Hide / reveal the curve, the numbers, the labels (predict, then show)'],
+    run: (t) => t.tool('hideCurve'),
+  },
+  { keys: ['n', 'N'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.tool('hideNumbers') },
+  { keys: ['a', 'A'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.tool('hideLabels') },
+  {
+    keys: ['o', 'O'],
+    owner: 'unlessTyping',
+    help: ['O', 'Keep the current figure as a faint ghost to compare with'],
+    run: (t) => t.tool('ghost'),
+  },
+  {
+    keys: ['r', 'R'],
+    owner: 'unlessTyping',
+    help: ['R', 'Trail: trace the moving point while the parameter plays'],
+    run: (t) => t.tool('trail'),
+  },
+  {
+    keys: ['d', 'D'],
+    owner: 'unlessTyping',
+    app: true,
+    help: ['D', 'Dark theme'],
+    run: (t) => t.dark(),
+  },
+  {
+    keys: ['f', 'F'],
+    owner: 'unlessTyping',
+    app: true,
+    help: ['F', 'Full screen'],
+    run: (t) => t.fullscreen(),
+  },
+  {
+    keys: ['g', 'G'],
+    owner: 'unlessTyping',
+    app: true,
+    help: ['G', 'Back to the gallery of lessons'],
+    run: (t) => t.gallery(),
+  },
+  { keys: ['?'], owner: 'unlessTyping', app: true, help: ['?', 'This help'], run: (t) => t.help() },
 ];
 
-const isTyping = (target: EventTarget | null) =>
+/** Keys that bring a blanked screen back (and do nothing else then). */
+const CLICKER = new Set(['PageDown', 'PageUp', 'b', 'B', '.', 'Escape', 'ArrowRight', 'ArrowLeft']);
+
+/** A field that takes typed text: letters and `.` are its own. */
+export const isTyping = (target: EventTarget | null): boolean =>
   target instanceof HTMLElement &&
   (target.isContentEditable ||
-    target.tagName === 'INPUT' ||
     target.tagName === 'TEXTAREA' ||
-    target.tagName === 'SELECT');
+    target.tagName === 'SELECT' ||
+    (target instanceof HTMLInputElement &&
+      !['range', 'checkbox', 'radio', 'button', 'submit', 'reset', 'color'].includes(target.type)));
 
-const onControl = (target: EventTarget | null) =>
+/** A control with keys of its own: a button, a point, a slider, a checkbox, a radio button. */
+export const isControl = (target: EventTarget | null): boolean =>
   target instanceof HTMLElement &&
-  (target.tagName === 'BUTTON' || target.classList.contains('handle-proxy'));
+  (isTyping(target) ||
+    target.tagName === 'BUTTON' ||
+    target.tagName === 'A' ||
+    target.tagName === 'INPUT' ||
+    target.classList.contains('handle-proxy') ||
+    target.getAttribute('role') === 'slider' ||
+    target.getAttribute('role') === 'radio');
 
-/** The binding for a key press, or null when the key belongs to whatever has focus. */
-export function bindingFor(e: KeyboardEvent): Binding | null {
+/**
+ * The binding for a key press, or null when the key belongs to whatever has
+ * focus. `lesson` says whether a lesson page is open (else only app keys).
+ */
+export function bindingFor(e: KeyboardEvent, lesson = true): Binding | null {
   const mod = e.ctrlKey || e.metaKey;
-  const clicker = e.key === 'PageDown' || e.key === 'PageUp';
-  const onSlider = e.target instanceof HTMLInputElement && e.target.type === 'range';
-  for (const binding of LESSON_KEYS) {
+  for (const binding of KEYS) {
     if (!binding.keys.includes(e.key)) continue;
     if (Boolean(binding.mod) !== mod) continue;
     if (binding.shift !== undefined && binding.shift !== e.shiftKey) continue;
-    if (!binding.mod) {
-      if (e.altKey) return null;
-      if (isTyping(e.target) && !(clicker && onSlider)) return null;
-      if (binding.yieldsTo === 'controls' && onControl(e.target)) return null;
-    }
+    if (!lesson && !binding.app) return null;
+    if (!binding.mod && e.altKey) return null;
+    if (binding.owner === 'unlessTyping' && isTyping(e.target)) return null;
+    if (binding.owner === 'unlessControl' && isControl(e.target)) return null;
     return binding;
   }
   return null;
 }
 
+/**
+ * While the screen is blanked, a clicker key (or Escape) only brings it back:
+ * the audience sees nothing change behind the black.
+ */
+export const restoresBlank = (e: KeyboardEvent): boolean =>
+  !e.ctrlKey && !e.metaKey && !e.altKey && CLICKER.has(e.key);
+
 /** Rows for the help dialog: [keys, what they do]. */
-export const lessonKeyHelp = (): [string, string][] =>
-  LESSON_KEYS.map((b) => b.help).filter(([keys]) => keys !== '');
+export const keyHelp = (lesson = true): [string, string][] =>
+  KEYS.filter((b) => lesson || b.app)
+    .map((b) => b.help)
+    .filter(([keys]) => keys !== '');

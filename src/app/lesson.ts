@@ -86,6 +86,11 @@ export interface FigureSpec<S, M = S> {
   aspect?: number;
   /** The camera a `space` figure starts with. */
   camera?: CameraSettings;
+  /**
+   * The moving point whose trail presenter view can draw while the parameter
+   * plays (e.g. P(t)); null when there is none now.
+   */
+  trail?(model: M): Point | null;
 }
 
 /**
@@ -110,20 +115,43 @@ export interface ParameterSpec<S> {
   step: number;
 }
 
-export interface StepsSpec<S> {
+/**
+ * The construction a clicker walks through, one step at a time. Step 0 shows
+ * little (the given points); each step adds one thing; the last shows it all.
+ */
+export interface StepsSpec<S, M = S> {
+  /** The state's field (an `int`) that holds the step. */
   key: NumberKeys<S>;
-  /** Steps run 0 … count(state). */
+  /** Steps run 0 … count(state). Long constructions step in chunks (tens of steps, not hundreds). */
   count(state: S): number;
-  /** Says what step k shows, e.g. "Level 2 of 3". */
+  /**
+   * The caption of step k: what this step shows, in one short sentence
+   * ("Level 2: the points P_{2,i} between the P_{1,i}"). The step status and
+   * presenter view show it; plain words and Unicode, no TeX.
+   */
   describe(state: S, k: number): string;
+  /**
+   * The formula of the current step with its numbers (TeX), drawn large under
+   * the caption in presenter view; null when the step has none.
+   */
+  formula?(model: M, state: S): string | null;
 }
 
-export interface Preset<S> {
+/**
+ * A scene of the lesson's script: a figure of the lecture (a preset), in
+ * teaching order. The clicker opens the next scene after the last step of
+ * this one; a scene always opens at step 0.
+ */
+export interface Scene<S> {
+  /** Stable id, in the link as `scene=<id>`. */
   id: string;
   label: string;
-  /** The state this preset sets up (from the current one). */
+  /** The state this scene sets up (from the current one). The shell then sets the step to 0. */
   apply(current: S): S;
 }
+
+/** Earlier name of a scene. */
+export type Preset<S> = Scene<S>;
 
 /** What a lesson's side panel can ask of the shell. */
 export interface LessonApi<S, M = S> {
@@ -160,8 +188,10 @@ export interface LessonDefinition<S, M = S> {
   /** Side by side on a wide screen (default), stacked, or a tree of rows, columns and grids. */
   layout?: 'row' | 'column' | LayoutNode;
   parameter?: ParameterSpec<S>;
-  steps?: StepsSpec<S>;
-  presets?: Preset<S>[];
+  /** The construction's steps (the clicker's unit). */
+  steps?: StepsSpec<S, M>;
+  /** The lesson's script: its scenes in teaching order (the first is what the lesson opens with). */
+  scenes?: Scene<S>[];
   /** Cross-field checks after decoding a link or an edit; returns what it changed, in words. */
   normalize?(state: S): { state: S; issues: string[] };
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;

@@ -12,11 +12,12 @@ import { memoize } from './derive';
 import { h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
-import { type KeyTarget, bindingFor } from './keymap';
+import type { PresenterTool } from './keymap';
 import { buildLayout } from './layout';
-import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
+import type { AnyLesson, DrawInfo, LessonPanel, Point } from './lesson';
 import { LessonStore, type Loaded } from './lessonState';
 import type { LessonMeta } from './meta';
+import { Presenter } from './presenter';
 import { UrlSync } from './urlSync';
 
 /** What the app shell offers a lesson page. */
@@ -31,7 +32,10 @@ let framesMeasured = 0;
 /** The name of each frame's measure in the Performance timeline. */
 const FRAME = 'spline-lab:frame';
 
-export class LessonPage<S, M> implements KeyTarget {
+/** Points of a trail kept per figure (a long play is thinned to this many). */
+const TRAIL_MAX = 4000;
+
+export class LessonPage<S, M> {
   readonly element: HTMLElement;
   readonly store: LessonStore<S>;
   readonly figures: FigureView<S, M>[];
@@ -39,7 +43,7 @@ export class LessonPage<S, M> implements KeyTarget {
   private readonly panel: LessonPanel<S, M>;
   private readonly url: UrlSync;
   private readonly parameter?: ParameterControl<S>;
-  private readonly steps?: StepControl<S>;
+  private readonly steps?: StepControl;
   private readonly undoButton: HTMLButtonElement;
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
@@ -56,6 +60,17 @@ export class LessonPage<S, M> implements KeyTarget {
   private panelWidthChanged = false;
   /** The panel changed: fit its wide content at the start of the next frame. */
   private fitPending = false;
+  readonly presenter: Presenter;
+  /** The scene buttons, to mark the current one. */
+  private sceneButtons: HTMLButtonElement[] = [];
+  /** The state each scene was left in, so the clicker going back finds it as it was. */
+  private readonly sceneMemory = new Map<number, S>();
+  /** The model kept as a faint ghost (presenter tool), or null. */
+  private ghostModel: M | null = null;
+  /** The trail of each figure's moving point (presenter tool). */
+  private readonly trails = new Map<string, Point[]>();
+  /** The step the caption and ink were last shown for. */
+  private shownStep = '';
 
   constructor(
     readonly meta: LessonMeta,
@@ -63,7 +78,7 @@ export class LessonPage<S, M> implements KeyTarget {
     loaded: Loaded<S>,
     private readonly shell: Shell,
   ) {
-    this.store = new LessonStore<S>(lesson, loaded.state);
+    this.store = new LessonStore<S>(lesson, loaded.state, loaded.scene);
     this.model = memoize((state: S) => lesson.derive(state) as M);
     const set = (next: S, options?: { coalesce?: string; windowMs?: number; record?: boolean }) =>
       this.store.set(next, options);
@@ -81,6 +96,9 @@ export class LessonPage<S, M> implements KeyTarget {
           viewChanged: () => this.url.schedule(300),
           hold: () => this.url.hold(),
           settle: () => this.url.write(),
+          shown: () => this.presenter.shown(),
+          ghost: () => this.ghostModel,
+          trail: (figure) => this.trails.get(figure) ?? null,
         }),
     );
     this.panel = lesson.panel({
@@ -95,7 +113,8 @@ export class LessonPage<S, M> implements KeyTarget {
 
     const host = { get: () => this.store.state, set, settle: () => this.url.write() };
     if (lesson.parameter) this.parameter = new ParameterControl<S>(lesson.parameter, host);
-    if (lesson.steps) this.steps = new StepControl<S>(lesson.steps, host);
+    if (lesson.steps || lesson.scenes?.length)
+      this.steps = new StepControl((delta) => this.advance(delta));
     this.undoButton = h(
       'button',
       { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.undo() },
@@ -107,16 +126,29 @@ export class LessonPage<S, M> implements KeyTarget {
       'Redo',
     );
 
+    const figures = h(
+      'div',
+      { class: 'stage-figures' },
+      buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
+    );
+    this.presenter = new Presenter(figures, (tool) => this.toolChanged(tool));
     const stage = h(
       'section',
       { class: 'stage', 'aria-label': 'Figure' },
-      buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
-      h('div', { class: 'controls' }, this.parameter?.element, this.steps?.element),
+      this.presenter.caption,
+      figures,
+      h(
+        'div',
+        { class: 'controls' },
+        this.parameter?.element,
+        this.steps?.element,
+        this.presenter.toolbar,
+      ),
     );
     const aside = h(
       'aside',
       { class: 'panel', 'aria-label': 'Explanation' },
-      this.presetButtons(),
+      this.sceneButtonGroup(),
       this.panel.element,
     );
     this.element = h(
@@ -125,6 +157,19 @@ export class LessonPage<S, M> implements KeyTarget {
       h('div', { class: 'lesson-head' }, h('h1', {}, meta.title), this.toolbar()),
       h('div', { class: 'lesson-body' }, stage, aside),
     );
+    // A control clicked with the pointer gives its focus back: the clicker's
+    // arrows and Space then step the construction instead of ticking it again.
+    this.element.addEventListener('click', (e) => {
+      const target = document.activeElement;
+      if (
+        e.detail > 0 &&
+        target instanceof HTMLElement &&
+        this.element.contains(target) &&
+        (target.tagName === 'BUTTON' ||
+          (target instanceof HTMLInputElement && ['checkbox', 'radio'].includes(target.type)))
+      )
+        target.blur();
+    });
 
     // Formulas fit the panel's width; its height follows its content, so only
     // a change of width may refit them (else fitting could feed itself).
@@ -163,27 +208,142 @@ export class LessonPage<S, M> implements KeyTarget {
     );
   }
 
-  private presetButtons(): HTMLElement | null {
-    const presets = this.lesson.presets;
-    if (!presets?.length) return null;
+  private sceneButtonGroup(): HTMLElement | null {
+    const scenes = this.lesson.scenes;
+    if (!scenes?.length) return null;
+    this.sceneButtons = scenes.map((scene, i) =>
+      h(
+        'button',
+        {
+          type: 'button',
+          'data-scene': scene.id,
+          'aria-pressed': String(i === this.store.scene),
+          title: `Scene ${i + 1} of ${scenes.length}: opens at its first step`,
+          onclick: () => this.openScene(i, 'first', true),
+        },
+        scene.label,
+      ),
+    );
     return h(
       'div',
-      { class: 'presets', role: 'group', 'aria-label': 'Presets' },
-      h('span', { class: 'presets-title' }, 'Presets'),
-      ...presets.map((preset) =>
-        h(
-          'button',
-          {
-            type: 'button',
-            'data-preset': preset.id,
-            onclick: () => {
-              this.store.set(preset.apply(this.store.state));
-              this.fit();
-            },
-          },
-          preset.label,
-        ),
-      ),
+      { class: 'presets', role: 'group', 'aria-label': 'Scenes' },
+      h('span', { class: 'presets-title' }, 'Scenes'),
+      ...this.sceneButtons,
+    );
+  }
+
+  private stepOf(state: S): { k: number; count: number } {
+    const steps = this.lesson.steps;
+    if (!steps) return { k: 0, count: 0 };
+    return { k: (state as Record<string, number>)[steps.key], count: steps.count(state) };
+  }
+
+  private withStep(state: S, k: number): S {
+    const key = this.lesson.steps?.key;
+    return key === undefined ? state : { ...state, [key]: k };
+  }
+
+  /**
+   * Opens scene `index` at its first or last step. A click on its button is an
+   * edit (undoable) and sets the scene up afresh; the clicker is not an edit,
+   * and finds a scene it left as it was left.
+   */
+  openScene(index: number, at: 'first' | 'last', fresh: boolean): void {
+    const scenes = this.lesson.scenes ?? [];
+    const scene = scenes[index];
+    if (!scene) return;
+    this.sceneMemory.set(this.store.scene, this.store.state);
+    const kept = fresh ? undefined : this.sceneMemory.get(index);
+    const base = kept ?? scene.apply(this.store.state);
+    const k = at === 'first' ? 0 : this.stepOf(base).count;
+    this.store.scene = index;
+    this.store.set(this.withStep(base, k), { record: fresh });
+    this.sceneButtons.forEach((b, i) => b.setAttribute('aria-pressed', String(i === index)));
+    this.fit();
+    this.shell.announce(`Scene ${index + 1} of ${scenes.length}: ${scene.label}`);
+  }
+
+  /** The clicker: the next (or previous) step, and past the last (first) one the next (previous) scene. */
+  advance(delta: 1 | -1): void {
+    const { k, count } = this.stepOf(this.store.state);
+    const next = k + delta;
+    if (next >= 0 && next <= count) {
+      this.store.set(this.withStep(this.store.state, next), { record: false });
+      return;
+    }
+    const scene = this.store.scene + delta;
+    if (scene >= 0 && scene < (this.lesson.scenes?.length ?? 0))
+      this.openScene(scene, delta > 0 ? 'first' : 'last', false);
+    else this.shell.announce(delta > 0 ? 'The end of the lesson' : 'The start of the lesson');
+  }
+
+  private updateSteps(state: S): void {
+    if (!this.steps) return;
+    const { k, count } = this.stepOf(state);
+    const scenes = this.lesson.scenes?.length ?? 0;
+    const text = this.lesson.steps
+      ? `${count > 0 ? `Step ${k}/${count}: ` : ''}${this.lesson.steps.describe(state, k)}`
+      : `Scene ${this.store.scene + 1} of ${scenes}`;
+    this.steps.update(
+      text,
+      k === 0 && this.store.scene === 0,
+      k === count && this.store.scene >= scenes - 1,
+    );
+  }
+
+  /** Home / End: the first or last step of this scene. */
+  stepTo(end: 'first' | 'last'): void {
+    const { k, count } = this.stepOf(this.store.state);
+    const target = end === 'first' ? 0 : count;
+    if (target !== k) this.store.set(this.withStep(this.store.state, target), { record: false });
+  }
+
+  /** A presenter tool was switched: redraw what it changes. */
+  private toolChanged(tool: PresenterTool | 'blank'): void {
+    if (tool === 'ghost') this.ghostModel = this.presenter.tools.ghost ? this.current() : null;
+    if (tool === 'trail') this.trails.clear();
+    if (tool !== 'blank' && tool !== 'laser' && tool !== 'ink') {
+      this.refreshAll = true;
+      this.requestFrame();
+    }
+  }
+
+  get blanked(): boolean {
+    return this.presenter.blanked;
+  }
+
+  /** The moving points of this state, added to the trails (presenter tool). */
+  private extendTrails(model: M): void {
+    for (const figure of this.figures) {
+      const point = figure.spec.trail?.(model);
+      if (!point) continue;
+      const trail = this.trails.get(figure.spec.id) ?? [];
+      const last = trail[trail.length - 1];
+      if (!last || last.some((v, i) => v !== point[i])) trail.push(point);
+      if (trail.length > TRAIL_MAX) trail.splice(0, trail.length - TRAIL_MAX / 2);
+      this.trails.set(figure.spec.id, trail);
+    }
+  }
+
+  /** The caption of the current step, for presenter view; ink is cleared when the step changes. */
+  private updateCaption(state: S, model: M): void {
+    const steps = this.lesson.steps;
+    const scenes = this.lesson.scenes ?? [];
+    const { k, count } = this.stepOf(state);
+    const key = `${this.store.scene}/${k}`;
+    if (key !== this.shownStep) {
+      if (this.shownStep !== '') this.presenter.clearInk();
+      this.shownStep = key;
+    }
+    if (!document.documentElement.classList.contains('projector')) return;
+    const scene = scenes[this.store.scene];
+    const sceneText = scene
+      ? `${scene.label} · ${scenes.length > 1 ? `scene ${this.store.scene + 1}/${scenes.length}, ` : ''}step ${k}/${count}`
+      : '';
+    this.presenter.setCaption(
+      sceneText,
+      steps ? steps.describe(state, k) : '',
+      steps?.formula?.(model, state) ?? null,
     );
   }
 
@@ -216,10 +376,11 @@ export class LessonPage<S, M> implements KeyTarget {
     }
   }
 
-  /** Redraws everything after a change of display settings (projector mode changes every size). */
+  /** Redraws everything after a change of display settings (presenter view changes every size). */
   refresh(): void {
     refitAll(this.panel.element);
     this.refreshAll = true;
+    this.panelState = null;
     this.requestFrame();
   }
 
@@ -259,6 +420,7 @@ export class LessonPage<S, M> implements KeyTarget {
     const state = this.store.state;
     const model = this.model(state);
     const stateChanged = state !== this.drawnState || this.refreshAll;
+    if (state !== this.drawnState && this.presenter.tools.trail) this.extendTrails(model);
     const all = stateChanged || this.hoverChanged;
     for (const figure of this.figures) {
       if (all || this.dirtyFigures.has(figure)) figure.draw(model);
@@ -270,8 +432,9 @@ export class LessonPage<S, M> implements KeyTarget {
     if (panelDue) {
       this.panelState = state;
       this.panel.update(model, state);
+      this.updateCaption(state, model);
       this.parameter?.update(state);
-      this.steps?.update(state);
+      this.updateSteps(state);
       this.undoButton.disabled = !this.store.canUndo;
       this.redoButton.disabled = !this.store.canRedo;
     }
@@ -330,17 +493,35 @@ export class LessonPage<S, M> implements KeyTarget {
     this.store.redo();
   }
 
-  step(delta: number): void {
-    if (this.steps) this.steps.step(delta);
-    else this.parameter?.nudge(delta);
-  }
-
-  stepTo(end: 'first' | 'last'): void {
-    this.steps?.stepTo(end);
-  }
-
   togglePlay(): void {
     this.parameter?.toggle();
+  }
+
+  playSpeed(delta: 1 | -1): void {
+    this.parameter?.changeSpeed(delta);
+  }
+
+  /** Shows or folds the side panel (folded by default in presenter view). */
+  sidePanel(): void {
+    const presenting = document.documentElement.classList.contains('projector');
+    this.element.classList.toggle(presenting ? 'panel-shown' : 'panel-folded');
+    this.refresh();
+  }
+
+  tool(name: PresenterTool): void {
+    this.presenter.toggle(name);
+  }
+
+  blank(): void {
+    this.presenter.blank();
+  }
+
+  unblank(): void {
+    this.presenter.unblank();
+  }
+
+  clearInk(): void {
+    this.presenter.clearInk();
   }
 
   fit(): void {
@@ -378,14 +559,6 @@ export class LessonPage<S, M> implements KeyTarget {
     download(new Blob([svg], { type: 'image/svg+xml' }), `spline-lab-${this.lesson.slug}.svg`);
   }
 
-  /** Page-level keys (see keymap.ts); returns true when the key was used. */
-  handleKey(e: KeyboardEvent): boolean {
-    const binding = bindingFor(e);
-    if (!binding) return false;
-    binding.run(this);
-    return true;
-  }
-
   destroy(): void {
     // By now the address bar may already show another page: only remember
     // (and a write still pending sees the new address and leaves it alone).
@@ -395,6 +568,7 @@ export class LessonPage<S, M> implements KeyTarget {
     this.panelResize.disconnect();
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();
+    this.presenter.destroy();
     this.panel.destroy?.();
   }
 }

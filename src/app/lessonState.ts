@@ -10,6 +10,8 @@ export interface Loaded<S> {
   issues: string[];
   /** Views of figures the link or the stored state carries (`view.<figure>`). */
   views: Record<string, string>;
+  /** The scene of the lesson's script it is in (an index into `lesson.scenes`). */
+  scene: number;
 }
 
 /** Applies the lesson's own cross-field rules and the shell's step clamp. */
@@ -27,6 +29,9 @@ export function normalizeState<S>(lesson: AnyLesson, state: S): { state: S; issu
     const step = next[key] as unknown as number;
     if (step > count) {
       next = { ...next, [key]: count };
+      issues.push(
+        `${String(key)}: ${step} is past the last step of this construction (${count}), so it shows step ${count}`,
+      );
     }
   }
   return { state: next, issues };
@@ -40,30 +45,39 @@ export function normalizeState<S>(lesson: AnyLesson, state: S): { state: S; issu
  */
 export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage | null): Loaded<S> {
   const figures = lesson.figures.map((f) => f.id);
+  const scenes = (lesson.scenes ?? []).map((scene) => scene.id);
   if (query !== '') {
-    const decoded = decodeState<S>(lesson.schema, query, figures);
+    const decoded = decodeState<S>(lesson.schema, query, figures, scenes);
     const normalized = normalizeState(lesson, decoded.state);
     return {
       state: normalized.state as S,
       issues: [...decoded.issues, ...normalized.issues],
       views: decoded.views,
+      scene: decoded.scene,
     };
   }
   const stored = readStorage(storage, storageKey(lesson.slug));
+  let issues: string[] = [];
   if (stored) {
-    const decoded = decodeState<S>(lesson.schema, stored, figures);
+    const decoded = decodeState<S>(lesson.schema, stored, figures, scenes);
     if (decoded.issues.length === 0)
       return {
         state: normalizeState(lesson, decoded.state).state as S,
         issues: [],
         views: decoded.views,
+        scene: decoded.scene,
       };
+    // Kept by an older version, or damaged: say so rather than lose it quietly.
+    issues = [
+      `the state this device kept from your last visit could not be read (${decoded.issues[0]}), so the lesson opened with its defaults`,
+    ];
   }
   // Defaults go through the same rules, so a lesson may default a step to "the end".
   return {
     state: normalizeState(lesson, defaultsOf<S>(lesson.schema)).state,
-    issues: [],
+    issues,
     views: {},
+    scene: 0,
   };
 }
 
@@ -75,16 +89,24 @@ function readStorage(storage: Storage | null, key: string): string | null {
   }
 }
 
-/** A lesson's state with undo/redo and change listeners. */
+/**
+ * A lesson's state with undo/redo and change listeners, and where it is in the
+ * lesson's script. Undo and redo are for edits: they never move the step (the
+ * clicker is not an edit), so they keep the step in force.
+ */
 export class LessonStore<S> {
   private readonly history: History<S>;
   private readonly listeners = new Set<(state: S) => void>();
+  /** The current scene of the script (an index into `lesson.scenes`). */
+  scene: number;
 
   constructor(
     private readonly lesson: AnyLesson,
     initial: S,
+    scene = 0,
   ) {
     this.history = new History(initial);
+    this.scene = scene;
   }
 
   get state(): S {
@@ -98,9 +120,10 @@ export class LessonStore<S> {
     return this.history.canRedo;
   }
 
-  /** The state as it appears in the URL after `#/slug?`, with the figures' views. */
+  /** The state as it appears in the URL after `#/slug?`, with the scene and the figures' views. */
   query(views: Readonly<Record<string, string>> = {}): string {
-    return encodeState(this.lesson.schema, this.state, views);
+    const scene = this.lesson.scenes?.[this.scene]?.id;
+    return encodeState(this.lesson.schema, this.state, views, scene);
   }
 
   subscribe(listener: (state: S) => void): () => void {
@@ -117,13 +140,28 @@ export class LessonStore<S> {
   }
 
   undo(): void {
+    const step = this.step();
     this.history.undo();
+    this.keepStep(step);
     this.emit();
   }
 
   redo(): void {
+    const step = this.step();
     this.history.redo();
+    this.keepStep(step);
     this.emit();
+  }
+
+  private step(): number | null {
+    const key = this.lesson.steps?.key;
+    return key === undefined ? null : (this.state as Record<string, number>)[key];
+  }
+
+  private keepStep(step: number | null): void {
+    const key = this.lesson.steps?.key;
+    if (key === undefined || step === null || this.step() === step) return;
+    this.history.replace(normalizeState(this.lesson, { ...this.state, [key]: step }).state as S);
   }
 
   private emit(): void {

@@ -7,6 +7,7 @@ import { findLesson, lessons } from './registry';
 import { parseHash } from './router';
 import { applySettings, loadSettings, saveSettings } from './settings';
 import { helpDialog, openHelp } from './help';
+import { type KeyTarget, bindingFor, restoresBlank } from './keymap';
 
 const settings = loadSettings();
 let theme = applySettings(settings);
@@ -42,8 +43,8 @@ function button(
 }
 
 const projectorButton = button(
-  'Projector',
-  'Projector mode: big strokes and labels, high contrast (P)',
+  'Presenter',
+  'Presenter view: the figure fills the screen, large captions and strokes, high contrast (P)',
   () => toggleProjector(),
   settings.projector,
 );
@@ -180,28 +181,53 @@ async function route(): Promise<void> {
 }
 
 window.addEventListener('hashchange', () => void route());
-window.addEventListener('keydown', (e) => {
-  if (help.open) return;
-  if (page?.handleKey(e)) {
+/** What the keys act on: the app's own actions, and the open lesson's. */
+const keyTarget: KeyTarget = {
+  undo: () => page?.undo(),
+  redo: () => page?.redo(),
+  advance: (delta) => page?.advance(delta),
+  stepTo: (end) => page?.stepTo(end),
+  togglePlay: () => page?.togglePlay(),
+  playSpeed: (delta) => page?.playSpeed(delta),
+  fit: () => page?.fit(),
+  zoom: (factor) => page?.zoom(factor),
+  orbit: (yaw, pitch) => page?.orbit(yaw, pitch),
+  presenter: () => toggleProjector(),
+  sidePanel: () => page?.sidePanel(),
+  blank: () => page?.blank(),
+  get blanked() {
+    return page?.blanked ?? false;
+  },
+  tool: (name) => page?.tool(name),
+  clearInk: () => page?.clearInk(),
+  dark: () => toggleDark(),
+  fullscreen: () => toggleFullscreen(),
+  help: () => openHelp(help),
+  gallery: () => {
+    location.hash = '#/';
+  },
+};
+
+// Capture phase: the page's keys are taken before a focused control sees them,
+// so a clicker's PageDown never also moves a slider or ticks a box.
+window.addEventListener(
+  'keydown',
+  (e) => {
+    if (help.open) return;
+    if (keyTarget.blanked && restoresBlank(e)) {
+      page?.unblank();
+      e.preventDefault();
+      e.stopPropagation();
+      return;
+    }
+    const binding = bindingFor(e, page !== null);
+    if (!binding) return;
     e.preventDefault();
-    return;
-  }
-  const target = e.target as HTMLElement | null;
-  if (
-    e.ctrlKey ||
-    e.metaKey ||
-    e.altKey ||
-    (target && /^(INPUT|TEXTAREA|SELECT)$/.test(target.tagName))
-  )
-    return;
-  if (e.key === 'p' || e.key === 'P') toggleProjector();
-  else if (e.key === 'f' || e.key === 'F') toggleFullscreen();
-  else if (e.key === 'd' || e.key === 'D') toggleDark();
-  else if (e.key === '?') openHelp(help);
-  else if (e.key === 'g' || e.key === 'G') location.hash = '#/';
-  else return;
-  e.preventDefault();
-});
+    e.stopPropagation();
+    binding.run(keyTarget);
+  },
+  { capture: true },
+);
 window.addEventListener('pagehide', () => page?.writeUrl());
 void route();
 

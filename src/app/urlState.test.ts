@@ -80,7 +80,12 @@ describe('URL state', () => {
   });
 
   it('an empty query gives the defaults with no notice', () => {
-    expect(decodeState(schema, '')).toEqual({ state: defaultsOf(schema), issues: [], views: {} });
+    expect(decodeState(schema, '')).toEqual({
+      state: defaultsOf(schema),
+      issues: [],
+      views: {},
+      scene: 0,
+    });
   });
 
   it('keeps the valid fields of a damaged link and says what it ignored', () => {

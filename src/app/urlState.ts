@@ -22,6 +22,8 @@ export interface Decoded<S> {
   issues: string[];
   /** The views of figures the link names (`view.<figure>` = the projection's own text). */
   views: Record<string, string>;
+  /** The scene the link names (`scene=<id>`), as an index into the lesson's scenes; 0 without one. */
+  scene: number;
 }
 
 /** Longest query string we read at all: a real state is far shorter. */
@@ -29,6 +31,9 @@ export const MAX_QUERY_LENGTH = 20_000;
 
 /** Prefix of the keys that carry a figure's view (pan and zoom, or camera). */
 export const VIEW_PREFIX = 'view.';
+
+/** The key of the lesson's current scene (owned by the shell, like the views). */
+export const SCENE_KEY = 'scene';
 
 function copy<V>(value: V): V {
   return (Array.isArray(value) ? value.map((v) => copy(v)) : value) as V;
@@ -42,13 +47,18 @@ export function defaultsOf<S>(schema: Schema<S>): S {
   return state as S;
 }
 
-/** The state as a query string, fields in schema order, then the views in figure order. */
+/**
+ * The state as a query string: the scene (if the lesson has scenes), the
+ * fields in schema order, then the views in figure order.
+ */
 export function encodeState<S>(
   schema: Schema<S>,
   state: S,
   views: Readonly<Record<string, string>> = {},
+  scene?: string,
 ): string {
   const parts: string[] = [];
+  if (scene !== undefined) parts.push(`${SCENE_KEY}=${scene}`);
   for (const key of Object.keys(schema) as (keyof S & string)[]) {
     parts.push(`${key}=${schema[key].encode(state[key])}`);
   }
@@ -64,15 +74,17 @@ export function decodeState<S>(
   schema: Schema<S>,
   query: string,
   figures: readonly string[] = [],
+  scenes: readonly string[] = [],
 ): Decoded<S> {
   const state = defaultsOf(schema) as Record<string, unknown>;
   const issues: string[] = [];
   const views: Record<string, string> = {};
+  let scene = 0;
   if (query.length > MAX_QUERY_LENGTH) {
     issues.push(
       `the link's state is ${query.length} characters long (at most ${MAX_QUERY_LENGTH}), so all of it was ignored`,
     );
-    return { state: state as S, issues, views };
+    return { state: state as S, issues, views, scene };
   }
   const seen = new Set<string>();
   for (const part of query.split('&')) {
@@ -99,6 +111,16 @@ export function decodeState<S>(
         issues.push(`${key}: ${quote(raw)} has characters that do not belong; the view was fitted`);
       continue;
     }
+    if (key === SCENE_KEY && scenes.length > 0) {
+      seen.add(key);
+      const index = scenes.indexOf(raw);
+      if (index >= 0) scene = index;
+      else
+        issues.push(
+          `${SCENE_KEY}: ${quote(raw)} is not a scene of this lesson; the script starts at its first`,
+        );
+      continue;
+    }
     if (!Object.prototype.hasOwnProperty.call(schema, key)) {
       issues.push(`unknown setting ${quote(key)}`);
       continue;
@@ -112,5 +134,5 @@ export function decodeState<S>(
     if (result.ok) state[key] = result.value;
     else issues.push(`${key}: ${result.why}; the default was used`);
   }
-  return { state: state as S, issues, views };
+  return { state: state as S, issues, views, scene };
 }

@@ -111,7 +111,26 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
       pinchStart = { distance, mid };
       return;
     }
-    if (pointers.size === 1 && cb.pan) cb.pan(at[0] - previous[0], at[1] - previous[1]);
+    // One finger on empty space scrolls the page (the browser does it, as
+    // touch-action allows); panning is two fingers, or a mouse or pen drag.
+    if (pointers.size === 1 && cb.pan && e.pointerType !== 'touch')
+      cb.pan(at[0] - previous[0], at[1] - previous[1]);
+  };
+
+  // The browser may scroll the page under one finger (touch-action: pan-x
+  // pan-y) unless the touch starts on a handle, or is a second finger.
+  const onTouchStart = (e: TouchEvent) => {
+    if (e.touches.length > 1) {
+      if (cb.zoom) e.preventDefault();
+      return;
+    }
+    const touch = e.touches[0];
+    const r = canvas.getBoundingClientRect();
+    if (cb.pick([touch.clientX - r.left, touch.clientY - r.top], 'touch') !== null)
+      e.preventDefault();
+  };
+  const onTouchMove = (e: TouchEvent) => {
+    if (dragging || (e.touches.length > 1 && cb.zoom)) e.preventDefault();
   };
 
   const onUp = (e: PointerEvent) => {
@@ -159,6 +178,8 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
   canvas.addEventListener('dblclick', onDoubleClick, options);
   canvas.addEventListener('contextmenu', onContextMenu, options);
   canvas.addEventListener('wheel', onWheel, { ...options, passive: false });
+  canvas.addEventListener('touchstart', onTouchStart, { ...options, passive: false });
+  canvas.addEventListener('touchmove', onTouchMove, { ...options, passive: false });
   return () => {
     cancelLongPress();
     listening.abort();

@@ -22,7 +22,25 @@ export interface StrokeStyle {
   width?: number;
   dash?: number[];
   alpha?: number;
+  /**
+   * `curve`: the result the lesson is about (the spline, P(t)'s curve). The
+   * presenter can hide it ("predict, then show"); mark the main curve so.
+   */
+  role?: 'curve';
 }
+
+/** What the presenter lets the figure show ("predict, then show" hides some). */
+export interface Shown {
+  curve: boolean;
+  labels: boolean;
+  /** Labels with decimal numbers in them (values, coordinates). */
+  numbers: boolean;
+}
+
+export const SHOW_ALL: Readonly<Shown> = { curve: true, labels: true, numbers: true };
+
+/** A label that carries a value: a decimal number (subscripts like P_{12} are not values). */
+const NUMBER = /\d\.\d|\d\s*[=×]|=\s*[−-]?\d/;
 
 export type HandleState = 'idle' | 'hover' | 'drag' | 'focus';
 
@@ -53,6 +71,8 @@ export class Painter {
     readonly ctx: DrawingSurface,
     readonly view: Projection,
     readonly theme: Theme,
+    /** What may be drawn: all of it, unless the presenter hid something. */
+    readonly show: Readonly<Shown> = SHOW_ALL,
   ) {
     this.clip = {
       minX: -MARGIN,
@@ -121,7 +141,18 @@ export class Painter {
     this.strokeScreen(this.project(path), style);
   }
 
+  /** The presenter hid what this style draws. */
+  hidden(style: StrokeStyle): boolean {
+    return style.role === 'curve' && !this.show.curve;
+  }
+
+  /** The presenter hid this label (all labels, or those with values). */
+  labelHidden(text: string): boolean {
+    return !this.show.labels || (!this.show.numbers && NUMBER.test(text));
+  }
+
   private strokeScreen(xy: ArrayLike<number>, style: StrokeStyle): void {
+    if (this.hidden(style)) return;
     const c = this.ctx;
     c.save();
     this.applyStroke(style, this.sizes.curve, this.theme.curve);
@@ -153,7 +184,7 @@ export class Painter {
    * segments are flattened.
    */
   cubicSegments(segments: readonly (readonly P[])[], style: StrokeStyle = {}): void {
-    if (!segments.length) return;
+    if (!segments.length || this.hidden(style)) return;
     const c = this.ctx;
     c.save();
     this.applyStroke(style, this.sizes.curve, this.theme.curve);
@@ -392,18 +423,23 @@ export class Painter {
 
   /** Labels beside a plot cursor at x = `at` (world), pushed apart so none covers another. */
   cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
-    drawCursorLabels(this, at, entries);
+    drawCursorLabels(
+      this,
+      at,
+      entries.filter((e) => !this.labelHidden(e.text)),
+    );
   }
 
   /** A label beside `p` on whichever side lies farthest from the `avoid` points. */
   labelClear(text: string, p: P, avoid: readonly P[], style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
-    if (!this.onScreen(x, y)) return;
+    if (!this.onScreen(x, y) || this.labelHidden(text)) return;
     drawLabelClear(this, text, [x, y], avoid, style);
   }
 
   /** A label at screen coordinates (pixels): legends, captions. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
+    if (this.labelHidden(text)) return { width: 0 };
     return drawScreenLabel(this, text, x, y, style);
   }
 

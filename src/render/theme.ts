@@ -88,7 +88,7 @@ const DARK_STRONG = [
 
 export function makeTheme(dark: boolean, projector: boolean): Theme {
   const sizes: Sizes = projector
-    ? { curve: 6, line: 3.5, thin: 2, handle: 13, point: 8, label: 26, small: 20 }
+    ? { curve: 7, line: 4.5, thin: 4, handle: 14, point: 9, label: 30, small: 28 }
     : { curve: 3, line: 1.75, thin: 1, handle: 8, point: 5, label: 15, small: 12 };
   if (dark) {
     return {

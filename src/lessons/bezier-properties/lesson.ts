@@ -12,7 +12,7 @@ export default defineLesson<PropertiesState, PropertiesModel>({
   figures: [propertiesFigure],
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
   steps: { key: 'k', count: stepCount, describe: describeStep },
-  presets: PRESETS,
+  scenes: PRESETS,
   normalize,
   panel: propertiesPanel,
 });

@@ -18,7 +18,7 @@ export default defineLesson<BlendingState, BlendingModel>({
   figures: [curveFigure, plotFigure],
   layout: 'row',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
-  presets: [
+  scenes: [
     preset('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
     preset(
       'linear',

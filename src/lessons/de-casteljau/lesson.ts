@@ -24,7 +24,7 @@ export default defineLesson<DeCasteljauState, DeCasteljauModel>({
         ? `Level ${k} of ${degree(state)}: P(t)`
         : `Level ${k} of ${degree(state)}`,
   },
-  presets: [
+  scenes: [
     preset('cubic', 'Lecture cubic', LECTURE_CUBIC),
     preset(
       'quadratic',

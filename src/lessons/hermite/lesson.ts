@@ -61,7 +61,7 @@ export default defineLesson<HermiteState, HermiteModel>({
     count: (state) => patchCount(state) - 1,
     describe: (state, k) => `Patch ${k + 1} of ${patchCount(state)}`,
   },
-  presets: [
+  scenes: [
     preset('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),
     preset('long', 'Long gradients: a loop', ONE_PATCH, [
       [15, 12],

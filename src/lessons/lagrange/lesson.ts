@@ -29,7 +29,7 @@ export default defineLesson<LagrangeState, LagrangeModel>({
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
-  presets: [
+  scenes: [
     preset('five', 'Five points', DEFAULT_POINTS),
     preset(
       'uneven',

@@ -21,7 +21,7 @@ export default defineLesson<QuadraticState, QuadraticModel>({
     count: () => STEP_TITLES.length - 1,
     describe: (_, k) => `${k}: ${STEP_TITLES[k]}`,
   },
-  presets: [
+  scenes: [
     preset(
       'figure-1',
       'Figure 1: a parabola',

@@ -13,6 +13,6 @@ export default defineLesson<RoadState, RoadModel>({
   figures: [mapFigure],
   steps: { key: 'step', count: stepCount, describe: describeStep },
   normalize,
-  presets,
+  scenes: presets,
   panel: roadPanel,
 });

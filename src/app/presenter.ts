@@ -1,0 +1,273 @@
+/**
+ * Presenter view and the lecturer's tools: the caption of the current step
+ * drawn large with the figure, the side panel folded away, a blank screen, a
+ * laser pointer, ink over the figure, and switches for "predict, then show"
+ * (hide the curve, the numbers, the labels), a ghost of the figure to compare
+ * with, and a trail of the moving point.
+ */
+import type { Shown } from '../render/painter';
+import { renderFormula } from '../render/formula';
+import { h, setHidden, setText } from './dom';
+import type { PresenterTool } from './keymap';
+
+export type ToolState = Record<PresenterTool, boolean>;
+
+const TOOLS: readonly [PresenterTool, string, string][] = [
+  ['laser', 'Laser', 'Laser pointer (L)'],
+  ['ink', 'Ink', 'Draw over the figure (I; E erases)'],
+  ['hideCurve', 'Hide curve', 'Hide the curve: predict, then show (C)'],
+  ['hideNumbers', 'Hide numbers', 'Hide the numbers (N)'],
+  ['hideLabels', 'Hide labels', 'Hide the labels (A)'],
+  ['ghost', 'Ghost', 'Keep the figure as a faint ghost to compare with (O)'],
+  ['trail', 'Trail', 'Trace the moving point while the parameter plays (R)'],
+];
+
+/** Milliseconds the laser dot stays bright after the pointer stops. */
+const LASER_FADE_MS = 1200;
+
+export class Presenter {
+  /** The caption over the figures: the scene, the step in words, its formula. */
+  readonly caption: HTMLElement;
+  /** The tool switches (shown under the figures in presenter view). */
+  readonly toolbar: HTMLElement;
+  readonly tools: ToolState = {
+    laser: false,
+    ink: false,
+    hideCurve: false,
+    hideNumbers: false,
+    hideLabels: false,
+    ghost: false,
+    trail: false,
+  };
+  private readonly buttons = new Map<PresenterTool, HTMLButtonElement>();
+  private readonly sceneText: HTMLElement;
+  private readonly stepText: HTMLElement;
+  private readonly formulaBox: HTMLElement;
+  private formulaTex: string | null = null;
+  private readonly blankCover: HTMLElement;
+  private readonly laserDot: HTMLElement;
+  private laserTimer = 0;
+  private readonly ink: Ink;
+  private readonly listening = new AbortController();
+
+  constructor(
+    /** The figures' box: ink and the laser live over it. */
+    private readonly stage: HTMLElement,
+    private readonly onChange: (tool: PresenterTool | 'blank') => void,
+  ) {
+    this.sceneText = h('span', { class: 'caption-scene' });
+    this.stepText = h('span', { class: 'caption-step' });
+    this.formulaBox = h('div', { class: 'caption-formula' });
+    this.caption = h(
+      'div',
+      { class: 'caption', 'data-caption': '' },
+      h('p', { class: 'caption-text' }, this.sceneText, this.stepText),
+      this.formulaBox,
+    );
+    this.toolbar = h(
+      'div',
+      { class: 'presenter-tools', role: 'toolbar', 'aria-label': 'Presenter tools' },
+      h(
+        'button',
+        { type: 'button', title: 'Blank the screen (B or .)', onclick: () => this.blank() },
+        'Blank',
+      ),
+      ...TOOLS.map(([tool, label, title]) => {
+        const button = h(
+          'button',
+          { type: 'button', title, 'aria-pressed': 'false', onclick: () => this.toggle(tool) },
+          label,
+        );
+        this.buttons.set(tool, button);
+        return button;
+      }),
+      h(
+        'button',
+        { type: 'button', title: 'Erase the ink (E)', onclick: () => this.clearInk() },
+        'Erase',
+      ),
+    );
+    this.blankCover = h('div', {
+      class: 'blank-cover',
+      hidden: true,
+      'data-blank': '',
+      onclick: () => this.unblank(),
+    });
+    this.laserDot = h('div', { class: 'laser-dot', 'aria-hidden': 'true', hidden: true });
+    this.ink = new Ink();
+    stage.append(this.ink.canvas, this.laserDot);
+    document.body.append(this.blankCover);
+    const options = { signal: this.listening.signal, passive: true };
+    stage.addEventListener('pointermove', (e) => this.pointAt(e), options);
+    stage.addEventListener('pointerdown', (e) => this.pointAt(e), options);
+  }
+
+  /** What the figures may draw. */
+  shown(): Shown {
+    return {
+      curve: !this.tools.hideCurve,
+      labels: !this.tools.hideLabels,
+      numbers: !this.tools.hideNumbers,
+    };
+  }
+
+  toggle(tool: PresenterTool): void {
+    this.tools[tool] = !this.tools[tool];
+    this.buttons.get(tool)?.setAttribute('aria-pressed', String(this.tools[tool]));
+    if (tool === 'ink') this.ink.active(this.tools.ink);
+    if (tool === 'laser') {
+      this.stage.classList.toggle('laser-on', this.tools.laser);
+      if (!this.tools.laser) setHidden(this.laserDot, true);
+    }
+    if (tool === 'ink' && this.tools.ink && this.tools.laser) this.toggle('laser');
+    if (tool === 'laser' && this.tools.laser && this.tools.ink) this.toggle('ink');
+    this.stage.closest('.lesson-page')?.classList.toggle('hide-numbers', this.tools.hideNumbers);
+    this.onChange(tool);
+  }
+
+  get blanked(): boolean {
+    return !this.blankCover.hidden;
+  }
+
+  blank(): void {
+    if (this.blanked) this.unblank();
+    else {
+      setHidden(this.blankCover, false);
+      this.onChange('blank');
+    }
+  }
+
+  unblank(): void {
+    setHidden(this.blankCover, true);
+    this.onChange('blank');
+  }
+
+  clearInk(): void {
+    this.ink.clear();
+  }
+
+  /** The caption of the current step; the formula is typeset again only when its TeX changed. */
+  setCaption(scene: string, step: string, formula: string | null): void {
+    setText(this.sceneText, scene);
+    setText(this.stepText, step);
+    if (formula !== this.formulaTex) {
+      this.formulaTex = formula;
+      if (formula) renderFormula(this.formulaBox, formula, true);
+      else this.formulaBox.replaceChildren();
+    }
+    setHidden(this.formulaBox, !formula);
+  }
+
+  private pointAt(e: PointerEvent): void {
+    if (!this.tools.laser) return;
+    const box = this.stage.getBoundingClientRect();
+    this.laserDot.style.transform = `translate(${e.clientX - box.left}px, ${e.clientY - box.top}px)`;
+    setHidden(this.laserDot, false);
+    this.laserDot.classList.remove('fading');
+    window.clearTimeout(this.laserTimer);
+    this.laserTimer = window.setTimeout(() => this.laserDot.classList.add('fading'), LASER_FADE_MS);
+  }
+
+  destroy(): void {
+    this.listening.abort();
+    window.clearTimeout(this.laserTimer);
+    this.blankCover.remove();
+    this.ink.destroy();
+  }
+}
+
+/** Freehand ink over the figures, in CSS pixels of the stage; cleared on a new step. */
+class Ink {
+  readonly canvas: HTMLCanvasElement;
+  private strokes: [number, number][][] = [];
+  private current: [number, number][] | null = null;
+  private readonly resize: ResizeObserver;
+  private readonly listening = new AbortController();
+
+  constructor() {
+    this.canvas = h('canvas', { class: 'ink-layer', 'aria-hidden': 'true', 'data-ink': '' });
+    const options = { signal: this.listening.signal };
+    this.canvas.addEventListener('pointerdown', (e) => this.down(e), options);
+    this.canvas.addEventListener('pointermove', (e) => this.move(e), options);
+    this.canvas.addEventListener('pointerup', () => (this.current = null), options);
+    this.canvas.addEventListener('pointercancel', () => (this.current = null), options);
+    this.resize = new ResizeObserver(() => this.redraw());
+    this.resize.observe(this.canvas);
+  }
+
+  /** Ink is on: the layer takes the pointer (else it lets everything through). */
+  active(on: boolean): void {
+    this.canvas.classList.toggle('inking', on);
+  }
+
+  get count(): number {
+    return this.strokes.length;
+  }
+
+  clear(): void {
+    if (this.strokes.length === 0) return;
+    this.strokes = [];
+    this.current = null;
+    this.redraw();
+  }
+
+  private at(e: PointerEvent): [number, number] {
+    const r = this.canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top];
+  }
+
+  private down(e: PointerEvent): void {
+    this.canvas.setPointerCapture?.(e.pointerId);
+    this.current = [this.at(e)];
+    this.strokes.push(this.current);
+    e.preventDefault();
+  }
+
+  private move(e: PointerEvent): void {
+    if (!this.current) return;
+    const p = this.at(e);
+    const last = this.current[this.current.length - 1];
+    this.current.push(p);
+    const c = this.canvas.getContext('2d');
+    if (!c) return;
+    this.style(c);
+    c.beginPath();
+    c.moveTo(last[0], last[1]);
+    c.lineTo(p[0], p[1]);
+    c.stroke();
+  }
+
+  private style(c: CanvasRenderingContext2D): void {
+    const dpr = window.devicePixelRatio || 1;
+    c.setTransform(dpr, 0, 0, dpr, 0, 0);
+    c.strokeStyle = '#e3007d';
+    c.lineWidth = 5;
+    c.lineCap = 'round';
+    c.lineJoin = 'round';
+  }
+
+  private redraw(): void {
+    const dpr = window.devicePixelRatio || 1;
+    const width = Math.round(this.canvas.clientWidth * dpr);
+    const height = Math.round(this.canvas.clientHeight * dpr);
+    if (this.canvas.width !== width || this.canvas.height !== height) {
+      this.canvas.width = width;
+      this.canvas.height = height;
+    }
+    const c = this.canvas.getContext('2d');
+    if (!c) return;
+    c.setTransform(1, 0, 0, 1, 0, 0);
+    c.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    this.style(c);
+    for (const stroke of this.strokes) {
+      c.beginPath();
+      stroke.forEach(([x, y], i) => (i === 0 ? c.moveTo(x, y) : c.lineTo(x, y)));
+      c.stroke();
+    }
+  }
+
+  destroy(): void {
+    this.listening.abort();
+    this.resize.disconnect();
+  }
+}
