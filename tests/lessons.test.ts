@@ -60,4 +60,32 @@ describe('every lesson draws what it says', () => {
       }
     });
   }
+
+  for (const meta of lessons) {
+    it(`${meta.slug}: a script of scenes, each stepped from little to all`, async () => {
+      const lesson = await meta.load();
+      expect(lesson.steps, `${meta.slug} has steps`).toBeDefined();
+      expect(lesson.scenes?.length ?? 0, `${meta.slug} has scenes`).toBeGreaterThan(0);
+      const steps = lesson.steps!;
+      const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
+      for (const scene of lesson.scenes!) {
+        const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
+        const count = steps.count(opened);
+        const where = `${meta.slug} scene ${scene.id}`;
+        expect(count, `${where} has steps`).toBeGreaterThan(0);
+        expect(count, `${where} steps in chunks`).toBeLessThanOrEqual(20);
+        const size = (k: number) =>
+          drawAll(lesson, { ...opened, [steps.key]: k }).reduce((n, f) => n + f.elements, 0);
+        expect(size(0), `${where}: step 0 draws less than the last step`).toBeLessThan(size(count));
+        for (let k = 0; k <= count; k++) {
+          const caption = steps.describe({ ...opened, [steps.key]: k }, k);
+          expect(caption.trim(), `${where} step ${k} has a caption`).not.toBe('');
+          // Captions are read from the back of the room: words, not TeX or references.
+          expect(caption, `${where} step ${k}`).not.toMatch(
+            /\\[a-z]|_\{|\^\{|[Ee]quation \d|the notes/,
+          );
+        }
+      }
+    });
+  }
 });

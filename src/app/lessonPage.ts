@@ -25,6 +25,8 @@ export interface Shell {
   theme(): Theme;
   notice(message: string): void;
   announce(message: string): void;
+  /** Switches presenter view on or off. */
+  togglePresenter(): void;
 }
 
 let firstDrawMarked = false;
@@ -131,7 +133,11 @@ export class LessonPage<S, M> {
       { class: 'stage-figures' },
       buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
     );
-    this.presenter = new Presenter(figures, (tool) => this.toolChanged(tool));
+    this.presenter = new Presenter(
+      figures,
+      (tool) => this.toolChanged(tool),
+      () => shell.togglePresenter(),
+    );
     const stage = h(
       'section',
       { class: 'stage', 'aria-label': 'Figure' },
@@ -454,6 +460,25 @@ export class LessonPage<S, M> {
     }
     if (++framesMeasured % 1000 === 0) performance.clearMeasures(FRAME);
     performance.measure(FRAME, { start });
+  }
+
+  /**
+   * Resolves when the page is settled: the state is final, its frame drawn, the
+   * panel updated and the link written. Tests wait on this instead of sleeping.
+   */
+  async settled(): Promise<void> {
+    const frame = () => new Promise<void>((resolve) => requestAnimationFrame(() => resolve()));
+    await frame();
+    for (let i = 0; i < 600; i++) {
+      const busy =
+        this.frame !== 0 ||
+        this.fitPending ||
+        this.url.pending ||
+        this.panelState !== this.store.state ||
+        this.drawnState !== this.store.state;
+      if (!busy) return;
+      await (this.url.pending ? new Promise((r) => setTimeout(r, 20)) : frame());
+    }
   }
 
   /** The shareable link of the current state. */

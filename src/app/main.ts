@@ -14,6 +14,8 @@ let theme = applySettings(settings);
 let page: LessonPage<unknown, unknown> | null = null;
 /** The latest navigation: a lesson that finishes loading after another was asked for is dropped. */
 let routeToken = 0;
+/** The navigation in progress (a lesson's code may still be loading). */
+let routing: Promise<void> = Promise.resolve();
 
 const main = h('main', { id: 'main', tabindex: '-1' });
 const notices = h('div', { class: 'notices', role: 'status', 'aria-live': 'polite' });
@@ -176,11 +178,14 @@ async function route(): Promise<void> {
     theme: () => theme,
     notice,
     announce,
+    togglePresenter: () => toggleProjector(),
   });
   setChildren(main, page.element);
 }
 
-window.addEventListener('hashchange', () => void route());
+window.addEventListener('hashchange', () => {
+  routing = route();
+});
 /** What the keys act on: the app's own actions, and the open lesson's. */
 const keyTarget: KeyTarget = {
   undo: () => page?.undo(),
@@ -229,7 +234,18 @@ window.addEventListener(
   { capture: true },
 );
 window.addEventListener('pagehide', () => page?.writeUrl());
-void route();
+
+// For tests and tools driving the page: resolves once a change has settled
+// (state final, frame drawn, panel updated, link written).
+Object.defineProperty(window, 'splineLab', {
+  value: Object.freeze({
+    settled: async () => {
+      await routing;
+      await page?.settled();
+    },
+  }),
+});
+routing = route();
 
 if (import.meta.env.PROD && 'serviceWorker' in navigator) {
   // Offline once loaded: the worker keeps a copy of every file the app fetched.

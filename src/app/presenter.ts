@@ -54,6 +54,8 @@ export class Presenter {
     /** The figures' box: ink and the laser live over it. */
     private readonly stage: HTMLElement,
     private readonly onChange: (tool: PresenterTool | 'blank') => void,
+    /** Leaves presenter view (its toolbar replaces the app's top bar there). */
+    exit: () => void,
   ) {
     this.sceneText = h('span', { class: 'caption-scene' });
     this.stepText = h('span', { class: 'caption-step' });
@@ -67,6 +69,7 @@ export class Presenter {
     this.toolbar = h(
       'div',
       { class: 'presenter-tools', role: 'toolbar', 'aria-label': 'Presenter tools' },
+      h('button', { type: 'button', title: 'Leave presenter view (P)', onclick: exit }, 'Exit'),
       h(
         'button',
         { type: 'button', title: 'Blank the screen (B or .)', onclick: () => this.blank() },

@@ -57,6 +57,17 @@ export async function expectHash(
   await expect.poll(() => matcher(hashState(page)[key] ?? '')).toBe(true);
 }
 
+/**
+ * Waits until the page has settled after an action: the state is final, its
+ * frame drawn, the panel updated and the link written (the app's own signal,
+ * instead of sleeping or polling the link).
+ */
+export async function settled(page: Page): Promise<void> {
+  await page.evaluate(() =>
+    (window as unknown as { splineLab: { settled(): Promise<void> } }).splineLab.settled(),
+  );
+}
+
 /** Every lesson, as the gallery lists it (no list kept by hand). */
 export async function lessonSlugs(page: Page): Promise<string[]> {
   await page.goto('./#/');
