@@ -188,6 +188,8 @@ export class LessonPage<S, M> {
       }
     });
     this.panelResize.observe(aside);
+    // Formula fonts arriving late change widths measured before them: fit again.
+    document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     this.unsubscribe = this.store.subscribe(() => {
@@ -213,6 +215,13 @@ export class LessonPage<S, M> {
       button('SVG', 'Save the figure as an SVG drawing', () => this.exportSvg()),
     );
   }
+
+  private readonly fontsLoaded = (): void => {
+    refitAll(this.panel.element);
+    refitAll(this.presenter.caption);
+    this.fitPending = true;
+    this.requestFrame();
+  };
 
   private sceneButtonGroup(): HTMLElement | null {
     const scenes = this.lesson.scenes;
@@ -422,6 +431,7 @@ export class LessonPage<S, M> {
     if (this.fitPending) {
       this.fitPending = false;
       fitToWidth(this.panel.element);
+      fitToWidth(this.presenter.caption);
     }
     const state = this.store.state;
     const model = this.model(state);
@@ -591,6 +601,7 @@ export class LessonPage<S, M> {
     this.parameter?.stop();
     this.unsubscribe();
     this.panelResize.disconnect();
+    document.fonts?.removeEventListener('loadingdone', this.fontsLoaded);
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();
     this.presenter.destroy();

@@ -39,6 +39,12 @@ export function fitToWidth(root: ParentNode): void {
     const scale = Number(el.dataset.scale ?? '1');
     const natural = Math.max(width, scroll > box + 1 ? scroll : 0) / scale;
     const fitted = natural > box + 1 ? Math.max(SMALLEST, (box / natural) * 0.98) : 1;
+    // Still too wide at the smallest size: it scrolls, so the keyboard must reach it.
+    const scrolls = natural * fitted > box + 1;
+    if (scrolls !== el.hasAttribute('tabindex')) {
+      if (scrolls) el.setAttribute('tabindex', '0');
+      else el.removeAttribute('tabindex');
+    }
     if (Math.abs(fitted - scale) < 0.005) return;
     el.dataset.scale = fitted.toFixed(3);
     el.style.fontSize = fitted === 1 ? '' : `${fitted.toFixed(3)}em`;

@@ -84,7 +84,7 @@ test('live formulas show their numbers to screen readers too, on every lesson', 
     await page.goto(`./#/${slug}`);
     await expect(page.locator('.katex').first()).toBeVisible();
     // Every preset, so formulas of every shape are typeset and filled in.
-    const presets = page.locator('[data-preset]');
+    const presets = page.locator('[data-scene]');
     for (let i = 0; i < (await presets.count()); i++) {
       await presets.nth(i).click();
       await nextFrame(page);

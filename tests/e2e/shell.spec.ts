@@ -31,24 +31,28 @@ test('an unknown lesson shows the gallery with a notice', async ({ page }) => {
   await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
 });
 
-test('projector mode and the dark theme toggle by key and by button', async ({ page }) => {
+test('presenter view and the dark theme toggle by key and by button', async ({ page }) => {
   await page.goto('./#/de-casteljau');
   const root = page.locator('html');
   await expect(root).not.toHaveClass(/projector/);
-  await page.keyboard.press('p');
+  await page.getByRole('button', { name: 'Presenter' }).click();
   await expect(root).toHaveClass(/projector/);
-  await expect(page.getByRole('button', { name: 'Projector' })).toHaveAttribute(
-    'aria-pressed',
-    'true',
-  );
-  await snapshot(page, 'de-casteljau-projector');
-  await page.getByRole('button', { name: 'Dark' }).click();
+  // The app's top bar gives way to the figure; the presenter's own bar leads out.
+  await expect(page.getByRole('button', { name: 'Presenter' })).toBeHidden();
+  await snapshot(page, 'de-casteljau-presenter');
+  await page.keyboard.press('d');
   await expect(root).toHaveAttribute('data-theme', 'dark');
-  await snapshot(page, 'de-casteljau-projector-dark');
+  await snapshot(page, 'de-casteljau-presenter-dark');
   await page.keyboard.press('d');
   await expect(root).toHaveAttribute('data-theme', 'light');
-  await page.getByRole('button', { name: 'Projector' }).click();
+  await page
+    .getByRole('toolbar', { name: 'Presenter tools' })
+    .getByRole('button', { name: 'Exit' })
+    .click();
   await expect(root).not.toHaveClass(/projector/);
+  await page.getByRole('button', { name: 'Dark' }).click();
+  await expect(root).toHaveAttribute('data-theme', 'dark');
+  await page.getByRole('button', { name: 'Dark' }).click();
   // The setting is kept across a reload.
   await page.keyboard.press('p');
   await page.reload();
@@ -60,7 +64,7 @@ test('the key help opens with ? and closes with Escape', async ({ page }) => {
   await page.keyboard.press('?');
   const dialog = page.getByRole('dialog', { name: 'Keys and gestures' });
   await expect(dialog).toBeVisible();
-  await expect(dialog.getByText('Projector mode')).toBeVisible();
+  await expect(dialog.getByText(/Presenter view/)).toBeVisible();
   await page.keyboard.press('Escape');
   await expect(dialog).toBeHidden();
 });

@@ -39,7 +39,7 @@ const longFrames = async (page: Page) => {
 
 /** Opens the preset with the most movable points (the busiest figure). */
 async function openBusiestPreset(page: Page): Promise<void> {
-  const presets = page.locator('[data-preset]');
+  const presets = page.locator('[data-scene]');
   const count = await presets.count();
   let best = -1;
   let most = -1;
