@@ -5,6 +5,8 @@ const port = 4174;
 export default defineConfig({
   testDir: 'tests/e2e',
   outputDir: 'test-results',
+  // Reviewed reference images, committed: one per lesson, scene and view.
+  snapshotPathTemplate: '{testDir}/__screenshots__/{arg}{ext}',
   fullyParallel: true,
   workers: 2,
   retries: 0,
@@ -33,8 +35,14 @@ export default defineConfig({
   // Frame-time tests run last and alone, so that they time the app and not a
   // second test sharing the two cores.
   projects: [
-    { name: 'browser', testIgnore: /timing\.spec\.ts$/ },
-    { name: 'timing', testMatch: /timing\.spec\.ts$/, dependencies: ['browser'] },
+    { name: 'browser', testIgnore: /(timing|monkey)\.spec\.ts$/ },
+    {
+      name: 'timing',
+      testMatch: /(timing|monkey)\.spec\.ts$/,
+      dependencies: ['browser'],
+      // One at a time: what they time is the app, not a second test.
+      workers: 1,
+    },
   ],
   // The production build, served as a static host would.
   webServer: {

@@ -2,7 +2,8 @@ import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/ha
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
 import { OrbitCamera } from '../render/orbitCamera';
-import { Painter, type Shown, SHOW_ALL, splitSubscripts } from '../render/painter';
+import { type HandleState, Painter, type Shown, SHOW_ALL, splitSubscripts } from '../render/painter';
+import type { LabelBox } from '../render/labels';
 import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
 import type { Theme } from '../render/theme';
@@ -43,6 +44,34 @@ export const plainLabel = (label: string) =>
 
 let dragSerial = 0;
 
+/** Draws a figure's handles with their labels (the screen, exports and tests use this one routine). */
+export function drawHandles(
+  painter: Painter,
+  handles: readonly Handle[],
+  stateOf: (handle: Handle) => HandleState = () => 'idle',
+): void {
+  const theme = painter.theme;
+  for (const handle of handles) {
+    const state = stateOf(handle);
+    painter.handle(handle.position, {
+      color: handle.color,
+      shape: handle.shape,
+      state,
+      // A small handle grows to full size while it is held, hovered or focused.
+      radius: handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : undefined,
+    });
+    if (handle.showLabel !== false && painter.show.labels) {
+      painter.label(handle.label, handle.position, {
+        dx: theme.sizes.handle + 4,
+        dy: -(theme.sizes.handle + theme.sizes.label * 0.45),
+        color: handle.color ?? theme.ink,
+        halo: true,
+        bold: true,
+      });
+    }
+  }
+}
+
 /** One canvas of a lesson, sharp at any devicePixelRatio, with its handles. */
 export class FigureView<S, M> {
   readonly element: HTMLElement;
@@ -63,6 +92,8 @@ export class FigureView<S, M> {
   /** The user moved the view: keep it (and put it in the link), unless asked to fit. */
   private userView = false;
   private size = { width: 0, height: 0 };
+  /** Where the last frame put its labels (screen pixels): for the overlap check. */
+  labels: readonly LabelBox[] = [];
   /** The figure's box as last observed (CSS pixels), or null before the first observation. */
   private box: { width: number; height: number } | null = null;
 
@@ -219,7 +250,7 @@ export class FigureView<S, M> {
     if (!ctx) return;
     const dpr = window.devicePixelRatio || 1;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    this.render(ctx, model, theme, this.host.info(), this.host.shown());
+    this.labels = this.render(ctx, model, theme, this.host.info(), this.host.shown()).labels;
     this.syncKeys();
   }
 
@@ -283,32 +314,15 @@ export class FigureView<S, M> {
       painter.polyline(trail, { color: theme.accent, width: theme.sizes.line, alpha: 0.8 });
     const handles = this.handlesFor(model);
     if (info.thumbnail) return painter;
-    for (const handle of handles) {
-      const state =
-        this.dragging?.drag.id === handle.id
-          ? 'drag'
-          : this.focused === handle.id
-            ? 'focus'
-            : info.hover === handle.id
-              ? 'hover'
-              : 'idle';
-      painter.handle(handle.position, {
-        color: handle.color,
-        shape: handle.shape,
-        state,
-        // A small handle grows to full size while it is held, hovered or focused.
-        radius: handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : undefined,
-      });
-      if (handle.showLabel !== false && shown.labels) {
-        painter.label(handle.label, handle.position, {
-          dx: theme.sizes.handle + 4,
-          dy: -(theme.sizes.handle + theme.sizes.label * 0.45),
-          color: handle.color ?? theme.ink,
-          halo: true,
-          bold: true,
-        });
-      }
-    }
+    drawHandles(painter, handles, (handle) =>
+      this.dragging?.drag.id === handle.id
+        ? 'drag'
+        : this.focused === handle.id
+          ? 'focus'
+          : info.hover === handle.id
+            ? 'hover'
+            : 'idle',
+    );
     this.spec.drawOver?.(painter, model, info);
     return painter;
   }

@@ -6,6 +6,7 @@
  * page does nothing.
  */
 import { fitToWidth, refitAll } from '../render/fit';
+import type { LabelBox } from '../render/labels';
 import type { Theme } from '../render/theme';
 import { ParameterControl, StepControl } from './controls';
 import { memoize } from './derive';
@@ -489,6 +490,16 @@ export class LessonPage<S, M> {
       if (!busy) return;
       await (this.url.pending ? new Promise((r) => setTimeout(r, 20)) : frame());
     }
+  }
+
+  /** Each figure's labels as last drawn, with its size: for the overlap check. */
+  labelBoxes(): { figure: string; width: number; height: number; labels: readonly LabelBox[] }[] {
+    return this.figures.map((f) => ({
+      figure: f.spec.id,
+      width: f.view.width,
+      height: f.view.height,
+      labels: f.labels,
+    }));
   }
 
   /** The shareable link of the current state. */

@@ -243,6 +243,7 @@ Object.defineProperty(window, 'splineLab', {
       await routing;
       await page?.settled();
     },
+    labels: () => page?.labelBoxes() ?? [],
   }),
 });
 routing = route();

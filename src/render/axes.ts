@@ -118,11 +118,17 @@ export function drawPlotAxes(
     painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...muted, align: 'right' });
   }
   if (xName) {
+    // On the row of the tick numbers, midway between the last two: clear of
+    // both, and inside the figure (below the numbers it would fall off it).
     const [sx, sy] = v.toScreen([bounds.maxX, bounds.minY]);
-    painter.screenLabel(xName, sx, sy + small * 2.1, {
+    const between =
+      xs.length >= 2
+        ? (v.toScreen([xs[xs.length - 2], 0])[0] + v.toScreen([xs[xs.length - 1], 0])[0]) / 2
+        : sx;
+    painter.screenLabel(xName, between, sy + small * 0.9, {
       ...muted,
       size: small * 1.1,
-      align: 'right',
+      align: 'center',
     });
   }
   if (yName) {

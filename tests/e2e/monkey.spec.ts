@@ -1,0 +1,153 @@
+/**
+ * A monkey on every lesson: a seeded random run of drags, wheel zooms far in
+ * and out, keys and control clicks. Afterwards: no error (the fixture), no
+ * frame over 50 ms, no NaN, Infinity or undefined in any text, and the state
+ * round-trips through its link (the same state and, fitted, the same picture).
+ * It runs in the "timing" project: alone, after the other browser tests.
+ */
+import { existsSync, readdirSync } from 'node:fs';
+import type { Page } from '@playwright/test';
+import { expect, hashState, settled, test } from './fixtures';
+
+const slugs = readdirSync('src/lessons', { withFileTypes: true })
+  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
+  .map((d) => d.name);
+
+const EVENTS = process.env.FUZZ === 'full' ? 400 : 60;
+
+function random(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+const KEYS = [
+  'PageDown',
+  'PageDown',
+  'PageUp',
+  'Home',
+  'End',
+  'ArrowRight',
+  'ArrowLeft',
+  '0',
+  '+',
+  '-',
+  '[',
+  ']',
+  '{',
+  '}',
+  'Control+z',
+  'Control+y',
+  'Delete',
+];
+
+/** Canvases' pixels, fitted, with no hover or focus ring: the picture of the state. */
+async function picture(page: Page): Promise<string[]> {
+  await page.mouse.move(1, 1);
+  await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+  await page.keyboard.press('0');
+  await settled(page);
+  return page
+    .locator('canvas[data-figure]')
+    .evaluateAll((canvases) => canvases.map((c) => (c as HTMLCanvasElement).toDataURL()));
+}
+
+const fields = (page: Page) =>
+  Object.fromEntries(Object.entries(hashState(page)).filter(([k]) => !k.startsWith('view.')));
+
+for (const [index, slug] of slugs.entries()) {
+  test(`${slug}: ${EVENTS} random events leave no error, no long frame, no broken number, and a faithful link`, async ({
+    page,
+    context,
+  }) => {
+    test.setTimeout(120_000);
+    const rand = random(0xbeef + index);
+    const pick = <T>(list: readonly T[]): T => list[Math.floor(rand() * list.length)];
+    await page.goto(`./#/${slug}`);
+    await settled(page);
+    await page.evaluate(() => {
+      const store = window as unknown as { longFrames: number[] };
+      store.longFrames = [];
+      new PerformanceObserver((list) => {
+        for (const entry of list.getEntries())
+          if (entry.name === 'spline-lab:frame' && entry.duration > 50)
+            store.longFrames.push(Math.round(entry.duration));
+      }).observe({ type: 'measure' });
+    });
+    const canvases = page.locator('canvas[data-figure]');
+    const controls = page.locator(
+      '.lesson-page .panel button:visible, .lesson-page .panel input:visible, .lesson-page .controls button:visible, .lesson-page .controls input:visible',
+    );
+    for (let i = 0; i < EVENTS; i++) {
+      const what = rand();
+      if (what < 0.3) {
+        const canvas = canvases.nth(Math.floor(rand() * (await canvases.count())));
+        const box = await canvas.boundingBox();
+        if (!box) continue;
+        const x = box.x + rand() * box.width;
+        const y = box.y + rand() * box.height;
+        await page.mouse.move(x, y);
+        await page.mouse.down();
+        for (let k = 1; k <= 4; k++)
+          await page.mouse.move(x + (rand() - 0.5) * 80 * k, y + (rand() - 0.5) * 80 * k);
+        await page.mouse.up();
+      } else if (what < 0.45) {
+        const box = await canvases.first().boundingBox();
+        if (!box) continue;
+        await page.mouse.move(box.x + rand() * box.width, box.y + rand() * box.height);
+        const direction = rand() < 0.5 ? -1 : 1;
+        for (let k = 0; k < 8; k++) await page.mouse.wheel(0, direction * 600);
+      } else if (what < 0.75) {
+        await page.keyboard.press(pick(KEYS));
+      } else {
+        const count = await controls.count();
+        if (count === 0) continue;
+        const control = controls.nth(Math.floor(rand() * count));
+        const label =
+          (await control.getAttribute('aria-label')) ?? (await control.innerText().catch(() => ''));
+        // Downloads and the clipboard are tested on their own.
+        if (/PNG|SVG|Copy link/.test(label)) continue;
+        const type = await control.getAttribute('type');
+        if (type === 'range' || type === 'number') {
+          await control.evaluate((el, r) => {
+            const input = el as HTMLInputElement;
+            const min = Number(input.min || 0);
+            const max = Number(input.max || 1);
+            input.value = String(min + r * (max - min));
+            input.dispatchEvent(
+              new Event(input.type === 'range' ? 'input' : 'change', { bubbles: true }),
+            );
+          }, rand());
+        } else await control.click({ timeout: 2000 }).catch(() => undefined);
+      }
+    }
+    // Play may be on: pause it, so the state is final.
+    const pause = page.getByRole('button', { name: 'Pause' });
+    if (await pause.isVisible()) await pause.click();
+    await settled(page);
+
+    const longFrames = await page.evaluate(
+      () => (window as unknown as { longFrames: number[] }).longFrames,
+    );
+    expect(longFrames, `${slug}: frames over 50 ms`).toEqual([]);
+    const text = await page.locator('.lesson-page').innerText();
+    expect(text, `${slug}: no broken numbers`).not.toMatch(/\bNaN\b|Infinity|undefined/);
+
+    // The state round-trips through its link: same state, and fitted, the same picture.
+    const state = fields(page);
+    const before = await picture(page);
+    const hash = new URL(page.url()).hash;
+    const other = await context.newPage();
+    await other.setViewportSize(page.viewportSize()!);
+    await other.goto(`./${hash}`);
+    await settled(other);
+    expect(fields(other)).toEqual(state);
+    expect(await picture(other), `${slug}: the link shows the same picture`).toEqual(before);
+    await other.close();
+  });
+}

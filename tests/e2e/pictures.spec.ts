@@ -1,0 +1,89 @@
+/**
+ * Pictures that are checked, for every lesson and every scene, at its last
+ * step, in normal view (1400×850) and presenter view (1920×1080):
+ *
+ * - no label covers another or leaves its figure, from the painter's own
+ *   placement data (what each frame recorded), not from pixels;
+ * - the drawing matches its reviewed reference image (Playwright's
+ *   toHaveScreenshot, with a small tolerance). The comparison is of the
+ *   figures with their labels hidden (presenter key A): what is compared is
+ *   the drawing itself, which does not depend on the machine's fonts.
+ *
+ * After an intended change to a drawing, look at the new pictures and update
+ * the references deliberately:
+ *   node scripts/e2e.mjs tests/e2e/pictures.spec.ts --update-snapshots
+ */
+import { existsSync, readdirSync } from 'node:fs';
+import type { Page } from '@playwright/test';
+import { expect, settled, test } from './fixtures';
+
+const slugs = readdirSync('src/lessons', { withFileTypes: true })
+  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
+  .map((d) => d.name);
+
+interface Placed {
+  figure: string;
+  width: number;
+  height: number;
+  labels: { text: string; x: number; y: number; width: number; height: number }[];
+}
+
+/** Labels on top of each other (by more than a pixel each way), or outside their figure. */
+async function labelProblems(page: Page): Promise<string[]> {
+  const figures = await page.evaluate(() =>
+    (window as unknown as { splineLab: { labels(): Placed[] } }).splineLab.labels(),
+  );
+  const problems: string[] = [];
+  for (const { figure, width, height, labels } of figures) {
+    for (const b of labels)
+      if (b.x < -1 || b.y < -1 || b.x + b.width > width + 1 || b.y + b.height > height + 1)
+        problems.push(`${figure}: “${b.text}” outside the figure`);
+    for (let i = 0; i < labels.length; i++)
+      for (let j = i + 1; j < labels.length; j++) {
+        const a = labels[i];
+        const b = labels[j];
+        const w = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
+        const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
+        if (w > 1 && h > 1) problems.push(`${figure}: “${a.text}” on “${b.text}”`);
+      }
+  }
+  return problems;
+}
+
+for (const slug of slugs) {
+  for (const mode of ['normal', 'presenter'] as const) {
+    test(`${slug}, ${mode} view: every scene's labels stand clear and its drawing matches the reference`, async ({
+      page,
+    }) => {
+      test.setTimeout(90_000);
+      if (mode === 'presenter') await page.setViewportSize({ width: 1920, height: 1080 });
+      await page.goto(`./#/${slug}`);
+      await settled(page);
+      if (mode === 'presenter') await page.keyboard.press('p');
+      const scenes = page.locator('button[data-scene]');
+      const ids = await scenes.evaluateAll((buttons) =>
+        buttons.map((b) => b.getAttribute('data-scene')!),
+      );
+      const problems: string[] = [];
+      for (const id of ids) {
+        await page.evaluate((scene) => {
+          document.querySelector<HTMLButtonElement>(`button[data-scene="${scene}"]`)!.click();
+        }, id);
+        await page.keyboard.press('End');
+        await page.mouse.move(0, 0);
+        await settled(page);
+        for (const problem of await labelProblems(page)) problems.push(`${id}: ${problem}`);
+        // The drawing, without the labels whose glyphs depend on the machine's fonts.
+        await page.keyboard.press('a');
+        await settled(page);
+        await expect(page.locator('.stage-figures')).toHaveScreenshot(`${slug}-${id}-${mode}.png`, {
+          maxDiffPixelRatio: 0.01,
+          animations: 'disabled',
+          caret: 'hide',
+        });
+        await page.keyboard.press('a');
+      }
+      expect(problems, `${slug}, ${mode} view: labels`).toEqual([]);
+    });
+  }
+}
