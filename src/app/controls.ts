@@ -73,7 +73,7 @@ export class ParameterControl<S> {
       },
       '1×',
     );
-    this.speedButton.setAttribute('aria-label', 'Play speed 1×');
+    this.speedButton.setAttribute('aria-label', 'Speed 1×');
     this.element = h(
       'div',
       { class: 'param' },
@@ -125,7 +125,7 @@ export class ParameterControl<S> {
     this.speed = Math.min(SPEEDS.length - 1, Math.max(0, this.speed + delta));
     const text = `${SPEEDS[this.speed]}×`;
     this.speedButton.textContent = text;
-    this.speedButton.setAttribute('aria-label', `Play speed ${text}`);
+    this.speedButton.setAttribute('aria-label', `Speed ${text}`);
   }
 
   private start(): void {

@@ -80,6 +80,7 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
 test('live formulas show their numbers to screen readers too, on every lesson', async ({
   page,
 }) => {
+  test.setTimeout(120_000);
   for (const slug of await lessonSlugs(page)) {
     await page.goto(`./#/${slug}`);
     await expect(page.locator('.katex').first()).toBeVisible();

@@ -7,7 +7,14 @@ test('the gallery lists the lessons by chapter and opens one', async ({ page }) 
   await expect(page.getByRole('heading', { name: 'Bézier curves' })).toBeVisible();
   const card = page.getByRole('link', { name: /The de Casteljau construction/ });
   await expect(card).toBeVisible();
-  await page.waitForTimeout(100);
+  // The thumbnails have loaded before the picture is taken.
+  await expect
+    .poll(() =>
+      page
+        .locator('img.thumb')
+        .evaluateAll((imgs) => imgs.every((i) => (i as HTMLImageElement).complete)),
+    )
+    .toBe(true);
   await snapshot(page, 'gallery');
   await card.click();
   await expect(page).toHaveURL(/#\/de-casteljau/);
