@@ -1,5 +1,5 @@
 import { test as base, expect, type Page } from '@playwright/test';
-import { mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync } from 'node:fs';
 
 /**
  * Every browser test runs under watch: a console error, an uncaught exception
@@ -66,6 +66,16 @@ export async function settled(page: Page): Promise<void> {
   await page.evaluate(() =>
     (window as unknown as { splineLab: { settled(): Promise<void> } }).splineLab.settled(),
   );
+}
+
+/**
+ * Every lesson, as the app's registry finds them (a folder with a meta.ts), for
+ * generating one test per lesson (no list kept by hand).
+ */
+export function lessonFolders(): string[] {
+  return readdirSync('src/lessons', { withFileTypes: true })
+    .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
+    .map((d) => d.name);
 }
 
 /** Every lesson, as the gallery lists it (no list kept by hand). */

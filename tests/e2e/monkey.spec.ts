@@ -5,26 +5,13 @@
  * round-trips through its link (the same state and, fitted, the same picture).
  * It runs in the "timing" project: alone, after the other browser tests.
  */
-import { existsSync, readdirSync } from 'node:fs';
 import type { Page } from '@playwright/test';
-import { expect, hashState, settled, test } from './fixtures';
+import { seededRandom } from '../../src/math/seededRandom';
+import { expect, hashState, lessonFolders, settled, test } from './fixtures';
 
-const slugs = readdirSync('src/lessons', { withFileTypes: true })
-  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
-  .map((d) => d.name);
+const slugs = lessonFolders();
 
 const EVENTS = process.env.FUZZ === 'full' ? 400 : 60;
-
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const KEYS = [
   'PageDown',
@@ -66,7 +53,7 @@ for (const [index, slug] of slugs.entries()) {
     context,
   }) => {
     test.setTimeout(120_000);
-    const rand = random(0xbeef + index);
+    const rand = seededRandom(0xbeef + index);
     const pick = <T>(list: readonly T[]): T => list[Math.floor(rand() * list.length)];
     await page.goto(`./#/${slug}`);
     await settled(page);

@@ -13,13 +13,10 @@
  * the references deliberately:
  *   node scripts/e2e.mjs tests/e2e/pictures.spec.ts --update-snapshots
  */
-import { existsSync, readdirSync } from 'node:fs';
 import type { Page } from '@playwright/test';
-import { expect, settled, test } from './fixtures';
+import { expect, lessonFolders, settled, test } from './fixtures';
 
-const slugs = readdirSync('src/lessons', { withFileTypes: true })
-  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
-  .map((d) => d.name);
+const slugs = lessonFolders();
 
 interface Placed {
   figure: string;

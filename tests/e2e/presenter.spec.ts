@@ -5,14 +5,10 @@
  * from the issue's rules (one step per press, values untouched, ≥ 28 px), read
  * from the link and the DOM, never from the app's own verdicts.
  */
-import { existsSync, readdirSync } from 'node:fs';
 import type { Locator, Page } from '@playwright/test';
-import { expect, hashState, settled, snapshot, test } from './fixtures';
+import { expect, hashState, lessonFolders, settled, snapshot, test } from './fixtures';
 
-/** The lessons: every folder with a meta.ts, as the app's registry finds them. */
-const slugs = readdirSync('src/lessons', { withFileTypes: true })
-  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
-  .map((d) => d.name);
+const slugs = lessonFolders();
 
 /** The link's fields without the views (a pan is not a step). */
 function fields(page: Page): Record<string, string> {

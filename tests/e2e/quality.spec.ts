@@ -7,30 +7,16 @@
  * runs the full set (FUZZ=full): at least 200 hashes per lesson.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { existsSync, readdirSync } from 'node:fs';
 import type { Page } from '@playwright/test';
-import { expect, hashState, settled, test } from './fixtures';
+import { seededRandom } from '../../src/math/seededRandom';
+import { expect, hashState, lessonFolders, settled, test } from './fixtures';
 
-const slugs = readdirSync('src/lessons', { withFileTypes: true })
-  .filter((d) => d.isDirectory() && existsSync(`src/lessons/${d.name}/meta.ts`))
-  .map((d) => d.name);
+const slugs = lessonFolders();
 
 const FULL = process.env.FUZZ === 'full';
 /** Hashes per lesson: opened fresh, and as a hash change on a loaded page. */
 const FRESH = FULL ? 40 : 3;
 const CHANGES = FULL ? 180 : 17;
-
-/** A small seeded generator (mulberry32), so a failure can be replayed. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const HOSTILE = [
   '1e308',
@@ -197,7 +183,7 @@ for (const [index, slug] of slugs.entries()) {
     page,
   }) => {
     test.setTimeout(FULL ? 600_000 : 60_000);
-    const rand = random(0x5eed + index);
+    const rand = seededRandom(0x5eed + index);
     await page.goto(`./#/${slug}`);
     await settled(page);
     const valid = hashState(page);
