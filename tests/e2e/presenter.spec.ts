@@ -220,3 +220,73 @@ test.describe('on a phone', () => {
     expect(Object.keys(hashState(page)).filter((k) => k.startsWith('view.'))).toEqual([]);
   });
 });
+
+/** The figure's pixels, to compare pictures of the same state. */
+const pixels = (page: Page) =>
+  page
+    .locator('canvas[data-figure]')
+    .first()
+    .evaluate((c) => {
+      // A short fingerprint of the picture (FNV-1a over its PNG), not the picture itself.
+      const url = (c as HTMLCanvasElement).toDataURL();
+      let h = 0x811c9dc5;
+      for (let i = 0; i < url.length; i++) h = Math.imul(h ^ url.charCodeAt(i), 0x01000193);
+      return `${url.length}:${(h >>> 0).toString(16)}`;
+    });
+
+test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by the next step', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&t=0.5&step=3');
+  await page.mouse.move(0, 0);
+  await settled(page);
+  const shown = await pixels(page);
+  // Predict, then show: C hides the curve (the picture changes), C again brings it back.
+  await page.keyboard.press('c');
+  await settled(page);
+  const hidden = await pixels(page);
+  expect(hidden).not.toBe(shown);
+  await page.keyboard.press('c');
+  await settled(page);
+  expect(await pixels(page)).toBe(shown);
+
+  // A ghost of the figure stays faintly behind a change, and goes with the tool.
+  await page.keyboard.press('o');
+  await page.goto('./#/de-casteljau?p=0,0;1,3;3,3;4,0&t=0.5&step=3');
+  await settled(page);
+  const withGhost = await pixels(page);
+  await page.keyboard.press('o');
+  await settled(page);
+  expect(await pixels(page)).not.toBe(withGhost);
+
+  // The laser: a bright dot where the pointer is.
+  const box = (await page.locator('canvas[data-figure]').first().boundingBox())!;
+  await page.keyboard.press('l');
+  await page.mouse.move(box.x + 200, box.y + 150);
+  const dot = page.locator('.laser-dot');
+  await expect(dot).toBeVisible();
+  const at = (await dot.boundingBox())!;
+  expect(Math.abs(at.x + at.width / 2 - (box.x + 200))).toBeLessThan(3);
+  expect(Math.abs(at.y + at.height / 2 - (box.y + 150))).toBeLessThan(3);
+  await page.keyboard.press('l');
+
+  // Ink: a stroke over the figure, wiped when the step changes.
+  const ink = page.locator('[data-ink]');
+  const inked = () =>
+    ink.evaluate((c) => {
+      const canvas = c as HTMLCanvasElement;
+      const data = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data;
+      let n = 0;
+      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
+      return n;
+    });
+  await page.keyboard.press('i');
+  await page.mouse.move(box.x + 100, box.y + 100);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 300, box.y + 200, { steps: 8 });
+  await page.mouse.up();
+  expect(await inked()).toBeGreaterThan(100);
+  await page.keyboard.press('PageUp');
+  await settled(page);
+  expect(await inked()).toBe(0);
+});
