@@ -64,7 +64,7 @@ export function stepFormula(m: QuadraticModel, state: QuadraticState): string | 
     default: {
       const { d0, d1, rules } = m.parametric;
       const [, chord, centripetal] = rules;
-      return `\\tfrac12,\\quad \\frac{d_0}{d_0 + d_1} = \\frac{${texNumber(d0, 3)}}{${texNumber(d0 + d1, 3)}} = ${texNumber(chord.mu, 3)},\\quad \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${texNumber(centripetal.mu, 3)}`;
+      return `\\text{uniform } \\tfrac12,\\quad \\text{chord } \\frac{d_0}{d_0 + d_1} = \\frac{${texNumber(d0, 3)}}{${texNumber(d0 + d1, 3)}} = ${texNumber(chord.mu, 3)},\\quad \\text{centripetal } \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${texNumber(centripetal.mu, 3)}`;
     }
   }
 }
