@@ -3,12 +3,13 @@ import { insertPoint } from '../../interact/editPoints';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
 import { HALF_DASH, halfColour, levelColour, levelDash } from './colours';
-import { handleLabelBoxes, placeLabel } from './labels';
+import { handleLabelBoxes, placeLabel, stackedLabels } from './labels';
 import type { DeCasteljauModel } from './model';
 import { type DeCasteljauState, MAX_POINTS, lastStep } from './state';
 
-/** Labels for every constructed point stay readable up to this degree. */
+/** Labels for every constructed point stay readable up to this degree (3 on a narrow screen). */
 const LABEL_ALL_UP_TO = 5;
+const NARROW = 600;
 
 export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> = {
   id: 'construction',
@@ -49,8 +50,10 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
     if (!info.thumbnail) drawLabels(painter, m);
     if (m.note && !info.thumbnail) painter.note(m.note);
   },
-  handles: (m) =>
-    m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
+  handles: (m) => {
+    const labels = stackedLabels(m.state.p, (i) => `P_{${i}}`);
+    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
+  },
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
@@ -76,10 +79,11 @@ function drawLabels(painter: Painter, m: DeCasteljauModel): void {
   const { n, levels, shown } = m;
   const points = levels.slice(0, shown.levels + 1).flat();
   const taken = handleLabelBoxes(painter, m.state.p);
+  const labelAll = n <= (painter.view.width < NARROW ? 3 : LABEL_ALL_UP_TO);
   // The point on the curve first: it matters most, and gets the best spot.
   for (let r = shown.levels; r >= 1; r--) {
     const last = r === n;
-    if (n > LABEL_ALL_UP_TO && !last) continue;
+    if (!labelAll && !last) continue;
     levels[r].forEach((point, i) =>
       placeLabel(
         painter,

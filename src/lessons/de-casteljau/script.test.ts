@@ -106,6 +106,25 @@ describe('the script of the de Casteljau construction', () => {
         [4, 0],
       ]),
     ).toBeNull();
+    // Points on one spot are named once, not with labels on top of each other.
+    const stacked = constructionFigure.handles!(
+      derive(
+        state({
+          p: [
+            [0, 0],
+            [2, 2],
+            [2, 2],
+            [4, 0],
+          ],
+        }),
+      ),
+    );
+    expect(stacked.map((h) => [h.label, h.showLabel])).toEqual([
+      ['P_{0}', true],
+      ['P_{1} = P_{2}', true],
+      ['P_{2}', false],
+      ['P_{3}', true],
+    ]);
     // The figure says it too.
     expect(
       drawState(
