@@ -46,11 +46,12 @@ test.beforeEach(async ({ page }) => {
   await expect(figure(page)).toBeVisible();
 });
 
-test('moving the μ1 slider changes the curve and the coefficients, and P(μ1) stays P1', async ({
-  page,
-}) => {
+const heading = (page: Page, k: number) =>
+  page.getByRole('heading', { name: new RegExp(`^Step ${k} of 5: `) });
+
+test('the μ1 slider and a moved point change the curve, and P(μ1) stays P1', async ({ page }) => {
   await page.keyboard.press('End');
-  await expect(page.getByRole('heading', { name: /^Step 3 of 3/ })).toBeVisible();
+  await expect(heading(page, 5)).toBeVisible();
   await page.getByText('All digits of the coefficients').click();
   const first = await expectThroughP1(page, 0.3);
   const before = await pixels(page);
@@ -61,43 +62,62 @@ test('moving the μ1 slider changes the curve and the coefficients, and P(μ1) s
   const [p0, , p2] = points(page);
   for (const d of [0, 1]) expect(second[1][d] + second[2][d]).toBeCloseTo(p2[d] - p0[d], 9);
   expect(await pixels(page)).not.toBe(before);
-  // The typeset check line says the same thing.
   await expect(page.getByText(/Check:/).first()).toBeVisible();
   await snapshot(page, 'quadratic-rules-mu-0.72');
-});
-
-test('a point moved with the keyboard keeps the curve through it', async ({ page }) => {
-  await page.keyboard.press('PageDown');
-  await page.getByText('All digits of the coefficients').click();
-  const p1 = page.getByRole('button', { name: /^P1 at/ });
-  await p1.focus();
+  // A point moved with the keyboard: the curve still passes through it.
+  await page.getByRole('button', { name: /^P1 at/ }).focus();
   await page.keyboard.press('ArrowUp');
   await page.keyboard.press('Shift+ArrowRight');
-  await expectHash(page, 'p', (v) => v.split(';')[1] !== '1,2');
+  await expectHash(page, 'p', (v) => v.split(';')[1] !== '2,3');
   await expectThroughP1(page, 0.45);
 });
 
-test('two equal x: the parabola lesson says there is no y(x), on the figure and the panel', async ({
+test('the clicker builds the construction from the points up, then opens the next scene', async ({
   page,
 }) => {
-  const before = await pixels(page);
-  await page.getByRole('button', { name: 'Two equal x' }).click();
+  await page.keyboard.press('Home');
+  await expect(heading(page, 0)).toHaveText(
+    'Step 0 of 5: Three points P₀, P₁, P₂: we want a smooth curve through them',
+  );
+  const frames = [await pixels(page)];
+  const captions = [
+    'First idea: the parabola y(x)',
+    'Instead, a parametric quadratic P(μ)',
+    'Dots at equal steps of μ',
+    'One set of points, many curves',
+    'Choosing μ₁ from the points',
+  ];
+  for (const [k, caption] of captions.entries()) {
+    await page.keyboard.press('PageDown');
+    await expect(heading(page, k + 1)).toContainText(caption);
+    await expect.poll(() => pixels(page)).not.toBe(frames[frames.length - 1]);
+    frames.push(await pixels(page));
+  }
+  expect(new Set(frames).size).toBe(6);
+  // Past the last step: the next scene, at its first step.
+  await page.keyboard.press('PageDown');
   await expectHash(page, 'p', (v) => v === '1,0;1,2.5;3.5,1.5');
+  await expect(heading(page, 0)).toBeVisible();
+  await page.keyboard.press('PageDown');
   await expect(page.getByText(/There is none: P0 and P1 share x = 1/)).toBeVisible();
-  expect(await pixels(page)).not.toBe(before);
+  await expect(heading(page, 1)).toContainText('there is none, P0 and P1 share x = 1');
   await snapshot(page, 'quadratic-same-x');
-  // The parametric curve has no such trouble: step forward and it is drawn through all three.
+  // The parametric curve has no such trouble: the next step draws it through all three.
   await page.getByText('All digits of the coefficients').click();
-  await page.getByRole('button', { name: 'Step forward' }).click();
+  await page.keyboard.press('PageDown');
   await expectThroughP1(page, 0.5);
+  await expect(
+    page.getByRole('link', { name: /one polynomial through n \+ 1 points/ }),
+  ).toHaveAttribute('href', '#/lagrange');
 });
 
-test('a link with three equal x, or points going backwards, says so', async ({ page }) => {
-  await page.goto('./#/quadratic?p=2,0;2,1;2,3&step=0');
+test('links with three equal x, one spot, or points going backwards say so', async ({ page }) => {
+  await page.goto('./#/quadratic?p=2,0;2,1;2,3&step=1');
   await expect(page.getByText(/There is none: all three points share x = 2/)).toBeVisible();
-  await page.goto('./#/quadratic?p=1,1;1,1;1,1&step=0');
+  await page.goto('./#/quadratic?p=1,1;1,1;1,1&step=1');
   await expect(page.getByText(/all three points are at one spot, \(1, 1\)/).first()).toBeVisible();
   await page.getByRole('button', { name: 'Going backwards' }).click();
+  await page.keyboard.press('PageDown');
   await expect(
     page.getByText(/meets the points in the wrong order: x1 = 4 is not between/),
   ).toBeVisible();
@@ -105,15 +125,13 @@ test('a link with three equal x, or points going backwards, says so', async ({ p
 });
 
 test('the rules put μ1 where the formulas say', async ({ page }) => {
-  await expectHash(page, 'p', (v) => v !== '');
-  const defaults = hashState(page).p;
   await page.getByRole('button', { name: 'Uneven spacing' }).click();
-  await expect(page.getByRole('heading', { name: /^Step 3 of 3/ })).toBeVisible();
-  // The link is written just after the change: read the preset's points, not the old ones.
-  await expectHash(page, 'p', (v) => v !== defaults);
-  const [p0, p1, p2] = points(page);
-  const d0 = Math.hypot(p1[0] - p0[0], p1[1] - p0[1]);
-  const d1 = Math.hypot(p2[0] - p1[0], p2[1] - p1[1]);
+  await expectHash(page, 'p', (v) => v === '0,0;0.6,1;5,1.5');
+  await page.keyboard.press('End');
+  await expect(heading(page, 5)).toBeVisible();
+  // d0 = |(0.6, 1)|, d1 = |(4.4, 0.5)|, from the scene's points.
+  const d0 = Math.hypot(0.6, 1);
+  const d1 = Math.hypot(4.4, 0.5);
   const rules = page.getByRole('table', { name: 'Rules for μ1' });
   await expect(rules.getByRole('row', { name: /^Chord length/ })).toContainText(
     (d0 / (d0 + d1)).toFixed(4),
@@ -132,40 +150,9 @@ test('the rules put μ1 where the formulas say', async ({ page }) => {
   expect(await pixels(page)).not.toBe(before);
   await page.getByText('All digits of the coefficients').click();
   const [a0, a1, a2] = await coefficients(page);
-  const mu = Number(hashState(page).mu);
+  const mu = centripetal;
   for (const d of [0, 1])
-    expect(Math.abs(a2[d] * mu * mu + a1[d] * mu + a0[d] - p1[d])).toBeLessThan(1e-9);
-});
-
-test('every preset draws, in normal and projector mode', async ({ page }) => {
-  const presets = page.getByRole('group', { name: 'Presets' }).getByRole('button');
-  const count = await presets.count();
-  expect(count).toBe(5);
-  let previous = await pixels(page);
-  for (let i = 0; i < count; i++) {
-    const preset = presets.nth(i);
-    const id = await preset.getAttribute('data-preset');
-    await preset.click();
-    await expect.poll(() => pixels(page)).not.toBe(previous);
-    previous = await pixels(page);
-    await snapshot(page, `quadratic-preset-${id}`);
-  }
+    expect(Math.abs(a2[d] * mu * mu + a1[d] * mu + a0[d] - [0.6, 1][d])).toBeLessThan(1e-9);
   await page.keyboard.press('p');
-  await expect(page.locator('.projector')).toHaveCount(1);
-  await snapshot(page, 'quadratic-projector-uneven');
-  await page.getByRole('button', { name: 'Figure 2: the family' }).click();
-  await snapshot(page, 'quadratic-projector-family');
-});
-
-test('steps walk from the parabola to the rules, with a clicker', async ({ page }) => {
-  const frames = [await pixels(page)];
-  for (const k of [1, 2, 3]) {
-    await page.keyboard.press('PageDown');
-    await expect(page.getByRole('heading', { name: new RegExp(`^Step ${k} of 3`) })).toBeVisible();
-    frames.push(await pixels(page));
-  }
-  expect(new Set(frames).size).toBe(4);
-  await expect(
-    page.getByRole('link', { name: /one polynomial through n \+ 1 points/ }),
-  ).toHaveAttribute('href', '#/lagrange');
+  await snapshot(page, 'quadratic-presenter-rules');
 });

@@ -40,7 +40,7 @@ describe('the experiment figure', () => {
     expect(draw('perspective').texts).toEqual(
       expect.arrayContaining(['map of the curve', 'curve of the mapped points']),
     );
-    // Three copies of P1: the ring says so.
-    expect(draw('repeat').texts).toContain('×3');
+    // Shown whole, the scene lists P1 six times (five extra copies): the ring says so.
+    expect(draw('repeat').texts).toContain('×6');
   });
 });

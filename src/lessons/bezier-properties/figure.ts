@@ -1,5 +1,7 @@
 import type { DrawInfo, FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
+import { stackedLabels } from '../de-casteljau/labels';
+import { movingPoint } from './script';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
 import { drawAffine } from './affine/draw';
@@ -50,12 +52,12 @@ export const propertiesFigure: FigureSpec<PropertiesState, PropertiesModel> = {
   kind: 'geometry',
   bounds: (m) => boundsOf(m.extent),
   draw: (painter, m, info) => drawExperiment(painter, m.x, m, info),
-  handles: (m) =>
-    m.state.p.map((point, i) => ({
-      id: `p${i}`,
-      label: m.x === 'closed' && i === 0 ? `P_0 = P_{${m.state.p.length}}` : `P_{${i}}`,
-      position: point,
-    })),
+  handles: (m) => {
+    const name = (i: number) =>
+      m.x === 'closed' && i === 0 ? `P_0 = P_{${m.state.p.length}}` : `P_{${i}}`;
+    const labels = stackedLabels(m.state.p, name);
+    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
+  },
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
@@ -66,6 +68,7 @@ export const propertiesFigure: FigureSpec<PropertiesState, PropertiesModel> = {
     // A new point makes a new curve: it becomes the "before" of the local-control experiment.
     return { ...state, p, q: state.x === 'local' ? copy(p) : state.q };
   },
+  trail: movingPoint,
   removeHandle(state, id) {
     const fewest = state.x === 'closed' ? 3 : 2;
     if (needsCubic(state.x) || state.p.length <= fewest) return null;

@@ -100,7 +100,8 @@ describe('repeated and closing points', () => {
         [5, 0],
       ],
       r: 1,
-      k: 2,
+      // Step 3: the curve (step 1), then two extra copies.
+      k: 3,
       t: 0.5,
     });
     expect(m.controls).toHaveLength(6);
@@ -135,7 +136,7 @@ describe('repeated and closing points', () => {
 });
 
 describe('degree elevation', () => {
-  const m = modelOf('elevate', { p: LECTURE_CUBIC, k: 1 });
+  const m = modelOf('elevate', { p: LECTURE_CUBIC, k: 2 }); // one elevation;
   it('gives Qi = i/4·P(i−1) + (1 − i/4)·Pi on the same curve', () => {
     expect(m.controls).toEqual([
       [0, 0],
@@ -156,7 +157,7 @@ describe('degree elevation', () => {
 
 describe('subdivision', () => {
   it('splits at ½ into the de Casteljau polygons, twice', () => {
-    const m = modelOf('split', { p: LECTURE_CUBIC, t: 0.5, k: 2 });
+    const m = modelOf('split', { p: LECTURE_CUBIC, t: 0.5, k: 3 }); // two splits;
     expect(m.levels.map((level) => level.length)).toEqual([1, 2, 4]);
     expect(m.first?.[0]).toEqual([
       [0, 0],
@@ -168,7 +169,7 @@ describe('subdivision', () => {
     expect(m.atEnd).toBe(false);
   });
   it('says when t = 0 splits off a single point', () => {
-    expect(modelOf('split', { t: 0, k: 1 }).atEnd).toBe(true);
+    expect(modelOf('split', { t: 0, k: 2 }).atEnd).toBe(true);
   });
 });
 

@@ -1,7 +1,13 @@
 import type { Point, Preset } from '../../app/lesson';
-import { type ExperimentId, LECTURE_CUBIC, type MapKind, type PropertiesState } from './state';
+import {
+  type ExperimentId,
+  LECTURE_CUBIC,
+  type MapKind,
+  type PropertiesState,
+  stepCount,
+} from './state';
 
-/** A preset: the experiment and the figure set up for it. */
+/** A scene: the experiment and the figure set up for it, shown whole (the clicker opens it at step 0). */
 const experiment = (
   id: string,
   label: string,
@@ -11,7 +17,10 @@ const experiment = (
 ): Preset<PropertiesState> => ({
   id,
   label,
-  apply: (s) => ({ ...s, x, p, q: [], t: 0.3, k: 0, r: 1, ...extra }),
+  apply: (s) => {
+    const next = { ...s, x, p, q: [], t: 0.3, r: 1, ...extra };
+    return { ...next, k: stepCount(next) };
+  },
 });
 
 /** Twelve control points on a gentle wave: the long polygon of Figure 6. */
@@ -46,7 +55,7 @@ export const PRESETS: Preset<PropertiesState>[] = [
       [4, 3],
       [5, 0],
     ],
-    { k: 2, r: 1 },
+    { r: 1 },
   ),
   experiment('closed', '4 Closed curve', 'closed', [
     [0, 0],
@@ -56,7 +65,7 @@ export const PRESETS: Preset<PropertiesState>[] = [
     [4, 0],
   ]),
   experiment('elevate', '5 Raise the degree', 'elevate', LECTURE_CUBIC),
-  experiment('split', '6 Subdivision', 'split', LECTURE_CUBIC, { t: 0.5, k: 1 }),
+  experiment('split', '6 Subdivision', 'split', LECTURE_CUBIC, { t: 0.5 }),
   affinePreset('affine', '7 Affine map', 'shear'),
   affinePreset('perspective', '7 Perspective map', 'perspective'),
   experiment('inflection', '8 Inflection', 'cubic', [

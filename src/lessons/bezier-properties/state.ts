@@ -28,7 +28,11 @@ export interface PropertiesState {
   q: Point[];
   /** A parameter: the point P(t), the split parameter. */
   t: number;
-  /** Steps: degree elevations, levels of subdivision, extra copies of the repeated point. */
+  /**
+   * The step of the experiment (see STAGES): 0 the control points, then one
+   * thing more per step; for elevation, subdivision and the repeated point,
+   * step 1 is the curve and each later step one elevation, split or copy.
+   */
   k: number;
   /** The index of the repeated point. */
   r: number;
@@ -63,12 +67,31 @@ export const EXPERIMENT_IDS: readonly ExperimentId[] = [
 
 export const MAP_KINDS: readonly MapKind[] = ['rotate', 'scale', 'shear', 'perspective'];
 
+/**
+ * The step at which each experiment shows each thing (step 0 shows only the
+ * control points). Elevation, subdivision and the repeated point show the
+ * curve at step 1 and then one elevation, split or copy per step.
+ */
+export const STAGES = {
+  ends: { polygon: 1, curve: 2, ends: 3, tangents: 4, point: 5 },
+  hull: { polygon: 1, hull: 2, curve: 3, point: 4 },
+  local: { before: 1, moved: 2, curve: 3, largest: 4 },
+  repeat: { curve: 1 },
+  closed: { polygon: 1, curve: 2, tangents: 3, point: 4 },
+  elevate: { curve: 1 },
+  split: { curve: 1 },
+  affine: { curve: 1, mappedPoints: 2, curveOfMapped: 3, mappedCurve: 4, point: 5 },
+  cubic: { polygon: 1, curve: 2, turning: 3, marks: 4, point: 5 },
+  hermite: { curve: 1, tangents: 2, hermite: 3, point: 4 },
+} as const satisfies Record<ExperimentId, Record<string, number>>;
+
 export const schema: Schema<PropertiesState> = {
   x: choice({ default: 'ends', values: EXPERIMENT_IDS }),
   p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
   q: points({ default: [], min: 0, max: MAX_POINTS }),
   t: number({ default: 0.3, min: 0, max: 1 }),
-  k: int({ default: 0, min: 0, max: MAX_ELEVATIONS }),
+  // A student who opens the link sees the first experiment whole: its last step.
+  k: int({ default: STAGES.ends.point, min: 0, max: 1 + MAX_ELEVATIONS }),
   r: int({ default: 1, min: 0, max: MAX_POINTS - 1 }),
   m: choice({ default: 'shear', values: MAP_KINDS }),
 };
@@ -76,35 +99,24 @@ export const schema: Schema<PropertiesState> = {
 /** Experiments about cubics only. */
 export const needsCubic = (x: ExperimentId) => x === 'cubic' || x === 'hermite';
 
-/** How many steps the experiment has (0: none). */
+/** The most of each experiment's own steps: elevations, splits, extra copies. */
+const AMOUNTS: Partial<Record<ExperimentId, number>> = {
+  elevate: MAX_ELEVATIONS,
+  split: MAX_SPLITS,
+  repeat: MAX_COPIES,
+};
+
+/** How many steps the experiment has: its last step shows everything. */
 export function stepCount(state: PropertiesState): number {
-  switch (state.x) {
-    case 'elevate':
-      return MAX_ELEVATIONS;
-    case 'split':
-      return MAX_SPLITS;
-    case 'repeat':
-      return MAX_COPIES;
-    default:
-      return 0;
-  }
+  const amount = AMOUNTS[state.x];
+  return amount === undefined ? Math.max(...Object.values(STAGES[state.x])) : 1 + amount;
 }
 
-/** What the steps of the experiment show, e.g. "Degree 3 → 5". */
-export function describeStep(state: PropertiesState, k: number): string {
-  switch (state.x) {
-    case 'elevate':
-      return k === 0
-        ? `Degree ${state.p.length - 1}`
-        : `Degree ${state.p.length - 1} → ${state.p.length - 1 + k}`;
-    case 'split':
-      return `${k} split${k === 1 ? '' : 's'}: ${2 ** k} piece${k === 0 ? '' : 's'}`;
-    case 'repeat':
-      return `P${state.r} × ${k + 1}`;
-    default:
-      return '';
-  }
-}
+/** Elevations, splits or extra copies shown at the current step (0 up to step 1). */
+export const amount = (state: PropertiesState) => Math.max(0, state.k - 1);
+
+/** The step that shows `n` elevations, splits or extra copies. */
+export const stepFor = (n: number) => n + 1;
 
 const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
 

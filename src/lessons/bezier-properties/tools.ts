@@ -9,6 +9,8 @@ import {
   MAX_SPLITS,
   type MapKind,
   type PropertiesState,
+  amount,
+  stepFor,
 } from './state';
 
 const MAPS: { value: MapKind; label: string }[] = [
@@ -31,16 +33,18 @@ export function experimentTools(api: PanelApi) {
     const s = api.get();
     api.set({ ...s, ...f(s) });
   };
-  const raise = button('Raise the degree', () =>
-    change((s) => ({ k: Math.min(MAX_ELEVATIONS, s.k + 1) })),
+  // Each press is one step of the experiment: one elevation, split or copy more or less.
+  const more = (most: number) => (s: PropertiesState) => ({
+    k: stepFor(Math.min(most, amount(s) + 1)),
+  });
+  const raise = button('Raise the degree', () => change(more(MAX_ELEVATIONS)));
+  const original = button('Back to the original degree', () => change(() => ({ k: stepFor(0) })));
+  const splitAgain = button('Split every piece', () => change(more(MAX_SPLITS)));
+  const unsplit = button('Undo the splits', () => change(() => ({ k: stepFor(0) })));
+  const addCopy = button('Add a copy', () => change(more(MAX_COPIES)));
+  const removeCopy = button('Remove a copy', () =>
+    change((s) => ({ k: stepFor(Math.max(0, amount(s) - 1)) })),
   );
-  const original = button('Back to the original degree', () => change(() => ({ k: 0 })));
-  const splitAgain = button('Split every piece', () =>
-    change((s) => ({ k: Math.min(MAX_SPLITS, s.k + 1) })),
-  );
-  const unsplit = button('Undo the splits', () => change(() => ({ k: 0 })));
-  const addCopy = button('Add a copy', () => change((s) => ({ k: Math.min(MAX_COPIES, s.k + 1) })));
-  const removeCopy = button('Remove a copy', () => change((s) => ({ k: Math.max(0, s.k - 1) })));
   const repeated = h('select', { id: 'repeated-point', 'aria-label': 'Repeated point' });
   repeated.addEventListener('change', () => change(() => ({ r: Number(repeated.value) })));
   const remember = button('Make this the "before" curve', () =>
@@ -82,12 +86,13 @@ export function experimentTools(api: PanelApi) {
         for (const [id, group] of Object.entries(groups))
           group.style.display = id === state.x ? '' : 'none';
       }
-      raise.disabled = state.k >= MAX_ELEVATIONS;
-      original.disabled = state.k === 0;
-      splitAgain.disabled = state.k >= MAX_SPLITS;
-      unsplit.disabled = state.k === 0;
-      addCopy.disabled = state.k >= MAX_COPIES;
-      removeCopy.disabled = state.k === 0;
+      const done = amount(state);
+      raise.disabled = done >= MAX_ELEVATIONS;
+      original.disabled = done === 0;
+      splitAgain.disabled = done >= MAX_SPLITS;
+      unsplit.disabled = done === 0;
+      addCopy.disabled = done >= MAX_COPIES;
+      removeCopy.disabled = done === 0;
       addCopy.textContent = `Add a copy of P${state.r}`;
       removeCopy.textContent = `Remove a copy of P${state.r}`;
       if (repeated.options.length !== state.p.length) {

@@ -1,11 +1,15 @@
 import type { FigureSpec } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
+import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
+import { HALF_DASH, halfColour, levelColour, levelDash } from './colours';
+import { handleLabelBoxes, placeLabel, stackedLabels } from './labels';
 import type { DeCasteljauModel } from './model';
-import { type DeCasteljauState, MAX_POINTS } from './state';
+import { type DeCasteljauState, MAX_POINTS, lastStep } from './state';
 
-/** Labels for every constructed point stay readable up to this degree. */
+/** Labels for every constructed point stay readable up to this degree (3 on a narrow screen). */
 const LABEL_ALL_UP_TO = 5;
+const NARROW = 600;
 
 export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> = {
   id: 'construction',
@@ -14,70 +18,106 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
   bounds: (m) => boundsOf(m.state.p),
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, n, levels } = m;
+    const { state, n, levels, shown } = m;
 
-    // The whole curve, faintly; then the part traced so far (0 … t) strongly.
-    painter.polylineFlat(m.curve, { color: theme.curveFaint, width: theme.sizes.curve * 0.8 });
-    if (state.split) {
-      painter.polylineFlat(m.leftCurve, { color: painter.color(0) });
-      painter.polylineFlat(m.rightCurve, { color: painter.color(1) });
-    } else if (state.t > 0) {
-      painter.polylineFlat(m.leftCurve, { color: theme.curve });
+    // The last step: the whole curve faintly, the part traced so far (0 … t) strongly.
+    if (shown.curve && !state.split) {
+      painter.polylineFlat(m.curve, {
+        color: theme.curveFaint,
+        width: theme.sizes.curve * 0.8,
+        role: 'curve',
+      });
+      if (state.t > 0) painter.polylineFlat(m.leftCurve, { color: theme.curve, role: 'curve' });
     }
+    if (state.split) drawHalves(painter, m, shown.curve);
 
     // Level 0 is the control polygon.
-    painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-
-    for (let r = 1; r <= state.step; r++) {
-      const color = painter.color(r - 1);
-      painter.polyline(levels[r], { color, width: theme.sizes.line });
-      levels[r].forEach((point, i) => {
+    if (shown.polygon) {
+      painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
+    }
+    for (let r = 1; r <= shown.levels; r++) {
+      const color = levelColour(theme.palette, r);
+      painter.polyline(levels[r], { color, width: theme.sizes.line, dash: levelDash(r) });
+      levels[r].forEach((point) => {
         const last = r === n;
         painter.dot(
           point,
           last ? theme.accent : color,
           last ? theme.sizes.point * 1.6 : theme.sizes.point,
         );
-        if (!info.thumbnail && (n <= LABEL_ALL_UP_TO || last)) {
-          painter.label(last ? `P_{${r},${i}} = P(t)` : `P_{${r},${i}}`, point, {
-            dx: 8,
-            dy: 14 + theme.sizes.label * 0.3,
-            color: last ? theme.ink : color,
-            halo: true,
-            size: theme.sizes.label * 0.9,
-          });
-        }
       });
     }
-
-    if (state.split && !info.thumbnail) {
-      for (const [half, k] of [
-        [m.left, 0],
-        [m.right, 1],
-      ] as const) {
-        painter.polyline(half, {
-          color: painter.color(k),
-          width: theme.sizes.line * 1.6,
-          alpha: 0.85,
-        });
-        for (const q of half) painter.dot(q, painter.color(k), theme.sizes.point * 0.9);
-      }
-    }
+    if (!info.thumbnail) drawLabels(painter, m);
+    if (m.note && !info.thumbnail) painter.note(m.note);
   },
-  handles: (m) =>
-    m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
+  handles: (m) => {
+    const labels = stackedLabels(m.state.p, (i) => `P_{${i}}`);
+    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
+  },
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
   },
-  addPoint(state, at, m) {
+  addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
     const p = insertPoint(state.p, at);
-    return { ...state, p, step: state.step === m.n ? p.length - 1 : state.step };
+    // A construction shown to its end stays shown to its end.
+    return { ...state, p, step: state.step === lastStep(state) ? p.length + 1 : state.step };
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
+    const p = state.p.filter((_, k) => k !== i);
+    return { ...state, p, step: state.step === lastStep(state) ? p.length + 1 : state.step };
   },
+  trail: (m) => (m.shown.levels === m.n ? m.levels[m.n][0] : null),
 };
+
+/** The labels of the levels shown, each where it covers no other label and no point. */
+function drawLabels(painter: Painter, m: DeCasteljauModel): void {
+  const theme = painter.theme;
+  const { n, levels, shown } = m;
+  const points = levels.slice(0, shown.levels + 1).flat();
+  const taken = handleLabelBoxes(painter, m.state.p);
+  const labelAll = n <= (painter.view.width < NARROW ? 3 : LABEL_ALL_UP_TO);
+  // The point on the curve first: it matters most, and gets the best spot.
+  for (let r = shown.levels; r >= 1; r--) {
+    const last = r === n;
+    if (!labelAll && !last) continue;
+    levels[r].forEach((point, i) =>
+      placeLabel(
+        painter,
+        last ? `P_{${r},${i}} = P(t)` : `P_{${r},${i}}`,
+        point,
+        points,
+        {
+          color: last ? theme.ink : levelColour(theme.palette, r),
+          halo: true,
+          bold: last,
+          size: theme.sizes.label * 0.9,
+        },
+        taken,
+      ),
+    );
+  }
+}
+
+/** The two halves of the subdivision at t: polygons and curves, each in its own colour and dash. */
+function drawHalves(painter: Painter, m: DeCasteljauModel, withCurves: boolean): void {
+  const theme = painter.theme;
+  ([0, 1] as const).forEach((k) => {
+    const color = halfColour(theme.palette, k);
+    if (withCurves) {
+      painter.polylineFlat(k === 0 ? m.leftCurve : m.rightCurve, { color, role: 'curve' });
+    }
+    painter.polyline(k === 0 ? m.left : m.right, {
+      color,
+      width: theme.sizes.line * 1.6,
+      alpha: 0.85,
+      dash: HALF_DASH[k],
+    });
+    for (const q of k === 0 ? m.left : m.right) {
+      painter.dot(q, color, theme.sizes.point * 0.9);
+    }
+  });
+}

@@ -2,12 +2,20 @@ import { defineLesson, type Point } from '../../app/lesson';
 import { constructionFigure } from './figure';
 import { type DeCasteljauModel, derive } from './model';
 import { deCasteljauPanel } from './panel';
-import { type DeCasteljauState, LECTURE_CUBIC, degree, schema } from './state';
+import { describeStep, stepFormula } from './script';
+import { type DeCasteljauState, LECTURE_CUBIC, lastStep, schema } from './state';
 
-const preset = (id: string, label: string, p: Point[], t = 0.4) => ({
+/** A scene: its control points and t, shown to the end (the clicker opens it at step 0). */
+const scene = (id: string, label: string, p: Point[], t = 0.4) => ({
   id,
   label,
-  apply: (s: DeCasteljauState): DeCasteljauState => ({ ...s, p, t, step: p.length - 1 }),
+  apply: (s: DeCasteljauState): DeCasteljauState => ({
+    ...s,
+    p,
+    t,
+    split: false,
+    step: lastStep({ ...s, p }),
+  }),
 });
 
 export default defineLesson<DeCasteljauState, DeCasteljauModel>({
@@ -16,17 +24,10 @@ export default defineLesson<DeCasteljauState, DeCasteljauModel>({
   derive,
   figures: [constructionFigure],
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
-  steps: {
-    key: 'step',
-    count: degree,
-    describe: (state, k) =>
-      k === degree(state)
-        ? `Level ${k} of ${degree(state)}: P(t)`
-        : `Level ${k} of ${degree(state)}`,
-  },
+  steps: { key: 'step', count: lastStep, describe: describeStep, formula: stepFormula },
   scenes: [
-    preset('cubic', 'Lecture cubic', LECTURE_CUBIC),
-    preset(
+    scene('cubic', 'Lecture cubic', LECTURE_CUBIC),
+    scene(
       'quadratic',
       'Quadratic',
       [
@@ -36,7 +37,7 @@ export default defineLesson<DeCasteljauState, DeCasteljauModel>({
       ],
       0.5,
     ),
-    preset(
+    scene(
       'loop',
       'Cubic with a loop',
       [
@@ -47,7 +48,7 @@ export default defineLesson<DeCasteljauState, DeCasteljauModel>({
       ],
       0.5,
     ),
-    preset(
+    scene(
       'quintic',
       'Degree 5',
       [

@@ -1,11 +1,14 @@
 import { bernstein, deCasteljau, sampleBezier, splitBezier, type Point } from '../../math';
-import { type DeCasteljauState, degree } from './state';
+import { degenerateNote } from './degenerate';
+import { type DeCasteljauState, degree, stage } from './state';
 
 /** Everything the figure and the panel show, computed once per state. */
 export interface DeCasteljauModel {
   state: DeCasteljauState;
   /** Degree n of the curve. */
   n: number;
+  /** What the current step shows: the polygon, how many levels, the traced curve. */
+  shown: ReturnType<typeof stage>;
   /** Every level of the construction at t: levels[r][i] = P_{r,i}. */
   levels: Point[][];
   /** The whole curve, sampled (interleaved x, y). */
@@ -17,6 +20,8 @@ export interface DeCasteljauModel {
   rightCurve: Float64Array;
   /** P(t) again from the Bernstein form, Σ W(n, i, t) P_i, as a check. */
   bernsteinPoint: Point;
+  /** What degenerate control points do to the construction, in words; null if nothing. */
+  note: string | null;
 }
 
 export function derive(state: DeCasteljauState): DeCasteljauModel {
@@ -31,6 +36,7 @@ export function derive(state: DeCasteljauState): DeCasteljauModel {
   return {
     state,
     n,
+    shown: stage(state),
     levels,
     curve: sampleBezier(state.p, samples),
     left,
@@ -38,5 +44,6 @@ export function derive(state: DeCasteljauState): DeCasteljauModel {
     leftCurve: sampleBezier(left, samples),
     rightCurve: sampleBezier(right, samples),
     bernsteinPoint,
+    note: degenerateNote(state.p),
   };
 }

@@ -1,14 +1,14 @@
-import { dataTable, fmt, h, setChildren } from '../../app/dom';
+import { dataTable, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
+import { halfColour, levelColour } from './colours';
 import type { DeCasteljauModel } from './model';
-import { type DeCasteljauState, MAX_POINTS, degree } from './state';
+import { describeStep, texT, words } from './script';
+import { type DeCasteljauState, MAX_POINTS, lastStep } from './state';
 
-/** t as typed: up to four decimals, trailing zeros dropped. */
-const texT = (t: number) => String(Number(t.toFixed(4)));
 const coords = (p: readonly number[]) => p.map((v) => texNumber(v, 3));
 
 /** P_{r,i} = (1−t)·P_{r−1,i} + t·P_{r−1,i+1} = P, with live numbers. */
@@ -20,6 +20,7 @@ export function deCasteljauPanel(
 ): LessonPanel<DeCasteljauState, DeCasteljauModel> {
   const stepTitle = h('h2', {});
   const stepText = h('p', {});
+  const note = h('p', { class: 'warning', role: 'note' });
   const stepFormulas = h('div', { class: 'step-formulas' });
   // One live formula per point of a level (at most n of them), typeset when its shape changes.
   const levelFormulas: LiveFormula[] = [];
@@ -30,13 +31,15 @@ export function deCasteljauPanel(
     get: (s) => s.split,
     set: (s, on) => ({ ...s, split: on }),
   });
-  const splitInfo = h('div', { class: 'split-info' });
-  const leftTitle = h('p', {});
-  const rightTitle = h('p', {});
-  const leftPoints = new LiveFormula(true);
-  const rightPoints = new LiveFormula(true);
-  const leftSwatch = h('span', { class: 'swatch' });
-  const rightSwatch = h('span', { class: 'swatch' });
+  const splitText = h('p', {});
+  const halvesBody = h('tbody', {});
+  const halves = new LiveRows(halvesBody);
+  const splitInfo = h(
+    'div',
+    { class: 'split-info' },
+    splitText,
+    dataTable('Control points of the two halves', ['Half', 'Point', 'x', 'y'], halvesBody),
+  );
   const tableBody = h('tbody', {});
   const table = new LiveRows(tableBody);
   const pointCount = pointButtons(api, {
@@ -49,9 +52,13 @@ export function deCasteljauPanel(
     add: (s) => ({
       ...s,
       p: [...s.p, extendPolygon(s.p)],
-      step: s.step === degree(s) ? s.p.length : s.step,
+      step: s.step === lastStep(s) ? s.p.length + 2 : s.step,
     }),
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
+    remove: (s) => ({
+      ...s,
+      p: s.p.slice(0, -1),
+      step: s.step === lastStep(s) ? s.p.length : s.step,
+    }),
   });
 
   const element = h(
@@ -60,7 +67,7 @@ export function deCasteljauPanel(
     h(
       'p',
       {},
-      'A Bézier curve of degree n is built from its n + 1 control points by nothing but repeated linear interpolation. Fix t; cut every edge of the control polygon in the ratio t : (1 − t); join the new points and cut again. After n levels one point is left: the point P(t) on the curve.',
+      'A Bézier curve of degree n is built from its n + 1 control points by nothing but repeated linear interpolation. The parameter is t, from 0 to 1 (the slider below the figure). Fix t; cut every edge of the control polygon in the ratio t : (1 − t); join the new points and cut again. After n levels one point is left: the point P(t) on the curve.',
     ),
     formula(
       '\\begin{aligned}P_{r,i} &= (1-t)\\,P_{r-1,i} + t\\,P_{r-1,i+1},\\\\ &\\qquad r = 1,\\dots,n,\\quad i = 0,\\dots,n-r\\end{aligned}',
@@ -69,10 +76,11 @@ export function deCasteljauPanel(
     h(
       'p',
       { class: 'note' },
-      'Drag a control point, move it with Tab and the arrow keys, double-click to add one, right-click or Delete to remove one. Step through the levels with the buttons or a clicker.',
+      'Drag a control point, move it with Tab and the arrow keys, double-click to add one, right-click or Delete to remove one. Step through the construction with the buttons or a clicker.',
     ),
     stepTitle,
     stepText,
+    note,
     stepFormulas,
     split.element,
     splitInfo,
@@ -80,27 +88,22 @@ export function deCasteljauPanel(
     h('h2', {}, 'Every constructed point'),
     dataTable('Constructed points', ['Point', 'x', 'y'], tableBody),
   );
-  let shownLevel = -1;
-  let shownSplit: boolean | null = null;
+  let shownKey = '';
 
   return {
     element,
     update(m, state) {
-      const { n, levels } = m;
+      const { n, levels, shown } = m;
       const t = state.t;
       const palette = api.theme().palette;
-      const r = state.step;
+      const r = shown.levels;
       split.update(state);
       pointCount.update(state);
 
-      stepTitle.textContent =
-        r === 0 ? `Step 0 of ${n}: the control points` : `Step ${r} of ${n}: level ${r}`;
-      stepText.textContent =
-        r === 0
-          ? `Level 0 is the control polygon itself: P0,i = Pi. At t = ${texT(t)} every edge will be cut ${fmt(t * 100, 0)}% of the way along. Step forward to build level 1.`
-          : r === n
-            ? `The last level has a single point: it is the point on the curve at t = ${texT(t)}.`
-            : `Level ${r} has ${n - r + 1} points, each between two neighbours of level ${r - 1}.`;
+      stepTitle.textContent = `Step ${state.step} of ${lastStep(state)}`;
+      stepText.textContent = `${describeStep(state, state.step)}.`;
+      note.textContent = m.note ?? '';
+      note.hidden = m.note === null;
       if (r > 0) {
         levels[r].forEach((point, i) => {
           levelFormulas[i] ??= new LiveFormula(true);
@@ -112,61 +115,54 @@ export function deCasteljauPanel(
             ...coords(point),
           ]);
         });
-        if (r === n) {
-          // The same point from the Bernstein form, as a check students can read.
-          check.set(
-            `\\text{Check: } P(${SLOT}) = \\sum_{i=0}^{${n}} W(${n},i,${SLOT})\\,P_i = ${slotPoint()}`,
-            [texT(t), texT(t), ...coords(m.bernsteinPoint)],
-          );
-        }
       }
-      // The list of formulas changes only when the level or the degree does.
-      const levelKey = r === 0 ? 0 : r * 100 + n;
-      if (levelKey !== shownLevel) {
-        shownLevel = levelKey;
-        const shown = r === 0 ? [] : levelFormulas.slice(0, levels[r].length).map((f) => f.element);
-        setChildren(stepFormulas, shown, r === n && r > 0 ? check.element : null);
-      }
-
-      if (state.split !== shownSplit) {
-        shownSplit = state.split;
-        setChildren(
-          splitInfo,
-          state.split
-            ? [
-                h('p', {}, leftSwatch, leftTitle),
-                leftPoints.element,
-                h('p', {}, rightSwatch, rightTitle),
-                rightPoints.element,
-              ]
-            : [],
+      if (r === n) {
+        // The same point from the Bernstein form, as a check students can read.
+        check.set(
+          `\\text{Check: } P(${SLOT}) = \\sum_{i=0}^{${n}} W(${n},i,${SLOT})\\,P_i = ${slotPoint()}`,
+          [texT(t), texT(t), ...coords(m.bernsteinPoint)],
         );
       }
+      // The list of formulas changes only when the level or the degree does.
+      const key = `${r}/${n}`;
+      if (key !== shownKey) {
+        shownKey = key;
+        const formulas = r === 0 ? [] : levelFormulas.slice(0, levels[r].length);
+        setChildren(
+          stepFormulas,
+          formulas.map((f) => f.element),
+          r === n ? check.element : null,
+        );
+      }
+
+      splitInfo.hidden = !state.split;
       if (state.split) {
-        leftSwatch.style.background = palette[0];
-        rightSwatch.style.background = palette[1];
-        leftTitle.textContent = `Left half (t from 0 to ${texT(t)}): P0,0, P1,0, …, P${n},0`;
-        rightTitle.textContent = `Right half (t from ${texT(t)} to 1): P${n},0, P${n - 1},1, …, P0,${n}`;
-        const list = (half: readonly (readonly number[])[]) =>
-          half.map(() => slotPoint()).join(',\\ ');
-        leftPoints.set(list(m.left), m.left.flatMap(coords));
-        rightPoints.set(list(m.right), m.right.flatMap(coords));
+        splitText.textContent = `Cut at t = ${words(t)}, the curve is two Bézier curves of degree ${n}. The left half (t from 0 to ${words(t)}) has the first point of every level as its control points, the right half (t from ${words(t)} to 1) the last point of every level, from level ${n} back to level 0.`;
+        const row = (half: 0 | 1, name: string, point: readonly number[]) => ({
+          cells: [
+            { text: half === 0 ? 'Left' : 'Right', swatch: halfColour(palette, half) },
+            name,
+            texNumber(point[0], 4),
+            texNumber(point[1], 4),
+          ],
+        });
+        halves.set([
+          ...m.left.map((point, i) => row(0, `P${i},0`, point)),
+          ...m.right.map((point, i) => row(1, `P${n - i},${i}`, point)),
+        ]);
       }
 
       table.set(
         levels.flatMap((level, k) =>
           level.map((point, i) => {
-            const shown = k <= r;
+            const visible = k <= r;
             return {
-              className: k === r ? 'current' : shown ? '' : 'future',
+              className: k === r && r > 0 ? 'current' : visible ? '' : 'future',
               data: { level: String(k) },
               cells: [
-                {
-                  text: `P${k},${i}`,
-                  swatch: k > 0 ? palette[(k - 1) % palette.length] : undefined,
-                },
-                shown ? texNumber(point[0], 4) : '—',
-                shown ? texNumber(point[1], 4) : '—',
+                { text: `P${k},${i}`, swatch: k > 0 ? levelColour(palette, k) : undefined },
+                visible ? texNumber(point[0], 4) : '—',
+                visible ? texNumber(point[1], 4) : '—',
               ],
             };
           }),

@@ -7,7 +7,10 @@ export interface DeCasteljauState {
   /** Control points P0 … Pn. */
   p: Point[];
   t: number;
-  /** Levels of the construction shown: 0 (control polygon) … n (the point on the curve). */
+  /**
+   * The step of the construction shown: 0 the control points, 1 the polygon,
+   * 1 + r level r (r = 1 … n, level n is P(t)), n + 2 the curve traced.
+   */
   step: number;
   /** Show the two control polygons that subdivision at t produces. */
   split: boolean;
@@ -26,9 +29,19 @@ export const LECTURE_CUBIC: Point[] = [
 export const schema: Schema<DeCasteljauState> = {
   p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
   t: number({ default: 0.4, min: 0, max: 1 }),
-  step: int({ default: 3, min: 0, max: MAX_POINTS - 1 }),
+  // A student who opens the link sees the whole construction (the last step).
+  step: int({ default: LECTURE_CUBIC.length + 1, min: 0, max: MAX_POINTS + 1 }),
   split: bool({ default: false }),
 };
 
 /** Degree of the curve. */
 export const degree = (state: DeCasteljauState) => state.p.length - 1;
+
+/** The last step: the curve traced, after the polygon and the n levels. */
+export const lastStep = (state: DeCasteljauState) => degree(state) + 2;
+
+/** What step k shows: the polygon, how many levels, the traced curve. */
+export function stage(state: DeCasteljauState, k = state.step) {
+  const n = degree(state);
+  return { polygon: k >= 1, levels: Math.max(0, Math.min(n, k - 1)), curve: k >= n + 2 };
+}

@@ -3,7 +3,9 @@ import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import { placeMemberLabels } from './labels';
 import type { Member, QuadraticModel } from './model';
-import type { QuadraticState } from './state';
+import { seriesColour } from '../de-casteljau/colours';
+import { stackedLabels } from '../de-casteljau/labels';
+import { type QuadraticState, STEP } from './state';
 
 export const quadraticFigure: FigureSpec<QuadraticState, QuadraticModel> = {
   id: 'quadratic',
@@ -12,17 +14,22 @@ export const quadraticFigure: FigureSpec<QuadraticState, QuadraticModel> = {
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const step = m.state.step;
-    if (step <= 1) drawExplicit(painter, m, info.thumbnail, step === 0);
-    if (step >= 1) drawParametric(painter, m, info.thumbnail);
+    if (step >= STEP.parabola && step <= STEP.ticks) {
+      drawExplicit(painter, m, info.thumbnail, step === STEP.parabola);
+    }
+    if (step >= STEP.parametric) drawParametric(painter, m, info.thumbnail, step >= STEP.ticks);
   },
-  handles: (m) => m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_${i}`, position: point })),
+  handles: (m) => {
+    const labels = stackedLabels(m.state.p, (i) => `P_${i}`);
+    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
+  },
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
     return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
   },
 };
 
-/** Step 0: y = a2x² + a1x + a0, or a plain sentence on why there is none. */
+/** Step 1: y = a2x² + a1x + a0, or a plain sentence on why there is none (faint under steps 2–3). */
 function drawExplicit(painter: Painter, m: QuadraticModel, thumbnail: boolean, main: boolean) {
   const theme = painter.theme;
   const { parabola, curve, column, labelAt, figureNote } = m.explicit;
@@ -42,6 +49,7 @@ function drawExplicit(painter: Painter, m: QuadraticModel, thumbnail: boolean, m
       color: ok ? theme.curve : theme.curveFaint,
       width: ok ? theme.sizes.curve : theme.sizes.line,
       dash: ok ? undefined : [8, 6],
+      role: 'curve',
     });
   } else if (ok) {
     painter.polyline(curve, { color: theme.curveFaint, width: theme.sizes.line, dash: [6, 5] });
@@ -59,20 +67,27 @@ function drawExplicit(painter: Painter, m: QuadraticModel, thumbnail: boolean, m
   }
 }
 
-/** Steps 1–3: the quadratic on the slider, strong, over the members of the step. */
-function drawParametric(painter: Painter, m: QuadraticModel, thumbnail: boolean) {
+/** From step 2: the quadratic on the slider, strong, over the members of the step; dots from step 3. */
+function drawParametric(painter: Painter, m: QuadraticModel, thumbnail: boolean, dots: boolean) {
   const theme = painter.theme;
   const { current, members } = m.parametric;
   if (!current) return;
   const colour = (member: Member) =>
-    member.colour === null ? theme.ink : painter.color(member.colour);
-  for (const member of members)
-    painter.polyline(member.curve, { color: colour(member), width: theme.sizes.line * 1.3 });
-  painter.polyline(current.curve, { color: theme.curve });
+    member.colour === null ? theme.ink : seriesColour(theme.palette, member.colour);
+  for (const member of members) {
+    painter.polyline(member.curve, {
+      color: colour(member),
+      width: theme.sizes.line * 1.3,
+      role: 'curve',
+    });
+  }
+  painter.polyline(current.curve, { color: theme.curve, role: 'curve' });
   if (thumbnail) return;
-  for (const member of members)
-    drawTicks(painter, member.ticks, colour(member), theme.sizes.point * 0.75);
-  drawTicks(painter, current.ticks, theme.accent, theme.sizes.point);
+  if (dots) {
+    for (const member of members)
+      drawTicks(painter, member.ticks, colour(member), theme.sizes.point * 0.75);
+    drawTicks(painter, current.ticks, theme.accent, theme.sizes.point);
+  }
   placeMemberLabels(painter, [...members, current], colour);
 }
 

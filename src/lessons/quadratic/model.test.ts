@@ -25,12 +25,15 @@ describe('quadratic model: the parabola y(x)', () => {
     expect(panelWarning).toBeNull();
   });
 
-  it('fits the view to the points and the apex at step 0', () => {
+  it('fits the view, at every step alike, to every curve the construction will draw', () => {
     const { bounds } = derive(state(LECTURE));
-    expect(bounds.minX).toBe(0);
+    for (const step of [1, 2, 3, 4, 5]) expect(derive(state(LECTURE, step)).bounds).toEqual(bounds);
+    // Widest to the left, the family's μ1 = 0.8: x(μ) = 13.75μ² − 9.75μ, sampled at μ = 0.35.
+    expect(bounds.minX).toBeCloseTo(13.75 * 0.35 ** 2 - 9.75 * 0.35, 12);
     expect(bounds.maxX).toBe(4);
     expect(bounds.minY).toBe(0);
-    expect(bounds.maxY).toBeCloseTo(961 / 336, 12);
+    // Highest, the family's μ1 = 0.2: y(μ) = −11.25μ² + 12.25μ, sampled at μ = 0.54 (above the apex 961/336).
+    expect(bounds.maxY).toBeCloseTo(-11.25 * 0.54 ** 2 + 12.25 * 0.54, 12);
   });
 
   it('says which points share an x', () => {
@@ -85,7 +88,7 @@ describe('quadratic model: the parabola y(x)', () => {
 describe('quadratic model: the parametric quadratic', () => {
   it('solves equation 3 at μ1 = 1/2: a0 = P0, a2 = (4, −6), a1 = (0, 7)', () => {
     // a2 = (P1 − P0 − ½(P2 − P0)) / (½ · (−½)) = ((1, 2) − (2, ½)) / (−¼); a1 = P2 − P0 − a2.
-    const { coefficients, atMu } = derive(state(LECTURE, 1)).parametric;
+    const { coefficients, atMu } = derive(state(LECTURE, 2)).parametric;
     const [a0, a1, a2] = coefficients;
     expect(a0).toEqual([0, 0]);
     expect(a1[0]).toBeCloseTo(0, 12);
@@ -97,7 +100,7 @@ describe('quadratic model: the parametric quadratic', () => {
   });
 
   it('puts its ticks at μ = 0, 0.1, …, 1 on the drawn curve, P1 at the middle one', () => {
-    const current = derive(state(LECTURE, 1)).parametric.current!;
+    const current = derive(state(LECTURE, 2)).parametric.current!;
     expect(current.ticks).toHaveLength(11);
     expect(current.ticks[0]).toEqual([0, 0]);
     expect(current.ticks[5][0]).toBeCloseTo(1, 12);
@@ -118,7 +121,7 @@ describe('quadratic model: the parametric quadratic', () => {
   });
 
   it('draws the family without the slider’s own value, and only usable rules', () => {
-    expect(derive(state(LECTURE, 2, 0.5)).parametric.members.map((m) => m.mu)).toEqual([
+    expect(derive(state(LECTURE, 4, 0.5)).parametric.members.map((m) => m.mu)).toEqual([
       0.2, 0.35, 0.65, 0.8,
     ]);
     // P1 on P0: chord length and centripetal both give μ1 = 0, where there is no curve.
@@ -129,16 +132,18 @@ describe('quadratic model: the parametric quadratic', () => {
           [0, 0],
           [4, 1],
         ],
-        3,
+        5,
       ),
     ).parametric;
     expect(onP0.rules.map((rule) => rule.usable)).toEqual([true, false, false]);
     expect(onP0.members.map((m) => m.mu)).toEqual([0.5]);
   });
 
-  it('has no curves to draw at step 0', () => {
-    const { current, members } = derive(state(LECTURE, 0)).parametric;
-    expect(current).toBeNull();
-    expect(members).toEqual([]);
+  it('has no parametric curve to draw before step 2', () => {
+    for (const step of [0, 1]) {
+      const { current, members } = derive(state(LECTURE, step)).parametric;
+      expect(current).toBeNull();
+      expect(members).toEqual([]);
+    }
   });
 });

@@ -24,13 +24,13 @@ export function derive(state: QuadraticState): QuadraticModel {
   return { state, explicit, parametric, bounds: fitBounds(state, explicit, parametric) };
 }
 
+/**
+ * What "fit view" shows: the points and every curve of every step (apex
+ * included), so that stepping through the construction never needs a new view.
+ */
 function fitBounds(state: QuadraticState, explicit: Explicit, parametric: Parametric): Bounds {
-  if (state.step > 0) {
-    const curves = [parametric.current, ...parametric.members].flatMap((m) => m?.curve ?? []);
-    return boundsOf([...state.p, ...curves]);
-  }
-  // y(x) between the outer points reaches beyond them only at its apex.
-  const shown: Point[] = explicit.apex ? [...state.p, explicit.apex] : state.p;
+  const shown: Point[] = [...state.p, ...parametric.all];
+  if (explicit.apex) shown.push(explicit.apex);
   const bounds = boundsOf(shown);
   if (explicit.parabola.kind === 'ok') return bounds;
   // Room above the points for the note that says why there is no parabola.

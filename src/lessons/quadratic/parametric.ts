@@ -7,7 +7,7 @@ import {
   parametricQuadraticPoint,
   type Point,
 } from '../../math';
-import { FAMILY, type QuadraticState } from './state';
+import { FAMILY, type QuadraticState, STEP } from './state';
 
 // Steps 1–3: the parametric quadratic P(μ) = a2μ² + a1μ + a0 through P0
 // (μ = 0), P1 (μ = μ1) and P2 (μ = 1), its family, and the rules for μ1.
@@ -69,22 +69,18 @@ function member(p: readonly Point[], mu: number, colour: number | null, text: st
   return { mu, colour, text, curve, ticks, labelSpots };
 }
 
-/** The curves a step draws under the slider's: Figure 2's family, or the rules' choices. */
-function others(state: QuadraticState, rules: readonly MuRule[]): Member[] {
-  const p = state.p;
-  if (state.step === 2) {
-    return FAMILY.map((mu, k) => ({ mu, k }))
-      .filter(({ mu }) => Math.abs(mu - state.mu) > 1e-9) // the slider's curve is drawn on top anyway
-      .map(({ mu, k }) => member(p, mu, k, `μ_1 = ${fmtMu(mu)}`));
-  }
-  if (state.step === 3) {
-    return rules
-      .map((rule, k) => ({ rule, k }))
-      .filter(({ rule }) => rule.usable)
-      .map(({ rule, k }) => member(p, rule.mu, k, `${rule.name}: μ_1 = ${fmtMu(rule.mu)}`));
-  }
-  return [];
-}
+/** Figure 2's family, without the slider's own curve (drawn on top anyway). */
+const family = (state: QuadraticState): Member[] =>
+  FAMILY.map((mu, k) => ({ mu, k }))
+    .filter(({ mu }) => Math.abs(mu - state.mu) > 1e-9)
+    .map(({ mu, k }) => member(state.p, mu, k, `μ_1 = ${fmtMu(mu)}`));
+
+/** The curves of the rules' choices of μ1 (those that exist). */
+const ruleMembers = (state: QuadraticState, rules: readonly MuRule[]): Member[] =>
+  rules
+    .map((rule, k) => ({ rule, k }))
+    .filter(({ rule }) => rule.usable)
+    .map(({ rule, k }) => member(state.p, rule.mu, k, `${rule.name}: μ_1 = ${fmtMu(rule.mu)}`));
 
 export interface Parametric {
   /** a0, a1, a2 of equation 3. */
@@ -95,27 +91,34 @@ export interface Parametric {
   /** |P1 − P0| and |P2 − P1|, the lengths the rules use. */
   d0: number;
   d1: number;
-  /** The slider's curve (steps 1–3; null at step 0, where it is not drawn). */
+  /** The slider's curve (from step 2; null before, where it is not drawn). */
   current: Member | null;
-  /** The curves drawn beneath it (steps 2 and 3). */
+  /** The curves drawn beneath it (the family at step 4, the rules' at step 5). */
   members: Member[];
+  /** Every curve some step of the construction draws: the view is fitted to them all at once. */
+  all: Point[];
 }
 
 export function deriveParametric(state: QuadraticState): Parametric {
   const { p, mu } = state;
   const rules = muRules(p);
-  const members = others(state, rules);
-  const current =
-    state.step >= 1
-      ? member(p, mu, null, members.length ? `slider: μ_1 = ${fmtMu(mu)}` : `μ_1 = ${fmtMu(mu)}`)
-      : null;
+  const families = family(state);
+  const chosen = ruleMembers(state, rules);
+  const members = state.step === STEP.family ? families : state.step === STEP.rules ? chosen : [];
+  const slider = member(
+    p,
+    mu,
+    null,
+    members.length ? `slider: μ_1 = ${fmtMu(mu)}` : `μ_1 = ${fmtMu(mu)}`,
+  );
   return {
     coefficients: parametricQuadratic(p[0], p[1], p[2], mu),
     atMu: parametricQuadraticPoint(p[0], p[1], p[2], mu, mu),
     rules,
     d0: distance(p[0], p[1]),
     d1: distance(p[1], p[2]),
-    current,
+    current: state.step >= STEP.parametric ? slider : null,
     members,
+    all: [slider, ...families, ...chosen].flatMap((m) => m.curve),
   };
 }

@@ -2,7 +2,8 @@ import { dataTable, fmt, h } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
-import { type QuadraticState, clampMu } from './state';
+import { seriesColour } from '../de-casteljau/colours';
+import { type QuadraticState, STEP, clampMu } from './state';
 
 const RULES = `\\begin{aligned}d_0 &= |P_1 - P_0| = ${SLOT},\\quad d_1 = |P_2 - P_1| = ${SLOT}\\\\ \\text{uniform: } \\mu_1 &= \\tfrac12\\\\ \\text{chord length: } \\mu_1 &= \\frac{d_0}{d_0 + d_1} = ${SLOT}\\\\ \\text{centripetal: } \\mu_1 &= \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${SLOT}\\end{aligned}`;
 
@@ -47,7 +48,8 @@ export function rulesSection(api: LessonApi<QuadraticState, QuadraticModel>) {
         const { row, swatch, value, use } = rows[k];
         const chosen = rule.usable && Math.abs(clampMu(rule.mu) - m.state.mu) < 1e-12;
         row.className = chosen ? 'current' : '';
-        swatch.style.background = m.state.step === 3 && rule.usable ? palette[k] : 'transparent';
+        swatch.style.background =
+          m.state.step === STEP.rules && rule.usable ? seriesColour(palette, k) : 'transparent';
         value.textContent = rule.usable
           ? fmt(rule.mu, 4)
           : `${fmt(rule.mu, 0)}: P1 is an end point, no curve`;

@@ -8,7 +8,11 @@ export interface QuadraticState {
   p: Point[];
   /** μ1, the parameter at which the parametric quadratic passes P1 (open interval). */
   mu: number;
-  /** What the figure shows: 0 the parabola y(x), 1 one parametric quadratic, 2 the family, 3 the rules for μ1. */
+  /**
+   * The step of the construction: 0 the points, 1 the parabola y(x), 2 one
+   * parametric quadratic, 3 its dots at equal steps of μ, 4 the family, 5 the
+   * rules for μ1.
+   */
   step: number;
 }
 
@@ -16,26 +20,32 @@ export interface QuadraticState {
 export const MU_MIN = 0.01;
 export const MU_MAX = 0.99;
 
-export const STEP_TITLES = [
-  'The parabola y(x) through three points',
-  'A parametric quadratic P(μ)',
-  'One set of points, many curves',
-  'Choosing μ1 from the points',
-] as const;
+/** The steps of the construction, by name. */
+export const STEP = {
+  points: 0,
+  parabola: 1,
+  parametric: 2,
+  ticks: 3,
+  family: 4,
+  rules: 5,
+} as const;
+export const LAST_STEP = STEP.rules;
 
 /** The members of the family drawn in Figure 2 of the notes. */
 export const FAMILY = [0.2, 0.35, 0.5, 0.65, 0.8] as const;
 
+/** Figure 1 of the lecture: the first scene. */
 export const DEFAULT_POINTS: Point[] = [
-  [0, 0],
-  [1, 2],
-  [4, 1],
+  [0, 1],
+  [2, 3],
+  [4, 2],
 ];
 
 export const schema: Schema<QuadraticState> = {
   p: points({ default: DEFAULT_POINTS, min: 3, max: 3 }),
   mu: number({ default: 0.5, min: MU_MIN, max: MU_MAX }),
-  step: int({ default: 0, min: 0, max: STEP_TITLES.length - 1 }),
+  // A student who opens the link sees the whole construction (the last step).
+  step: int({ default: LAST_STEP, min: 0, max: LAST_STEP }),
 };
 
 /** μ1 kept inside the slider's range (the curve is undefined at 0 and 1). */

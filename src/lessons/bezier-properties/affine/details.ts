@@ -1,6 +1,6 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
-import { type ExperimentPanel, arrangements } from '../experimentPanel';
+import { type ExperimentPanel, arrangements, smallNumber } from '../experimentPanel';
 import type { ModelOf } from '../model';
 import { CENTRE, SHIFT } from './maps';
 
@@ -52,7 +52,7 @@ export const affinePanel: ExperimentPanel<ModelOf<'affine'>> = {
         }
         const d = images.distance;
         deviation.dataset.mapDeviation = String(d);
-        deviation.textContent = `Largest distance between the two images at equal t: ${d < 1e-9 ? d.toExponential(1) : d.toFixed(4)}${d < 1e-9 ? ' — they agree, up to rounding.' : `, at t = ${images.at.toFixed(3)}: they differ.`}`;
+        deviation.textContent = `Largest distance between the two images at equal t: ${d < 1e-9 ? smallNumber(d) : d.toFixed(4)}${d < 1e-9 ? ' — they agree, up to rounding.' : `, at t = ${images.at.toFixed(3)}: they differ.`}`;
         // An affine map leaves nothing to repair.
         if (images.rationalDistance === null)
           return show('affine', () => [intro, matrix.element, deviation, affineNote]);
@@ -64,7 +64,7 @@ export const affinePanel: ExperimentPanel<ModelOf<'affine'>> = {
           ws.map((w) => texNumber(w, 2)),
         );
         repaired.dataset.rationalDeviation = String(images.rationalDistance);
-        repaired.textContent = `Giving each mapped control point its w as a weight (a rational Bézier curve, the simplest NURBS) reproduces the map of the curve: largest distance ${images.rationalDistance.toExponential(1)}.`;
+        repaired.textContent = `Giving each mapped control point its w as a weight (a rational Bézier curve, the simplest NURBS) reproduces the map of the curve: largest distance ${smallNumber(images.rationalDistance)}.`;
         return show('perspective', () => [
           intro,
           matrix.element,

@@ -11,8 +11,14 @@ import {
 import { type ExperimentBase, sampleCurve } from '../curve';
 import type { PropertiesState } from '../state';
 
-/** The end tangents are drawn at this fraction of their true length. */
+/**
+ * The end tangents are drawn at this fraction of their true length, but never
+ * longer than ARROW_REACH times the size of the control polygon: N(P1 − P0)
+ * of a degree-5 curve is five legs long and would leave the figure, or make
+ * "fit view" frame the arrows instead of the curve.
+ */
 export const ARROW_SCALE = 0.35;
+export const ARROW_REACH = 0.3;
 
 export interface ClosedModel extends ExperimentBase {
   x: 'closed';
@@ -36,16 +42,24 @@ export function deriveClosed(state: PropertiesState): ClosedModel {
   const start = hodograph[0];
   const end = hodograph[hodograph.length - 1];
   const measurable = norm(start) !== 0 && norm(end) !== 0;
+  const xs = state.p.map((q) => q[0]);
+  const ys = state.p.map((q) => q[1]);
+  const size = Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+  const arrow = (v: Point) =>
+    scale(v, norm(v) === 0 ? 0 : Math.min(ARROW_SCALE, (ARROW_REACH * size) / norm(v)));
+  const leaving: [Point, Point] = [p0, add(p0, arrow(start))];
+  const arriving: [Point, Point] = [subtract(p0, arrow(end)), p0];
   const corner = measurable ? Math.abs((signedAngle(start, end) * 180) / Math.PI) : null;
   return {
     x: 'closed',
     controls,
-    extra: [],
+    // The arrows are in the view, and short enough not to set its size.
+    extra: [leaving[1], arriving[0]],
     n: controls.length - 1,
     curve: sampleCurve(controls),
     point: bezierPoint(controls, state.t),
-    leaving: [p0, add(p0, scale(start, ARROW_SCALE))],
-    arriving: [subtract(p0, scale(end, ARROW_SCALE)), p0],
+    leaving,
+    arriving,
     corner,
     smooth: corner !== null && corner < 0.5,
   };

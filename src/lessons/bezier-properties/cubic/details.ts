@@ -46,7 +46,7 @@ export const cubicPanel: ExperimentPanel<ModelOf<'cubic'>> = {
       update(m) {
         const palette = api.theme().palette;
         leftSwatch.style.background = palette[0];
-        rightSwatch.style.background = palette[1];
+        rightSwatch.style.background = palette[2];
         const t = texT(m.state.t);
         curvature.textContent =
           m.curvature === null

@@ -1,7 +1,13 @@
 import { dataTable, h } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula, formula } from '../../../render/formula';
-import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
+import {
+  type ExperimentPanel,
+  arrangements,
+  coords,
+  slotPoint,
+  smallNumber,
+} from '../experimentPanel';
 import type { ModelOf } from '../model';
 import { DEVIATION_SAMPLES } from './model';
 
@@ -37,13 +43,13 @@ export const elevatePanel: ExperimentPanel<ModelOf<'elevate'>> = {
     const show = arrangements();
     return {
       update(m) {
-        const { k } = m.state;
+        const k = m.polygons.length - 1;
         degree.textContent =
           k === 0
             ? `Degree ${m.originalDegree}, not raised yet. Press "Raise the degree" (or step forward).`
             : `Degree ${m.originalDegree} raised ${k} time${k === 1 ? '' : 's'}: degree ${m.n}, ${m.n + 1} control points (solid), the original polygon dashed.`;
         deviation.dataset.deviation = String(m.deviation);
-        deviation.textContent = `Largest distance between this curve and the original, over ${DEVIATION_SAMPLES + 1} samples: ${m.deviation.toExponential(1)} — the same curve, up to rounding.`;
+        deviation.textContent = `Largest distance between this curve and the original, over ${DEVIATION_SAMPLES + 1} samples: ${smallNumber(m.deviation)} — the same curve, up to rounding.`;
         if (m.lastStep) lastStep.set(lastStepShape(m.lastStep.from), coords(m.lastStep.q1, 3));
         rows.set(
           m.polygons.map((polygon, j) => ({

@@ -1,6 +1,6 @@
 import { type Point, bezierDeviation, controlPolygonGap, elevateDegree } from '../../../math';
 import { type ExperimentBase, sampleCurve } from '../curve';
-import type { PropertiesState } from '../state';
+import { type PropertiesState, amount } from '../state';
 
 /** The original and the elevated curve are compared at this many segments (1001 samples). */
 export const DEVIATION_SAMPLES = 1000;
@@ -23,7 +23,7 @@ export interface ElevateModel extends ExperimentBase {
 
 export function deriveElevate(state: PropertiesState): ElevateModel {
   const polygons: Point[][] = [state.p];
-  for (let j = 0; j < state.k; j++) polygons.push(elevateDegree(polygons[j]));
+  for (let j = 0; j < amount(state); j++) polygons.push(elevateDegree(polygons[j]));
   const controls = polygons[polygons.length - 1];
   return {
     x: 'elevate',
@@ -35,6 +35,6 @@ export function deriveElevate(state: PropertiesState): ElevateModel {
     curve: sampleCurve(controls),
     deviation: bezierDeviation(state.p, controls, DEVIATION_SAMPLES).distance,
     gaps: polygons.map(controlPolygonGap),
-    lastStep: state.k > 0 ? { from: controls.length - 2, q1: controls[1] } : null,
+    lastStep: amount(state) > 0 ? { from: controls.length - 2, q1: controls[1] } : null,
   };
 }

@@ -1,6 +1,6 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT } from '../../../render/formula';
-import { type ExperimentPanel, coords, slotPoint, texT } from '../experimentPanel';
+import { type ExperimentPanel, coords, slotPoint, smallNumber, texT } from '../experimentPanel';
 import type { ModelOf } from '../model';
 import { SAMPLES } from './model';
 
@@ -13,7 +13,7 @@ export const hermitePanel: ExperimentPanel<ModelOf<'hermite'>> = {
   number: 9,
   title: 'Bézier cubics are cubic spline patches',
   sentence:
-    'A cubic Bézier curve is the Hermite patch with end points P0, P3 and end tangents 3(P1 − P0), 3(P3 − P2): the same polynomial, a0 + a1μ + a2μ² + a3μ³, written with other data.',
+    'A cubic Bézier curve is the Hermite patch with end points P0, P3 and end tangents 3(P1 − P0), 3(P3 − P2): the same polynomial, a0 + a1t + a2t² + a3t³, written with other data.',
   build(api) {
     const power = new LiveFormula(true);
     const hermite = new LiveFormula(true);
@@ -22,7 +22,7 @@ export const hermitePanel: ExperimentPanel<ModelOf<'hermite'>> = {
     const hermiteSwatch = h('span', { class: 'swatch' });
     const agreement = document.createTextNode('');
     const nodes = [
-      h('p', {}, h('strong', {}, 'Power form (equation 11 of the notes)')),
+      h('p', {}, h('strong', {}, 'Power form: P(t) = a0 + a1t + a2t² + a3t³')),
       power.element,
       h('p', {}, h('strong', {}, 'Hermite form: end points and end tangents')),
       hermite.element,
@@ -41,7 +41,7 @@ export const hermitePanel: ExperimentPanel<ModelOf<'hermite'>> = {
       update(m) {
         const palette = api.theme().palette;
         bezierSwatch.style.background = palette[0];
-        hermiteSwatch.style.background = palette[1];
+        hermiteSwatch.style.background = palette[2];
         power.set(
           POWER,
           m.power.flatMap((a) => coords(a)),
@@ -51,7 +51,7 @@ export const hermitePanel: ExperimentPanel<ModelOf<'hermite'>> = {
           [m.x0, m.d0, m.x1, m.d1].flatMap((v) => coords(v)),
         );
         atT.set(AT_T, [texT(m.state.t), ...coords(m.hermiteAtT, 4)]);
-        agreement.data = `largest distance between them over ${SAMPLES + 1} samples ${m.deviation.toExponential(1)} — one curve.`;
+        agreement.data = `largest distance between them over ${SAMPLES + 1} samples ${smallNumber(m.deviation)} — one curve.`;
         return nodes;
       },
     };

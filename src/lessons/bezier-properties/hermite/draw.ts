@@ -2,31 +2,45 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
+import { STAGES } from '../state';
 
 const NAMES = ['3(P_1 − P_0)', '3(P_3 − P_2)'];
+const AT = STAGES.hermite;
 
 export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const hermite = painter.color(1);
+  const k = m.state.k;
+  if (k < AT.curve) return;
+  // Neither form wears the accent, the colour of P(t).
+  const hermite = painter.color(2);
   drawPolygon(painter, m.controls);
-  painter.polylineFlat(m.curve, { color: painter.color(0), width: theme.sizes.curve * 2.2 });
-  painter.polylineFlat(m.hermiteCurve, {
-    color: hermite,
-    width: theme.sizes.curve * 0.8,
-    dash: [10, 6],
+  painter.polylineFlat(m.curve, {
+    color: painter.color(0),
+    width: theme.sizes.curve * 2.2,
+    role: 'curve',
   });
-  painter.arrow(m.x0, m.tips[0], { color: hermite, width: theme.sizes.line * 1.3 });
-  painter.arrow(m.x1, m.tips[1], { color: hermite, width: theme.sizes.line * 1.3 });
-  if (!info.thumbnail) {
-    m.tips.forEach((tip, j) =>
-      painter.label(NAMES[j], tip, {
-        dx: 6,
-        dy: -theme.sizes.label * 0.6,
-        color: hermite,
-        halo: true,
-        bold: true,
-      }),
-    );
+  if (k >= AT.hermite) {
+    painter.polylineFlat(m.hermiteCurve, {
+      color: hermite,
+      width: theme.sizes.curve * 0.8,
+      dash: [10, 6],
+      role: 'curve',
+    });
   }
-  drawMarked(painter, m.point, 'P(t)', info);
+  if (k >= AT.tangents) {
+    painter.arrow(m.x0, m.tips[0], { color: hermite, width: theme.sizes.line * 1.3 });
+    painter.arrow(m.x1, m.tips[1], { color: hermite, width: theme.sizes.line * 1.3 });
+    if (!info.thumbnail) {
+      m.tips.forEach((tip, j) =>
+        painter.label(NAMES[j], tip, {
+          dx: 6,
+          dy: -theme.sizes.label * 0.6,
+          color: hermite,
+          halo: true,
+          bold: true,
+        }),
+      );
+    }
+  }
+  if (k >= AT.point) drawMarked(painter, m.point, 'P(t)', info);
 }

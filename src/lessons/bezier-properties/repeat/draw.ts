@@ -2,23 +2,28 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
+import { STAGES } from '../state';
 
 export function drawRepeat(painter: Painter, m: ModelOf<'repeat'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const { p, r, k } = m.state;
-  painter.polylineFlat(m.onceCurve, {
-    color: theme.curveFaint,
-    width: theme.sizes.curve,
-    dash: [8, 6],
-  });
+  const { p, r } = m.state;
+  if (m.state.k < STAGES.repeat.curve) return;
+  const extra = m.copies - 1;
+  if (extra > 0) {
+    painter.polylineFlat(m.onceCurve, {
+      color: theme.curveFaint,
+      width: theme.sizes.curve,
+      dash: [8, 6],
+    });
+  }
   drawPolygon(painter, p);
-  painter.polylineFlat(m.curve, { color: theme.curve });
+  painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
   // The ring grows with the copies: the pull of the repeated point, seen.
-  painter.ring(p[r], theme.sizes.handle * (1.6 + 0.5 * k), {
+  painter.ring(p[r], theme.sizes.handle * (1.6 + 0.5 * extra), {
     color: theme.accent,
     width: theme.sizes.line,
   });
-  if (!info.thumbnail && k > 0) {
+  if (!info.thumbnail && extra > 0) {
     painter.label(`×${m.copies}`, p[r], {
       dx: -theme.sizes.handle * 2,
       dy: theme.sizes.label,

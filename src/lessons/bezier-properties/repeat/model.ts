@@ -1,6 +1,6 @@
 import { type Point, bernsteinBasis, bezierPoint } from '../../../math';
 import { type ExperimentBase, sampleCurve } from '../curve';
-import type { PropertiesState } from '../state';
+import { type PropertiesState, amount } from '../state';
 
 export interface RepeatModel extends ExperimentBase {
   x: 'repeat';
@@ -20,14 +20,14 @@ export interface RepeatModel extends ExperimentBase {
 /** The user's points with P_r listed k + 1 times. */
 export const repeatPoint = (state: PropertiesState): Point[] =>
   state.p.flatMap((point, i) =>
-    i === state.r ? Array.from({ length: state.k + 1 }, () => point) : [point],
+    i === state.r ? Array.from({ length: amount(state) + 1 }, () => point) : [point],
   );
 
 export function deriveRepeat(state: PropertiesState): RepeatModel {
   const controls = repeatPoint(state);
   const n = controls.length - 1;
-  const copies = state.k + 1;
-  // The copies of P_r sit at indices r … r + k of the repeated list.
+  const copies = amount(state) + 1;
+  // The copies of P_r sit at indices r … r + copies − 1 of the repeated list.
   const weight = bernsteinBasis(n, state.t)
     .slice(state.r, state.r + copies)
     .reduce((a, b) => a + b, 0);

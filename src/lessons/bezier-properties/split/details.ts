@@ -1,6 +1,7 @@
 import { dataTable, h } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula } from '../../../render/formula';
+import { sub } from '../../de-casteljau/script';
 import { type ExperimentPanel, arrangements, coords, slotPoint, texT } from '../experimentPanel';
 import type { ModelOf } from '../model';
 
@@ -38,11 +39,12 @@ export const splitPanel: ExperimentPanel<ModelOf<'split'>> = {
     const show = arrangements();
     return {
       update(m) {
-        const { t, k } = m.state;
+        const { t } = m.state;
+        const splits = m.levels.length - 1;
         const n = m.controls.length - 1;
         atEnd.textContent = `At t = ${t} one of the two pieces is the single point P${t === 0 ? '0' : `${n}`} and the other is the whole curve again: nothing is gained. Choose t inside (0, 1).`;
         if (m.first) {
-          firstSplit.textContent = `First split at t = ${texT(t)}: the left polygon is P0,0 … P${n},0 of de Casteljau, the right one P${n},0 … P0,${n}.`;
+          firstSplit.textContent = `First split at t = ${texT(t)}: the left polygon is the first point of every level of de Casteljau’s construction (from P${sub(0)} to P(t)), the right one the last point of every level (from P(t) to P${sub(n)}).`;
           left.set(
             polygonShape('left', m.first[0].length),
             m.first[0].flatMap((q) => coords(q)),
@@ -54,7 +56,7 @@ export const splitPanel: ExperimentPanel<ModelOf<'split'>> = {
         }
         rows.set(
           m.gaps.map((gap, j) => ({
-            className: j === k ? 'current' : '',
+            className: j === splits ? 'current' : '',
             cells: [String(j), String(m.levels[j].length), gap.toFixed(5)],
           })),
         );

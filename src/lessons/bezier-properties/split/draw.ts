@@ -1,22 +1,29 @@
 import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
-import { drawMarked } from '../painting';
+import { drawMarked, drawPolygon } from '../painting';
+import { STAGES } from '../state';
 
 export function drawSplit(painter: Painter, m: ModelOf<'split'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const k = m.state.k;
-  painter.polyline(m.controls, {
-    color: theme.polygon,
-    width: theme.sizes.thin,
-    dash: [6, 5],
-    alpha: 0.6,
-  });
-  painter.polylineFlat(m.curve, { color: theme.curve, width: theme.sizes.curve });
-  m.levels[k].forEach((piece, j) => {
-    const color = painter.color(j % 2);
-    painter.polyline(piece, { color, width: theme.sizes.line * 1.2, alpha: 0.9 });
-    for (const point of piece) painter.dot(point, color, theme.sizes.point * (k > 2 ? 0.6 : 0.9));
-  });
-  if (k >= 1) drawMarked(painter, m.point, 'P(t)', info);
+  if (m.state.k < STAGES.split.curve) return;
+  const splits = m.levels.length - 1;
+  drawPolygon(painter, m.controls, splits > 0 ? { width: theme.sizes.thin, alpha: 0.6 } : {});
+  painter.polylineFlat(m.curve, { color: theme.curve, width: theme.sizes.curve, role: 'curve' });
+  if (splits > 0) {
+    m.levels[splits].forEach((piece, j) => {
+      const color = painter.color(j % 2 === 0 ? 0 : 2);
+      painter.polyline(piece, {
+        color,
+        width: theme.sizes.line * 1.2,
+        alpha: 0.9,
+        dash: j % 2 === 0 ? undefined : [10, 4],
+      });
+      for (const point of piece) {
+        painter.dot(point, color, theme.sizes.point * (splits > 2 ? 0.6 : 0.9));
+      }
+    });
+  }
+  // Where the curve is split.
+  drawMarked(painter, m.point, 'P(t)', info);
 }

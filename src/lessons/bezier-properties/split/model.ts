@@ -1,6 +1,6 @@
 import { type Point, bezierPoint, controlPolygonGap, subdivisionLevels } from '../../../math';
 import { type ExperimentBase, sampleCurve } from '../curve';
-import type { PropertiesState } from '../state';
+import { type PropertiesState, amount } from '../state';
 
 export interface SplitModel extends ExperimentBase {
   x: 'split';
@@ -18,7 +18,8 @@ export interface SplitModel extends ExperimentBase {
 
 export function deriveSplit(state: PropertiesState): SplitModel {
   const controls = state.p;
-  const levels = subdivisionLevels(controls, state.t, state.k);
+  const splits = amount(state);
+  const levels = subdivisionLevels(controls, state.t, splits);
   return {
     x: 'split',
     controls,
@@ -27,7 +28,7 @@ export function deriveSplit(state: PropertiesState): SplitModel {
     point: bezierPoint(controls, state.t),
     levels,
     gaps: levels.map((pieces) => Math.max(...pieces.map(controlPolygonGap))),
-    first: state.k > 0 ? [levels[1][0], levels[1][1]] : null,
-    atEnd: state.k > 0 && (state.t === 0 || state.t === 1),
+    first: splits > 0 ? [levels[1][0], levels[1][1]] : null,
+    atEnd: splits > 0 && (state.t === 0 || state.t === 1),
   };
 }

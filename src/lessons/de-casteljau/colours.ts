@@ -1,0 +1,31 @@
+import type { Theme } from '../../render/theme';
+
+/**
+ * Palette slots for series drawn beside the accent: every theme's accent
+ * (the colour of P(t) and of the parameter's marks) is slot 1 or 4, so a
+ * series skips both and never wears the accent's colour.
+ */
+const SERIES_SLOTS = [0, 2, 3, 5, 6, 7];
+
+/** The k-th colour of a series that never takes the accent's colour. */
+export const seriesColour = (palette: Theme['palette'], k: number) =>
+  palette[SERIES_SLOTS[k % SERIES_SLOTS.length] % palette.length];
+
+/** Levels take the first four series colours; the last two are kept for the halves. */
+const LEVEL_COLOURS = 4;
+
+/** The colour of level r (r ≥ 1); it repeats after four levels, with a dash to tell them apart. */
+export const levelColour = (palette: Theme['palette'], r: number) =>
+  seriesColour(palette, (r - 1) % LEVEL_COLOURS);
+
+/** Solid for levels 1–4, long dashes for 5–8, dots beyond. */
+export const levelDash = (r: number): number[] | undefined =>
+  r <= LEVEL_COLOURS ? undefined : r <= 2 * LEVEL_COLOURS ? [14, 5] : [3, 5];
+
+/** The left (0) and right (1) half of the subdivision: a colour of its own and a dash of its own. */
+export const halfColour = (palette: Theme['palette'], k: 0 | 1) =>
+  seriesColour(palette, LEVEL_COLOURS + k);
+export const HALF_DASH: [number[], number[]] = [
+  [16, 6],
+  [4, 6],
+];

@@ -1,0 +1,162 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import type { LabelBox } from '../../render/labels';
+import { Painter } from '../../render/painter';
+import { SvgContext } from '../../render/svgContext';
+import { makeTheme } from '../../render/theme';
+import { Viewport } from '../../render/viewport';
+import { constructionFigure } from './figure';
+import { handleLabelBoxes } from './labels';
+import lesson from './lesson';
+import { derive } from './model';
+import { checkScript, drawState } from './scriptChecks';
+import { describeStep, stepFormula } from './script';
+import { type DeCasteljauState, schema } from './state';
+
+const state = (changes: Partial<DeCasteljauState>): DeCasteljauState => ({
+  ...defaultsOf(schema),
+  ...changes,
+});
+
+describe('the script of the de Casteljau construction', () => {
+  it('every scene steps from little to all, in at most 20 steps, with plain captions', () =>
+    checkScript(lesson));
+
+  it('opens on the whole construction of the lecture cubic: 3 levels and the curve', () => {
+    const defaults = defaultsOf(schema);
+    // Step 0 the points, 1 the polygon, 2–4 the levels, 5 the curve.
+    expect(lesson.steps!.count(defaults)).toBe(5);
+    expect(defaults.step).toBe(5);
+    expect(lesson.scenes![0].apply(defaults)).toEqual(defaults);
+  });
+
+  it('step 0 shows only the control points: no polygon, no level, no curve', () => {
+    const m = derive(state({ step: 0 }));
+    expect(m.shown).toEqual({ polygon: false, levels: 0, curve: false });
+    expect(drawState(lesson, m.state).elements).toBe(0);
+    expect(describeStep(m.state, 0)).toBe('The 4 control points P₀ … P₃, and nothing else yet');
+  });
+
+  it('each step adds one thing', () => {
+    const shown = [0, 1, 2, 3, 4, 5].map((step) => derive(state({ step })).shown);
+    expect(shown).toEqual([
+      { polygon: false, levels: 0, curve: false },
+      { polygon: true, levels: 0, curve: false },
+      { polygon: true, levels: 1, curve: false },
+      { polygon: true, levels: 2, curve: false },
+      { polygon: true, levels: 3, curve: false },
+      { polygon: true, levels: 3, curve: true },
+    ]);
+  });
+
+  it('gives each step its formula with the numbers worked by hand', () => {
+    const at = (step: number) => {
+      const s = state({ step });
+      return stepFormula(derive(s), s);
+    };
+    // Level 1 at t = 0.4: P1,0 = 0.6·(0, 0) + 0.4·(1, 2) = (0.4, 0.8).
+    expect(at(2)).toBe(
+      'P_{1,0} = 0.6\\cdot(0.000,\\ 0.000) + 0.4\\cdot(1.000,\\ 2.000) = (0.400,\\ 0.800)',
+    );
+    // P(0.4) = 0.216·P0 + 0.432·P1 + 0.288·P2 + 0.064·P3 = (1.552, 1.44).
+    expect(at(4)).toMatch(/^P\(0\.4\) = P_\{3,0\} = .* = \(1\.552,\\ 1\.440\)$/);
+    expect(at(5)).toBe('P(0.4) = \\sum_{i=0}^{3} W(3,i,0.4)\\,P_i = (1.552,\\ 1.440)');
+    expect(describeStep(state({}), 3)).toBe(
+      'Level 2: every edge of level 1 cut at t = 0.4, 2 new points',
+    );
+  });
+
+  it('traces P(t) only once the construction reaches it', () => {
+    expect(constructionFigure.trail!(derive(state({ step: 3 })))).toBeNull();
+    const p = constructionFigure.trail!(derive(state({ step: 4 })))!;
+    expect(p[0]).toBeCloseTo(1.552, 12);
+    expect(p[1]).toBeCloseTo(1.44, 12);
+  });
+
+  it('says what degenerate control points do', () => {
+    const note = (p: [number, number][]) => derive(state({ p })).note;
+    expect(
+      note([
+        [1, 1],
+        [1, 1],
+        [1, 1],
+      ]),
+    ).toMatch(/one spot.*single point/);
+    expect(
+      note([
+        [0, 0],
+        [2, 1],
+        [1, 0.5],
+        [4, 2],
+      ]),
+    ).toMatch(/one line/);
+    expect(
+      note([
+        [0, 0],
+        [1, 2],
+        [1, 2],
+        [4, 0],
+      ]),
+    ).toMatch(/^P1 and P2 are on one spot/);
+    expect(
+      note([
+        [0, 0],
+        [1, 2],
+        [3, 2],
+        [4, 0],
+      ]),
+    ).toBeNull();
+    // Points on one spot are named once, not with labels on top of each other.
+    const stacked = constructionFigure.handles!(
+      derive(
+        state({
+          p: [
+            [0, 0],
+            [2, 2],
+            [2, 2],
+            [4, 0],
+          ],
+        }),
+      ),
+    );
+    expect(stacked.map((h) => [h.label, h.showLabel])).toEqual([
+      ['P_{0}', true],
+      ['P_{1} = P_{2}', true],
+      ['P_{2}', false],
+      ['P_{3}', true],
+    ]);
+    // The figure says it too.
+    expect(
+      drawState(
+        lesson,
+        state({
+          p: [
+            [1, 1],
+            [1, 1],
+          ],
+        }),
+      ).texts.join(' '),
+    ).toMatch(/one spot/);
+  });
+
+  it('labels the crowded levels of the loop apart, and clear of the handles’ labels', () => {
+    for (const preset of lesson.scenes!) {
+      const m = derive(preset.apply(defaultsOf(schema)));
+      const view = new Viewport();
+      view.resize(900, 560);
+      view.fit(constructionFigure.bounds(m), 40, true);
+      const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+      constructionFigure.draw(painter, m, { hover: null, thumbnail: false });
+      const boxes = [...handleLabelBoxes(painter, m.state.p), ...painter.labels];
+      const overlap = (a: LabelBox, b: LabelBox) =>
+        Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x) > 1 &&
+        Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y) > 1;
+      for (let i = 0; i < boxes.length; i++)
+        for (let j = i + 1; j < boxes.length; j++)
+          expect(
+            overlap(boxes[i], boxes[j]),
+            `${preset.id}: ${boxes[i].text} / ${boxes[j].text}`,
+          ).toBe(false);
+    }
+  });
+});
