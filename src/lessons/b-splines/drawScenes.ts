@@ -9,7 +9,7 @@ import {
   ringHovered,
 } from './drawParts';
 import { CIRCLE, type BSplineModel } from './model';
-import { segmentName } from './steps';
+import { segmentName, superscript } from './steps';
 
 const hint = (painter: Painter, info: DrawInfo, text: string) => {
   if (!info.thumbnail) painter.note(text);
@@ -210,7 +210,7 @@ export function drawKnots(painter: Painter, m: BSplineModel, info: DrawInfo): vo
   if (k >= p + 3) {
     drawSegments(painter, m, info);
     for (const join of m.joins) {
-      const text = join.continuity < 0 ? 'jump' : `C^${join.continuity}`;
+      const text = join.continuity < 0 ? 'jump' : `C${superscript(join.continuity)}`;
       painter.dot(join.at, theme.ink, theme.sizes.point);
       if (!info.thumbnail)
         painter.label(text, join.at, {
@@ -283,12 +283,14 @@ function drawProjective(painter: Painter, m: BSplineModel, info: DrawInfo): void
   if (k >= 2) {
     drawPolygon(painter, pr.points);
     painter.polylineFlat(pr.curve, { color: theme.curve, width: theme.sizes.curve, role: 'curve' });
-    pr.mapped.forEach((point) =>
-      painter.ring(point, theme.sizes.point * 1.2, {
-        color: theme.accent,
-        width: theme.sizes.thin,
-      }),
-    );
+    pr.mapped
+      .filter((_, k) => k % 2 === 0)
+      .forEach((point) =>
+        painter.ring(point, theme.sizes.point * 1.2, {
+          color: theme.accent,
+          width: theme.sizes.thin,
+        }),
+      );
     drawMarks(
       painter,
       pr.points,
@@ -297,12 +299,22 @@ function drawProjective(painter: Painter, m: BSplineModel, info: DrawInfo): void
       info,
     );
   }
-  if (k >= 3)
+  if (k >= 3) {
     painter.polylineFlat(pr.plain, {
-      color: theme.muted,
-      width: theme.sizes.line * 1.3,
-      dash: [6, 4],
+      color: painter.color(3),
+      width: theme.sizes.line * 1.8,
+      dash: [8, 5],
     });
+    if (!info.thumbnail) {
+      const at = (pr.plain.length >> 2) & ~1;
+      painter.label('old weights', [pr.plain[at], pr.plain[at + 1]], {
+        dx: 12,
+        dy: -12,
+        color: painter.color(3),
+        halo: true,
+      });
+    }
+  }
 }
 
 /** A halo around each control point, its size growing with the weight, and the weight written. */

@@ -38,17 +38,22 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
     painter.segment([a, 0], [b, 0], { color: theme.ink, width: theme.sizes.line * 2.5 });
     painter.segment([m.u, -1], [m.u, 1], { color: theme.accent, width: theme.sizes.line });
     if (m.state.k < 1 && !isUniformPart(m.state.x)) return;
+    const size = theme.sizes.label * 0.75;
+    let lastX = -Infinity;
     for (const [j, count] of knotRuns(m.knots)) {
       const u = m.knots[j];
       if (isUniformPart(m.state.x)) painter.dot([u, 0], theme.ink, theme.sizes.point);
-      if (info.thumbnail) continue;
+      // A label per run of knots, where there is room: stacked ones say how many.
+      const x = painter.view.toScreen([u, 0])[0];
+      if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;
+      lastX = x;
       const text = count > 1 ? `u_{${j}…${j + count - 1}} ×${count}` : `u_{${j}}`;
       painter.label(text, [u, 0], {
         dx: 0,
         dy: 28,
         color: count > 1 ? theme.accent : theme.muted,
         align: 'center',
-        size: theme.sizes.label * 0.75,
+        size,
       });
     }
     if (!info.thumbnail && uStep(m) > 0 && isUniformPart(m.state.x)) {

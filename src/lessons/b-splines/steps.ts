@@ -4,6 +4,10 @@ import type { BSplineModel } from './model';
 import { type BSplineState, type Part, isUniformPart } from './state';
 
 const n3 = (v: number) => texNumber(v, 3);
+const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+/** A small whole number as Unicode superscript digits (C², C⁰), for captions and labels. */
+export const superscript = (n: number) =>
+  [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
 const pt = (p: readonly number[]) => texPoint(p, 2);
 /** The lecture names a segment after its last control point: Q_i blends x_{i−3} … x_i. */
 export const segmentName = (first: number) => `Q${first + 3}`;
@@ -110,7 +114,7 @@ function describeKnots(s: BSplineState, k: number): string {
   }
   return s.x === 'clamped'
     ? `The curve of degree ${p}: with p + 1 = ${p + 1} equal end knots it starts at x0 and ends at x${n - 1}`
-    : `The curve of degree ${p}: at a knot of multiplicity k it is C^(${p}−k)`;
+    : `The curve of degree ${p}: at a knot of multiplicity k it is C${superscript(p)}⁻ᵏ`;
 }
 
 export const describeStep = (s: BSplineState, k: number): string => {
@@ -232,9 +236,9 @@ function rationalFormula(m: BSplineModel, s: BSplineState): string | null {
   if (s.x === 'projective' && m.projective && !m.projective.error) {
     const pr = m.projective;
     if (s.k === 2)
-      return `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert C'(u) - H(C(u)) \\rvert = ${pr.deviation.toExponential(1)}`;
+      return `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert C_{Hx,\\,w'}(u) - H(C(u)) \\rvert = ${pr.deviation.toExponential(1)}`;
     if (s.k >= 3)
-      return `\\text{old weights: } \\max_u \\lvert C''(u) - H(C(u)) \\rvert = ${n3(pr.plainDeviation)}`;
+      return `\\text{old weights: } \\max_u \\lvert C_{Hx,\\,w}(u) - H(C(u)) \\rvert = ${n3(pr.plainDeviation)}`;
   }
   return null;
 }
