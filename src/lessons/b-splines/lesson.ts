@@ -16,7 +16,7 @@ export default defineLesson<BSplineState, BSplineModel>({
   figures: [curveFigure, basisFigure, knotFigure],
   // The curve beside the basis plot and its knot strip: stacked, three figures leave
   // the presenter's large type no room to plot in.
-  layout: { row: ['curve', { column: ['basis', 'knots'] }], weights: [1.3, 1] },
+  layout: { row: ['curve', { column: ['basis', 'knots'] }], weights: [1.8, 1] },
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.005 },
   steps,
   scenes: SCENES,
