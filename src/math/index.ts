@@ -120,6 +120,7 @@ export {
 export { cubicInflections } from './cubicInflections';
 export { cubicSelfIntersection } from './cubicSelfIntersection';
 export { projectiveMap } from './projectiveMap';
+export { projectiveMapWeighted } from './projectiveNurbs';
 export type { Deviation } from './curveDeviation';
 export { bezierDeviation, sampledDeviation } from './curveDeviation';
 export { controlPolygonGap } from './controlPolygonGap';

@@ -1,0 +1,45 @@
+import { coxDeBoorTable } from '../../math';
+
+/** Samples across the knot range, besides one just left of and one at every knot. */
+const STEPS = 240;
+
+/**
+ * Every row of the Cox–de Boor triangle sampled over [u_0, u_last]:
+ * rows[r][i] holds N_{i,r}(u) as interleaved (u, N) pairs, for the basis plot.
+ * A sample just left of each knot keeps the jumps of the low rows upright.
+ */
+export function basisRows(knots: readonly number[], degree: number): Float64Array[][] {
+  // Dragging a control point keeps the knots: the last plot is reused.
+  const key = `${degree}:${knots.join(',')}`;
+  if (key === last.key) return last.rows;
+  last.key = key;
+  last.rows = sampleRows(knots, degree);
+  return last.rows;
+}
+
+const last: { key: string; rows: Float64Array[][] } = { key: '', rows: [] };
+
+function sampleRows(knots: readonly number[], degree: number): Float64Array[][] {
+  const first = knots[0];
+  const width = knots[knots.length - 1] - first;
+  const us = new Set<number>();
+  for (let k = 0; k <= STEPS; k++) us.add(first + (width * k) / STEPS);
+  for (const knot of knots) {
+    us.add(knot);
+    if (knot > first) us.add(knot - width * 1e-9);
+  }
+  const sorted = [...us].sort((a, b) => a - b);
+  const rows = Array.from({ length: degree + 1 }, (_, r) =>
+    Array.from({ length: knots.length - r - 1 }, () => new Float64Array(2 * sorted.length)),
+  );
+  sorted.forEach((u, s) => {
+    const table = coxDeBoorTable(knots, degree, u);
+    table.forEach((row, r) =>
+      row.forEach((value, i) => {
+        rows[r][i][2 * s] = u;
+        rows[r][i][2 * s + 1] = value;
+      }),
+    );
+  });
+  return rows;
+}

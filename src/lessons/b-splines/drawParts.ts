@@ -1,0 +1,109 @@
+import type { DrawInfo } from '../../app/lesson';
+import type { Point } from '../../math';
+import type { Painter, StrokeStyle } from '../../render/painter';
+import type { BSplineModel } from './model';
+
+/** Which segments to draw strongly: the hovered one, or those a hovered point moves. */
+export function emphasis(m: BSplineModel, info: DrawInfo): (i: number) => 'strong' | 'weak' | '' {
+  const hover = info.hover ?? '';
+  const seg = /^seg(\d+)$/.exec(hover);
+  const point = /^p(\d+)$/.exec(hover);
+  if (seg) return (i) => (i === Number(seg[1]) ? 'strong' : 'weak');
+  if (point) {
+    const j = Number(point[1]);
+    return (i) => (m.segments[i]?.points.includes(j) ? 'strong' : 'weak');
+  }
+  return () => '';
+}
+
+/** The curve's segments, each in its own colour (the lesson's main result). */
+export function drawSegments(
+  painter: Painter,
+  m: BSplineModel,
+  info: DrawInfo,
+  only: number | null = null,
+): void {
+  const theme = painter.theme;
+  const level = emphasis(m, info);
+  m.segments.forEach((segment, i) => {
+    if (only !== null && i !== only) return;
+    const look = level(i);
+    const style: StrokeStyle = {
+      color: painter.color(i),
+      width: theme.sizes.curve * (look === 'strong' ? 1.7 : 1),
+      alpha: look === 'weak' ? 0.35 : 1,
+      role: 'curve',
+    };
+    if (segment.bezier) painter.cubicSegments([segment.bezier], style);
+    else painter.polylineFlat(segment.samples, style);
+  });
+}
+
+/** Rings around the control points of the hovered segment. */
+export function ringHovered(painter: Painter, m: BSplineModel, info: DrawInfo): void {
+  const seg = /^seg(\d+)$/.exec(info.hover ?? '');
+  if (!seg) return;
+  const i = Number(seg[1]);
+  const segment = m.segments[i];
+  if (!segment) return;
+  for (const j of segment.points) {
+    painter.ring(m.state.p[j], painter.theme.sizes.handle * 2.2, {
+      color: painter.color(i),
+      width: painter.theme.sizes.line * 1.5,
+    });
+  }
+}
+
+export function drawPolygon(painter: Painter, points: readonly Point[], closed = false): void {
+  const theme = painter.theme;
+  painter.polyline(points, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] }, closed);
+}
+
+/** The point at the cursor, labelled. */
+export function drawCursor(painter: Painter, at: Point, text: string, info: DrawInfo): void {
+  const theme = painter.theme;
+  painter.dot(at, theme.accent, theme.sizes.point * 1.6);
+  if (!info.thumbnail) {
+    painter.label(text, at, { dx: 10, dy: -10, color: theme.ink, halo: true });
+  }
+}
+
+/** Small labelled marks (Bézier points, crossings, joints). */
+export function drawMarks(
+  painter: Painter,
+  points: readonly Point[],
+  color: string,
+  labels: readonly string[] | null,
+  info: DrawInfo,
+): void {
+  const theme = painter.theme;
+  points.forEach((point, k) => {
+    painter.dot(point, color, theme.sizes.point * 1.1);
+    const text = labels?.[k];
+    if (text && !info.thumbnail) {
+      painter.label(text, point, {
+        dx: 8,
+        dy: 16,
+        color,
+        halo: true,
+        size: theme.sizes.label * 0.85,
+      });
+    }
+  });
+}
+
+/** Distance from `at` to a sampled path (interleaved x, y). */
+export function distanceToPath(samples: Float64Array, at: Point): number {
+  let best = Infinity;
+  for (let k = 0; k + 3 < samples.length; k += 2) {
+    const ax = samples[k];
+    const ay = samples[k + 1];
+    const dx = samples[k + 2] - ax;
+    const dy = samples[k + 3] - ay;
+    const length = dx * dx + dy * dy;
+    const f =
+      length > 0 ? Math.max(0, Math.min(1, ((at[0] - ax) * dx + (at[1] - ay) * dy) / length)) : 0;
+    best = Math.min(best, Math.hypot(at[0] - ax - f * dx, at[1] - ay - f * dy));
+  }
+  return best;
+}

@@ -1,0 +1,63 @@
+import type { RowSpec } from '../../app/liveTable';
+import { texNumber } from '../../render/formula';
+import type { BSplineModel } from './model';
+import { isUniformPart } from './state';
+
+const num = (v: number) => texNumber(v, 4);
+const point = (p: readonly number[]) => `(${num(p[0])}, ${num(p[1])})`;
+const row = (name: string, value: string, className = ''): RowSpec => ({
+  cells: [name, value],
+  className,
+});
+
+/** The numbers a student can check against the figure, for the part shown. */
+export function facts(m: BSplineModel): RowSpec[] {
+  const s = m.state;
+  const n = s.p.length;
+  const rows: RowSpec[] = [];
+  const uniform = isUniformPart(s.x);
+  rows.push(row(uniform ? 'parameter s' : 'parameter u', num(m.u)));
+  rows.push(row(uniform ? 'P(s)' : 'C(u)', point(m.point)));
+  if (!uniform) {
+    rows.push(row('curve start C(u_p)', point(m.start)));
+    rows.push(row('x0', point(s.p[0])));
+    rows.push(row('curve end C(u_n)', point(m.end)));
+    rows.push(row(`x${n - 1}`, point(s.p[n - 1])));
+    for (const join of m.joins) {
+      const through =
+        join.through === null
+          ? ''
+          : `, through x${join.through}: distance ${Math.hypot(join.at[0] - s.p[join.through][0], join.at[1] - s.p[join.through][1]).toExponential(1)}`;
+      rows.push(
+        row(
+          `knot ${texNumber(join.u, 3)} ×${join.multiplicity}`,
+          `${join.continuity < 0 ? 'jump' : `C${join.continuity}`}${through}`,
+          join.continuity <= 0 ? 'current' : '',
+        ),
+      );
+    }
+  } else if (s.x !== 'closed') {
+    rows.push(row('curve start', point(m.start)));
+    rows.push(row('curve end', point(m.end)));
+  }
+  const sum = m.basis.reduce((a, b) => a + b, 0);
+  rows.push(row('Σ basis at the cursor', num(sum)));
+  if (m.localControl) {
+    const changed = m.localControl.changed.filter(Boolean).length;
+    rows.push(row('segments changed', `${changed} of ${m.segments.length}`));
+  }
+  if (m.properties) {
+    rows.push(row('line × polygon', String(m.properties.crossings.polygon)));
+    rows.push(row('line × curve', String(m.properties.crossings.curve)));
+    rows.push(row('affine: largest gap', m.properties.deviation.toExponential(1)));
+  }
+  if (m.circle) {
+    rows.push(row('circle: largest |‖C − c‖ − r|', m.circle.deviation.toExponential(1)));
+    rows.push(row('all weights 1: largest gap', num(m.circle.plainDeviation)));
+  }
+  if (m.projective && !m.projective.error) {
+    rows.push(row('H(C) vs NURBS of H(x), w′', m.projective.deviation.toExponential(1)));
+    rows.push(row('H(C) vs old weights', num(m.projective.plainDeviation)));
+  }
+  return rows;
+}

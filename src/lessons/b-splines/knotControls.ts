@@ -1,0 +1,65 @@
+import { h } from '../../app/dom';
+import type { LessonApi } from '../../app/lesson';
+import { clampedUniformKnots } from '../../math';
+import type { BSplineModel } from './model';
+import { type BSplineState, MAX_DEGREE, isClamped } from './state';
+
+/**
+ * Clamped knots whose middle p inner knots are stacked on one value (the curve
+ * then passes through a control point there, with a kink). Too few inner knots: just clamped.
+ */
+export function repeatedKnots(n: number, p: number): number[] {
+  const knots = clampedUniformKnots(n, p);
+  const inner = n - p - 1;
+  if (inner < p) return knots;
+  const first = p + 1 + Math.floor((inner - p) / 2);
+  for (let j = first + 1; j < first + p; j++) knots[j] = knots[first];
+  return knots;
+}
+
+/** Uniform knots 0, 1, …, n + p. */
+export const uniformKnotVector = (n: number, p: number) =>
+  Array.from({ length: n + p + 1 }, (_, j) => j);
+
+/** Degree and knot-vector buttons of the general B-spline. */
+export function knotControls(api: LessonApi<BSplineState, BSplineModel>) {
+  const button = (label: string, change: (s: BSplineState) => BSplineState | null) => {
+    const b = h('button', { type: 'button' }, label);
+    b.addEventListener('click', () => {
+      const next = change(api.get());
+      if (next) api.set(next);
+    });
+    return b;
+  };
+  const degree = h('span', { 'aria-live': 'polite' });
+  const withDegree = (s: BSplineState, d: number) => {
+    if (d < 1 || d > MAX_DEGREE || d > s.p.length - 1) return null;
+    const u = isClamped(s.u, s.d)
+      ? clampedUniformKnots(s.p.length, d)
+      : uniformKnotVector(s.p.length, d);
+    return { ...s, d, u, k: Math.min(s.k, d + 3) };
+  };
+  const lower = button('Degree − 1', (s) => withDegree(s, s.d - 1));
+  const raise = button('Degree + 1', (s) => withDegree(s, s.d + 1));
+  const element = h(
+    'div',
+    {},
+    h('h2', {}, 'Degree and knots'),
+    h('div', { class: 'lesson-tools' }, lower, degree, raise),
+    h(
+      'div',
+      { class: 'lesson-tools' },
+      button('Uniform knots', (s) => ({ ...s, u: uniformKnotVector(s.p.length, s.d) })),
+      button('Clamped ends', (s) => ({ ...s, u: clampedUniformKnots(s.p.length, s.d) })),
+      button('Repeat a knot p times', (s) => ({ ...s, u: repeatedKnots(s.p.length, s.d) })),
+    ),
+  );
+  return {
+    element,
+    update(state: BSplineState) {
+      degree.textContent = `degree p = ${state.d}`;
+      lower.disabled = state.d <= 1;
+      raise.disabled = state.d >= Math.min(MAX_DEGREE, state.p.length - 1);
+    },
+  };
+}

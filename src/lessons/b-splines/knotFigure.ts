@@ -1,0 +1,101 @@
+import type { FigureSpec, Handle } from '../../app/lesson';
+import type { Bounds } from '../../render/projection';
+import type { BSplineModel } from './model';
+import { plotRange, uStep } from './plotRange';
+import { type BSplineState, isUniformPart } from './state';
+
+/** Knots are editable where the lesson is about them (not the lecture's fixed uniform cubic). */
+const editable = (s: BSplineState) => !isUniformPart(s.x) && s.k >= 1;
+/** A knot dropped this close to a neighbour (a share of the range) lands on it: a repeated knot. */
+const SNAP = 0.015;
+
+function stripBounds(m: BSplineModel): Bounds {
+  const [minX, maxX] = plotRange(m);
+  return { minX, maxX, minY: -1, maxY: 1 };
+}
+
+/** Runs of equal knots: [first index, multiplicity]. */
+export function knotRuns(knots: readonly number[]): [number, number][] {
+  const runs: [number, number][] = [];
+  for (let j = 0; j < knots.length; j++) {
+    if (j > 0 && knots[j] === knots[j - 1]) runs[runs.length - 1][1]++;
+    else runs.push([j, 1]);
+  }
+  return runs;
+}
+
+export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
+  id: 'knots',
+  title: 'The knot vector: drag a knot, stack knots to repeat one',
+  kind: 'plot',
+  height: 64,
+  bounds: stripBounds,
+  draw(painter, m, info) {
+    const theme = painter.theme;
+    const { minX, maxX } = stripBounds(m);
+    const [a, b] = m.domain;
+    painter.segment([minX, 0], [maxX, 0], { color: theme.muted, width: theme.sizes.line });
+    painter.segment([a, 0], [b, 0], { color: theme.ink, width: theme.sizes.line * 2.5 });
+    painter.segment([m.u, -1], [m.u, 1], { color: theme.accent, width: theme.sizes.line });
+    if (m.state.k < 1 && !isUniformPart(m.state.x)) return;
+    const size = theme.sizes.label * 0.75;
+    let lastX = -Infinity;
+    for (const [j, count] of knotRuns(m.knots)) {
+      const u = m.knots[j];
+      if (isUniformPart(m.state.x)) painter.dot([u, 0], theme.ink, theme.sizes.point);
+      // A label per run of knots, where there is room: stacked ones say how many.
+      const x = painter.view.toScreen([u, 0])[0];
+      if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;
+      lastX = x;
+      const text = count > 1 ? `u_{${j}…${j + count - 1}} ×${count}` : `u_{${j}}`;
+      painter.label(text, [u, 0], {
+        dx: 0,
+        dy: 28,
+        color: count > 1 ? theme.accent : theme.muted,
+        align: 'center',
+        size,
+      });
+    }
+    if (!info.thumbnail && uStep(m) > 0 && isUniformPart(m.state.x)) {
+      painter.screenLabel('uniform knots (the lecture’s matrix form)', 8, 14, {
+        color: theme.muted,
+        size: theme.sizes.label * 0.75,
+      });
+    }
+  },
+  handles(m) {
+    if (!editable(m.state)) return [];
+    const handles: Handle[] = [];
+    for (const [first, count] of knotRuns(m.knots)) {
+      for (let j = first; j < first + count; j++) {
+        const pull: [number, number] =
+          count === 1 ? [0, 1] : j === first ? [-1, 0] : j === first + count - 1 ? [1, 0] : [0, 1];
+        handles.push({
+          id: `u${j}`,
+          label: `u_{${j}}`,
+          position: [m.knots[j], 0],
+          shape: 'diamond',
+          showLabel: false,
+          pull,
+        });
+      }
+    }
+    return handles;
+  },
+  moveHandle(state, id, to, m) {
+    const j = Number(id.slice(1));
+    const u = state.u;
+    const [minX, maxX] = plotRange(m);
+    const low = j > 0 ? u[j - 1] : minX - (maxX - minX);
+    const high = j < u.length - 1 ? u[j + 1] : maxX + (maxX - minX);
+    const snap = SNAP * (maxX - minX);
+    let v = Math.round(to[0] * 1000) / 1000;
+    if (v - low < snap) v = low;
+    if (high - v < snap) v = high;
+    v = Math.min(high, Math.max(low, v));
+    const next = u.map((knot, k) => (k === j ? v : knot));
+    // The curve lives on [u_p, u_n]: that interval must not close up.
+    if (!(next[state.d] < next[state.p.length])) return state;
+    return { ...state, u: next };
+  },
+};

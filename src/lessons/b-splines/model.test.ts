@@ -1,0 +1,187 @@
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { bsplineBasis } from '../../math';
+import { knotFigure } from './knotFigure';
+import { derive } from './model';
+import { SCENES } from './scenes';
+import { type BSplineState, LECTURE_POINTS, normalize, schema } from './state';
+import { describeStep, stepCount, steps } from './steps';
+
+const defaults = normalize(defaultsOf(schema)).state;
+const sceneState = (id: string, changes: Partial<BSplineState> = {}): BSplineState => {
+  const scene = SCENES.find((s) => s.id === id)!;
+  return normalize({ ...scene.apply(defaults), ...changes }).state;
+};
+const gap = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+
+describe('the uniform cubic B-spline of the lecture', () => {
+  it('m + 1 = 7 points give m − 2 = 4 segments; open at (x0 + 4x1 + x2)/6, closed gives m + 1', () => {
+    const m = derive(sceneState('uniform'));
+    expect(m.segments).toHaveLength(4);
+    // (0 + 4·1 + 3)/6 = 7/6 and (0 + 4·3 + 4)/6 = 16/6; the end (4.5·0 + … ) = (6.5 + 32 + 10)/6, (0 + 12 + 3.5)/6.
+    expect(m.start[0]).toBeCloseTo(7 / 6, 14);
+    expect(m.start[1]).toBeCloseTo(16 / 6, 14);
+    expect(m.end[0]).toBeCloseTo(48.5 / 6, 14);
+    expect(m.end[1]).toBeCloseTo(15.5 / 6, 14);
+    expect(derive(sceneState('closed')).segments).toHaveLength(6);
+  });
+
+  it('segment i blends x_i … x_{i+3} with the 1/6 matrix: at local t = 1/2 the weights are 1/48, 23/48, 23/48, 1/48', () => {
+    // s = 1.5: segment 1 (Q4, x1 … x4) at t = 1/2.
+    const m = derive({ ...sceneState('uniform'), t: 1.5 / 4 });
+    expect(m.segment).toBe(1);
+    expect(m.basis.slice(1, 5).map((b) => b * 48)).toEqual(
+      [1, 23, 23, 1].map((v) => expect.closeTo(v, 12)),
+    );
+    const [x1, x2, x3, x4] = LECTURE_POINTS.slice(1, 5);
+    const expected = [0, 1].map((d) => (x1[d] + 23 * x2[d] + 23 * x3[d] + x4[d]) / 48);
+    expect(gap(m.point, expected)).toBeLessThan(1e-12);
+  });
+
+  it('moving one control point changes the curve only on its (at most four) segments, to 1e-12 elsewhere', () => {
+    const ten = sceneState('local');
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 0, max: ten.p.length - 1 }),
+        fc.double({ min: -5, max: 5, noNaN: true }),
+        fc.double({ min: -5, max: 5, noNaN: true }),
+        (j, dx, dy) => {
+          const before = derive({ ...ten, x: 'uniform', p: ten.q });
+          const p = ten.q.map((point, i) => (i === j ? [point[0] + dx, point[1] + dy] : point));
+          const after = derive({ ...ten, x: 'uniform', p });
+          return before.segments.every((segment, i) => {
+            const acts = i <= j && j <= i + 3;
+            let largest = 0;
+            for (let k = 0; k < segment.samples.length; k++) {
+              largest = Math.max(
+                largest,
+                Math.abs(segment.samples[k] - after.segments[i].samples[k]),
+              );
+            }
+            return acts || largest <= 1e-12;
+          });
+        },
+      ),
+    );
+  });
+
+  it('the local-control scene says which segments changed: x4 moved, Q4 … Q7 of Q3 … Q9', () => {
+    const m = derive(sceneState('local'));
+    expect(m.localControl!.moved).toEqual([4]);
+    expect(m.localControl!.changed).toEqual([false, true, true, true, true, false, false]);
+  });
+});
+
+describe('knots and Cox–de Boor', () => {
+  it('the triangle’s last row sums to 1 and matches bsplineBasis at every t tried', () => {
+    for (const id of ['knots', 'clamped', 'repeated', 'circle']) {
+      fc.assert(
+        fc.property(fc.double({ min: 0, max: 1, noNaN: true }), (t) => {
+          const m = derive(sceneState(id, { t }));
+          const last = m.table[m.degree];
+          const sum = last.reduce((a, b) => a + b, 0);
+          return (
+            Math.abs(sum - 1) < 1e-12 &&
+            last.every((v, i) => v === bsplineBasis(m.knots, m.degree, i, m.u))
+          );
+        }),
+      );
+    }
+  });
+
+  it('clamped knots: the curve starts at x0 and ends at the last point', () => {
+    const m = derive(sceneState('clamped'));
+    expect(gap(m.start, LECTURE_POINTS[0])).toBeLessThan(1e-12);
+    expect(gap(m.end, LECTURE_POINTS[6])).toBeLessThan(1e-12);
+    // Uniform (unclamped) knots pass through neither.
+    const open = derive(sceneState('knots'));
+    expect(gap(open.start, LECTURE_POINTS[0])).toBeGreaterThan(0.5);
+  });
+
+  it('a knot of multiplicity p makes the curve C⁰ there and pass through a control point', () => {
+    // Knots 0,0,0,0, 1,1,1, 2,2,2,2: at u = 1 only N(3,3) is non-zero, so C(1) = x3.
+    const m = derive(sceneState('repeated'));
+    expect(m.joins).toHaveLength(1);
+    const [join] = m.joins;
+    expect(join).toMatchObject({ u: 1, multiplicity: 3, continuity: 0, through: 3 });
+    expect(gap(join.at, LECTURE_POINTS[3])).toBeLessThan(1e-12);
+    // Multiplicity 2 instead: C¹ there, and no longer through x3.
+    const double = derive(sceneState('repeated', { u: [0, 0, 0, 0, 1, 1, 1.5, 2, 2, 2, 2] }));
+    expect(double.joins[0]).toMatchObject({ multiplicity: 2, continuity: 1, through: null });
+  });
+
+  it('a knot dropped near its neighbour lands on it; the domain never closes', () => {
+    const state = sceneState('knots');
+    const m = derive(state);
+    const stacked = knotFigure.moveHandle!(state, 'u5', [4.05, 0], m);
+    expect(stacked.u[5]).toBe(4);
+    // u3 up to u7 would leave [u_p, u_n] = [u3, u7] empty: refused.
+    const tight = { ...state, u: [0, 1, 2, 3, 7, 7, 7, 7, 8, 9, 10] };
+    expect(knotFigure.moveHandle!(tight, 'u3', [7, 0], derive(tight)).u[3]).toBe(3);
+  });
+});
+
+describe('properties', () => {
+  it('variation diminishing: the line y = 1.5 crosses the lecture polygon 3 times and the curve twice', () => {
+    // Polygon heights 0, 3, 4, 1, 0, 3, 3.5: three sign changes. Joints 8/3, 10/3, 4/3, 2/3, 31/12: two.
+    const m = derive(
+      sceneState('properties', {
+        l: [
+          [0, 1.5],
+          [10, 1.5],
+        ],
+      }),
+    );
+    expect(m.properties!.crossings.polygon).toBe(3);
+    expect(m.properties!.crossings.curve).toBe(2);
+  });
+
+  it('affine invariance: the curve of the mapped points is the mapped curve', () => {
+    expect(derive(sceneState('properties')).properties!.deviation).toBeLessThan(1e-12);
+  });
+});
+
+describe('NURBS', () => {
+  it('the circle’s sampled points lie on the circle within 1e-9; with weights 1 they do not', () => {
+    const m = derive(sceneState('circle'));
+    expect(m.circle!.deviation).toBeLessThan(1e-9);
+    for (const point of m.circle!.samples)
+      expect(Math.abs(Math.hypot(point[0], point[1]) - 3)).toBeLessThan(1e-9);
+    expect(m.circle!.plainDeviation).toBeGreaterThan(0.1);
+  });
+
+  it('raising a weight pulls the curve towards its point', () => {
+    const plain = derive(sceneState('nurbs', { w: LECTURE_POINTS.map(() => 1), t: 0.3 }));
+    const heavy = derive(sceneState('nurbs', { t: 0.3 }));
+    expect(gap(heavy.point, LECTURE_POINTS[2])).toBeLessThan(gap(plain.point, LECTURE_POINTS[2]));
+  });
+
+  it('a projective map of the points with their weights keeps the curve; the old weights do not', () => {
+    const m = derive(sceneState('projective'));
+    expect(m.projective!.error).toBeNull();
+    expect(m.projective!.deviation).toBeLessThan(1e-9);
+    expect(m.projective!.plainDeviation).toBeGreaterThan(0.05);
+  });
+});
+
+describe('the script', () => {
+  it('every scene steps from 0 to its count with a caption, and every step’s formula builds', () => {
+    for (const scene of SCENES) {
+      const state = sceneState(scene.id);
+      expect(state.x).toBe(scene.id);
+      for (let k = 0; k <= stepCount(state); k++) {
+        const at = { ...state, k };
+        expect(describeStep(at, k).length).toBeGreaterThan(5);
+        expect(() => steps.formula!(derive(at), at)).not.toThrow();
+      }
+    }
+  });
+
+  it('a link with knots or weights that do not fit the points is mended, and says so', () => {
+    const { state, issues } = normalize({ ...sceneState('knots'), u: [0, 1, 2], w: [2] });
+    expect(state.u).toEqual([0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1]);
+    expect(state.w).toEqual([2, 1, 1, 1, 1, 1, 1]);
+    expect(issues).toHaveLength(2);
+  });
+});

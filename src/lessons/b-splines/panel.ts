@@ -1,0 +1,95 @@
+import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
+import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
+import { formula, renderFormula } from '../../render/formula';
+import { facts } from './facts';
+import { knotControls } from './knotControls';
+import type { BSplineModel } from './model';
+import { segmentButtons } from './segmentButtons';
+import { type BSplineState, isRationalPart, isUniformPart } from './state';
+import { describeStep, stepCount, steps } from './steps';
+import { TEXTS } from './texts';
+import { triangleTable } from './triangleTable';
+import { weightSliders } from './weightSliders';
+
+const MATRIX =
+  'Q_i(t) = \\begin{bmatrix}1 & t & t^2 & t^3\\end{bmatrix}\\,\\frac16\\begin{bmatrix}1 & 4 & 1 & 0\\\\ -3 & 0 & 3 & 0\\\\ 3 & -6 & 3 & 0\\\\ -1 & 3 & -3 & 1\\end{bmatrix}\\begin{bmatrix}x_{i-3}\\\\ x_{i-2}\\\\ x_{i-1}\\\\ x_i\\end{bmatrix}';
+const RECURSION =
+  'N_{i,r}(u) = \\frac{u - u_i}{u_{i+r} - u_i}\\,N_{i,r-1}(u) + \\frac{u_{i+r+1} - u}{u_{i+r+1} - u_{i+1}}\\,N_{i+1,r-1}(u)';
+
+export function bsplinePanel(
+  api: LessonApi<BSplineState, BSplineModel>,
+): LessonPanel<BSplineState, BSplineModel> {
+  const title = h('h2', {});
+  const text = h('p', {});
+  const stepLine = h('p', { class: 'note' });
+  const stepFormula = h('div', { class: 'step-formulas' });
+  const matrix = formula(MATRIX, true);
+  const recursion = formula(RECURSION, true);
+  const segments = segmentButtons(api);
+  const before = h('button', { type: 'button' }, 'Take this curve as the new “before”');
+  before.addEventListener('click', () =>
+    api.set({ ...api.get(), q: api.get().p.map((p) => [...p]) }),
+  );
+  const localTools = h('div', { class: 'lesson-tools' }, before);
+  const knots = knotControls(api);
+  const weights = weightSliders(api);
+  const triangle = triangleTable();
+  const factBody = h('tbody', {});
+  const factRows = new LiveRows(factBody);
+  const element = h(
+    'div',
+    { class: 'lesson-text' },
+    title,
+    text,
+    h(
+      'p',
+      { class: 'note' },
+      'The slider t moves the cursor along the whole curve, from its start (0) to its end (1).',
+    ),
+    stepLine,
+    stepFormula,
+    matrix,
+    recursion,
+    segments.element,
+    localTools,
+    knots.element,
+    weights.element,
+    triangle.element,
+    h('h2', {}, 'Numbers'),
+    dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody),
+  );
+  let shownPart = '';
+  let shownTex: string | null = null;
+
+  return {
+    element,
+    update(m, state) {
+      if (state.x !== shownPart) {
+        shownPart = state.x;
+        setText(title, TEXTS[state.x].title);
+        setText(text, TEXTS[state.x].text);
+        setHidden(matrix, !isUniformPart(state.x));
+        setHidden(recursion, isUniformPart(state.x));
+        setHidden(localTools, state.x !== 'local');
+        setHidden(knots.element, isUniformPart(state.x));
+        setHidden(weights.element, !isRationalPart(state.x));
+      }
+      setText(stepLine, `Step ${state.k} of ${stepCount(state)}: ${describeStep(state, state.k)}`);
+      const tex = steps.formula?.(m, state) ?? null;
+      if (tex !== shownTex) {
+        shownTex = tex;
+        if (tex) renderFormula(stepFormula, tex, true);
+        else setChildren(stepFormula);
+      }
+      segments.update(m, state);
+      knots.update(state);
+      weights.update(state);
+      triangle.update(m, state, api.theme().palette);
+      factRows.set(facts(m));
+    },
+    hover(id) {
+      segments.hover(id);
+    },
+  };
+}

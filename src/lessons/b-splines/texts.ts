@@ -1,0 +1,49 @@
+import type { Part } from './state';
+
+/** The panel's words for each part of the lesson: a heading and what to look at. */
+export const TEXTS: Record<Part, { title: string; text: string }> = {
+  uniform: {
+    title: 'The uniform cubic B-spline',
+    text: 'm + 1 control points x0 … xm give m − 2 cubic segments. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]. The four weights are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. Hover a segment (or tab to its button) to see its four points; hover a point to see the segments it moves.',
+  },
+  closed: {
+    title: 'The closed uniform B-spline',
+    text: 'Repeat the first three points after the last (x0 = x(m+1), x1, x2): the same matrix then gives m + 1 segments, and the curve closes on itself with C² continuity everywhere — there is no special end.',
+  },
+  local: {
+    title: 'Local control',
+    text: 'A control point of the cubic B-spline acts on four segments only: move it, and the rest of the curve does not change at all (the changed part is highlighted against the curve before). The Bézier curve through the same points changes along its whole length, because every Bernstein polynomial is non-zero on all of [0, 1]. The basis functions below show why: each B-spline basis function is zero outside four segments.',
+  },
+  convert: {
+    title: 'B-spline ↔ Bézier, segment by segment',
+    text: 'Each segment is a cubic, so it is also a Bézier curve: G_Bez = M_Bez⁻¹ · M_B · G_B gives its four Bézier points from its four B-spline points, and M_B⁻¹ · M_Bez gives them back. The end point of a segment, (x(i−1) + 4xi + x(i+1))/6, is shared with the next one.',
+  },
+  properties: {
+    title: 'Properties',
+    text: 'Convex hull: each segment stays in the convex hull of its four control points (narrower than the hull of all of them). Variation diminishing: drag the line by its two square handles; it never crosses the curve more often than the polygon. Affine invariance: mapping the control points by an affine map A and building the curve gives the mapped curve (the rings are mapped curve points).',
+  },
+  knots: {
+    title: 'Knots and the Cox–de Boor recursion',
+    text: 'In general a B-spline of degree p has n control points and a knot vector u0 ≤ u1 ≤ … ≤ u(n+p) of n + p + 1 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). The curve lives on [up, un] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
+  },
+  clamped: {
+    title: 'Clamped ends',
+    text: 'With p + 1 equal knots at each end, only N(0,p) is non-zero at the start and only N(n−1,p) at the end: the curve starts at x0 and ends at the last point, tangent to the polygon there. This is how “open” splines interpolate their end control points.',
+  },
+  repeated: {
+    title: 'Repeated knots',
+    text: 'A knot of multiplicity k lowers the continuity there from C^(p−1) to C^(p−k). With k = p the curve is only C⁰ and passes through a control point, with a kink; with k = p + 1 it breaks apart. Drag the stacked knots apart (right and left pick different ones) to smooth the curve again.',
+  },
+  nurbs: {
+    title: 'NURBS: a weight per control point',
+    text: 'A rational B-spline gives each control point a weight wi: C(u) = Σ wi Ni(u) xi / Σ wi Ni(u). With every weight 1 it is the plain B-spline (dashed). Raising a weight pulls the curve towards that point; lowering it lets the curve go. Change the weights with the sliders.',
+  },
+  circle: {
+    title: 'The exact circle',
+    text: 'No polynomial curve is a circle, but a rational quadratic is: nine points on the square around the circle, weight 1 at the edge midpoints and √2/2 at the corners, knots 0,0,0, ¼,¼, ½,½, ¾,¾, 1,1,1 — four quarter arcs, each a rational quadratic Bézier curve. The dots are sampled curve points: they lie on the circle to rounding.',
+  },
+  projective: {
+    title: 'A projective map keeps the curve',
+    text: 'Map the control points with a perspective map H and multiply each weight by the new homogeneous coordinate w′ = h20 x + h21 y + h22: the NURBS of the new points and weights is exactly the image of the curve (the rings are mapped curve points). Keeping the old weights, as a plain B-spline must, gives a different curve (dashed).',
+  },
+};

@@ -1,0 +1,50 @@
+import { h, setChildren } from '../../app/dom';
+import type { LessonApi } from '../../app/lesson';
+import type { BSplineModel } from './model';
+import type { BSplineState } from './state';
+
+/** One line per weight: name, slider, value. */
+const ROW = 'display: grid; grid-template-columns: 2.5em 1fr 4em; gap: 0.5em; align-items: center';
+
+/** A slider per weight (0.1 … 5), with its value written beside it. */
+export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
+  const list = h('div', { class: 'weights' });
+  const element = h('div', {}, h('h2', {}, 'Weights'), list);
+  let inputs: HTMLInputElement[] = [];
+  let outputs: HTMLElement[] = [];
+  let count = -1;
+  return {
+    element,
+    update(state: BSplineState) {
+      if (state.w.length !== count) {
+        count = state.w.length;
+        inputs = state.w.map((_, i) => {
+          const input = h('input', {
+            type: 'range',
+            min: '0.1',
+            max: '5',
+            step: '0.01',
+            'aria-label': `w${i}`,
+          });
+          input.addEventListener('input', () => {
+            const s = api.get();
+            const w = s.w.map((v, k) => (k === i ? Number(input.value) : v));
+            api.set({ ...s, w }, { coalesce: `weight-${i}` });
+          });
+          return input;
+        });
+        outputs = state.w.map(() => h('output', {}));
+        setChildren(
+          list,
+          inputs.map((input, i) =>
+            h('label', { class: 'weight-row', style: ROW }, `w${i}`, input, outputs[i]),
+          ),
+        );
+      }
+      state.w.forEach((w, i) => {
+        if (Number(inputs[i].value) !== w) inputs[i].value = String(w);
+        outputs[i].textContent = String(Number(w.toFixed(4)));
+      });
+    },
+  };
+}

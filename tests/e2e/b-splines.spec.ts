@@ -1,0 +1,133 @@
+import type { Page } from '@playwright/test';
+import { bsplineBasis } from '../../src/math';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const numbers = (page: Page) => page.getByRole('table', { name: 'Numbers of the curve' });
+/** The value cell of a row of the Numbers table. */
+const value = (page: Page, name: RegExp) =>
+  numbers(page).getByRole('row', { name }).locator('td').nth(1);
+const point = (text: string) => text.replace(/[()]/g, '').split(',').map(Number);
+const list = (raw: string) => raw.split(';').map((q) => q.split(',').map(Number));
+
+async function openScene(page: Page, label: string, id: string) {
+  await page.getByRole('button', { name: label, exact: true }).click();
+  await expectHash(page, 'x', (v) => v === id);
+}
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/b-splines');
+  await expect(page.locator('canvas[data-figure="curve"]')).toBeVisible();
+});
+
+test('local control: moving one point changes only its segments of the uniform cubic', async ({
+  page,
+}) => {
+  await openScene(page, 'Local control', 'local');
+  // The scene moved x4: Q4 … Q7 changed, Q3, Q8 and Q9 did not.
+  await expect(value(page, /^segments changed/)).toHaveText('4 of 7');
+  await page.getByRole('button', { name: /new “before”/ }).click();
+  await expect(value(page, /^segments changed/)).toHaveText('0 of 7');
+  const before = hashState(page).p;
+  await page.getByRole('button', { name: /^x9 at/ }).focus();
+  await page.keyboard.press('ArrowUp');
+  await expectHash(page, 'p', (v) => v !== before);
+  // The last point acts on the last segment only.
+  await expect(value(page, /^segments changed/)).toHaveText('1 of 7');
+});
+
+test('clamped knots interpolate the end points; a knot of multiplicity p passes through a point', async ({
+  page,
+}) => {
+  await openScene(page, 'Clamped ends', 'clamped');
+  const p = list(hashState(page).p);
+  await expect(value(page, /^curve start/)).toHaveText(/\(/);
+  const start = point(await value(page, /^curve start/).innerText());
+  const end = point(await value(page, /^curve end/).innerText());
+  expect(Math.hypot(start[0] - p[0][0], start[1] - p[0][1])).toBeLessThan(1e-4);
+  expect(Math.hypot(end[0] - p[6][0], end[1] - p[6][1])).toBeLessThan(1e-4);
+
+  await openScene(page, 'Repeated knots', 'repeated');
+  const join = await value(page, /^knot 1\.000 ×3/).innerText();
+  expect(join).toMatch(/^C0, through x3: distance /);
+  expect(Number(join.split('distance ')[1])).toBeLessThan(1e-12);
+});
+
+test('the knot strip: a knot dropped on its neighbour stacks, and the curve loses a derivative there', async ({
+  page,
+}) => {
+  await openScene(page, 'Knots and Cox–de Boor', 'knots');
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '1');
+  const from = (await page.getByRole('button', { name: /^u5 at/ }).boundingBox())!;
+  const to = (await page.getByRole('button', { name: /^u4 at/ }).boundingBox())!;
+  await page.mouse.move(from.x + from.width / 2, from.y + from.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(to.x + to.width / 2 + 2, to.y + to.height / 2, { steps: 8 });
+  await page.mouse.up();
+  await expectHash(page, 'u', (v) => v === '0,1,2,3,4,4,6,7,8,9,10');
+  await expect(value(page, /^knot 4\.000 ×2/)).toHaveText('C1');
+});
+
+test('the Cox–de Boor triangle: its last row sums to 1 and matches bsplineBasis at every t', async ({
+  page,
+}) => {
+  await openScene(page, 'Knots and Cox–de Boor', 'knots');
+  await page.keyboard.press('End');
+  await expectHash(page, 'k', (v) => v === '6');
+  const knots = hashState(page).u.split(',').map(Number);
+  const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
+    name: /^N\(i,3\)/,
+  });
+  const number = page.getByRole('spinbutton', { name: 't value' });
+  for (const t of [0, 0.137, 0.5, 0.77, 1]) {
+    await number.fill(String(t));
+    await number.press('Enter');
+    await expectHash(page, 't', (v) => Number(v) === t);
+    // u runs over the domain [u3, u7] = [3, 7].
+    const u = 3 + 4 * t;
+    await expect(value(page, /^parameter u/)).toHaveText(u.toFixed(4));
+    const cells = (await lastRow.locator('td').allInnerTexts())
+      .slice(1, knots.length - 3)
+      .map(Number);
+    expect(Math.abs(cells.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(3e-4);
+    cells.forEach((cell, i) =>
+      expect(Math.abs(cell - bsplineBasis(knots, 3, i, u))).toBeLessThan(6e-5),
+    );
+  }
+});
+
+test('NURBS: the circle is exact, and a projective map with the weights keeps the curve', async ({
+  page,
+}) => {
+  await openScene(page, 'The exact circle', 'circle');
+  const off = await value(page, /^circle: largest/).innerText();
+  expect(Number(off)).toBeLessThan(1e-9);
+  expect(Number(await value(page, /^all weights 1/).innerText())).toBeGreaterThan(0.1);
+  await openScene(page, 'Projective map', 'projective');
+  expect(Number(await value(page, /^H\(C\) vs NURBS/).innerText())).toBeLessThan(1e-9);
+  expect(Number(await value(page, /^H\(C\) vs old weights/).innerText())).toBeGreaterThan(0.05);
+});
+
+test('every scene at its last step, in presenter view (screenshots)', async ({ page }) => {
+  const scenes: [string, number][] = [
+    ['uniform', 4],
+    ['closed', 4],
+    ['local', 3],
+    ['knots', 6],
+    ['clamped', 6],
+    ['repeated', 6],
+    ['convert', 4],
+    ['properties', 4],
+    ['nurbs', 3],
+    ['circle', 4],
+    ['projective', 3],
+  ];
+  await page.keyboard.press('p');
+  for (const [id, count] of scenes) {
+    await expectHash(page, 'x', (v) => v === id);
+    await page.keyboard.press('End');
+    await expectHash(page, 'k', (v) => v === String(count));
+    await snapshot(page, `b-splines-${id}-presenter`);
+    await page.keyboard.press('PageDown');
+  }
+});
