@@ -127,3 +127,7 @@ export { rationalBezierPoint, sampleRationalBezier } from './rationalBezier';
 export { subdivisionLevels } from './subdivision';
 export { multiplyPlaneMatrices, translationMatrix, homogeneousWeight } from './homogeneousMatrix';
 export { signedAngle } from './signedAngle';
+export type { HelixFrame } from './helix';
+export { helixPoint, helixFrame, helixCurvature, helixTorsion } from './helix';
+export type { ArcLengthRow } from './arcLengthParameter';
+export { bezierArcLengthTable, bezierParameterAtLength } from './arcLengthParameter';
