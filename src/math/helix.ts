@@ -67,3 +67,15 @@ export function helixFrame(a: number, b: number, theta: number): HelixFrame {
     torsion: b / squared,
   };
 }
+
+/** r′(θ), r″(θ), r‴(θ) of the helix, for the general formulas of κ and τ. */
+export function helixDerivatives(a: number, b: number, theta: number): [Point, Point, Point] {
+  checkHelix('helixDerivatives', a, b);
+  checkNumber('helixDerivatives', 'theta', theta);
+  const [cos, sin] = [Math.cos(theta), Math.sin(theta)];
+  return [
+    [-a * sin, a * cos, b],
+    [-a * cos, -a * sin, 0],
+    [a * sin, -a * cos, 0],
+  ];
+}

@@ -131,3 +131,6 @@ export type { HelixFrame } from './helix';
 export { helixPoint, helixFrame, helixCurvature, helixTorsion } from './helix';
 export type { ArcLengthRow } from './arcLengthParameter';
 export { bezierArcLengthTable, bezierParameterAtLength } from './arcLengthParameter';
+export { helixDerivatives } from './helix';
+export type { FrenetInvariants } from './frenetInvariants';
+export { frenetInvariants } from './frenetInvariants';
