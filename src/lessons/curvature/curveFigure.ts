@@ -13,8 +13,22 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   title: 'The curve with P(t), its tangent, normal, osculating circle and curvature comb',
   kind: 'geometry',
   bounds(m) {
-    if (m.state.part === 'space') return boundsOf(m.space.curve.map((p) => [p[0], p[1]]));
-    return boundsOf([...m.state.p, ...(m.plane?.comb.map((tooth) => tooth[1]) ?? [])]);
+    if (m.state.part === 'space') {
+      const polygon = m.state.curve === 'bezier' ? m.state.q : [];
+      return boundsOf([...m.space.curve, ...polygon].map((p) => [p[0], p[1]]));
+    }
+    const plane = m.plane!;
+    const circle = plane.at.circle;
+    // The osculating circle is in view when it is not much larger than the curve.
+    const round =
+      m.state.part === 'plane' && circle && circle.radius < plane.size
+        ? [0, 1].flatMap((d) =>
+            [-1, 1].map((k) => circle.centre.map((v, e) => v + (e === d ? k * circle.radius : 0))),
+          )
+        : [];
+    const box = boundsOf([...m.state.p, ...plane.comb.flat().map((tooth) => tooth[1]), ...round]);
+    // Room at the top for the note that says why N or T is undefined.
+    return plane.at.why ? { ...box, maxY: box.maxY + 0.35 * (box.maxY - box.minY) } : box;
   },
   draw(painter, m, info) {
     const labels = !info.thumbnail;
@@ -47,6 +61,17 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     if (id.startsWith('q'))
       return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], q[2]] : q)) };
     return { ...state, p: state.p.map((p, k) => (k === i ? [to[0], to[1]] : p)) };
+  },
+  drawOver(painter, m, info) {
+    // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from step 3.
+    const at = m.plane?.at;
+    if (
+      m.state.part === 'plane' &&
+      at?.why &&
+      !info.thumbnail &&
+      m.state.step >= (at.tangent ? 3 : 2)
+    )
+      painter.note(at.why);
   },
   trail: (m) => (m.state.part === 'space' ? m.space.at.point.slice(0, 2) : m.plane!.at.point),
   weight: 3,
@@ -91,19 +116,18 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
     vectorArrow(painter, at.point, at.normal, unit, 'N', painter.color(COLOURS.normal), labels);
   painter.dot(at.point, theme.accent, theme.sizes.point * 1.3);
   if (labels) painter.label('P(t)', at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
-  // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from step 3.
-  if (labels && at.why && step >= (at.tangent ? 3 : 1)) painter.note(at.why);
 }
 
 function drawComb(painter: Painter, plane: PlaneModel): void {
   const colour = painter.color(COLOURS.curvature);
   const width = painter.theme.sizes.thin;
-  for (const [base, tip] of plane.comb)
-    painter.segment(base, tip, { color: colour, width, alpha: 0.7 });
-  painter.polyline(
-    plane.comb.map((tooth) => tooth[1]),
-    { color: colour, width: painter.theme.sizes.line },
-  );
+  for (const run of plane.comb) {
+    for (const [base, tip] of run) painter.segment(base, tip, { color: colour, width, alpha: 0.7 });
+    painter.polyline(
+      run.map((tooth) => tooth[1]),
+      { color: colour, width: painter.theme.sizes.line },
+    );
+  }
 }
 
 function markPoint(painter: Painter, at: Point, text: string, labels: boolean): void {

@@ -42,7 +42,7 @@ function planeFormula(m: CurvatureModel, step: number): string | null {
       const numerator = v[0] * a[1] - v[1] * a[0];
       const kappa = `\\kappa = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{${tex(numerator)}}{${tex(at.speed ** 3)}} = ${tex(at.curvature)}`;
       if (step === 5)
-        return `\\text{tooth} = P + c\\,\\kappa\\,N,\\quad c = ${tex(plane.combScale)},\\quad ${kappa}`;
+        return `\\text{tooth} = P - c\\,|\\kappa|\\,N,\\quad c = ${tex(plane.combScale)},\\quad ${kappa}`;
       return at.circle
         ? `${kappa},\\quad R = \\frac{1}{|\\kappa|} = ${tex(at.circle.radius)}`
         : kappa;

@@ -50,20 +50,25 @@ export function curvaturePanel(
     get: (s) => s.curve,
     set: (s, curve) => ({ ...s, curve }),
   });
-  const slider = (label: string, key: 'a' | 'b' | 'n', min: number, max: number, step: number) => {
-    const input = h('input', { type: 'range', min, max, step, 'aria-label': label });
-    const value = h('output', {});
-    input.addEventListener('input', () =>
-      api.set(
-        { ...api.get(), [key]: Number(input.value) },
-        { coalesce: `curvature-${key}`, windowMs: 1500 },
-      ),
-    );
-    return { element: h('label', { class: 'toggle' }, `${label} `, input, value), input, value };
+  const numberInput = (
+    label: string,
+    key: 'a' | 'b' | 'n',
+    min: number,
+    max: number,
+    step: number,
+  ) => {
+    const input = h('input', { type: 'number', min, max, step, 'aria-label': label });
+    input.addEventListener('change', () => {
+      const value = Number(input.value);
+      // The link's field checks the range too; here an out-of-range entry is simply not taken.
+      if (input.value !== '' && value >= min && value <= max)
+        api.set({ ...api.get(), [key]: value });
+    });
+    return { element: h('label', { class: 'toggle' }, `${label} `, input), input };
   };
-  const a = slider('Helix radius a', 'a', 0.1, 5, 0.05);
-  const b = slider('Helix rise b per radian', 'b', -3, 3, 0.05);
-  const n = slider('Equal steps n', 'n', 2, 24, 1);
+  const a = numberInput('Helix radius a', 'a', 0.1, 5, 0.05);
+  const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
+  const n = numberInput('Equal steps n', 'n', 2, 24, 1);
   const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
   const helixControls = h('div', {}, a.element, b.element);
 
@@ -104,8 +109,7 @@ export function curvaturePanel(
         [b, state.b],
         [n, state.n],
       ] as const) {
-        control.input.value = String(value);
-        setText(control.value, String(value));
+        if (document.activeElement !== control.input) control.input.value = String(value);
       }
       const step = Math.min(state.step, stepCount(state));
       setText(stepTitle, `Step ${step} of ${stepCount(state)}: ${STEPS[state.part][step]}`);

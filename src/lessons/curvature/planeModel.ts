@@ -11,6 +11,7 @@ import {
   osculatingCircle,
   sampleBezier,
 } from '../../math';
+import { robustCap, runs, sizeOf } from './measure';
 
 /** Below this |κ| times the size of the control polygon, κ counts as 0. */
 const FLAT = 1e-9;
@@ -39,8 +40,11 @@ export interface PlaneModel {
   /** Extent of the control polygon: scales arrows and comb teeth. */
   size: number;
   at: PlaneAt;
-  /** Comb teeth [base, tip]: tip = P + c·κ·(T turned left), c = combScale. */
-  comb: [Point, Point][];
+  /**
+   * Comb teeth [base, tip] in runs: tip = P − c·κ·(T turned left), on the
+   * outside of the bend; c = combScale. A run ends where a tooth would be too long.
+   */
+  comb: [Point, Point][][];
   combScale: number;
   /** κ(t) and |P′(t)| for the plot, cut where undefined (interleaved t, value). */
   kappa: Float64Array[];
@@ -78,13 +82,6 @@ export function cuspParameters(p: readonly Point[]): number[] {
 
 function bezierDerivativeAt(h: readonly Point[], t: number): Point {
   return bezierPoint(h, t);
-}
-
-export function sizeOf(p: readonly Point[]): number {
-  let size = 0;
-  for (const a of p)
-    for (const b of p) size = Math.max(size, Math.hypot(...a.map((v, d) => v - b[d])));
-  return size || 1;
 }
 
 /** Signed κ at t, or null where the speed is zero. */
@@ -146,31 +143,27 @@ export function derivePlane(p: readonly Point[], t: number): PlaneModel {
     speed[2 * i + 1] = norm(bezierTangent(p, u));
   }
   // A robust scale for κ: a cusp sends |κ| to infinity, so take the 90th percentile.
-  const magnitudes = values.filter((v): v is number => v !== null).map(Math.abs);
-  const sorted = [...magnitudes].sort((x, y) => x - y);
-  const kappaCap = Math.max(2 * (sorted[Math.floor(0.9 * (sorted.length - 1))] ?? 0), 1e-9 / size);
-  const kappa: Float64Array[] = [];
-  let piece: number[] = [];
-  values.forEach((v, i) => {
-    if (v === null || Math.abs(v) > 4 * kappaCap) {
-      if (piece.length >= 4) kappa.push(Float64Array.from(piece));
-      piece = [];
-      return;
-    }
-    piece.push(i / PLOT_SAMPLES, v);
-  });
-  if (piece.length >= 4) kappa.push(Float64Array.from(piece));
+  const kappaCap = Math.max(robustCap(values), 1e-9 / size);
+  // Runs of κ(t) for the plot, cut where it is undefined or leaves the plot (±1.25 cap).
+  const kappa = runs(values.map((v) => (v !== null && Math.abs(v) <= 1.25 * kappaCap ? v : null)));
 
   const combScale = (0.3 * size) / kappaCap;
-  const comb: [Point, Point][] = [];
+  // Teeth too long to draw (near a cusp |κ| → ∞) are left out, and the line
+  // through the tips is broken there.
+  const comb: [Point, Point][][] = [];
+  let run: [Point, Point][] = [];
   for (let i = 0; i <= COMB_TEETH; i++) {
     const u = i / COMB_TEETH;
     const k = curvatureOrNull(p, u);
-    if (k === null) continue;
+    if (k === null || Math.abs(k) > 1.25 * kappaCap) {
+      if (run.length) comb.push(run);
+      run = [];
+      continue;
+    }
     const frame = bezierFrenetFrame(p, u);
-    const length = Math.max(-0.6 * size, Math.min(0.6 * size, combScale * k));
-    comb.push([frame.point, frame.point.map((v, d) => v + length * frame.normal[d])]);
+    run.push([frame.point, frame.point.map((v, d) => v - combScale * k * frame.normal[d])]);
   }
+  if (run.length) comb.push(run);
   const cusps = cuspParameters(p);
   // At a cusp the curve turns back with κ → ±∞ on both sides: it is not an inflection.
   const inflections = cubicInflections(p).filter((u) => cusps.every((c) => Math.abs(c - u) > 1e-9));

@@ -40,7 +40,12 @@ function plotBounds(m: CurvatureModel): Bounds {
       low = Math.min(low, run[i]);
       high = Math.max(high, run[i]);
     }
-  const cap = part === 'plane' && step >= 4 ? 1.25 * m.plane!.kappaCap : Infinity;
+  const cap =
+    part === 'plane' && step >= 4
+      ? 1.25 * m.plane!.kappaCap
+      : part === 'space'
+        ? 1.25 * m.space.cap
+        : Infinity;
   low = Math.max(low, -cap);
   high = Math.min(high, cap);
   const pad = 0.08 * (high - low || 1);
@@ -61,7 +66,7 @@ export const plotFigure: FigureSpec<CurvatureState, CurvatureModel> = {
       painter.plotAxes(
         bounds,
         0.1,
-        niceStep((bounds.maxY - bounds.minY) / 4),
+        yStep(painter, bounds),
         't',
         shown.map((s) => s.name).join(', '),
       );
@@ -160,4 +165,10 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
         width: theme.sizes.thin,
       });
     }
+}
+
+/** A y step whose tick numbers have room: about one per three text heights. */
+function yStep(painter: Painter, bounds: Bounds): number {
+  const fits = Math.max(1, Math.floor(painter.view.height / (3 * painter.theme.sizes.small)));
+  return niceStep((bounds.maxY - bounds.minY) / Math.min(4, fits));
 }

@@ -14,7 +14,7 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   id: 'space',
   title: 'The curve in space with the Frenet frame T, N, B and the osculating plane',
   kind: 'space',
-  camera: { yaw: -60, pitch: 25, perspective: false },
+  camera: { yaw: -55, pitch: 35, perspective: false },
   bounds: (m) =>
     boundsOf(
       m.state.part === 'space' && m.state.curve === 'bezier'
@@ -38,14 +38,14 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     const at = space.at;
     const unit = arrowUnit(space.size);
     if (part !== 'arc' && shows(4, 4) && at.normal && at.tangent) {
-      const h = 0.8 * unit;
+      const h = 1.2 * unit;
       const corner = (a: number, b: number) =>
         at.point.map((v, d) => v + h * (a * at.tangent![d] + b * at.normal![d]));
       scene.quad(
         [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)],
         painter.color(COLOURS.normal),
         {
-          alpha: 0.25,
+          alpha: 0.35,
         },
       );
       scene.polyline(space.circle, {

@@ -14,12 +14,14 @@ import {
   helixPoint,
   norm,
 } from '../../math';
-import { type PlaneModel, sizeOf } from './planeModel';
+import { robustCap, runs, sizeOf } from './measure';
+import type { PlaneModel } from './planeModel';
 import { type CurvatureState, HELIX_TURNS } from './state';
 
 const SAMPLES = 240;
 /** Frames drawn along the curve (step 5). */
 const FRAMES_ALONG = 9;
+const FLIP_WINDOW = 0.15;
 
 /** The Frenet frame of the space curve at one t; normal and binormal null where κ = 0. */
 export interface SpaceAt {
@@ -47,6 +49,8 @@ export interface SpaceModel {
   tau: Float64Array[];
   /** Parameters where κ has a near-zero minimum and B turns over: the frame flips. */
   flips: number[];
+  /** |κ|, |τ| above which the plot clips (τ is huge where κ nearly vanishes). */
+  cap: number;
   /** The closed forms (helix only). */
   closed: { curvature: number; torsion: number } | null;
 }
@@ -130,21 +134,7 @@ function osculating(at: SpaceAt): Point[] {
   return circle;
 }
 
-/** Splits sampled values into runs where they are defined. */
-function pieces(values: readonly (number | null)[]): Float64Array[] {
-  const out: Float64Array[] = [];
-  let run: number[] = [];
-  values.forEach((v, i) => {
-    if (v === null) {
-      if (run.length >= 4) out.push(Float64Array.from(run));
-      run = [];
-    } else run.push(i / (values.length - 1), v);
-  });
-  if (run.length >= 4) out.push(Float64Array.from(run));
-  return out;
-}
-
-/** Local minima of κ below a tenth of its largest value where B turns by more than 90°. */
+/** Local minima of κ below a tenth of its largest value where B turns by more than 90° within Δt = ±0.15. */
 function findFlips(state: CurvatureState, kappa: readonly (number | null)[]): number[] {
   if (state.curve === 'helix') return [];
   const largest = Math.max(0, ...kappa.map((k) => k ?? 0));
@@ -154,8 +144,8 @@ function findFlips(state: CurvatureState, kappa: readonly (number | null)[]): nu
     if (here === null || before === null || after === null) continue;
     if (!(here <= before && here < after && here < 0.1 * largest)) continue;
     const t = i / (kappa.length - 1);
-    const a = bezierFrame(state.q, Math.max(0, t - 0.04)).binormal;
-    const b = bezierFrame(state.q, Math.min(1, t + 0.04)).binormal;
+    const a = bezierFrame(state.q, Math.max(0, t - FLIP_WINDOW)).binormal;
+    const b = bezierFrame(state.q, Math.min(1, t + FLIP_WINDOW)).binormal;
     if (a && b && dot(a, b) < 0) flips.push(t);
   }
   return flips;
@@ -176,6 +166,7 @@ export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): Sp
       kappa: [],
       tau: [],
       flips: [],
+      cap: 1,
       closed: null,
     };
   }
@@ -196,6 +187,9 @@ export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): Sp
       tau.push(f.torsion);
     }
   }
+  // The plot shows ±1.25 cap: runs are cut where a value leaves it (τ near κ = 0).
+  const cap = robustCap([...kappa, ...tau]);
+  const inside = (v: number | null) => (v !== null && Math.abs(v) <= 1.25 * cap ? v : null);
   const at = spaceFrame(state, state.t);
   const along = Array.from({ length: FRAMES_ALONG }, (_, k) =>
     spaceFrame(state, k / (FRAMES_ALONG - 1)),
@@ -210,9 +204,10 @@ export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): Sp
     at,
     circle: osculating(at),
     along,
-    kappa: pieces(kappa),
-    tau: pieces(tau),
+    kappa: runs(kappa.map(inside)),
+    tau: runs(tau.map(inside)),
     flips: findFlips(state, kappa),
+    cap,
     closed,
   };
 }

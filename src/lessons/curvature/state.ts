@@ -35,12 +35,15 @@ export const LECTURE_CUBIC: Point[] = [
   [4, 0],
 ];
 
-/** A space cubic whose top view is an S: κ nearly vanishes mid-way and the frame flips there. */
+/**
+ * A space cubic whose top view is an S with a small lift: κ falls to 7% of its
+ * largest value mid-way, and B swings round by about 150° there.
+ */
 export const TWISTED_CUBIC: Point[] = [
   [0, 0, 0],
-  [1.5, 2.5, 0.6],
-  [2.5, -2.5, 0.9],
-  [4, 0, 1.5],
+  [1.5, 2.5, 0.5],
+  [2.5, -2.5, 0.5],
+  [4, 0, 0],
 ];
 
 export const schema: Schema<CurvatureState> = {
@@ -63,7 +66,7 @@ export const STEPS: Record<Part, readonly string[]> = {
     'The unit tangent T = P′/|P′|',
     'The unit normal N: T turned a quarter turn anticlockwise',
     'The curvature κ and the osculating circle of radius 1/|κ|',
-    'The curvature comb: κ·N drawn along the whole curve',
+    'The curvature comb: teeth as long as |κ|, on the outside of every bend',
     'Inflections (κ = 0) and cusps (speed 0): there N is undefined',
   ],
   space: [
@@ -73,7 +76,7 @@ export const STEPS: Record<Part, readonly string[]> = {
     'The binormal B = T × N; the torsion τ says how fast B turns',
     'The osculating plane spanned by T and N, with the osculating circle',
     'The frame carried along the curve',
-    'Where κ → 0 the frame flips: N and B turn half a turn',
+    'Where κ → 0 the frame flips: N and B swing round fast (at κ = 0 they would jump)',
   ],
   arc: [
     'The curve and its parameter t',
@@ -88,4 +91,4 @@ export const STEPS: Record<Part, readonly string[]> = {
 export const stepCount = (state: CurvatureState) => STEPS[state.part].length - 1;
 
 export const describeStep = (state: CurvatureState, k: number) =>
-  `Step ${k} of ${stepCount(state)}: ${STEPS[state.part][Math.min(k, stepCount(state))]}`;
+  STEPS[state.part][Math.min(k, stepCount(state))];
