@@ -48,7 +48,7 @@ export default defineLesson<CurvatureState, CurvatureModel>({
   schema,
   derive,
   figures: [curveFigure, plotFigure, spaceFigure],
-  layout: { row: [{ column: ['curve', 'plot'], weights: [3, 2] }, 'space'], weights: [5, 4] },
+  layout: { column: [{ row: ['curve', 'space'] }, 'plot'], weights: [3, 2] },
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
   steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [

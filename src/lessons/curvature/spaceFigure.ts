@@ -15,12 +15,9 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   title: 'The curve in space with the Frenet frame T, N, B and the osculating plane',
   kind: 'space',
   camera: { yaw: -55, pitch: 35, perspective: false },
-  bounds: (m) =>
-    boundsOf(
-      m.state.part === 'space' && m.state.curve === 'bezier'
-        ? [...m.space.curve, ...m.state.q]
-        : m.space.curve,
-    ),
+  // The curve alone: the camera fits a sphere round it, which leaves room for
+  // the control points near it, and a tighter fit shows the frame larger.
+  bounds: (m) => boundsOf(m.space.curve),
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     const theme = painter.theme;
