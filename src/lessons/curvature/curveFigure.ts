@@ -1,0 +1,205 @@
+import type { FigureSpec, Handle } from '../../app/lesson';
+import type { Point } from '../../math';
+import type { Painter } from '../../render/painter';
+import { boundsOf } from '../../render/projection';
+import { COLOURS, arrowUnit, show, vectorArrow } from './marks';
+import type { CurvatureModel } from './model';
+import type { PlaneModel } from './planeModel';
+import type { CurvatureState } from './state';
+
+/** The plane cubic with its frame, circle and comb; or the top view of the space cubic; or the arc length ticks. */
+export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+  id: 'curve',
+  title: 'The curve with P(t), its tangent, normal, osculating circle and curvature comb',
+  kind: 'geometry',
+  bounds(m) {
+    if (m.state.part === 'space') {
+      const polygon = m.state.curve === 'bezier' ? m.state.q : [];
+      return boundsOf([...m.space.curve, ...polygon].map((p) => [p[0], p[1]]));
+    }
+    const plane = m.plane!;
+    const circle = plane.at.circle;
+    // The osculating circle is in view when it is not much larger than the curve.
+    const round =
+      m.state.part === 'plane' && circle && circle.radius < plane.size
+        ? [0, 1].flatMap((d) =>
+            [-1, 1].map((k) => circle.centre.map((v, e) => v + (e === d ? k * circle.radius : 0))),
+          )
+        : [];
+    const box = boundsOf([...m.state.p, ...plane.comb.flat().map((tooth) => tooth[1]), ...round]);
+    // Room at the top for the note that says why N or T is undefined.
+    return plane.at.why ? { ...box, maxY: box.maxY + 0.35 * (box.maxY - box.minY) } : box;
+  },
+  draw(painter, m, info) {
+    const labels = !info.thumbnail;
+    if (m.state.part === 'space') return drawTopView(painter, m, labels);
+    const plane = m.plane!;
+    const theme = painter.theme;
+    painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    if (m.state.part === 'plane' && m.state.step >= 5) drawComb(painter, plane);
+    painter.polylineFlat(plane.curve, {
+      color: theme.curve,
+      width: theme.sizes.curve,
+      role: 'curve',
+    });
+    if (m.state.part === 'arc') drawTicks(painter, m, labels);
+    else drawFrame(painter, m, plane, labels);
+  },
+  handles(m) {
+    if (m.state.part !== 'space')
+      return m.state.p.map((p, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: p }));
+    if (m.state.curve !== 'bezier') return [];
+    return m.state.q.map((q, i): Handle => ({
+      id: `q${i}`,
+      label: `Q_{${i}}`,
+      position: [q[0], q[1]],
+      shape: 'square',
+    }));
+  },
+  moveHandle(state, id, to) {
+    const i = Number(id.slice(1));
+    if (id.startsWith('q'))
+      return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], q[2]] : q)) };
+    return { ...state, p: state.p.map((p, k) => (k === i ? [to[0], to[1]] : p)) };
+  },
+  drawOver(painter, m, info) {
+    // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from step 3.
+    const at = m.plane?.at;
+    if (
+      m.state.part === 'plane' &&
+      at?.why &&
+      !info.thumbnail &&
+      m.state.step >= (at.tangent ? 3 : 2)
+    )
+      painter.note(at.why);
+  },
+  trail: (m) => (m.state.part === 'space' ? m.space.at.point.slice(0, 2) : m.plane!.at.point),
+  weight: 3,
+};
+
+function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, labels: boolean): void {
+  const theme = painter.theme;
+  const { step } = m.state;
+  const at = plane.at;
+  const unit = arrowUnit(plane.size);
+  if (step >= 6) {
+    for (const mark of plane.marks)
+      markPoint(
+        painter,
+        mark.point,
+        mark.kind === 'cusp' ? 'cusp: P′ = 0' : 'inflection: κ = 0',
+        labels,
+      );
+  }
+  if (step >= 4 && at.circle) {
+    const colour = painter.color(COLOURS.curvature);
+    painter.circle(at.circle.centre, at.circle.radius, { color: colour, width: theme.sizes.line });
+    painter.segment(at.point, at.circle.centre, {
+      color: colour,
+      width: theme.sizes.thin,
+      dash: [5, 4],
+    });
+    painter.dot(at.circle.centre, colour, theme.sizes.point * 0.8);
+    if (labels)
+      painter.label(`R = 1/|κ| = ${show(at.circle.radius)}`, at.circle.centre, {
+        color: colour,
+        halo: true,
+        dx: 8,
+        dy: 18,
+      });
+  }
+  if (step >= 1 && at.speed > 0)
+    vectorArrow(painter, at.point, at.velocity, 1 / 3, '⅓P′(t)', theme.accent, labels);
+  if (step >= 2 && at.tangent)
+    vectorArrow(painter, at.point, at.tangent, unit, 'T', painter.color(COLOURS.tangent), labels);
+  if (step >= 3 && at.normal)
+    vectorArrow(painter, at.point, at.normal, unit, 'N', painter.color(COLOURS.normal), labels);
+  painter.dot(at.point, theme.accent, theme.sizes.point * 1.3);
+  if (labels) painter.label('P(t)', at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
+}
+
+function drawComb(painter: Painter, plane: PlaneModel): void {
+  const colour = painter.color(COLOURS.curvature);
+  const width = painter.theme.sizes.thin;
+  for (const run of plane.comb) {
+    for (const [base, tip] of run) painter.segment(base, tip, { color: colour, width, alpha: 0.7 });
+    painter.polyline(
+      run.map((tooth) => tooth[1]),
+      { color: colour, width: painter.theme.sizes.line },
+    );
+  }
+}
+
+function markPoint(painter: Painter, at: Point, text: string, labels: boolean): void {
+  painter.ring(at, painter.theme.sizes.point * 2, {
+    color: painter.theme.ink,
+    width: painter.theme.sizes.line,
+  });
+  if (labels) painter.label(text, at, { halo: true, dx: 12, dy: -12, bold: true });
+}
+
+function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
+  const theme = painter.theme;
+  const arc = m.arc!;
+  const { step } = m.state;
+  const length = 0.05 * m.plane!.size;
+  const tick = (
+    points: readonly Point[],
+    directions: readonly Point[],
+    colour: string,
+    side: number,
+    alpha: number,
+  ) =>
+    points.forEach((q, i) => {
+      const v = directions[i];
+      const across = [-side * v[1], side * v[0]];
+      painter.segment(q, [q[0] + length * across[0], q[1] + length * across[1]], {
+        color: colour,
+        width: theme.sizes.line * 1.3,
+        alpha,
+      });
+      painter.dot(q, colour, theme.sizes.point * 0.7);
+    });
+  if (step >= 1) tick(arc.byT, arc.byTDirection, painter.color(0), 1, step === 4 ? 0.3 : 1);
+  if (step >= 4) tick(arc.byS, arc.bySDirection, painter.color(1), -1, 1);
+  painter.dot(m.plane!.at.point, theme.accent, theme.sizes.point * 1.3);
+  if (!labels) return;
+  painter.label('P(t)', m.plane!.at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
+  let y = theme.sizes.label * 1.4;
+  if (step >= 1) {
+    painter.screenLabel(`■ ${m.state.n} equal steps of t`, 12, y, {
+      color: painter.color(0),
+      halo: true,
+      bold: true,
+    });
+    y += theme.sizes.label * 1.4;
+  }
+  if (step >= 4)
+    painter.screenLabel(`■ ${m.state.n} equal steps of arc length s`, 12, y, {
+      color: painter.color(1),
+      halo: true,
+      bold: true,
+    });
+}
+
+function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void {
+  const theme = painter.theme;
+  const flat = (points: readonly Point[]) => points.map((p) => [p[0], p[1]]);
+  if (m.state.curve === 'bezier')
+    painter.polyline(flat(m.state.q), {
+      color: theme.polygon,
+      width: theme.sizes.thin,
+      dash: [6, 5],
+    });
+  painter.polyline(flat(m.space.curve), {
+    color: theme.curve,
+    width: theme.sizes.curve,
+    role: 'curve',
+  });
+  painter.dot(m.space.at.point.slice(0, 2), theme.accent, theme.sizes.point * 1.3);
+  if (labels)
+    painter.screenLabel('Top view (x, y): z is seen in space →', 12, theme.sizes.label * 1.4, {
+      color: theme.muted,
+      halo: true,
+    });
+}

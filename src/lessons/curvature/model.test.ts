@@ -1,0 +1,109 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import lesson from './lesson';
+import { derive } from './model';
+import { cuspParameters } from './planeModel';
+import { type CurvatureState, schema } from './state';
+
+const defaults = defaultsOf(schema) as CurvatureState;
+const scene = (id: string) => lesson.scenes!.find((s) => s.id === id)!.apply(defaults);
+
+describe('the plane cubic', () => {
+  it('has the frame, κ and circle derived by hand at t = 1/2 of the lecture cubic', () => {
+    // P(1/2) = (2, 1.5); P′ = 3(¼(1,2) + ½(2,0) + ¼(1,−2)) = (4.5, 0);
+    // P″ = 6(½(1,−2) + ½(−1,−2)) = (0, −12); κ = 4.5·(−12)/4.5³ = −16/27, R = 27/16,
+    // the curve turns clockwise, so N = (0, −1) and the centre is (2, 1.5 − 27/16).
+    const at = derive({ ...defaults, t: 0.5 }).plane!.at;
+    expect(at.point).toEqual([2, 1.5]);
+    expect(at.velocity).toEqual([4.5, 0]);
+    expect(at.acceleration).toEqual([0, -12]);
+    expect(at.curvature).toBeCloseTo(-16 / 27, 14);
+    expect(at.tangent).toEqual([1, 0]);
+    expect(at.normal!.map((v) => v + 0)).toEqual([0, -1]);
+    expect(at.circle!.radius).toBeCloseTo(27 / 16, 14);
+    expect(at.circle!.centre[1]).toBeCloseTo(1.5 - 27 / 16, 14);
+    expect(at.why).toBeNull();
+  });
+
+  it('draws the comb on the outside of the bend', () => {
+    const m = derive({ ...defaults, t: 0.5 }).plane!;
+    const middle = m.comb.flat().find(([base]) => Math.abs(base[0] - 2) < 1e-12)!;
+    // The lecture cubic bends down (centre below), so the tooth at its top points up.
+    expect(middle[1][1]).toBeGreaterThan(middle[0][1]);
+  });
+
+  it('says why N is undefined at the inflection of the S curve', () => {
+    const state = scene('inflection');
+    expect(state.t).toBeCloseTo(0.5, 12);
+    const m = derive(state).plane!;
+    expect(m.at.normal).toBeNull();
+    expect(m.at.tangent).not.toBeNull();
+    expect(m.at.why).toMatch(/Inflection: κ = 0/);
+    expect(m.inflections).toHaveLength(1);
+  });
+
+  it('finds the cusp where P2 − P1 = P0 − P3, and says why T is undefined there', () => {
+    const state = scene('cusp');
+    expect(cuspParameters(state.p)).toEqual([0.5]);
+    expect(cuspParameters(defaults.p)).toEqual([]);
+    const m = derive(state).plane!;
+    expect(m.at.speed).toBe(0);
+    expect(m.at.tangent).toBeNull();
+    expect(m.at.why).toMatch(/Cusp: P′\(t\) = 0/);
+    // The cusp is not an inflection, and no comb tooth is drawn through it.
+    expect(m.inflections).toEqual([]);
+    expect(m.comb.length).toBe(2);
+  });
+});
+
+describe('the space curve', () => {
+  it('gives the helix κ = a/(a² + b²) and τ = b/(a² + b²) from the general formulas', () => {
+    // a = 1, b = 1/4: a² + b² = 17/16, κ = 16/17, τ = 4/17.
+    const m = derive({ ...scene('helix'), t: 0.37 }).space;
+    expect(Math.abs(m.at.curvature! - 16 / 17)).toBeLessThan(1e-12);
+    expect(Math.abs(m.at.torsion! - 4 / 17)).toBeLessThan(1e-12);
+    expect(m.closed).toEqual({ curvature: 16 / 17, torsion: 4 / 17 });
+    expect(m.flips).toEqual([]);
+  });
+
+  it('finds one flip of the twisted cubic near its middle, where κ is smallest', () => {
+    const m = derive(scene('twisted')).space;
+    expect(m.flips).toHaveLength(1);
+    expect(m.flips[0]).toBeCloseTo(0.5, 2);
+  });
+
+  it('lifts the plane curve into z = 0 with B = ±e_z', () => {
+    const m = derive({ ...defaults, t: 0.5 }).space;
+    // κ < 0 (clockwise): T = (1, 0, 0), N = (0, −1, 0), B = T × N = (0, 0, −1).
+    expect(m.at.binormal!.map((v) => v + 0)).toEqual([0, 0, -1]);
+    expect(m.at.torsion).toBe(0);
+  });
+});
+
+describe('arc length', () => {
+  it('on a line with doubled ends s(t) = 9t² − 6t³, so equal s are not equal t', () => {
+    const p = [
+      [0, 0],
+      [0, 0],
+      [3, 0],
+      [3, 0],
+    ];
+    const arc = derive({ ...scene('arc'), p, n: 4 }).arc!;
+    expect(arc.length).toBeCloseTo(3, 12);
+    // s(1/4) = 9/16 − 6/64 = 0.46875; s(1/2) = 1.5.
+    expect(arc.table[1].s).toBeCloseTo(0.46875, 12);
+    expect(arc.table[2].s).toBeCloseTo(1.5, 12);
+    // s = 1.5 at t = 1/2 by symmetry; s = 0.75 at t with 9t² − 6t³ = 0.75.
+    expect(arc.equal[2].t).toBeCloseTo(0.5, 12);
+    const t1 = arc.equal[1].t;
+    expect(9 * t1 ** 2 - 6 * t1 ** 3).toBeCloseTo(0.75, 10);
+  });
+
+  it('every scene opens at a step the clicker can walk from', () => {
+    for (const s of lesson.scenes!) {
+      const state = s.apply(defaults);
+      expect(lesson.steps!.count(state)).toBeGreaterThanOrEqual(5);
+      expect(lesson.steps!.describe(state, 0)).not.toBe('');
+    }
+  });
+});

@@ -1,0 +1,126 @@
+import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
+import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
+import { radioGroup } from '../../app/panelControls';
+import { formula } from '../../render/formula';
+import type { CurvatureModel } from './model';
+import { type CurvatureState, type Part, type SpaceCurve, STEPS, stepCount } from './state';
+import { arcRows, valueRows } from './values';
+
+const INTRO: Record<Part, string> = {
+  plane:
+    'Drag the control points P0 … P3 and move t. The velocity P′(t) has the curve’s direction; divided by the speed |P′| it is the unit tangent T. The normal N is perpendicular to T, on the side the curve turns to, and the curvature κ says how fast T turns per unit of length: the osculating circle, of radius 1/|κ|, bends exactly as the curve does at P(t).',
+  space:
+    'In space T turns towards the principal normal N, and the binormal B = T × N completes a right-handed frame. The curvature κ measures how fast T turns, the torsion τ how fast the osculating plane (spanned by T and N) turns about T. Drag the control points Q0 … Q3 in space (Shift: along one axis) or in the top view; orbit the space figure by dragging empty space.',
+  arc: 'The parameter t is not length: equal steps of t cover short stretches where the curve is slow and long ones where it is fast. The arc length s(t) adds up the speed; a table of s at equal steps of t, read backwards, gives the parameters of equal steps of length.',
+};
+
+const FORMULAS: Record<Part, string> = {
+  plane:
+    "\\kappa = \\frac{x'y'' - y'x''}{(x'^2 + y'^2)^{3/2}},\\qquad R = \\frac{1}{|\\kappa|},\\qquad \\text{centre} = P + \\frac{1}{\\kappa}\\,JT",
+  space:
+    "\\kappa = \\frac{|P' \\times P''|}{|P'|^3},\\quad \\tau = \\frac{(P' \\times P'') \\cdot P'''}{|P' \\times P''|^2},\\quad B = T \\times N",
+  arc: "s(t) = \\int_0^t |P'(u)|\\,du,\\qquad t_k = s^{-1}\\!\\left(\\tfrac{k}{n} L\\right)",
+};
+
+export function curvaturePanel(
+  api: LessonApi<CurvatureState, CurvatureModel>,
+): LessonPanel<CurvatureState, CurvatureModel> {
+  const intro = h('p', {});
+  const lectureFormula = h('div', {});
+  const stepTitle = h('h2', {});
+  const why = h('p', { class: 'note', role: 'status' });
+  const body = h('tbody', {});
+  const rows = new LiveRows(body);
+  const arcBody = h('tbody', {});
+  const arcTable = new LiveRows(arcBody);
+  const values = dataTable('Values at t', ['Quantity', 'Value'], body);
+  const table = h(
+    'div',
+    {},
+    h('h2', {}, 'The arc length table'),
+    dataTable('Arc length table', ['i', 'tᵢ = i/n', 's(tᵢ)', 'sᵢ = iL/n', 't(sᵢ)'], arcBody),
+  );
+  const curveChoice = radioGroup<CurvatureState, SpaceCurve>(api, {
+    name: 'space-curve',
+    choices: [
+      { value: 'helix', label: 'Helix (a cos θ, a sin θ, bθ)' },
+      { value: 'bezier', label: 'Cubic Bézier with 3D control points' },
+    ],
+    get: (s) => s.curve,
+    set: (s, curve) => ({ ...s, curve }),
+  });
+  const numberInput = (
+    label: string,
+    key: 'a' | 'b' | 'n',
+    min: number,
+    max: number,
+    step: number,
+  ) => {
+    const input = h('input', { type: 'number', min, max, step, 'aria-label': label });
+    input.addEventListener('change', () => {
+      const value = Number(input.value);
+      // The link's field checks the range too; here an out-of-range entry is simply not taken.
+      if (input.value !== '' && value >= min && value <= max)
+        api.set({ ...api.get(), [key]: value });
+    });
+    return { element: h('label', { class: 'toggle' }, `${label} `, input), input };
+  };
+  const a = numberInput('Helix radius a', 'a', 0.1, 5, 0.05);
+  const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
+  const n = numberInput('Equal steps n', 'n', 2, 24, 1);
+  const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
+  const helixControls = h('div', {}, a.element, b.element);
+
+  const element = h(
+    'div',
+    { class: 'lesson-text' },
+    intro,
+    lectureFormula,
+    h(
+      'p',
+      { class: 'note' },
+      'The parameter is t (slider and Play below the figure; or drag the cursor in the plot).',
+    ),
+    spaceControls,
+    helixControls,
+    n.element,
+    stepTitle,
+    why,
+    values,
+    table,
+  );
+  let shownPart: Part | null = null;
+
+  return {
+    element,
+    update(m, state) {
+      if (state.part !== shownPart) {
+        shownPart = state.part;
+        setText(intro, INTRO[state.part]);
+        setChildren(lectureFormula, formula(FORMULAS[state.part], true));
+      }
+      setHidden(spaceControls, state.part !== 'space');
+      setHidden(helixControls, state.part !== 'space' || state.curve !== 'helix');
+      setHidden(n.element, state.part !== 'arc');
+      curveChoice.update(state);
+      for (const [control, value] of [
+        [a, state.a],
+        [b, state.b],
+        [n, state.n],
+      ] as const) {
+        if (document.activeElement !== control.input) control.input.value = String(value);
+      }
+      const step = Math.min(state.step, stepCount(state));
+      setText(stepTitle, `Step ${step} of ${stepCount(state)}: ${STEPS[state.part][step]}`);
+      const reason =
+        state.part === 'space' ? m.space.at.why : state.part === 'plane' ? m.plane!.at.why : null;
+      setText(why, reason ?? '');
+      setHidden(why, !reason);
+      setHidden(values, state.part === 'arc');
+      setHidden(table, state.part !== 'arc');
+      if (state.part === 'arc') arcTable.set(arcRows(m));
+      else rows.set(valueRows(m, state, api.theme().palette));
+    },
+  };
+}

@@ -1,0 +1,174 @@
+import type { FigureSpec } from '../../app/lesson';
+import type { Painter } from '../../render/painter';
+import { type Bounds, niceStep } from '../../render/projection';
+import { COLOURS, show } from './marks';
+import type { CurvatureModel } from './model';
+import type { CurvatureState } from './state';
+
+const clampT = (t: number) => Math.min(1, Math.max(0, Number(t.toFixed(4))));
+
+/** What the plot shows now: κ(t) (or the speed first), κ and τ in space, s(t) for arc length. */
+function series(m: CurvatureModel): { name: string; runs: Float64Array[]; colour: number }[] {
+  const { part, step } = m.state;
+  if (part === 'plane') {
+    if (step >= 4) return [{ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature }];
+    return step >= 1 ? [{ name: '|P′|', runs: [m.plane!.speed], colour: 4 }] : [];
+  }
+  if (part === 'space') {
+    const out = [];
+    if (step >= 2) out.push({ name: 'κ', runs: m.space.kappa, colour: COLOURS.curvature });
+    if (step >= 3) out.push({ name: 'τ', runs: m.space.tau, colour: COLOURS.torsion });
+    return out;
+  }
+  return step >= 2 ? [{ name: 's', runs: [m.arc!.plot], colour: 3 }] : [];
+}
+
+function plotBounds(m: CurvatureModel): Bounds {
+  let [low, high] = [0, 0];
+  const { part, step } = m.state;
+  // The axes are set by everything the part will show, so stepping does not rescale them.
+  const runs =
+    part === 'plane'
+      ? step >= 4
+        ? m.plane!.kappa
+        : [m.plane!.speed]
+      : part === 'space'
+        ? [...m.space.kappa, ...m.space.tau]
+        : [m.arc!.plot];
+  for (const run of runs)
+    for (let i = 1; i < run.length; i += 2) {
+      low = Math.min(low, run[i]);
+      high = Math.max(high, run[i]);
+    }
+  const cap =
+    part === 'plane' && step >= 4
+      ? 1.25 * m.plane!.kappaCap
+      : part === 'space'
+        ? 1.25 * m.space.cap
+        : Infinity;
+  low = Math.max(low, -cap);
+  high = Math.min(high, cap);
+  const pad = 0.08 * (high - low || 1);
+  return { minX: 0, maxX: 1, minY: low - (low < 0 ? pad : 0), maxY: high + pad };
+}
+
+export const plotFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+  id: 'plot',
+  title: 'κ(t), τ(t) or s(t) plotted against t, with a cursor at t',
+  kind: 'plot',
+  bounds: plotBounds,
+  draw(painter, m, info) {
+    const theme = painter.theme;
+    const bounds = plotBounds(m);
+    const shown = series(m);
+    const t = m.state.t;
+    if (!info.thumbnail)
+      painter.plotAxes(
+        bounds,
+        0.1,
+        yStep(painter, bounds),
+        't',
+        shown.map((s) => s.name).join(', '),
+      );
+    drawMarks(painter, m, bounds, info.thumbnail);
+    for (const s of shown)
+      for (const run of s.runs)
+        painter.polylineFlat(run, { color: painter.color(s.colour), width: theme.sizes.curve });
+    painter.segment([t, bounds.minY], [t, bounds.maxY], {
+      color: theme.accent,
+      width: theme.sizes.line,
+    });
+    const entries = cursorValues(m).filter((e) => shown.some((s) => s.name === e.name));
+    for (const e of entries)
+      if (e.y >= bounds.minY && e.y <= bounds.maxY) painter.dot([t, e.y], painter.color(e.colour));
+    if (!info.thumbnail)
+      painter.cursorLabels(
+        t,
+        entries
+          .filter((e) => e.y >= bounds.minY && e.y <= bounds.maxY)
+          .map((e) => ({
+            y: e.y,
+            text: `${e.name} = ${show(e.y)}`,
+            color: painter.color(e.colour),
+          })),
+      );
+  },
+  handles: (m) => [
+    {
+      id: 'cursor',
+      label: 't',
+      position: [m.state.t, plotBounds(m).minY],
+      shape: 'diamond',
+      showLabel: false,
+    },
+  ],
+  moveHandle: (state, _id, to) => ({ ...state, t: clampT(to[0]) }),
+  pickAt: (m, at, tolerance) => (Math.abs(at[0] - m.state.t) <= tolerance ? 'cursor' : null),
+  weight: 2,
+};
+
+function cursorValues(m: CurvatureModel): { name: string; y: number; colour: number }[] {
+  const { part } = m.state;
+  if (part === 'plane') {
+    const at = m.plane!.at;
+    const out = [{ name: '|P′|', y: at.speed, colour: 4 }];
+    if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
+    return out;
+  }
+  if (part === 'space') {
+    const at = m.space.at;
+    const out = [];
+    if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
+    if (at.torsion !== null) out.push({ name: 'τ', y: at.torsion, colour: COLOURS.torsion });
+    return out;
+  }
+  return [{ name: 's', y: m.arc!.sAtT, colour: 3 }];
+}
+
+/** Inflections and cusps (plane), frame flips (space), the table and its inverse (arc length). */
+function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
+  const theme = painter.theme;
+  const { part, step } = m.state;
+  const vertical = (t: number, text: string) => {
+    painter.segment([t, bounds.minY], [t, bounds.maxY], {
+      color: theme.muted,
+      width: theme.sizes.thin,
+      dash: [4, 4],
+    });
+    if (!thumbnail)
+      painter.label(text, [t, bounds.maxY], {
+        color: theme.muted,
+        halo: true,
+        dx: 4,
+        dy: theme.sizes.small,
+      });
+  };
+  if (part === 'plane' && step >= 6) {
+    for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
+    for (const t of m.plane!.cusps) vertical(t, 'cusp');
+  }
+  if (part === 'space' && step >= 6) for (const t of m.space.flips) vertical(t, 'flip');
+  if (part !== 'arc') return;
+  const arc = m.arc!;
+  if (step >= 3)
+    for (const row of arc.table) painter.dot([row.t, row.s], painter.color(0), theme.sizes.point);
+  if (step >= 4)
+    for (const row of arc.equal) {
+      const colour = painter.color(1);
+      painter.segment([0, row.s], [row.t, row.s], {
+        color: colour,
+        width: theme.sizes.thin,
+        dash: [5, 4],
+      });
+      painter.segment([row.t, row.s], [row.t, bounds.minY], {
+        color: colour,
+        width: theme.sizes.thin,
+      });
+    }
+}
+
+/** A y step whose tick numbers have room: about one per three text heights. */
+function yStep(painter: Painter, bounds: Bounds): number {
+  const fits = Math.max(1, Math.floor(painter.view.height / (3 * painter.theme.sizes.small)));
+  return niceStep((bounds.maxY - bounds.minY) / Math.min(4, fits));
+}

@@ -1,0 +1,188 @@
+import type { FigureSpec, Handle } from '../../app/lesson';
+import type { Point } from '../../math';
+import { OrbitCamera } from '../../render/orbitCamera';
+import type { Painter } from '../../render/painter';
+import { boundsOf } from '../../render/projection';
+import { SpaceScene } from '../../render/space';
+import { COLOURS, arrowUnit, vectorArrow } from './marks';
+import type { CurvatureModel } from './model';
+import type { SpaceAt } from './spaceModel';
+import type { CurvatureState } from './state';
+
+/** The curve in space with its Frenet frame T, N, B and the osculating plane. */
+export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+  id: 'space',
+  title: 'The curve in space with the Frenet frame T, N, B and the osculating plane',
+  kind: 'space',
+  camera: { yaw: -55, pitch: 35, perspective: false },
+  // The curve alone: the camera fits a sphere round it, which leaves room for
+  // the control points near it, and a tighter fit shows the frame larger.
+  bounds: (m) => boundsOf(m.space.curve),
+  draw(painter, m, info) {
+    const labels = !info.thumbnail;
+    const theme = painter.theme;
+    const camera = painter.view;
+    if (!(camera instanceof OrbitCamera)) return;
+    const scene = new SpaceScene(painter, camera);
+    const { part, step } = m.state;
+    const { space } = m;
+    const shows = (plane: number, spatial: number) => step >= (part === 'space' ? spatial : plane);
+    drawAxes(scene, painter, space.curve, labels);
+    if (part === 'space' && m.state.curve === 'bezier')
+      scene.polyline(m.state.q, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    if (part === 'arc') drawFence(scene, painter, m);
+    scene.polyline(space.curve, { color: theme.curve, width: theme.sizes.curve, role: 'curve' });
+    const at = space.at;
+    const unit = arrowUnit(space.size);
+    if (part !== 'arc' && shows(4, 4) && at.normal && at.tangent) {
+      const h = 1.2 * unit;
+      const corner = (a: number, b: number) =>
+        at.point.map((v, d) => v + h * (a * at.tangent![d] + b * at.normal![d]));
+      scene.quad(
+        [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)],
+        painter.color(COLOURS.normal),
+        {
+          alpha: 0.35,
+        },
+      );
+      scene.polyline(space.circle, {
+        color: painter.color(COLOURS.curvature),
+        width: theme.sizes.line,
+      });
+    }
+    if (part === 'space' && step >= 5)
+      for (const frame of space.along)
+        drawFrame(scene, painter, frame, 0.6 * unit, theme.sizes.thin);
+    if (part === 'space' && step >= 6)
+      for (const t of space.flips) {
+        const p = space.curve[Math.round(t * (space.curve.length - 1))];
+        scene.dot(p, theme.ink, theme.sizes.point * 1.4);
+        if (labels)
+          scene.label('frame flips: κ → 0', p, { halo: true, bold: true, dx: 10, dy: -12 });
+      }
+    scene.dot(at.point, theme.accent, theme.sizes.point * 1.3);
+    if (labels) scene.label('P(t)', at.point, { halo: true, dx: -12, dy: 22, align: 'right' });
+    scene.flush();
+    // The frame at t goes over everything: it is what the step talks about.
+    if (part === 'space' || part === 'plane') {
+      const frame = {
+        ...at,
+        tangent: shows(2, 1) ? at.tangent : null,
+        normal: shows(3, 2) ? at.normal : null,
+        binormal: shows(3, 3) ? at.binormal : null,
+      };
+      drawFrameOver(painter, frame, unit, labels);
+      const why = part === 'space' ? at.why : null;
+      if (labels && why && step >= 1) painter.note(why);
+      if (labels && part === 'plane' && step >= 3)
+        painter.screenLabel(
+          'A plane curve: B = T × N = ±e_z, τ = 0',
+          12,
+          painter.view.height - 12,
+          {
+            color: theme.muted,
+            halo: true,
+          },
+        );
+    }
+  },
+  handles(m) {
+    if (m.state.part !== 'space' || m.state.curve !== 'bezier') return [];
+    return m.state.q.map((q, i): Handle => ({
+      id: `q${i}`,
+      label: `Q_{${i}}`,
+      position: q,
+      shape: 'square',
+    }));
+  },
+  moveHandle(state, id, to) {
+    const i = Number(id.slice(1));
+    return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], to[2] ?? q[2]] : q)) };
+  },
+  trail: (m) => m.space.at.point,
+  weight: 2,
+};
+
+function drawFrameOver(painter: Painter, at: SpaceAt, unit: number, labels: boolean): void {
+  const vectors: [Point | null, string, number][] = [
+    [at.tangent, 'T', COLOURS.tangent],
+    [at.normal, 'N', COLOURS.normal],
+    [at.binormal, 'B', COLOURS.binormal],
+  ];
+  for (const [v, name, colour] of vectors)
+    if (v) vectorArrow(painter, at.point, v, unit, name, painter.color(colour), labels);
+}
+
+function drawFrame(
+  scene: SpaceScene,
+  painter: Painter,
+  at: SpaceAt,
+  length: number,
+  width: number,
+): void {
+  const vectors: [Point | null, number][] = [
+    [at.tangent, COLOURS.tangent],
+    [at.normal, COLOURS.normal],
+    [at.binormal, COLOURS.binormal],
+  ];
+  for (const [v, colour] of vectors)
+    if (v)
+      scene.line(
+        at.point,
+        at.point.map((x, d) => x + length * v[d]),
+        { color: painter.color(colour), width: width * 2 },
+      );
+}
+
+/** Short x, y, z axes from the lowest corner of the curve's box, for orientation. */
+function drawAxes(
+  scene: SpaceScene,
+  painter: Painter,
+  curve: readonly Point[],
+  labels: boolean,
+): void {
+  const box = boundsOf(curve);
+  const origin = [box.minX, box.minY, box.minZ ?? 0];
+  const length = 0.25 * Math.max(box.maxX - box.minX, box.maxY - box.minY, 1e-9);
+  const colour = painter.theme.axis;
+  ['x', 'y', 'z'].forEach((name, d) => {
+    const tip = origin.map((v, k) => v + (k === d ? length : 0));
+    scene.line(origin, tip, { color: colour, width: painter.theme.sizes.thin });
+    if (labels) scene.label(name, tip, { color: painter.theme.muted, dx: 4, dy: -4 });
+  });
+}
+
+/** Arc length part: the curve lifted to height proportional to s, with posts at the ticks. */
+function drawFence(scene: SpaceScene, painter: Painter, m: CurvatureModel): void {
+  const arc = m.arc!;
+  const height = (0.5 * m.space.size) / (arc.length || 1);
+  const lifted = arc.plotPoints.map((p, i) => [p[0], p[1], height * arc.plot[2 * i + 1]]);
+  const theme = painter.theme;
+  if (m.state.step >= 2)
+    scene.polyline(lifted, { color: painter.color(3), width: theme.sizes.line });
+  const posts = (points: readonly Point[], s: readonly number[], colour: string) =>
+    points.forEach((p, i) =>
+      scene.line([p[0], p[1], 0], [p[0], p[1], height * s[i]], {
+        color: colour,
+        width: theme.sizes.line,
+      }),
+    );
+  if (m.state.step >= 3 && m.state.step !== 4)
+    posts(
+      arc.byT,
+      arc.table.map((r) => r.s),
+      painter.color(0),
+    );
+  if (m.state.step >= 4)
+    posts(
+      arc.byS,
+      arc.equal.map((r) => r.s),
+      painter.color(1),
+    );
+  if (m.state.step >= 2)
+    scene.label('height = s(t)', lifted[lifted.length - 1], {
+      color: painter.color(3),
+      halo: true,
+      dx: 8,
+    });
+}

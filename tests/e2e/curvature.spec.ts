@@ -1,0 +1,115 @@
+import type { Page } from '@playwright/test';
+import { bezierArcLength, bezierCurvature } from '../../src/math';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const figure = (page: Page, id: string) => page.locator(`canvas[data-figure="${id}"]`);
+/** The value cell of a row of the panel's table, as a number. */
+const value = async (page: Page, quantity: string) =>
+  Number(
+    await page
+      .getByRole('table', { name: 'Values at t' })
+      .locator(`tr[data-quantity="${quantity}"] td`)
+      .nth(1)
+      .textContent(),
+  );
+const controlPoints = (page: Page) =>
+  hashState(page)
+    .p.split(';')
+    .map((p) => p.split(',').map(Number));
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/curvature?step=4&t=0.3');
+  await expect(figure(page, 'curve')).toBeVisible();
+});
+
+test('the osculating circle has radius 1/|κ|, κ as bezierCurvature gives it, after a drag too', async ({
+  page,
+}) => {
+  const check = async () => {
+    const t = Number(hashState(page).t);
+    const kappa = bezierCurvature(controlPoints(page), t);
+    await expect.poll(() => value(page, 'κ')).toBeCloseTo(kappa, 10);
+    await expect.poll(() => value(page, 'R = 1/|κ|')).toBeCloseTo(1 / Math.abs(kappa), 10);
+  };
+  await check();
+  // P2 moved from the keyboard, and t moved with the slider's field.
+  await page.getByRole('button', { name: /^P2 at/ }).focus();
+  await page.keyboard.press('ArrowUp');
+  await expectHash(page, 'p', (v) => v.split(';')[2] !== '3,2');
+  await page.getByRole('spinbutton', { name: 't value' }).fill('0.7');
+  await page.keyboard.press('Enter');
+  await expectHash(page, 't', (v) => v === '0.7');
+  await check();
+  await snapshot(page, 'curvature-osculating-circle');
+});
+
+test('on the helix the page shows κ and τ equal to a/(a² + b²) and b/(a² + b²)', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'The Frenet frame of a helix' }).click();
+  await expectHash(page, 'part', (v) => v === 'space');
+  const check = async () => {
+    const { a, b } = hashState(page);
+    const [ra, rb] = [Number(a), Number(b)];
+    await expect.poll(() => value(page, 'κ')).toBeCloseTo(ra / (ra * ra + rb * rb), 9);
+    await expect.poll(() => value(page, 'τ')).toBeCloseTo(rb / (ra * ra + rb * rb), 9);
+  };
+  await check();
+  await page.getByRole('spinbutton', { name: 'Helix radius a' }).fill('2');
+  await page.keyboard.press('Enter');
+  await expectHash(page, 'a', (v) => v === '2');
+  await check();
+});
+
+test('at a cusp and at an inflection the page says why N is undefined', async ({ page }) => {
+  await page.getByRole('button', { name: 'A cusp: speed 0' }).click();
+  await page.keyboard.press('End');
+  await expect(page.getByRole('status').filter({ hasText: 'Cusp: P′(t) = 0' })).toBeVisible();
+  await expect(
+    page.getByRole('table', { name: 'Values at t' }).locator('tr[data-quantity="N"]'),
+  ).toContainText('undefined');
+  await page.getByRole('button', { name: 'An inflection: κ = 0' }).click();
+  await page.keyboard.press('End');
+  await expect(page.getByRole('status').filter({ hasText: 'Inflection: κ = 0' })).toBeVisible();
+});
+
+test('equal steps of arc length: the table’s t(sᵢ) give s = iL/n', async ({ page }) => {
+  await page.getByRole('button', { name: 'Arc length against parameter' }).click();
+  await expectHash(page, 'part', (v) => v === 'arc');
+  const table = page.getByRole('table', { name: 'Arc length table' });
+  await expect(table.locator('tbody tr')).toHaveCount(9);
+  const p = controlPoints(page);
+  const length = bezierArcLength(p);
+  for (const i of [1, 4, 7]) {
+    const cells = table.locator(`tr[data-quantity="row ${i}"] td`);
+    // Column 3 is s(tᵢ) at tᵢ = i/8; column 5 is t(sᵢ) with sᵢ = iL/8.
+    expect(Number(await cells.nth(2).textContent())).toBeCloseTo(bezierArcLength(p, i / 8), 9);
+    const t = Number(await cells.nth(4).textContent());
+    expect(bezierArcLength(p, t)).toBeCloseTo((i * length) / 8, 9);
+  }
+});
+
+test('every scene in presenter view, stepped by the clicker; the space view from two angles', async ({
+  page,
+}) => {
+  await page.keyboard.press('p');
+  const scenes = ['plane', 'inflection', 'cusp', 'helix', 'twisted', 'arc'];
+  for (const [i, id] of scenes.entries()) {
+    if (i > 0) {
+      // After a scene's last step the clicker opens the next scene at its first step.
+      await page.keyboard.press('PageDown');
+      await expectHash(page, 'scene', (v) => v === id);
+      await expectHash(page, 'step', (v) => v === '0');
+    }
+    await page.keyboard.press('End');
+    await expectHash(page, 'step', (v) => Number(v) >= 5);
+    await snapshot(page, `curvature-presenter-${id}`);
+    if (id === 'twisted') {
+      const before = hashState(page)['view.space'] ?? '';
+      await page.keyboard.press(']');
+      await page.keyboard.press('}');
+      await expectHash(page, 'view.space', (v) => v !== '' && v !== before);
+      await snapshot(page, 'curvature-presenter-twisted-turned');
+    }
+  }
+});
