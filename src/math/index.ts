@@ -127,3 +127,13 @@ export { rationalBezierPoint, sampleRationalBezier } from './rationalBezier';
 export { subdivisionLevels } from './subdivision';
 export { multiplyPlaneMatrices, translationMatrix, homogeneousWeight } from './homogeneousMatrix';
 export { signedAngle } from './signedAngle';
+export type { ChordDeviation } from './chordDeviation';
+export {
+  chordDeviation,
+  nearestOnSegment,
+  uniformParameters,
+  uniformCountWithin,
+} from './chordDeviation';
+export type { FlatteningNode } from './flatteningTree';
+export { flatteningTree } from './flatteningTree';
+export { segmentCoverage } from './strokeCoverage';
