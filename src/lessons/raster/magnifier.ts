@@ -83,10 +83,10 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
       k >= 1 ? 0.12 : 0.3,
       { color: painter.color(0), width: theme.sizes.line },
     );
-    if (k >= 1 && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 2.6) {
-      for (const { i, j, value } of pixels)
+    if (k >= 1 && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 1.9) {
+      for (const { i, j, value } of pixels.filter((pixel) => pixel.value >= 0.005))
         painter.label(value.toFixed(2), [i, j], {
-          size: theme.sizes.small,
+          size: theme.sizes.small * 0.8,
           align: 'center',
           baseline: 'middle',
           halo: true,

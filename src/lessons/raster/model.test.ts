@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { chordDeviation, flattenBezier } from '../../math';
-import { type RasterModel, derive, steepestSegment, zoomAtStep } from './model';
+import { type RasterModel, derive, instructiveSegment, zoomAtStep } from './model';
 import { coveragePolyline, farPixels, lineSteps, rasterizePolyline } from './raster';
 import { scenes, stepCount, steps } from './script';
 import { type RasterState, schema } from './state';
@@ -138,7 +138,7 @@ describe('raster lesson model', () => {
   it('steps: the pixel scene lights the chosen segment in at most 12 clicks; every caption is one sentence with numbers', () => {
     const pixels = scenes[3].apply(defaults);
     const m = derive(pixels);
-    expect(pixels.seg).toBe(steepestSegment(m.adaptive.points));
+    expect(pixels.seg).toBe(instructiveSegment(m.adaptive.points, 1));
     expect(stepCount(pixels)).toBe(2 + Math.min(12, m.line.pixels.length));
     for (const scene of scenes) {
       const state = scene.apply(defaults);

@@ -196,17 +196,17 @@ export function derive(state: RasterState): RasterModel {
 }
 
 /**
- * The segment worth stepping through pixel by pixel: the one that climbs the
- * most across its major axis (a level run only repeats one row), the longer
- * of two that climb as much.
+ * The segment worth stepping through pixel by pixel: the one with the most
+ * steps where the ideal line falls between two pixels (a level run or an
+ * exact diagonal decides nothing), the longer of two that tie.
  */
-export function steepestSegment(points: readonly Point[]): number {
+export function instructiveSegment(points: readonly Point[], zoom: number): number {
   let best = 0;
   let score = -1;
   for (let k = 0; k + 1 < points.length; k++) {
-    const dx = Math.abs(points[k + 1][0] - points[k][0]);
-    const dy = Math.abs(points[k + 1][1] - points[k][1]);
-    const value = Math.round(Math.min(dx, dy)) * 1e6 + Math.max(dx, dy);
+    const { ideal } = lineSteps(points[k], points[k + 1], zoom);
+    const decisions = ideal.filter((v) => Math.abs(v - Math.round(v)) > 1e-9).length;
+    const value = decisions * 1e6 + ideal.length;
     if (value > score) {
       score = value;
       best = k;

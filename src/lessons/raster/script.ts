@@ -1,7 +1,7 @@
 import type { Scene, StepsSpec } from '../../app/lesson';
 import { flattenBezier } from '../../math';
 import { texNumber } from '../../render/formula';
-import { type RasterModel, derive, steepestSegment, zoomAtStep } from './model';
+import { type RasterModel, derive, instructiveSegment, zoomAtStep } from './model';
 import { type RasterState, type View, segmentsOf } from './state';
 
 /** Pixel steps of one segment are shown in at most this many clicks. */
@@ -214,7 +214,7 @@ const scene = (
 
 /** The segment worth stepping through: the longest of the adaptive polyline. */
 const longest = (s: RasterState) => ({
-  seg: steepestSegment(flattenBezier(s.p, s.tol / s.z)),
+  seg: instructiveSegment(flattenBezier(s.p, s.tol / s.z), s.z),
 });
 
 export const scenes: Scene<RasterState>[] = [
