@@ -135,3 +135,13 @@ export { bezierArcLengthTable, bezierParameterAtLength } from './arcLengthParame
 export { helixDerivatives } from './helix';
 export type { FrenetInvariants } from './frenetInvariants';
 export { frenetInvariants } from './frenetInvariants';
+export type { ChordDeviation } from './chordDeviation';
+export {
+  chordDeviation,
+  nearestOnSegment,
+  uniformParameters,
+  uniformCountWithin,
+} from './chordDeviation';
+export type { FlatteningNode } from './flatteningTree';
+export { flatteningTree } from './flatteningTree';
+export { segmentCoverage } from './strokeCoverage';

@@ -1,0 +1,168 @@
+import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
+import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { LiveRows } from '../../app/liveTable';
+import { pointButtons } from '../../app/panelControls';
+import { extendPolygon } from '../../interact/editPoints';
+import { formula } from '../../render/formula';
+import type { RasterModel } from './model';
+import { HAIRPIN, MAX_POINTS, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './state';
+
+const INTRO =
+  'A screen cannot draw a curve. It draws straight segments between points computed on the curve, and each segment as a row of pixels. How many segments, and where? The control points are given in pixels of a coarse 32 × 24 raster (zoom 1); drag them, Tab to one and use the arrow keys, double-click to add one, right-click or Delete to remove one.';
+
+export function rasterPanel(
+  api: LessonApi<RasterState, RasterModel>,
+): LessonPanel<RasterState, RasterModel> {
+  const button = (label: string, action: () => void) =>
+    h('button', { type: 'button', onclick: action }, label);
+  const change = (f: (s: RasterState) => Partial<RasterState>) => {
+    const s = api.get();
+    api.set({ ...s, ...f(s) });
+  };
+
+  const tolerance = h('input', {
+    type: 'range',
+    min: 0.05,
+    max: 2,
+    step: 0.05,
+    'aria-label': 'Tolerance τ in pixels',
+  });
+  tolerance.addEventListener('input', () =>
+    api.set(
+      { ...api.get(), tol: Number(tolerance.value) },
+      { coalesce: 'raster-tol', windowMs: 1500 },
+    ),
+  );
+  const toleranceText = h('span', {});
+  const zoomText = h('span', {});
+  const zoomOut = button('Zoom out ÷2', () => change((s) => ({ z: Math.max(ZOOM_MIN, s.z / 2) })));
+  const zoomIn = button('Zoom in ×2', () => change((s) => ({ z: Math.min(ZOOM_MAX, s.z * 2) })));
+  const zoomBox = h('div', { class: 'lesson-tools' }, zoomOut, zoomText, zoomIn);
+  const previous = button('◀ Previous segment', () =>
+    change((s) => ({ seg: Math.max(0, s.seg - 1), step: 0 })),
+  );
+  const next = button('Next segment ▶', () => change((s) => ({ seg: s.seg + 1, step: 0 })));
+  const segmentText = h('span', {});
+  const segmentBox = h('div', { class: 'lesson-tools' }, previous, segmentText, next);
+  const pointCount = pointButtons(api, {
+    addLabel: 'Add a control point',
+    removeLabel: 'Remove the last control point',
+    count: (s) => s.p.length,
+    min: 2,
+    max: MAX_POINTS,
+    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
+    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
+  });
+  const reset = button('The hairpin again', () =>
+    change(() => ({ p: HAIRPIN.map((p) => [...p]) })),
+  );
+
+  const compareBody = h('tbody', {});
+  const compareRows = new LiveRows(compareBody);
+  const segmentTitle = h('p', {});
+  const pixelBody = h('tbody', {});
+  const pixelRows = new LiveRows(pixelBody);
+  const pixelSection = h(
+    'div',
+    {},
+    h('h2', {}, 'One segment, pixel by pixel'),
+    segmentTitle,
+    dataTable('Pixels of the segment', ['Step', 'Pixel x', 'Pixel y', 'Ideal'], pixelBody),
+  );
+
+  const element = h(
+    'div',
+    { class: 'lesson-text' },
+    h('p', {}, INTRO),
+    h(
+      'p',
+      { class: 'note' },
+      'The slider n under the figure is the number of uniform segments: the parameter values t = k/n, k = 0 … n.',
+    ),
+    h('h2', {}, 'Uniform against adaptive'),
+    h(
+      'p',
+      {},
+      'Adaptive flattening splits the curve at t = ½ (de Casteljau, as in the de Casteljau lesson) until each piece’s control polygon is flat enough: a piece of degree n lies within n(n−1)/8 · max‖Δ²P‖ of its chord.',
+    ),
+    formula('\\tfrac{n(n-1)}{8}\\,\\max_i \\|P_{i+2} - 2P_{i+1} + P_i\\| \\le \\tau', true),
+    h('label', { class: 'toggle' }, 'τ', tolerance, toleranceText),
+    dataTable(
+      'Uniform against adaptive',
+      ['Polyline', 'Segments', 'Largest gap (px)', 'at t'],
+      compareBody,
+    ),
+    h('h2', {}, 'The raster'),
+    h(
+      'p',
+      {},
+      'Zoom z: z pixels per unit, so the raster is 32z × 24z pixels and a tolerance of τ pixels is τ/z units. Zoom in and a fixed polyline strays more pixels; adaptive flattening adds segments, about √2 times as many each time the zoom doubles.',
+    ),
+    zoomBox,
+    segmentBox,
+    pixelSection,
+    h('h2', {}, 'The curve'),
+    pointCount.element,
+    h('div', { class: 'lesson-tools' }, reset),
+  );
+
+  return {
+    element,
+    update(m, state) {
+      pointCount.update(state);
+      if (Number(tolerance.value) !== state.tol) tolerance.value = String(state.tol);
+      setText(toleranceText, `= ${fmt(state.tol, 2)} px`);
+      setText(zoomText, `zoom ×${state.z} (${m.size.width} × ${m.size.height} pixels)`);
+      zoomOut.disabled = state.z <= ZOOM_MIN;
+      zoomIn.disabled = state.z >= ZOOM_MAX;
+      const segments = m.adaptive.points.length - 1;
+      setText(segmentText, `segment ${m.segment + 1} of ${segments}`);
+      previous.disabled = m.segment <= 0;
+      next.disabled = m.segment >= segments - 1;
+
+      const zoom = state.z;
+      const row = (name: string, line: RasterModel['uniform'], key: string) => ({
+        data: {
+          polyline: key,
+          segments: String(line.points.length - 1),
+          gap: String(line.deviation.distance * zoom),
+        },
+        cells: [
+          name,
+          String(line.points.length - 1),
+          fmt(line.deviation.distance * zoom, 4),
+          fmt(line.deviation.t, 4),
+        ],
+      });
+      compareRows.set([
+        row(`Uniform, n = ${segmentsOf(state)}`, m.uniform, 'uniform'),
+        row(`Adaptive, τ = ${fmt(state.tol, 2)} px`, m.adaptive, 'adaptive'),
+        ...(m.sameError ? [row('Uniform, same gap as adaptive', m.sameError, 'same')] : []),
+        {
+          data: { polyline: 'bound', segments: String(m.boundCount), gap: '' },
+          cells: ['Uniform, planned for τ', String(m.boundCount), `≤ ${fmt(state.tol, 2)}`, '—'],
+        },
+      ]);
+
+      const pixelScene = state.x === 'pixels' || state.x === 'coverage';
+      setHidden(segmentBox, !pixelScene);
+      setHidden(pixelSection, !pixelScene);
+      if (pixelScene) {
+        const { line } = m;
+        const [u0, v0] = line.from;
+        const [u1, v1] = line.to;
+        segmentTitle.dataset.from = `${u0},${v0}`;
+        segmentTitle.dataset.to = `${u1},${v1}`;
+        setText(
+          segmentTitle,
+          `Segment ${m.segment + 1} runs from (${fmt(u0, 3)}, ${fmt(v0, 3)}) to (${fmt(u1, 3)}, ${fmt(v1, 3)}) in pixel coordinates (pixel centres at whole numbers). It steps along ${line.major}: one pixel per step, the nearest across.`,
+        );
+        pixelRows.set(
+          line.pixels.map(([i, j], k) => ({
+            cells: [String(k), String(i), String(j), fmt(line.ideal[k], 3)],
+          })),
+        );
+      }
+    },
+  };
+}
