@@ -127,3 +127,17 @@ export { rationalBezierPoint, sampleRationalBezier } from './rationalBezier';
 export { subdivisionLevels } from './subdivision';
 export { multiplyPlaneMatrices, translationMatrix, homogeneousWeight } from './homogeneousMatrix';
 export { signedAngle } from './signedAngle';
+export type {
+  SplineEquation,
+  SplineEquationKind,
+  SplineSystemSolution,
+} from './bezierSplineSystem';
+export {
+  cubicSplineC2System,
+  solveDense,
+  solveCubicSplineC2System,
+  controlPointName,
+} from './bezierSplineSystem';
+export type { JointReport } from './jointReport';
+export { bezierJointReport, snapJoint } from './jointReport';
+export { bezierChainSelfIntersections } from './chainIntersections';
