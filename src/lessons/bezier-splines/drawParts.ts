@@ -167,7 +167,9 @@ const catmull: Draw = (painter, m, info) => {
     tangents(tg, theme.accent);
     return;
   }
-  painter.cubicSegments(m.hermite, { color: theme.curveFaint, width: theme.sizes.line });
+  // Step 2 sets the hand-made Hermite spline beside the Catmull-Rom one: same form, other tangents.
+  if (step === 2)
+    painter.cubicSegments(m.hermite, { color: theme.curveFaint, width: theme.sizes.line });
   const [uniform, centripetal, chordal] = m.alphas;
   if (step === 2 || step === 3) {
     painter.cubicSegments(uniform.segments, { role: 'curve' });
@@ -199,16 +201,21 @@ const catmull: Draw = (painter, m, info) => {
           : { color: theme.curveFaint, width: theme.sizes.line },
       );
     }
-    if (step === 6 && !info.thumbnail) {
-      m.alphas.forEach((curve, k) => {
-        const end = curve.segments[curve.segments.length - 1]?.[3];
-        if (end)
-          painter.label(`${curve.name} α = ${curve.alpha}`, end, {
-            dx: 12,
-            dy: 8 + k * theme.sizes.label * 1.3,
-            color: painter.color(k),
+    if (!info.thumbnail) {
+      // A legend in the corner: labels at the curves' ends would pile up on the last point.
+      shown.forEach((curve, r) => {
+        const k = m.alphas.indexOf(curve);
+        const main = step === 6 || k > 0;
+        painter.screenLabel(
+          `${curve.name}, α = ${curve.alpha}`,
+          16,
+          28 + r * theme.sizes.label * 1.5,
+          {
+            color: main ? painter.color(k) : theme.muted,
             halo: true,
-          });
+            bold: main,
+          },
+        );
       });
     }
   }

@@ -167,11 +167,18 @@ const formulas: Record<Part, (m: BezierSplinesModel, s: BezierSplinesState) => s
         ]);
       case 6:
         return matrixTex(m);
-      case 7:
-        return `${m.system.controls
-          .map((q, j) => (j % 3 === 0 ? null : `${c(j)} = ${pt(q)}`))
-          .filter(Boolean)
-          .join(',\\ ')},\\quad \\max|A c - r| = ${m.system.residual.toExponential(1)}`;
+      case 7: {
+        // Three inner points to a line, so the numbers stay large in presenter view.
+        const inner = m.system.controls.flatMap((q, j) =>
+          j % 3 === 0 ? [] : [`${c(j)} = ${pt(q)}`],
+        );
+        const lines = Array.from({ length: Math.ceil(inner.length / 3) }, (_, r) =>
+          inner.slice(3 * r, 3 * r + 3).join(',\\quad '),
+        );
+        return list(
+          [...lines, `\\max|A c - r| = ${m.system.residual.toExponential(1)}`].map((l) => `&${l}`),
+        );
+      }
       case 8:
         return `\\max_j |c_j - c_j^{\\text{natural}}| = ${m.difference.toExponential(1)}`;
       default:

@@ -69,7 +69,7 @@ export function introductions(): Record<Part, HTMLElement> {
       h(
         'p',
         { class: 'note' },
-        'The C¹ column shows the quadratic spline’s weakness: one free choice at the start, and the swing it causes grows along the figure eight and the spiral.',
+        'The C¹ column shows the quadratic spline’s weakness: b₀ on the chord makes the first piece straight, and that one choice at the start sets how every later piece bulges, to the end of the curve.',
       ),
     ),
     inspector: h(

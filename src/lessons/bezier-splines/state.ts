@@ -82,7 +82,7 @@ export const SEMI: Point[] = Array.from({ length: 7 }, (_, k) => {
   return round([3 * Math.cos(theta), 3 * Math.sin(theta)]);
 });
 
-/** Three pieces built by hand: a C¹ joint, then a G¹ joint (length ratio ½). */
+/** Three pieces built by hand: a C² joint, then a G¹ joint (length ratio ½). */
 export const HAND_BUILT: Point[] = [
   [0, 0],
   [1, 2],
