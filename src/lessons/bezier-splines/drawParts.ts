@@ -142,14 +142,12 @@ const inspector: Draw = (painter, m, info) => {
     if (step === 3) lines.push(`${joint.angle.toFixed(1)}°, ratio ${joint.lengthRatio.toFixed(2)}`);
     if (step >= 4)
       lines.push(`κ ${joint.leftCurvature.toFixed(2)} | ${joint.rightCurvature.toFixed(2)}`);
-    lines.forEach((text, r) =>
-      painter.label(text, at, {
-        dx: 14,
-        dy: 34 + r * theme.sizes.label * 1.3,
-        box: true,
-        size: theme.sizes.label * 0.9,
-      }),
-    );
+    // One line, on the side of the joint away from its two neighbours (clear of the handles).
+    const k3 = 3 * (k + 1);
+    painter.labelClear(lines.join(' · '), at, [m.state.q[k3 - 1], m.state.q[k3 + 1]], {
+      box: true,
+      size: theme.sizes.label * 0.9,
+    });
   });
 };
 

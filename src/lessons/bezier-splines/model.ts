@@ -16,7 +16,7 @@ import {
   solveCubicSplineC2System,
   type SplineSystemSolution,
 } from '../../math';
-import { type BezierSplinesState, midpoint } from './state';
+import { type BezierSplinesState, handTangents, midpoint } from './state';
 
 export type Dataset = 'inf' | 'spi' | 'semi';
 export const DATASETS: readonly Dataset[] = ['inf', 'spi', 'semi'];
@@ -117,7 +117,8 @@ export function derive(state: BezierSplinesState): BezierSplinesModel {
     pieces,
     joints: pieces.slice(1).map((piece, k) => bezierJointReport(pieces[k], piece)),
     comb: comb(pieces),
-    hermite: cubicSplineSegments(p, state.tg),
+    // A state straight from a scene may not have one tangent per point yet (normalize adds them).
+    hermite: cubicSplineSegments(p, state.tg.length === p.length ? state.tg : handTangents(p)),
     crTangents,
     oneSided: cubicSplineSegments(p, oneSidedTangents),
     oneSidedTangents,
@@ -160,7 +161,7 @@ function gridRow(points: Point[]): GridRow {
   };
 }
 
-/** Teeth along every piece, scaled so the longest is a fifth of the spline's size. */
+/** Teeth along every piece, scaled so the longest is an eighth of the spline's size. */
 function comb(pieces: readonly Point[][]): Tooth[] {
   const raw: { at: Point; normal: Point; kappa: number }[] = [];
   for (const piece of pieces) {
@@ -180,7 +181,7 @@ function comb(pieces: readonly Point[][]): Tooth[] {
   const ys = pieces.flat().map((q) => q[1]);
   const size = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys), 1e-9);
   const largest = Math.max(...raw.map((r) => Math.abs(r.kappa)), 1e-9);
-  const factor = (0.2 * size) / largest;
+  const factor = (0.125 * size) / largest;
   // The comb points away from the centre of curvature, as CAD systems draw it.
   return raw.map(({ at, normal, kappa }) => [
     at,

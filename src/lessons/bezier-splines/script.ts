@@ -19,6 +19,12 @@ import {
 const SUB = '₀₁₂₃₄₅₆₇₈₉';
 /** A subscript in Unicode: 12 → ₁₂. */
 export const sub = (n: number) => [...String(n)].map((d) => SUB[Number(d)]).join('');
+/** 8.9e-16 as 8.9 × 10⁻¹⁶ in TeX (0 as 0). */
+export const texExponent = (v: number) => {
+  if (v === 0) return '0';
+  const [mantissa, exponent] = v.toExponential(1).split('e');
+  return `${mantissa}\\times 10^{${Number(exponent)}}`;
+};
 const pt = (p: Point) => texPoint(p, 2);
 const num = (v: number, digits = 2) => texNumber(v, digits);
 
@@ -176,20 +182,17 @@ const formulas: Record<Part, (m: BezierSplinesModel, s: BezierSplinesState) => s
           inner.slice(3 * r, 3 * r + 3).join(',\\quad '),
         );
         return list(
-          [...lines, `\\max|A c - r| = ${m.system.residual.toExponential(1)}`].map((l) => `&${l}`),
+          [...lines, `\\max|A c - r| = ${texExponent(m.system.residual)}`].map((l) => `&${l}`),
         );
       }
       case 8:
-        return `\\max_j |c_j - c_j^{\\text{natural}}| = ${m.difference.toExponential(1)}`;
+        return `\\max_j |c_j - c_j^{\\text{natural}}| = ${texExponent(m.difference)}`;
       default:
         return null;
     }
   },
-  grid(_m, s) {
-    if (s.step === 2) return 'b_{i+1} = 2p_{i+1} - b_i';
-    if (s.step === 3) return 'A\\,c = r,\\quad (3n+1)\\times(3n+1)';
-    return null;
-  },
+  // The grid needs every pixel of height in presenter view: its captions say it all.
+  grid: () => null,
   inspector(m, s) {
     const j = m.joints[0];
     if (!j) return null;
@@ -249,8 +252,9 @@ export const scenes: Scene<BezierSplinesState>[] = [
   scene('quadratic', 'C¹ quadratic spline', {
     p: LECTURE_POINTS,
     b: [midpoint(LECTURE_POINTS[0], LECTURE_POINTS[1])],
+    tg: handTangents(LECTURE_POINTS),
   }),
-  scene('system', 'C² by a linear system', { p: FOUR_POINTS }),
+  scene('system', 'C² by a linear system', { p: FOUR_POINTS, tg: handTangents(FOUR_POINTS) }),
   scene('grid', 'C⁰ · C¹ · C² grid'),
   scene('inspector', 'Continuity inspector', { q: HAND_BUILT }),
   scene('catmull', 'Catmull-Rom', { p: HAIRPIN, tg: handTangents(HAIRPIN) }),
