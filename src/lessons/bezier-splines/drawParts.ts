@@ -142,14 +142,35 @@ const inspector: Draw = (painter, m, info) => {
     if (step === 3) lines.push(`${joint.angle.toFixed(1)}°, ratio ${joint.lengthRatio.toFixed(2)}`);
     if (step >= 4)
       lines.push(`κ ${joint.leftCurvature.toFixed(2)} | ${joint.rightCurvature.toFixed(2)}`);
-    // One line, on the side of the joint away from its two neighbours (clear of the handles).
+    // One line, on the side of the joint away from its two neighbours, far enough to clear the handles.
     const k3 = 3 * (k + 1);
-    painter.labelClear(lines.join(' · '), at, [m.state.q[k3 - 1], m.state.q[k3 + 1]], {
+    const [dx, dy] = awayFrom(at, m.state.q[k3 - 1], m.state.q[k3 + 1]);
+    const reach = theme.sizes.handle * 2 + theme.sizes.label;
+    painter.label(lines.join(' · ').replace(/-/g, '−'), at, {
+      dx: dx * reach,
+      dy: -dy * reach,
+      align: dx < -0.3 ? 'right' : dx > 0.3 ? 'left' : 'center',
+      baseline: 'middle',
       box: true,
       size: theme.sizes.label * 0.9,
     });
   });
 };
+
+/** The unit direction pointing away from both neighbours of a joint (the normal where they are in line). */
+function awayFrom(at: Point, before: Point, after: Point): Point {
+  const unit = (v: Point): Point => {
+    const size = Math.hypot(v[0], v[1]);
+    return size > 0 ? [v[0] / size, v[1] / size] : [0, 0];
+  };
+  const a = unit([before[0] - at[0], before[1] - at[1]]);
+  const b = unit([after[0] - at[0], after[1] - at[1]]);
+  const sum: Point = [-(a[0] + b[0]), -(a[1] + b[1])];
+  if (Math.hypot(sum[0], sum[1]) > 0.2) return unit(sum);
+  // In line: below the curve if it runs right, else on the normal's side.
+  const normal: Point = [b[1], -b[0]];
+  return unit(normal[1] <= 0 ? normal : [-normal[0], -normal[1]]);
+}
 
 const catmull: Draw = (painter, m, info) => {
   const { step, p, tg } = m.state;
