@@ -145,3 +145,17 @@ export {
 export type { FlatteningNode } from './flatteningTree';
 export { flatteningTree } from './flatteningTree';
 export { segmentCoverage } from './strokeCoverage';
+export type {
+  SplineEquation,
+  SplineEquationKind,
+  SplineSystemSolution,
+} from './bezierSplineSystem';
+export {
+  cubicSplineC2System,
+  solveDense,
+  solveCubicSplineC2System,
+  controlPointName,
+} from './bezierSplineSystem';
+export type { JointReport } from './jointReport';
+export { bezierJointReport, snapJoint } from './jointReport';
+export { bezierChainSelfIntersections } from './chainIntersections';

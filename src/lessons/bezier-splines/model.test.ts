@@ -1,0 +1,92 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { mainFigure } from './figure';
+import { gridFigures } from './gridFigures';
+import { derive } from './model';
+import { scenes, steps } from './script';
+import { PARTS, schema, stepCount } from './state';
+
+const defaults = defaultsOf(schema);
+const at = (part: (typeof PARTS)[number]) => scenes.find((s) => s.id === part)!.apply(defaults);
+
+describe('the C¹ quadratic spline', () => {
+  it('follows b0 = (0.5, 1) through the lecture points by bᵢ = 2pᵢ − bᵢ₋₁', () => {
+    // b1 = 2(1, 2) − (0.5, 1); b2 = 2(3, 2.5) − b1; b3 = 2(4, 0.5) − b2; b4 = 2(6, 1) − b3.
+    expect(derive(at('quadratic')).quadraticControls).toEqual([
+      [0.5, 1],
+      [1.5, 3],
+      [4.5, 2],
+      [3.5, -1],
+      [8.5, 3],
+    ]);
+  });
+  it('swings by ∓δ at every bᵢ when b0 moves by δ: the change never fades', () => {
+    const m = derive(at('quadratic'));
+    m.swing[0].forEach((piece, i) => {
+      // The quadratic's b is raised to degree 3: c1 = p + 2/3(b − p), so c1 moves by 2/3 of b's move.
+      const moved = piece[1][1] - m.quadratic[i][1][1];
+      expect(Math.abs(moved)).toBeCloseTo((2 / 3) * 0.5, 12);
+      expect(Math.sign(moved)).toBe(i % 2 === 0 ? 1 : -1);
+    });
+  });
+});
+
+describe('the C² system', () => {
+  it('names the practical’s control points A … J for four points, and solves to the natural spline', () => {
+    const m = derive(at('system'));
+    expect(m.names.join('')).toBe('ABCDEFGHIJ');
+    expect(m.system.residual).toBeLessThan(1e-12);
+    expect(m.difference).toBeLessThan(1e-12);
+  });
+});
+
+describe('the hand-built spline', () => {
+  it('is C² at joint 1 and G¹ with length ratio ½ at joint 2', () => {
+    // Joint 2: c6 − c5 = (1, 1), c7 − c6 = (0.5, 0.5): same direction, half the length.
+    const [first, second] = derive(at('inspector')).joints;
+    expect(first.continuity).toBe('C2');
+    expect(second.continuity).toBe('G1');
+    expect(second.lengthRatio).toBeCloseTo(0.5, 12);
+  });
+  it('moves a joint with its two neighbours', () => {
+    const s = at('inspector');
+    const next = mainFigure.moveHandle!(s, 'q3', [3, 3], derive(s));
+    expect(next.q.slice(2, 5)).toEqual([
+      [2, 3.5],
+      [3, 3],
+      [4, 2.5],
+    ]);
+    expect(next.q[1]).toEqual(s.q[1]);
+  });
+});
+
+describe('the grid', () => {
+  it('moves a point of a row in all three of its cells, and no other row', () => {
+    const s = at('grid');
+    const cell = gridFigures.find((f) => f.id === 'spi-c1')!;
+    const next = cell.moveHandle!(s, 'p2', [9, 9], derive(s));
+    const m = derive(next);
+    expect(m.grid.spi.c0[1][3]).toEqual([9, 9]);
+    expect(m.grid.spi.c2[2][0]).toEqual([9, 9]);
+    expect(m.grid.spi.c1[1][3]).toEqual([9, 9]);
+    expect(next.inf).toBe(s.inf);
+  });
+});
+
+describe('the script', () => {
+  it('opens with the defaults and every scene at step 0', () => {
+    expect(scenes[0].apply(defaults)).toEqual(defaults);
+    expect(scenes.map((s) => s.id)).toEqual(PARTS);
+    for (const scene of scenes) expect(scene.apply(defaults).step).toBe(0);
+  });
+  it('has a caption for every step of every scene, and formulas with finite numbers', () => {
+    for (const scene of scenes) {
+      const s = scene.apply(defaults);
+      for (let k = 0; k <= stepCount(s); k++) {
+        const state = { ...s, step: k };
+        expect(steps.describe(state, k), `${scene.id} ${k}`).toMatch(/^\S.{10,}$/);
+        expect(steps.formula!(derive(state), state) ?? '').not.toMatch(/NaN|undefined|Infinity/);
+      }
+    }
+  });
+});
