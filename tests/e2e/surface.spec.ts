@@ -29,7 +29,7 @@ async function expectPointMatches(page: Page): Promise<void> {
     .poll(async () => {
       const state = hashState(page);
       const expected = bezierSurfacePoint(netFromLink(page), Number(state.u), Number(state.v));
-      const rows = [/^Σ/, /u then v/, /v then u/];
+      const rows = [/^Σ/, /^u, then v/, /^v, then u/];
       const shown = await Promise.all(rows.map((row) => readPoint(page, row)));
       return shown.every((p) => p.every((value, d) => Math.abs(value - expected[d]) <= 1e-9));
     })

@@ -174,7 +174,6 @@ export function drawConstruction(
             color: weakest === 'none' || weakest === 'C0' ? color(1) : color(2),
             halo: true,
             bold: true,
-            box: true,
           });
       }
       break;

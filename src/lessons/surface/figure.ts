@@ -167,7 +167,7 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
     if (shown.corners) {
       const x = state.x;
       for (const corner of [x[0][0], x[3][0], x[0][3], x[3][3]])
-        scene.dot(corner, theme.accent, theme.sizes.handle * 1.5);
+        scene.dot(corner, theme.accent, theme.sizes.point * 1.8);
     }
     drawConstruction(scene, painter, m, info, up);
     scene.flush();

@@ -99,13 +99,14 @@ export function surfacePanel(
     h('div', { class: 'lesson-tools surface-v' }, h('label', {}, 'v ', vSlider), vField),
     h('div', { class: 'lesson-tools' }, ...look.labels),
     h('h2', {}, 'The point x(u, v), three ways'),
+    h('p', {}, 'By the double sum, and by de Casteljau in u then v and in v then u:'),
     h(
       'table',
       { class: 'data-table', 'aria-label': 'The point x(u, v) three ways' },
       h(
         'thead',
         {},
-        h('tr', {}, ...['Computed by', 'x', 'y', 'z'].map((c) => h('th', { scope: 'col' }, c))),
+        h('tr', {}, ...['By', 'x', 'y', 'z'].map((c) => h('th', { scope: 'col' }, c))),
       ),
       pointBody,
     ),
@@ -159,9 +160,9 @@ export function surfacePanel(
         cells: [name, ...p.map((value) => fmt(value, DIGITS))],
       });
       pointRows.set([
-        three('Σ fₘ(u) fₙ(v) xₘ,ₙ', m.point),
-        three('de Casteljau, u then v', m.uThenV.point),
-        three('de Casteljau, v then u', m.vThenU.point),
+        three('Σ fₘ fₙ xₘ,ₙ', m.point),
+        three('u, then v', m.uThenV.point),
+        three('v, then u', m.vThenU.point),
       ]);
       derivatives.set(
         `\\begin{aligned}\\partial\\mathbf{x}/\\partial u &= ${slotPoint(3)}\\\\ \\partial\\mathbf{x}/\\partial v &= ${slotPoint(3)}\\\\ \\partial\\mathbf{x}/\\partial u\\times\\partial\\mathbf{x}/\\partial v &= ${slotPoint(3)}\\\\ \\mathbf{n} &= ${m.normal ? slotPoint(3) : '\\text{undefined (the tangents are parallel)}'}\\end{aligned}`,
