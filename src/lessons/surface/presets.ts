@@ -83,15 +83,16 @@ const scene = (
 });
 
 export const SCENES: Scene<SurfaceState>[] = [
-  scene('patch', 'The patch', 'patch', LECTURE_NET, { u: 0.3, v: 0.6 }),
+  scene('patch', 'The patch', 'patch', LECTURE_NET, { u: 0.3, v: 0.6, look: 'shaded' }),
   scene('rows', 'Choose v, then u', 'rows'),
   scene('casteljau', 'de Casteljau both ways', 'casteljau'),
   scene('matrix', 'Matrix form', 'matrix'),
   scene('weights', 'The 16 weights', 'weights'),
   scene('normal', 'Tangents and normal', 'normal'),
-  scene('flat', 'Flat', 'patch', FLAT_NET),
-  scene('saddle', 'Saddle', 'patch', SADDLE_NET),
-  scene('bump', 'Bump', 'patch', BUMP_NET, { u: 0.5, v: 0.5 }),
+  scene('flat', 'Flat', 'patch', FLAT_NET, { look: 'shaded' }),
+  // The saddle's iso-curves are straight lines (it is bilinear): shown as lines.
+  scene('saddle', 'Saddle', 'patch', SADDLE_NET, { look: 'lines' }),
+  scene('bump', 'Bump', 'patch', BUMP_NET, { u: 0.5, v: 0.5, look: 'shaded' }),
   scene('wave', 'Wave', 'patch', WAVE_NET),
   scene('twisted', 'Not planar', 'patch', TWISTED_NET),
   scene('c0', 'Two patches, C⁰', 'join', JOIN_NET, { y: JOIN_NEXT_C0 }),
