@@ -54,6 +54,23 @@ describe('the surface model, against values by hand', () => {
   });
 });
 
+describe('the sampled patch', () => {
+  it('lies on x(u, v) at every facet corner and iso-line point, sampled once per net', () => {
+    const m = at(SADDLE_NET, 0.3, 0.6);
+    // The saddle is (3u, 3v, 9(u − ½)(v − ½)/2).
+    const saddle = (u: number, v: number) => [3 * u, 3 * v, (9 * (u - 0.5) * (v - 0.5)) / 2];
+    m.patch.grid.forEach((row, i) =>
+      row.forEach((p, j) =>
+        p.forEach((value, d) => expect(value).toBeCloseTo(saddle(i / 16, j / 16)[d], 12)),
+      ),
+    );
+    m.patch.vLines[2].forEach((p, j) =>
+      p.forEach((value, d) => expect(value).toBeCloseTo(saddle(j / 32, 2 / 8)[d], 12)),
+    );
+    expect(derive({ ...m.state, u: 0.9 }).patch).toBe(m.patch);
+  });
+});
+
 describe('the script', () => {
   it('opens with the defaults, and every scene and step has a caption and a finite formula', () => {
     expect(SCENES[0].apply(defaults)).toEqual(defaults);

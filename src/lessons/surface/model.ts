@@ -5,9 +5,9 @@ import {
   bezierBasisMatrix,
   bezierJointContinuity,
   bezierPoint,
+  sampleBezier,
   bezierSurfaceDerivatives,
   bezierSurfaceNormal,
-  bezierSurfacePoint,
   cross,
   surfaceColumnPoints,
   surfaceDeCasteljau,
@@ -132,28 +132,35 @@ export function derive(state: SurfaceState): SurfaceModel {
   };
 }
 
+/** Samples per net: moving u or v keeps the net's array, so its patch is sampled once. */
+const sampled = new WeakMap<readonly (readonly Point[])[], PatchSamples>();
+
+/**
+ * The patch sampled along its iso-curves: for u fixed, the column points
+ * c_n(u) are a cubic in v (the construction of the notes), sampled directly.
+ */
 function samplePatch(net: readonly (readonly Point[])[]): PatchSamples {
-  const at = (i: number, j: number, count: number, other: number) =>
-    bezierSurfacePoint(net, i / count, j / other);
+  const known = sampled.get(net);
+  if (known) return known;
+  const curve = (points: readonly Point[], segments: number): Point[] => {
+    const flat = sampleBezier(points, segments);
+    return Array.from({ length: segments + 1 }, (_, j) => [
+      flat[3 * j],
+      flat[3 * j + 1],
+      flat[3 * j + 2],
+    ]);
+  };
   const grid: Point[][] = [];
-  for (let i = 0; i <= FACETS; i++) {
-    const row: Point[] = [];
-    for (let j = 0; j <= FACETS; j++) row.push(at(i, j, FACETS, FACETS));
-    grid.push(row);
-  }
+  for (let i = 0; i <= FACETS; i++) grid.push(curve(surfaceColumnPoints(net, i / FACETS), FACETS));
   const uLines: Point[][] = [];
   const vLines: Point[][] = [];
   for (let i = 0; i <= ISO_LINES; i++) {
-    const uLine: Point[] = [];
-    const vLine: Point[] = [];
-    for (let j = 0; j <= CURVE_SEGMENTS; j++) {
-      uLine.push(at(i, j, ISO_LINES, CURVE_SEGMENTS));
-      vLine.push(bezierSurfacePoint(net, j / CURVE_SEGMENTS, i / ISO_LINES));
-    }
-    uLines.push(uLine);
-    vLines.push(vLine);
+    uLines.push(curve(surfaceColumnPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
+    vLines.push(curve(surfaceRowPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
   }
-  return { grid, uLines, vLines };
+  const samples = { grid, uLines, vLines };
+  sampled.set(net, samples);
+  return samples;
 }
 
 /** A cubic curve in 3D sampled at 33 points (drawn as a polyline in space). */
