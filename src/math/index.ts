@@ -95,6 +95,13 @@ export { nurbsPoint, nurbsCircle } from './nurbs';
 // Surfaces, geometry, drawing
 export type { SurfaceJet } from './surface';
 export { bezierSurfacePoint, bezierSurfaceDerivatives, bezierSurfaceNormal } from './surface';
+export type { SurfaceConstruction, SurfaceOrder } from './surfaceConstruction';
+export {
+  surfaceRowPoints,
+  surfaceColumnPoints,
+  surfaceDeCasteljau,
+  surfaceWeights,
+} from './surfaceConstruction';
 export { bezierTangent, bezierCurvature } from './curvature';
 export type { FrenetFrame } from './frenetFrame';
 export { bezierFrenetFrame, bezierNormal } from './frenetFrame';

@@ -1,0 +1,201 @@
+import {
+  type Continuity,
+  type Point,
+  type SurfaceConstruction,
+  bezierBasisMatrix,
+  bezierJointContinuity,
+  bezierPoint,
+  sampleBezier,
+  bezierSurfaceDerivatives,
+  bezierSurfaceNormal,
+  cross,
+  surfaceColumnPoints,
+  surfaceDeCasteljau,
+  surfaceRowPoints,
+  surfaceWeights,
+} from '../../math';
+import { boundsOf } from '../../render/projection';
+import type { Bounds } from '../../render/projection';
+import { type SurfaceState, coordinateIndex } from './state';
+
+/** Quads per side of the shaded patch: 16 × 16 flat facets, sampled once per state. */
+export const FACETS = 16;
+/** Iso-parameter lines per direction (u, v = 0, 1/8, …, 1). */
+export const ISO_LINES = 8;
+/** Segments of every sampled curve. */
+const CURVE_SEGMENTS = 32;
+
+/** A patch sampled for drawing. */
+export interface PatchSamples {
+  /** `grid[i][j]` = x(i/FACETS, j/FACETS): the corners of the shaded facets. */
+  grid: Point[][];
+  /** Iso-curves u = i/ISO_LINES, each a polyline in v. */
+  uLines: Point[][];
+  /** Iso-curves v = j/ISO_LINES, each a polyline in u. */
+  vLines: Point[][];
+}
+
+/** The matrix form x(u, v) = U·M·B·Mᵀ·Vᵀ of one coordinate, with its numbers. */
+export interface MatrixForm {
+  /** [1 u u² u³] and [1 v v² v³]. */
+  U: number[];
+  V: number[];
+  /** The power-basis matrix of the cubic Bézier curve (row k: the coefficients of uᵏ). */
+  M: number[][];
+  /** The chosen coordinate of the 16 control points, `B[m][n]`. */
+  B: number[][];
+  /** U·M = (f0(u), …, f3(u)) and V·M = (f0(v), …, f3(v)). */
+  UM: number[];
+  VM: number[];
+  /** (U·M)·B, a row of four numbers. */
+  UMB: number[];
+  value: number;
+}
+
+/** How the two patches of the joined pair meet along their shared edge. */
+export interface JoinReport {
+  /** Per column n of the pair: the continuity of the curves x(·,n) then y(·,n) at the edge. */
+  columns: Continuity[];
+  /** The weakest of them: what the surface has. */
+  weakest: Continuity;
+}
+
+export interface SurfaceModel {
+  state: SurfaceState;
+  patch: PatchSamples;
+  /** The second patch, in the scene of two joined patches; null otherwise. */
+  second: PatchSamples | null;
+  join: JoinReport | null;
+  /** x(u, v) by the Bernstein double sum. */
+  point: Point;
+  du: Point;
+  dv: Point;
+  /** ∂x/∂u × ∂x/∂v and its unit vector (null where the tangent plane is undefined). */
+  crossProduct: Point;
+  normal: Point | null;
+  /** r_m(v) = Σn fn(v) x(m,n): the control points of the iso-curve v = const. */
+  rowPoints: Point[];
+  /** c_n(u) = Σm fm(u) x(m,n): the control points of the iso-curve u = const. */
+  columnPoints: Point[];
+  /** Row m of the net as a curve in v, sampled. */
+  rowCurves: Point[][];
+  /** Column n of the net as a curve in u, sampled. */
+  columnCurves: Point[][];
+  /** The iso-curve v = const through the point (a curve in u), and u = const (a curve in v). */
+  isoV: Point[];
+  isoU: Point[];
+  uThenV: SurfaceConstruction;
+  vThenU: SurfaceConstruction;
+  /** fm(u)·fn(v), `weights[m][n]`, and their sum. */
+  weights: number[][];
+  weightSum: number;
+  matrix: MatrixForm;
+  bounds: Bounds;
+}
+
+export function derive(state: SurfaceState): SurfaceModel {
+  const { x, u, v } = state;
+  const jet = bezierSurfaceDerivatives(x, u, v);
+  const crossProduct = cross(jet.du, jet.dv);
+  let normal: Point | null;
+  try {
+    normal = bezierSurfaceNormal(x, u, v);
+  } catch {
+    normal = null;
+  }
+  const rowPoints = surfaceRowPoints(x, v);
+  const columnPoints = surfaceColumnPoints(x, u);
+  const weights = surfaceWeights(4, 4, u, v);
+  const pair = state.s === 'join';
+  return {
+    state,
+    patch: samplePatch(x),
+    second: pair ? samplePatch(state.y) : null,
+    join: pair ? joinReport(x, state.y) : null,
+    point: jet.point,
+    du: jet.du,
+    dv: jet.dv,
+    crossProduct,
+    normal,
+    rowPoints,
+    columnPoints,
+    rowCurves: x.map((row) => sampleCurve(row)),
+    columnCurves: x[0].map((_, n) => sampleCurve(x.map((row) => row[n]))),
+    isoV: sampleCurve(rowPoints),
+    isoU: sampleCurve(columnPoints),
+    uThenV: surfaceDeCasteljau(x, u, v, 'u-then-v'),
+    vThenU: surfaceDeCasteljau(x, u, v, 'v-then-u'),
+    weights,
+    weightSum: weights.flat().reduce((sum, w) => sum + w, 0),
+    matrix: matrixForm(state),
+    bounds: boundsOf(pair ? [...x.flat(), ...state.y.flat()] : x.flat()),
+  };
+}
+
+/** Samples per net: moving u or v keeps the net's array, so its patch is sampled once. */
+const sampled = new WeakMap<readonly (readonly Point[])[], PatchSamples>();
+
+/**
+ * The patch sampled along its iso-curves: for u fixed, the column points
+ * c_n(u) are a cubic in v (the construction of the notes), sampled directly.
+ */
+function samplePatch(net: readonly (readonly Point[])[]): PatchSamples {
+  const known = sampled.get(net);
+  if (known) return known;
+  const curve = (points: readonly Point[], segments: number): Point[] => {
+    const flat = sampleBezier(points, segments);
+    return Array.from({ length: segments + 1 }, (_, j) => [
+      flat[3 * j],
+      flat[3 * j + 1],
+      flat[3 * j + 2],
+    ]);
+  };
+  const grid: Point[][] = [];
+  for (let i = 0; i <= FACETS; i++) grid.push(curve(surfaceColumnPoints(net, i / FACETS), FACETS));
+  const uLines: Point[][] = [];
+  const vLines: Point[][] = [];
+  for (let i = 0; i <= ISO_LINES; i++) {
+    uLines.push(curve(surfaceColumnPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
+    vLines.push(curve(surfaceRowPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
+  }
+  const samples = { grid, uLines, vLines };
+  sampled.set(net, samples);
+  return samples;
+}
+
+/** A cubic curve in 3D sampled at 33 points (drawn as a polyline in space). */
+function sampleCurve(points: readonly Point[]): Point[] {
+  const curve: Point[] = [];
+  for (let j = 0; j <= CURVE_SEGMENTS; j++) {
+    curve.push(bezierPoint(points, j / CURVE_SEGMENTS));
+  }
+  return curve;
+}
+
+function matrixForm(state: SurfaceState): MatrixForm {
+  const d = coordinateIndex(state.c);
+  const M = bezierBasisMatrix(3);
+  const powers = (t: number) => [1, t, t * t, t * t * t];
+  const U = powers(state.u);
+  const V = powers(state.v);
+  const B = state.x.map((row) => row.map((p) => p[d]));
+  const times = (row: readonly number[], matrix: readonly (readonly number[])[]) =>
+    matrix[0].map((_, j) => row.reduce((sum, value, k) => sum + value * matrix[k][j], 0));
+  const UM = times(U, M);
+  const VM = times(V, M);
+  const UMB = times(UM, B);
+  return { U, V, M, B, UM, VM, UMB, value: UMB.reduce((sum, value, n) => sum + value * VM[n], 0) };
+}
+
+const ORDER: readonly Continuity[] = ['none', 'C0', 'G1', 'C1', 'G2', 'C2'];
+
+export function joinReport(first: readonly Point[][], second: readonly Point[][]): JoinReport {
+  const columns = first[0].map((_, n) =>
+    bezierJointContinuity(
+      first.map((row) => row[n]),
+      second.map((row) => row[n]),
+    ),
+  );
+  const weakest = columns.reduce((a, b) => (ORDER.indexOf(b) < ORDER.indexOf(a) ? b : a));
+  return { columns, weakest };
+}

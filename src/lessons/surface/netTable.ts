@@ -1,0 +1,90 @@
+import { h } from '../../app/dom';
+import { formatNumber, parseNumber } from '../../app/fields';
+import type { LessonApi, Point } from '../../app/lesson';
+import type { SurfaceModel } from './model';
+import type { SurfaceState } from './state';
+
+/** Largest coordinate typed into the table (the link accepts up to 1e6). */
+const LIMIT = 1e6;
+
+/** "x, y, z" typed by hand → a point, or null if it is not three numbers. */
+export function parseTriple(text: string): Point | null {
+  const parts = text.split(/[,;\s]+/).filter((part) => part !== '');
+  if (parts.length !== 3) return null;
+  const values = parts.map((part) => parseNumber(part.replace('−', '-')));
+  if (values.some((value) => value === null || Math.abs(value) > LIMIT)) return null;
+  return values as number[];
+}
+
+const tripleText = (p: readonly number[]) => p.map(formatNumber).join(', ');
+
+/**
+ * The control net as an editable 4 × 4 table: one cell per point, "x, y, z",
+ * m down and n across as in the lecture's x(m,n). Enter or leaving the cell applies it.
+ */
+export function netTable(
+  api: LessonApi<SurfaceState, SurfaceModel>,
+  which: 'x' | 'y',
+): { element: HTMLElement; update(state: SurfaceState): void } {
+  const inputs: HTMLInputElement[][] = [];
+  const body = h('tbody', {});
+  for (let m = 0; m < 4; m++) {
+    const row = h('tr', {}, h('th', { scope: 'row' }, `m = ${m}`));
+    inputs.push([]);
+    for (let n = 0; n < 4; n++) {
+      const input = h('input', {
+        type: 'text',
+        inputmode: 'decimal',
+        spellcheck: 'false',
+        'aria-label': `${which}${m},${n} (x, y, z)`,
+        class: 'net-cell',
+      });
+      input.addEventListener('change', () => {
+        const state = api.get();
+        const p = parseTriple(input.value);
+        if (!p) {
+          api.notice(
+            `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[which][m][n])}.`,
+          );
+          input.value = tripleText(state[which][m][n]);
+          return;
+        }
+        const net = state[which].map((points, i) =>
+          points.map((q, j) => (i === m && j === n ? p : q)),
+        );
+        api.set({ ...state, [which]: net });
+      });
+      inputs[m].push(input);
+      row.append(h('td', {}, input));
+    }
+    body.append(row);
+  }
+  const element = h(
+    'table',
+    { class: 'data-table net-table', 'aria-label': `Control net ${which} (x, y, z of each point)` },
+    h(
+      'thead',
+      {},
+      h(
+        'tr',
+        {},
+        h('th', { scope: 'col' }, ''),
+        ...[0, 1, 2, 3].map((n) => h('th', { scope: 'col' }, `n = ${n}`)),
+      ),
+    ),
+    body,
+  );
+  return {
+    element,
+    update(state) {
+      state[which].forEach((points, m) =>
+        points.forEach((p, n) => {
+          const input = inputs[m][n];
+          const text = tripleText(p);
+          // Never overwrite what someone is typing.
+          if (input.value !== text && document.activeElement !== input) input.value = text;
+        }),
+      );
+    },
+  };
+}

@@ -1,0 +1,64 @@
+import type { FigureSpec } from '../../app/lesson';
+import type { SurfaceModel } from './model';
+import type { SurfaceState } from './state';
+
+// The 16 weights fm(u)·fn(v) at the cursor as a 4 × 4 heat map: cell (m, n)
+// at column n, row m from the top, its colour as strong as its weight; the
+// row factors fm(u) on the right, the column factors fn(v) below.
+
+/** What the map shows at the step: the row factors, the column factors, or the products. */
+export function weightsShown(state: SurfaceState): 'rows' | 'columns' | 'products' {
+  if (state.s === 'weights' && state.k === 1) return 'rows';
+  if (state.s === 'weights' && state.k === 2) return 'columns';
+  return 'products';
+}
+
+const cell = (m: number, n: number) => [
+  [n, 3 - m],
+  [n + 1, 3 - m],
+  [n + 1, 4 - m],
+  [n, 4 - m],
+];
+
+export const weightsFigure: FigureSpec<SurfaceState, SurfaceModel> = {
+  id: 'weights',
+  title: 'The 16 weights fm(u)·fn(v) at the point, as a heat map',
+  kind: 'drawing',
+  weight: 1,
+  bounds: () => ({ minX: -0.8, minY: -1.35, maxX: 5.2, maxY: 4.7 }),
+  draw(painter, m, info) {
+    const theme = painter.theme;
+    const shown = weightsShown(m.state);
+    const fu = m.weights.map((row) => row.reduce((s, w) => s + w, 0));
+    const fv = m.weights[0].map((_, n) => m.weights.reduce((s, row) => s + row[n], 0));
+    // Numbers fit their cells: as large as the theme asks, or as the cell allows.
+    const cellPixels = Math.abs(
+      painter.view.toScreen([1, 0])[0] - painter.view.toScreen([0, 0])[0],
+    );
+    const size = Math.min(theme.sizes.label, cellPixels * 0.27);
+    const text = (t: string, x: number, y: number, color = theme.ink, bold = false) =>
+      painter.label(t, [x, y], { align: 'center', baseline: 'middle', color, size, bold });
+    for (let i = 0; i < 4; i++) {
+      for (let j = 0; j < 4; j++) {
+        const w = shown === 'rows' ? fu[i] : shown === 'columns' ? fv[j] : m.weights[i][j];
+        // Alpha follows the weight on a square-root scale, so small weights still show.
+        painter.polygon(cell(i, j), theme.accent, 0.06 + 0.94 * Math.sqrt(w), {
+          color: theme.polygon,
+          width: theme.sizes.thin,
+        });
+        if (!info.thumbnail) text(w.toFixed(shown === 'products' ? 3 : 2), j + 0.5, 3.5 - i);
+      }
+    }
+    if (info.thumbnail) return;
+    for (let i = 0; i < 4; i++) {
+      text(`${i}`, -0.3, 3.5 - i, theme.muted);
+      text(`${i}`, i + 0.5, 4.35, theme.muted);
+      if (shown !== 'columns') text(fu[i].toFixed(3), 4.65, 3.5 - i, painter.color(0), true);
+      if (shown !== 'rows') text(fv[i].toFixed(3), i + 0.5, -0.35, painter.color(1), true);
+    }
+    if (shown !== 'columns') text('fₘ(u)', 4.65, 4.35, painter.color(0));
+    if (shown !== 'rows') text('fₙ(v)', -0.3, -0.35, painter.color(1));
+    text('m∖n', -0.3, 4.35, theme.muted);
+    if (shown === 'products') text(`Σ = ${m.weightSum.toFixed(12)}`, 2, -1.05, theme.ink, true);
+  },
+};

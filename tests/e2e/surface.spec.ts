@@ -1,0 +1,144 @@
+import type { Page } from '@playwright/test';
+import { bezierSurfacePoint } from '../../src/math';
+import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+
+const figure = (page: Page) => page.locator('canvas[data-figure="patch"]');
+const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
+
+/** The control net from the link: `x=` holds 16 points "x,y,z" row by row. */
+function netFromLink(page: Page): number[][][] {
+  const flat = hashState(page)
+    .x.split(';')
+    .map((p) => p.split(',').map(Number));
+  return [0, 1, 2, 3].map((m) => flat.slice(4 * m, 4 * m + 4));
+}
+
+/** A row of the "three ways" table, read from the page: [x, y, z]. */
+async function readPoint(page: Page, row: RegExp): Promise<number[]> {
+  const cells = page
+    .getByRole('table', { name: 'The point x(u, v) three ways' })
+    .getByRole('row', { name: row })
+    .locator('td');
+  const texts = await cells.allTextContents();
+  return texts.slice(1).map(Number);
+}
+
+/** The point shown agrees with bezierSurfacePoint at the link's u, v and net, to 1e-9, all three ways. */
+async function expectPointMatches(page: Page): Promise<void> {
+  await expect
+    .poll(async () => {
+      const state = hashState(page);
+      const expected = bezierSurfacePoint(netFromLink(page), Number(state.u), Number(state.v));
+      const rows = [/^Σ/, /^u, then v/, /^v, then u/];
+      const shown = await Promise.all(rows.map((row) => readPoint(page, row)));
+      return shown.every((p) => p.every((value, d) => Math.abs(value - expected[d]) <= 1e-9));
+    })
+    .toBe(true);
+}
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('./#/surface');
+  await expect(figure(page)).toBeVisible();
+});
+
+test('u, v and the camera: the point read from the page is x(u, v), three ways, and the weights sum to 1', async ({
+  page,
+}) => {
+  await expectPointMatches(page);
+  await page.getByRole('slider', { name: 'u' }).fill('0.73');
+  await expectHash(page, 'u', (value) => value === '0.73');
+  await expectPointMatches(page);
+  await page.getByRole('spinbutton', { name: 'v value' }).fill('0.19');
+  await page.getByRole('spinbutton', { name: 'v value' }).press('Enter');
+  await expectHash(page, 'v', (value) => value === '0.19');
+  await expectPointMatches(page);
+  await page.getByRole('slider', { name: 'v' }).fill('0.5');
+  await expectHash(page, 'v', (value) => value === '0.5');
+  await expectPointMatches(page);
+  const sum = Number(
+    await page.getByRole('status', { name: 'Sum of the 16 weights' }).textContent(),
+  );
+  expect(Math.abs(sum - 1)).toBeLessThanOrEqual(1e-12);
+
+  // Orbiting turns the picture, not the point.
+  const before = await pixels(page);
+  await figure(page).focus();
+  await page.keyboard.press(']');
+  await page.keyboard.press('}');
+  await expectHash(page, 'view.patch', (value) => value !== '');
+  expect(await pixels(page)).not.toBe(before);
+  await expectPointMatches(page);
+  await snapshot(page, 'surface-orbited');
+});
+
+test('Shift-dragging a control point moves it along one axis only', async ({ page }) => {
+  await page.getByRole('button', { name: 'The patch' }).click();
+  const handle = page.getByRole('button', { name: /^x1,1 at/ });
+  const box = (await handle.boundingBox())!;
+  const x = box.x + box.width / 2;
+  const y = box.y + box.height / 2;
+  const before = netFromLink(page)[1][1];
+  await page.mouse.move(x, y);
+  await page.keyboard.down('Shift');
+  await page.mouse.down();
+  await page.mouse.move(x + 2, y - 30, { steps: 3 });
+  await page.mouse.move(x + 4, y - 70, { steps: 4 });
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  await expectHash(page, 'x', () => netFromLink(page)[1][1][2] !== before[2]);
+  const after = netFromLink(page)[1][1];
+  // Straight up the screen is the z axis: x and y keep their values exactly.
+  expect(after[0]).toBe(before[0]);
+  expect(after[1]).toBe(before[1]);
+  expect(after[2]).toBeGreaterThan(before[2]);
+  // The table and the other 15 points follow the link.
+  await expect(page.getByRole('textbox', { name: 'x1,1 (x, y, z)' })).toHaveValue(
+    after.map((v) => String(Number(v.toPrecision(10)))).join(', '),
+  );
+  await expectPointMatches(page);
+});
+
+test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => {
+  const before = await pixels(page);
+  const cell = page.getByRole('textbox', { name: 'x2,1 (x, y, z)' });
+  await cell.fill('2, 1, -1.25');
+  await cell.press('Enter');
+  await expectHash(page, 'x', () => netFromLink(page)[2][1].join(',') === '2,1,-1.25');
+  await expect(
+    page.getByRole('button', { name: /^x2,1 at \(2\.00, 1\.00, -1\.25\)/ }),
+  ).toBeAttached();
+  expect(await pixels(page)).not.toBe(before);
+  await expectPointMatches(page);
+  // Not three numbers: the cell is put back and nothing changes.
+  await cell.fill('2, oops');
+  await cell.press('Enter');
+  await expect(cell).toHaveValue('2, 1, -1.25');
+});
+
+test('the clicker walks every scene from its first step to its last, in presenter view', async ({
+  page,
+}) => {
+  const scenes = await page.getByRole('group', { name: 'Scenes' }).getByRole('button').count();
+  expect(scenes).toBe(13);
+  await page.keyboard.press('p');
+  for (let i = 1; i <= scenes; i++) {
+    await expect(page.getByText(new RegExp(`scene ${i}/${scenes}, step 0/`))).toBeVisible();
+    await page.keyboard.press('End');
+    await expect(page.getByText(new RegExp(`scene ${i}/${scenes}, step [1-9]/`))).toBeVisible();
+    await snapshot(page, `surface-scene-${i}`);
+    await page.keyboard.press('PageDown');
+  }
+  // After the last scene, the clicker stays on its last step.
+  await expect(page.getByText(new RegExp(`scene ${scenes}/${scenes}`))).toBeVisible();
+});
+
+test('two patches: moving a point next to the edge breaks C¹', async ({ page }) => {
+  await page.getByRole('button', { name: 'Two patches, C¹' }).click();
+  await page.keyboard.press('End');
+  await expect(page.getByText(/collinear and equally long: C¹/).first()).toBeVisible();
+  const handle = page.getByRole('button', { name: /^y1,1 at/ });
+  await handle.focus();
+  await page.keyboard.press('Control+ArrowUp');
+  await expect(page.getByText(/not collinear: C⁰ only/).first()).toBeVisible();
+  await snapshot(page, 'surface-join-broken');
+});
