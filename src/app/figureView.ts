@@ -2,7 +2,13 @@ import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/ha
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
 import { OrbitCamera } from '../render/orbitCamera';
-import { type HandleState, Painter, type Shown, SHOW_ALL, splitSubscripts } from '../render/painter';
+import {
+  type HandleState,
+  Painter,
+  type Shown,
+  SHOW_ALL,
+  splitSubscripts,
+} from '../render/painter';
 import type { LabelBox } from '../render/labels';
 import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
@@ -209,10 +215,13 @@ export class FigureView<S, M> {
   }
 
   private applyFit(model: M, theme: Theme): void {
-    const padding =
+    // Room for handles and labels at the edge, but never more than a share of
+    // a small figure (presenter view's sizes would leave it a postage stamp).
+    const room =
       this.spec.kind === 'plot'
         ? theme.sizes.small * 3.2
         : theme.sizes.handle * 2 + theme.sizes.label * 1.6;
+    const padding = Math.min(room, 0.12 * Math.min(this.view.width, this.view.height));
     this.view.fit(this.spec.bounds(model), padding, this.spec.kind !== 'plot');
     this.fitted = true;
   }

@@ -153,9 +153,21 @@ export class OrbitCamera implements Projection {
       1e-9,
     );
     this.distance = radius * 4;
-    const inner = Math.max(Math.min(this.width, this.height) / 2 - padding, 10);
+    // The box's corners as this camera sees them: fit their extent, not a
+    // sphere round them, so a flat patch or a wide figure fills its frame.
+    let halfX = 1e-9;
+    let halfY = 1e-9;
+    for (const x of [bounds.minX, bounds.maxX])
+      for (const y of [bounds.minY, bounds.maxY])
+        for (const z of [minZ, maxZ]) {
+          const [xc, yc] = this.relative([x, y, z]);
+          halfX = Math.max(halfX, Math.abs(xc));
+          halfY = Math.max(halfY, Math.abs(yc));
+        }
+    const innerX = Math.max(this.width / 2 - padding, 10);
+    const innerY = Math.max(this.height / 2 - padding, 10);
     // Perspective enlarges what is near: leave room for it.
-    this.scale = (inner / radius) * (this.perspective ? 0.75 : 1);
+    this.scale = Math.min(innerX / halfX, innerY / halfY) * (this.perspective ? 0.8 : 1);
   }
 
   dragBy(dx: number, dy: number): void {
