@@ -2,6 +2,7 @@ import type { FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
 import type { Painter } from '../../render/painter';
 import { highlightedIndex } from './hover';
+import { seriesDash } from './scriptKit';
 import type { BlendingModel, Compared } from './model';
 import { type BlendingState, MAX_POINTS } from './state';
 
@@ -15,40 +16,47 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
   bounds: (m) => m.curveBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, n, weights, point, compared } = m;
+    const { state, n, weights, point, compared, shown } = m;
     const highlighted = highlightedIndex(info.hover);
 
-    if (compared?.curve) {
-      painter.polyline(compared.curve, {
-        color: theme.muted,
-        width: theme.sizes.curve * 0.8,
-        dash: [10, 6],
-      });
+    if (compared && shown.compared) {
+      if (compared.curve) {
+        painter.polyline(compared.curve, {
+          color: theme.muted,
+          width: theme.sizes.curve * 0.8,
+          dash: [10, 6],
+        });
+      }
+      drawHermiteData(painter, compared);
     }
-    if (compared) drawHermiteData(painter, compared);
 
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    painter.polylineFlat(m.curve, { color: theme.curve });
+    if (shown.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
 
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
     const largest = theme.sizes.handle * 5;
     state.p.forEach((control, i) => {
+      if (i >= shown.weights) return;
       const color = painter.color(i);
+      const dash = seriesDash(painter, i);
       const radius = theme.sizes.handle * 1.3 + largest * weights[i];
       const lit = highlighted === i;
       painter.ring(
         control,
         radius,
-        { color, width: lit ? theme.sizes.line * 2 : theme.sizes.thin, alpha: 0.9 },
+        { color, width: lit ? theme.sizes.line * 2 : theme.sizes.thin, alpha: 0.9, dash },
         color,
         lit ? 0.4 : 0.22,
       );
-      painter.segment(control, point, {
-        color,
-        width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
-        alpha: lit ? 0.9 : 0.45,
-      });
+      if (shown.point) {
+        painter.segment(control, point, {
+          color,
+          width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
+          alpha: lit ? 0.9 : 0.45,
+          dash,
+        });
+      }
       if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO) {
         painter.label(weights[i].toFixed(3), control, {
           dy: theme.sizes.handle + theme.sizes.small * 1.1,
@@ -60,31 +68,37 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
         });
       }
     });
+    // The weights are written under the points: P(μ), its label and the
+    // compared point keep clear of them.
+    const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
+    const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
 
-    const other = compared?.point;
+    const other = shown.compared ? compared?.point : null;
     if (other) {
       painter.ring(other.at, theme.sizes.point * 1.4, {
         color: theme.muted,
         width: theme.sizes.line * 1.5,
       });
       if (!info.thumbnail) {
-        painter.label(other.label, other.at, {
-          dx: theme.sizes.point + 6,
-          dy: -theme.sizes.label * 0.9,
+        painter.labelClear(other.label, other.at, [...crowd, point], {
           color: theme.muted,
           halo: true,
           bold: true,
         });
       }
     }
+    if (m.note && !info.thumbnail) painter.note(m.note);
+    if (!shown.point) return;
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
-      // Away from the control points and the weights written under them.
-      const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
-      const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
-      painter.labelClear('P(μ)', point, crowd, { color: theme.ink, halo: true, bold: true });
+      painter.labelClear('P(μ)', point, other ? [...crowd, other.at] : crowd, {
+        color: theme.ink,
+        halo: true,
+        bold: true,
+      });
     }
   },
+  trail: (m) => (m.shown.point ? m.point : null),
   handles: (m) =>
     m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {

@@ -31,7 +31,7 @@ export function blendingPanel(
     h(
       'p',
       {},
-      'Every point of a Bézier curve is a weighted average of its control points. The weights are the blending functions W(N, i, μ): as μ runs from 0 to 1 the weight moves from P0 to PN, and the point follows.',
+      'Every point of a Bézier curve is a weighted average of its control points. The weights are the blending functions W(N, i, μ): as μ runs from 0 to 1 the weight moves from P0 to PN, and the point follows. In this lesson the parameter is μ, from 0 to 1.',
     ),
     formula('P(\\mu) = \\sum_{i=0}^{N} W(N,i,\\mu)\\,P_i', true),
     formula('W(N,i,\\mu) = \\binom{N}{i}\\mu^{i}(1-\\mu)^{N-i}', true),
