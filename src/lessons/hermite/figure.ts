@@ -10,10 +10,10 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, segments, patch } = m;
-    if (state.bezier) {
+    const { state, segments, patch, shown } = m;
+    if (shown.bezier) {
       segments.forEach((segment, i) => {
-        const strong = i === state.patch;
+        const strong = i === patch.index;
         painter.polyline(segment, {
           color: painter.color(3),
           width: strong ? theme.sizes.line : theme.sizes.thin,
@@ -24,24 +24,26 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
           painter.dot(q, painter.color(3), theme.sizes.point * (strong ? 1 : 0.7));
       });
     }
-    painter.cubicSegments(segments, { color: theme.curve });
-    if (segments.length > 1) {
-      painter.cubicSegments([segments[state.patch]], {
+    const built = segments.slice(0, shown.patches);
+    painter.cubicSegments(built, { color: theme.curve, role: 'curve' });
+    if (segments.length > 1 && patch.index < shown.patches) {
+      painter.cubicSegments([segments[patch.index]], {
         color: painter.color(0),
         width: theme.sizes.curve * 1.2,
+        role: 'curve',
       });
     }
-    state.p.forEach((p, i) =>
-      painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
-    );
-    painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
+    if (shown.gradients) {
+      state.p.forEach((p, i) =>
+        painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
+      );
+    }
+    if (shown.point) painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
-    painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
-    if (state.bezier) {
+    if (shown.point) painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
+    if (shown.bezier) {
       patch.bezier.slice(1, 3).forEach((q, j) =>
-        painter.label(`B_${j + 1}`, q, {
-          dx: 8,
-          dy: theme.sizes.label,
+        painter.labelClear(`B_${j + 1}`, q, [...m.marks, ...patch.bezier], {
           color: painter.color(3),
           halo: true,
         }),
@@ -49,12 +51,14 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
     }
     if (m.note) painter.note(m.note);
   },
+  trail: (m) => (m.shown.point ? m.patch.point : null),
   handles(m) {
     const points: Handle[] = m.state.p.map((position, i) => ({
       id: `p${i}`,
       label: `P_${i}`,
       position,
     }));
+    if (!m.shown.gradients) return points;
     const tips: Handle[] = m.tips.map((position, i) => ({
       id: `d${i}`,
       label: `D_${i}`,
