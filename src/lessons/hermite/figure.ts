@@ -11,6 +11,8 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   draw(painter, m, info) {
     const theme = painter.theme;
     const { state, segments, patch, shown } = m;
+    // The order the patches take, faintly: P0 to P1 to … (the points alone say little).
+    painter.polyline(state.p, { color: theme.curveFaint, width: theme.sizes.thin, dash: [4, 6] });
     if (shown.bezier) {
       segments.forEach((segment, i) => {
         const strong = i === patch.index;
