@@ -70,7 +70,7 @@ export function drawSolveProgress(painter: Painter, m: RoadModel): void {
   // Row i of the system belongs to village Pi: mark the rows swept so far.
   state.v.forEach((p, i) => {
     if (i >= progress.swept) return;
-    const current = i === progress.row && state.step <= solve.n;
+    const current = i === progress.row && (m.stage.solveStep ?? 0) <= solve.n;
     painter.ring(p, theme.sizes.handle * (current ? 2.4 : 1.7), {
       color: current ? theme.accent : painter.color(0),
       width: current ? theme.sizes.line * 1.5 : theme.sizes.thin,
