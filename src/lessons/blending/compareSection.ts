@@ -5,7 +5,8 @@ import { radioGroup } from '../../app/panelControls';
 import { formula } from '../../render/formula';
 import { comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
-import { type BlendingState, type Comparison, texMu } from './state';
+import { keepLastStep } from './scriptKit';
+import { type BlendingState, type Comparison, stepCount, texMu } from './state';
 
 const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'none', label: 'Bernstein only' },
@@ -32,7 +33,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     name: 'compare',
     choices: CHOICES,
     get: (s) => s.b,
-    set: (s, b) => ({ ...s, b }),
+    set: (s, b) => keepLastStep(s, { ...s, b }, stepCount),
   });
   const explain = h('p', {});
   const body = h('tbody', {});

@@ -2,9 +2,9 @@ import type { FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
 import type { Painter } from '../../render/painter';
 import { highlightedIndex } from './hover';
-import { seriesDash } from './scriptKit';
+import { keepLastStep, seriesDash } from './scriptKit';
 import type { BlendingModel, Compared } from './model';
-import { type BlendingState, MAX_POINTS } from './state';
+import { type BlendingState, MAX_POINTS, stepCount } from './state';
 
 /** Weight labels beside the points stay readable up to this degree. */
 const LABEL_WEIGHTS_UP_TO = 8;
@@ -108,12 +108,12 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: insertPoint(state.p, at) };
+    return keepLastStep(state, { ...state, p: insertPoint(state.p, at) }, stepCount);
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
+    return keepLastStep(state, { ...state, p: state.p.filter((_, k) => k !== i) }, stepCount);
   },
 };
 

@@ -1,6 +1,7 @@
 import type { FigureSpec, Handle, Point } from '../../app/lesson';
 import { ARROW_SCALE, type HermiteModel } from './model';
-import { type HermiteState, MAX_POINTS, patchCount } from './state';
+import { keepLastStep } from '../blending/scriptKit';
+import { type HermiteState, MAX_POINTS, patchCount, stepCount } from './state';
 
 export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   id: 'patches',
@@ -57,13 +58,13 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   handles(m) {
     const points: Handle[] = m.state.p.map((position, i) => ({
       id: `p${i}`,
-      label: `P_${i}`,
+      label: `P_{${i}}`,
       position,
     }));
     if (!m.shown.gradients) return points;
     const tips: Handle[] = m.tips.map((position, i) => ({
       id: `d${i}`,
-      label: `D_${i}`,
+      label: `D_{${i}}`,
       position,
       shape: 'square',
     }));
@@ -90,16 +91,17 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
     const last = state.p[state.p.length - 1];
     // A new point arrives heading away from the last one.
     const d: Point = [at[0] - last[0], at[1] - last[1]];
-    return { ...state, p: [...state.p, at], d: [...state.d, d] };
+    return keepLastStep(state, { ...state, p: [...state.p, at], d: [...state.d, d] }, stepCount);
   },
   removeHandle(state, id) {
     if (!id.startsWith('p') || state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return {
+    const after = {
       ...state,
       p: state.p.filter((_, k) => k !== i),
       d: state.d.filter((_, k) => k !== i),
       patch: Math.min(state.patch, patchCount(state) - 2),
     };
+    return keepLastStep(state, after, stepCount);
   },
 };

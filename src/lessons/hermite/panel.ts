@@ -7,7 +7,9 @@ import { LiveFormula, formula } from '../../render/formula';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
-import { type GradientMode, type HermiteState, MAX_POINTS } from './state';
+import type { Point } from '../../app/lesson';
+import { keepLastStep } from '../blending/scriptKit';
+import { type GradientMode, type HermiteState, MAX_POINTS, stepCount } from './state';
 
 const MODES: [GradientMode, string][] = [
   ['hand', 'By hand: drag the square tips of the arrows'],
@@ -27,7 +29,7 @@ export function hermitePanel(
     id: 'hermite-bezier',
     label: 'Show each patch as a Bézier curve: control points at P ± D/3',
     get: (s) => s.bezier,
-    set: (s, on) => ({ ...s, bezier: on }),
+    set: (s, on) => keepLastStep(s, { ...s, bezier: on }, stepCount),
   });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
@@ -39,9 +41,20 @@ export function hermitePanel(
       const last = s.p[s.p.length - 1];
       const next = extendPolygon(s.p);
       // The new point's gradient follows the new edge.
-      return { ...s, p: [...s.p, next], d: [...s.d, [next[0] - last[0], next[1] - last[1]]] };
+      const d: Point = [next[0] - last[0], next[1] - last[1]];
+      return keepLastStep(s, { ...s, p: [...s.p, next], d: [...s.d, d] }, stepCount);
     },
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1), d: s.d.slice(0, -1) }),
+    remove: (s) =>
+      keepLastStep(
+        s,
+        {
+          ...s,
+          p: s.p.slice(0, -1),
+          d: s.d.slice(0, -1),
+          patch: Math.min(s.patch, s.p.length - 3),
+        },
+        stepCount,
+      ),
   });
   const patchTitle = h('h2', {});
   // Which patch the matrix, the basis and P(μ) are about (the steps build them all in turn).

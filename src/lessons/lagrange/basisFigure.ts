@@ -53,7 +53,7 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
         bounds,
         top,
         weights.slice(0, shown.basis).map((w, k) => ({
-          text: `L_${k}(t) = ${texNumber(w, 2).replace('-', '−')}`,
+          text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
           color: painter.color(k),
         })),
       );

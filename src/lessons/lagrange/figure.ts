@@ -1,8 +1,8 @@
 import type { FigureSpec } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
-import { seriesDash } from '../blending/scriptKit';
+import { keepLastStep, seriesDash } from '../blending/scriptKit';
 import type { LagrangeModel } from './model';
-import { type LagrangeState, MAX_POINTS } from './state';
+import { type LagrangeState, MAX_POINTS, stepCount } from './state';
 
 /** Every point is labelled up to this many; beyond, only the first and the last. */
 const LABEL_ALL_UP_TO = 9;
@@ -64,12 +64,12 @@ export const curveFigure: FigureSpec<LagrangeState, LagrangeModel> = {
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: [...state.p, [at[0], at[1]]] };
+    return keepLastStep(state, { ...state, p: [...state.p, [at[0], at[1]]] }, stepCount);
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
+    return keepLastStep(state, { ...state, p: state.p.filter((_, k) => k !== i) }, stepCount);
   },
 };
 

@@ -5,7 +5,8 @@ import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
 import type { LagrangeModel } from './model';
-import { type LagrangeState, MAX_POINTS, type Spacing } from './state';
+import { keepLastStep } from '../blending/scriptKit';
+import { type LagrangeState, MAX_POINTS, type Spacing, stepCount } from './state';
 
 const SPACINGS: [Spacing, string][] = [
   ['uniform', 'Equally spaced: tₖ = k / n'],
@@ -29,7 +30,7 @@ export function lagrangePanel(
     id: 'lagrange-spline',
     label: 'Compare with a natural cubic spline through the same points',
     get: (s) => s.spline,
-    set: (s, on) => ({ ...s, spline: on }),
+    set: (s, on) => keepLastStep(s, { ...s, spline: on }, stepCount),
   });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
@@ -37,8 +38,8 @@ export function lagrangePanel(
     count: (s) => s.p.length,
     min: 2,
     max: MAX_POINTS,
-    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
+    add: (s) => keepLastStep(s, { ...s, p: [...s.p, extendPolygon(s.p)] }, stepCount),
+    remove: (s) => keepLastStep(s, { ...s, p: s.p.slice(0, -1) }, stepCount),
   });
   const heading = h('h2', {});
   const warning = h('p', { class: 'warning', role: 'note' });
