@@ -28,7 +28,8 @@ export function describeStep(state: BlendingState, k: number): string {
   if (k === 0) return `The control points P0 … P${n} and their polygon`;
   if (!shown.point) {
     const i = k - 1;
-    return `The weight of P${i}: W(${n}, ${i}, μ), largest at μ = ${i}/${n}`;
+    const peak = i === 0 ? '0' : i === n ? '1' : `${i}/${n}`;
+    return `The weight of P${i}: W(${n}, ${i}, μ), largest at μ = ${peak}`;
   }
   if (!shown.curve) return 'P(μ): the control points averaged with these weights';
   if (!shown.compared) return 'As μ runs from 0 to 1, P(μ) traces the Bézier curve';
