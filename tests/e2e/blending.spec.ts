@@ -78,14 +78,22 @@ test('the cursor moves with the keyboard, and the weights of every degree sum to
   const mu = hashState(page).mu;
   await page.keyboard.press('ArrowLeft');
   await expectHash(page, 'mu', (v) => Number(v) < Number(mu));
-  for (let n = 4; n <= 12; n++) {
-    await page.getByRole('button', { name: 'N + 1: add a control point' }).click();
+  const add = page.getByRole('button', { name: 'N + 1: add a control point' });
+  const check = async (n: number) => {
     await expect(page.getByRole('heading', { name: new RegExp(`\\(N = ${n}\\)`) })).toBeVisible();
     const weights = await listedWeights(page);
     expect(weights).toHaveLength(n + 1);
     expect(weights.every((w) => w >= 0)).toBe(true);
     expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
-  }
+  };
+  await add.click();
+  await check(4);
+  // Twelve points (N = 11) from a link, then the last one the lesson allows.
+  const twelve = Array.from({ length: 12 }, (_, i) => `${i},${i % 2}`).join(';');
+  await page.goto(`./#/blending?p=${twelve}&mu=0.37&step=14`);
+  await check(11);
+  await add.click();
+  await check(12);
   await expect(page.getByRole('button', { name: 'N + 1: add a control point' })).toBeDisabled();
 });
 
@@ -133,7 +141,7 @@ test('a link with a bad comparison or too many points keeps the rest and says wh
 test('the script steps from the points through each weight to the curve, then opens the next scene', async ({
   page,
 }) => {
-  await page.goto('./#/blending');
+  await page.goto('./#/blending?step=0');
   const status = page.locator('.step-status');
   await expect(status).toHaveText('Step 0/6: The control points P0 … P3 and their polygon');
   let previous = await pixels(page, 'blending');
@@ -168,33 +176,31 @@ test('the script steps from the points through each weight to the curve, then op
   );
 });
 
-test('every scene opens at step 0 and ends with everything drawn, in normal and projector mode', async ({
+test('every scene opens at step 0 and ends with everything drawn, walked with the clicker in presenter view', async ({
   page,
 }) => {
   const ids = await page
-    .locator('[data-preset]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.preset!));
+    .locator('[data-scene]')
+    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.scene!));
   expect(ids.length).toBeGreaterThanOrEqual(7);
+  await page.goto('./#/blending?step=0');
+  await page.keyboard.press('p');
   const status = page.locator('.step-status');
-  for (const projector of [false, true]) {
-    if (projector) await page.keyboard.press('p');
-    for (const id of ids) {
-      await page.locator(`[data-preset="${id}"]`).click();
-      await expectHash(page, 'scene', (v) => v === id);
-      await expect(status).toHaveText(/^Step 0\/(\d+):/);
-      const first = await pixels(page, 'blending');
-      await page.keyboard.press('End');
-      // N + 1 weights, P(μ), the curve, and the comparison if there is one: at most 20 steps.
-      await expect(status).toHaveText(/^Step (\d+)\/\1:/);
-      const count = Number((await status.innerText()).match(/^Step (\d+)/)![1]);
-      const n = hashState(page).p.split(';').length - 1;
-      expect(count).toBe(
-        n + 3 + (id.startsWith('hermite') || id === 'bspline' || id === 'lagrange' ? 1 : 0),
-      );
-      expect(await pixels(page, 'blending')).not.toBe(first);
-      const weights = await listedWeights(page);
-      expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
-      await snapshot(page, `blending-${id}${projector ? '-projector' : ''}`);
-    }
+  const caption = page.locator('.caption-step');
+  for (const id of ids) {
+    await expectHash(page, 'scene', (v) => v === id);
+    await expectHash(page, 'step', (v) => v === '0');
+    await expect(caption).toHaveText(/^The control points/);
+    const first = await pixels(page, 'blending');
+    await snapshot(page, `blending-projector-${id}-first`);
+    await page.keyboard.press('End');
+    // N + 1 weights, P(μ), the curve, and the comparison if there is one: at most 20 steps.
+    const n = hashState(page).p.split(';').length - 1;
+    const compared = ['hermite', 'bspline', 'lagrange'].includes(id) ? 1 : 0;
+    await expectHash(page, 'step', (v) => v === String(n + 3 + compared));
+    await expect(status).toHaveText(/^Step (\d+)\/\1:/);
+    expect(await pixels(page, 'blending')).not.toBe(first);
+    await snapshot(page, `blending-projector-${id}-last`);
+    await page.keyboard.press('PageDown');
   }
 });

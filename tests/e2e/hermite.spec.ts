@@ -111,7 +111,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
   await expectHash(page, 'mode', (v) => v === 'catmull-rom');
   await page.keyboard.press('End');
   await expectHash(page, 'step', (v) => v === '8');
-  await expect(page.getByText('Patch 2 of 4', { exact: true })).toBeVisible();
+  await expect(page.getByRole('heading', { name: /^Patch 2 of 4/ })).toBeVisible();
   const joins = page.getByRole('table', { name: 'Joins' });
   for (const k of [1, 2, 3]) {
     const row = joins.getByRole('row', { name: new RegExp(`^P${k} `) });
@@ -134,7 +134,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
   await expectEquation7(page, i, D);
   // The next patch, chosen in the panel.
   await page.getByRole('button', { name: 'Next patch' }).click();
-  await expect(page.getByText('Patch 3 of 4', { exact: true })).toBeVisible();
+  await expect(page.getByRole('heading', { name: /^Patch 3 of 4/ })).toBeVisible();
   await expectEquation7(page, 2, D);
   // Dragging a tip switches to gradients by hand.
   await page.getByRole('button', { name: /^D2 at/ }).focus();
@@ -191,7 +191,7 @@ test('a link with too few gradients is repaired and says so', async ({ page }) =
 test('the script builds the patch from its points, and every scene steps from nothing', async ({
   page,
 }) => {
-  await page.goto('./#/hermite');
+  await page.goto('./#/hermite?step=0');
   const status = page.locator('.step-status');
   const captions = [
     'The points P0 … P1: where the curve must pass',
@@ -219,18 +219,23 @@ test('the script builds the patch from its points, and every scene steps from no
   // a2 = 3(P1 − P0) − 2D0 − D1 = (3, −4.5) for the lecture patch, worked out by hand.
   expect(tex).toContain('-4.5');
   await snapshot(page, 'hermite-script-patch-projector');
+  // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
+  await page.goto('./#/hermite?scene=one&step=0');
   const ids = await page
-    .locator('[data-preset]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.preset!));
-  expect(ids.length).toBe(5);
+    .locator('[data-scene]')
+    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.scene!));
+  if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
+    await page.keyboard.press('p');
   for (const id of ids) {
-    await page.locator(`[data-preset="${id}"]`).click();
     await expectHash(page, 'scene', (v) => v === id);
-    await expect(status).toHaveText(/^Step 0\/\d+: The points/);
+    await expectHash(page, 'step', (v) => v === '0');
     const first = await pixels(page);
+    await snapshot(page, `hermite-projector-${id}-first`);
     await page.keyboard.press('End');
     await expect(status).toHaveText(/^Step (\d+)\/\1:/);
+    expect(Number((await status.innerText()).match(/^Step (\d+)/)![1])).toBeLessThanOrEqual(20);
     expect(await pixels(page)).not.toBe(first);
-    await snapshot(page, `hermite-projector-${id}`);
+    await snapshot(page, `hermite-projector-${id}-last`);
+    await page.keyboard.press('PageDown');
   }
 });

@@ -152,15 +152,23 @@ test('the script reveals each Lₖ, then the polynomial, then opens the next sce
   await expectHash(page, 'scene', (v) => v === 'uneven');
   await expectHash(page, 'step', (v) => v === '0');
   // Every scene ends within 20 steps.
+  // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
+  await page.goto('./#/lagrange?scene=five&step=0');
   const ids = await page
-    .locator('[data-preset]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.preset!));
+    .locator('[data-scene]')
+    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.scene!));
+  if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
+    await page.keyboard.press('p');
   for (const id of ids) {
-    await page.locator(`[data-preset="${id}"]`).click();
     await expectHash(page, 'scene', (v) => v === id);
+    await expectHash(page, 'step', (v) => v === '0');
+    const first = await pixels(page);
+    await snapshot(page, `lagrange-projector-${id}-first`);
     await page.keyboard.press('End');
     await expect(status).toHaveText(/^Step (\d+)\/\1:/);
     expect(Number((await status.innerText()).match(/^Step (\d+)/)![1])).toBeLessThanOrEqual(20);
-    await snapshot(page, `lagrange-projector-${id}`);
+    expect(await pixels(page)).not.toBe(first);
+    await snapshot(page, `lagrange-projector-${id}-last`);
+    await page.keyboard.press('PageDown');
   }
 });

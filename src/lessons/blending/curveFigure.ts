@@ -36,6 +36,8 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
     const largest = theme.sizes.handle * 5;
+    // Weights written so far: a point too close to one of them goes without (its row in the table has it).
+    const placed: Point[] = [];
     state.p.forEach((control, i) => {
       if (i >= shown.weights) return;
       const color = painter.color(i);
@@ -57,7 +59,8 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
           dash,
         });
       }
-      if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO) {
+      if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO && !crowded(painter, placed, control)) {
+        placed.push(control);
         painter.label(weights[i].toFixed(3), control, {
           dy: theme.sizes.handle + theme.sizes.small * 1.1,
           align: 'center',
@@ -129,5 +132,15 @@ function drawHermiteData(painter: Painter, compared: Compared): void {
       halo: true,
       bold: true,
     });
+  });
+}
+
+/** Would a weight written under `p` run into one written under an earlier point? */
+function crowded(painter: Painter, placed: readonly Point[], p: Point): boolean {
+  const [x, y] = painter.view.toScreen(p);
+  const size = painter.theme.sizes.small;
+  return placed.some((q) => {
+    const [qx, qy] = painter.view.toScreen(q);
+    return Math.abs(qx - x) < size * 3.6 && Math.abs(qy - y) < size * 1.6;
   });
 }

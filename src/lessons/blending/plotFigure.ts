@@ -3,7 +3,7 @@ import type { Painter } from '../../render/painter';
 import { niceStep } from '../../render/projection';
 import type { Family } from './families';
 import { comparedIndex, curveNear, highlightedIndex } from './hover';
-import { seriesDash } from './scriptKit';
+import { plotYName, seriesDash } from './scriptKit';
 import type { BlendingModel } from './model';
 import type { BlendingState } from './state';
 
@@ -24,7 +24,8 @@ export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
     const highlighted = highlightedIndex(info.hover);
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
-      painter.plotAxes(bounds, 0.2, yStep, 'μ', 'W');
+      painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
+      plotYName(painter, bounds.minX, bounds.maxY, 'W(N, i, μ)');
     }
 
     drawFamily(painter, m.bernstein, {

@@ -84,6 +84,20 @@ export function valueColumn(
   const [far] = view.toScreen([range.maxX, 0]);
   const right = cursor < (range.minX + range.maxX) / 2;
   const edge = right ? Math.min(far, view.width) - size * 0.8 : Math.max(left, 0) + size * 0.8;
+  // A plot too short for the column: the values go in a row along its top instead.
+  if (top + entries.length * size * 1.75 > view.height * 0.8) {
+    let x = Math.max(left, 0) + size * 0.8;
+    for (const entry of entries) {
+      const { width } = painter.screenLabel(entry.text, x, top + size * 0.6, {
+        color: entry.color,
+        size,
+        bold: true,
+        box: true,
+      });
+      x += width + size * 1.2;
+    }
+    return;
+  }
   entries.forEach((entry, i) => {
     painter.screenLabel(entry.text, edge, top + size * 0.6 + i * size * 1.75, {
       color: entry.color,

@@ -42,3 +42,19 @@ export const bezierPoints = (bezier: readonly Point[]) =>
     bezier.map((q, k) => tex`B_${k} &= ${livePoint(q, 2)}`),
     '\\\\ ',
   )}\end{aligned}`;
+
+/** The patch matrix at work, in one line for the presenter's caption: a0 … a3 = M · data = numbers. */
+export const patchMatrixLine = (
+  data: readonly Point[],
+  coefficients: readonly Point[],
+): FormulaParts => tex`${UNKNOWNS} = ${INVERSE}${column(data)} = ${column(coefficients)}`;
+
+/** P(μ) from the basis in one line, signs in the shape: for the presenter's caption. */
+export function basisOneLine(i: number, mu: number, weights: readonly number[], point: Point) {
+  const names = [`P_{${i}}`, `P_{${i + 1}}`, `D_{${i}}`, `D_{${i + 1}}`];
+  const terms = weights.map((w, k) => {
+    const sign = k === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
+    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[k]}`;
+  });
+  return tex`P(${live(texNumber(mu, 3))}) = ${joined(terms, '')} = ${livePoint(point, 3)}`;
+}

@@ -1,5 +1,5 @@
 import { filled } from '../blending/scriptKit';
-import { basisLine, bezierPoints, system } from './formulas';
+import { basisOneLine, bezierPoints, patchMatrixLine } from './formulas';
 import type { HermiteModel } from './model';
 import { type HermiteState, patchCount, revealed } from './state';
 
@@ -38,7 +38,7 @@ export function stepFormula(model: HermiteModel, state: HermiteState): string | 
       return 'H_2 = \\mu^3 - 2\\mu^2 + \\mu,\\qquad H_3 = \\mu^3 - \\mu^2';
   }
   if (shown.building !== null)
-    return filled(system([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients));
-  if (!shown.bezier) return filled(basisLine(i, state.mu, patch.weights, patch.point));
+    return filled(patchMatrixLine([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients));
+  if (!shown.bezier) return filled(basisOneLine(i, state.mu, patch.weights, patch.point));
   return filled(bezierPoints(patch.bezier));
 }
