@@ -180,8 +180,8 @@ test('every scene opens at step 0 and ends with everything drawn, walked with th
   page,
 }) => {
   const ids = await page
-    .locator('[data-scene]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.scene!));
+    .locator('button[data-scene]')
+    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
   expect(ids.length).toBeGreaterThanOrEqual(7);
   await page.goto('./#/blending?step=0');
   await page.keyboard.press('p');

@@ -222,8 +222,8 @@ test('the script builds the patch from its points, and every scene steps from no
   // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
   await page.goto('./#/hermite?scene=one&step=0');
   const ids = await page
-    .locator('[data-scene]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.scene!));
+    .locator('button[data-scene]')
+    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
   if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
     await page.keyboard.press('p');
   for (const id of ids) {
