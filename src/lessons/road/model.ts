@@ -238,5 +238,9 @@ function fitBounds(model: Omit<RoadModel, 'bounds'>, villages: Bounds): Bounds {
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
   }
-  return points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  const fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  // The overlay's legend sits top left: room for it there, so it covers no curve.
+  if (!state.overlay) return fitted;
+  const width = fitted.maxX - fitted.minX;
+  return { ...fitted, minX: fitted.minX - 0.45 * width };
 }
