@@ -220,6 +220,8 @@ test('the script builds the patch from its points, and every scene steps from no
   expect(tex).toContain('-4.5');
   await snapshot(page, 'hermite-script-patch-projector');
   // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
+  // Away and back: the lesson opens afresh at the first scene.
+  await page.goto('./#/');
   await page.goto('./#/hermite?scene=one&step=0');
   const ids = await page
     .locator('button[data-scene]')

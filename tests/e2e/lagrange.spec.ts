@@ -152,6 +152,8 @@ test('the script reveals each Lₖ, then the polynomial, then opens the next sce
   await expectHash(page, 'scene', (v) => v === 'uneven');
   await expectHash(page, 'step', (v) => v === '0');
   // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
+  // Away and back: the lesson opens afresh at the first scene.
+  await page.goto('./#/');
   await page.goto('./#/lagrange?scene=five&step=0');
   const ids = await page
     .locator('button[data-scene]')
