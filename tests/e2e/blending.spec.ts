@@ -15,8 +15,9 @@ async function listedWeights(page: Page): Promise<number[]> {
   return values.map(Number);
 }
 
+// The whole construction of the lecture cubic (step 6 of 6): the weights, P(μ) and the curve.
 test.beforeEach(async ({ page }) => {
-  await page.goto('./#/blending');
+  await page.goto('./#/blending?step=6');
   await expect(curve(page)).toBeVisible();
   await expect(plot(page)).toBeVisible();
 });
@@ -77,14 +78,22 @@ test('the cursor moves with the keyboard, and the weights of every degree sum to
   const mu = hashState(page).mu;
   await page.keyboard.press('ArrowLeft');
   await expectHash(page, 'mu', (v) => Number(v) < Number(mu));
-  for (let n = 4; n <= 12; n++) {
-    await page.getByRole('button', { name: 'N + 1: add a control point' }).click();
+  const add = page.getByRole('button', { name: 'N + 1: add a control point' });
+  const check = async (n: number) => {
     await expect(page.getByRole('heading', { name: new RegExp(`\\(N = ${n}\\)`) })).toBeVisible();
     const weights = await listedWeights(page);
     expect(weights).toHaveLength(n + 1);
     expect(weights.every((w) => w >= 0)).toBe(true);
     expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
-  }
+  };
+  await add.click();
+  await check(4);
+  // Twelve points (N = 11) from a link, then the last one the lesson allows.
+  const twelve = Array.from({ length: 12 }, (_, i) => `${i},${i % 2}`).join(';');
+  await page.goto(`./#/blending?p=${twelve}&mu=0.37&step=14`);
+  await check(11);
+  await add.click();
+  await check(12);
   await expect(page.getByRole('button', { name: 'N + 1: add a control point' })).toBeDisabled();
 });
 
@@ -129,21 +138,69 @@ test('a link with a bad comparison or too many points keeps the rest and says wh
   expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
 });
 
-test('every preset draws, in normal and projector mode', async ({ page }) => {
+test('the script steps from the points through each weight to the curve, then opens the next scene', async ({
+  page,
+}) => {
+  await page.goto('./#/blending?step=0');
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText('Step 0/6: The control points P0 … P3 and their polygon');
+  let previous = await pixels(page, 'blending');
+  const captions = [
+    'The weight of P0: W(3, 0, μ), largest at μ = 0',
+    'The weight of P1: W(3, 1, μ), largest at μ = 1/3',
+    'The weight of P2: W(3, 2, μ), largest at μ = 2/3',
+    'The weight of P3: W(3, 3, μ), largest at μ = 1',
+  ];
+  for (const [k, caption] of captions.entries()) {
+    await page.keyboard.press('PageDown');
+    await expect(status).toHaveText(`Step ${k + 1}/6: ${caption}`);
+    // Each weight adds its curve to the plot.
+    await expect.poll(() => pixels(page, 'blending')).not.toBe(previous);
+    previous = await pixels(page, 'blending');
+  }
+  const curve = await pixels(page, 'curve');
+  await page.keyboard.press('PageDown');
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText(/^Step 6\/6: As μ runs from 0 to 1/);
+  await expect.poll(() => pixels(page, 'curve')).not.toBe(curve);
+  // Presenter view draws the caption and its formula over the figure.
+  await page.keyboard.press('p');
+  await expect(page.locator('.caption-step')).toHaveText(/As μ runs from 0 to 1/);
+  await expect(page.locator('.caption-formula .katex')).toBeVisible();
+  await snapshot(page, 'blending-script-last-projector');
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'scene', (v) => v === 'linear');
+  await expectHash(page, 'step', (v) => v === '0');
+  await expect(page.locator('.caption-step')).toHaveText(
+    'The control points P0 … P1 and their polygon',
+  );
+});
+
+test('every scene opens at step 0 and ends with everything drawn, walked with the clicker in presenter view', async ({
+  page,
+}) => {
   const ids = await page
-    .locator('[data-preset]')
-    .evaluateAll((els) => els.map((e) => (e as HTMLElement).dataset.preset!));
+    .locator('button[data-scene]')
+    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
   expect(ids.length).toBeGreaterThanOrEqual(7);
-  for (const projector of [false, true]) {
-    if (projector) await page.keyboard.press('p');
-    let previous = '';
-    for (const id of ids) {
-      await page.locator(`[data-preset="${id}"]`).click();
-      await expect.poll(() => pixels(page, 'blending')).not.toBe(previous);
-      previous = await pixels(page, 'blending');
-      const weights = await listedWeights(page);
-      expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
-      await snapshot(page, `blending-${id}${projector ? '-projector' : ''}`);
-    }
+  await page.goto('./#/blending?step=0');
+  await page.keyboard.press('p');
+  const status = page.locator('.step-status');
+  const caption = page.locator('.caption-step');
+  for (const id of ids) {
+    await expectHash(page, 'scene', (v) => v === id);
+    await expectHash(page, 'step', (v) => v === '0');
+    await expect(caption).toHaveText(/^The control points/);
+    const first = await pixels(page, 'blending');
+    await snapshot(page, `blending-projector-${id}-first`);
+    await page.keyboard.press('End');
+    // N + 1 weights, P(μ), the curve, and the comparison if there is one: at most 20 steps.
+    const n = hashState(page).p.split(';').length - 1;
+    const compared = ['hermite', 'bspline', 'lagrange'].includes(id) ? 1 : 0;
+    await expectHash(page, 'step', (v) => v === String(n + 3 + compared));
+    await expect(status).toHaveText(/^Step (\d+)\/\1:/);
+    expect(await pixels(page, 'blending')).not.toBe(first);
+    await snapshot(page, `blending-projector-${id}-last`);
+    await page.keyboard.press('PageDown');
   }
 });

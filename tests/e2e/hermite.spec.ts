@@ -40,8 +40,9 @@ async function expectEquation7(page: Page, i: number, D: number[][]) {
     .toBe(true);
 }
 
+// The whole construction of the lecture patch (step 5 of 5): gradients, basis, patch, P(μ).
 test.beforeEach(async ({ page }) => {
-  await page.goto('./#/hermite');
+  await page.goto('./#/hermite?step=5');
   await expect(patches(page)).toBeVisible();
 });
 
@@ -108,7 +109,9 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
 }) => {
   await page.getByRole('button', { name: 'Several points, Catmull-Rom' }).click();
   await expectHash(page, 'mode', (v) => v === 'catmull-rom');
-  await expect(page.getByText('Patch 2 of 4', { exact: true })).toBeVisible();
+  await page.keyboard.press('End');
+  await expectHash(page, 'step', (v) => v === '8');
+  await expect(page.getByRole('heading', { name: /^Patch 2 of 4/ })).toBeVisible();
   const joins = page.getByRole('table', { name: 'Joins' });
   for (const k of [1, 2, 3]) {
     const row = joins.getByRole('row', { name: new RegExp(`^P${k} `) });
@@ -129,9 +132,9 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
       : [(p[k + 1][0] - p[k - 1][0]) / 2, (p[k + 1][1] - p[k - 1][1]) / 2],
   );
   await expectEquation7(page, i, D);
-  // Step to the next patch with a clicker.
-  await page.keyboard.press('PageDown');
-  await expect(page.getByText('Patch 3 of 4', { exact: true })).toBeVisible();
+  // The next patch, chosen in the panel.
+  await page.getByRole('button', { name: 'Next patch' }).click();
+  await expect(page.getByRole('heading', { name: /^Patch 3 of 4/ })).toBeVisible();
   await expectEquation7(page, 2, D);
   // Dragging a tip switches to gradients by hand.
   await page.getByRole('button', { name: /^D2 at/ }).focus();
@@ -185,19 +188,56 @@ test('a link with too few gradients is repaired and says so', async ({ page }) =
   await expectHash(page, 'd', (v) => v.split(';').length === 4);
 });
 
-test('every preset draws, in normal and projector mode', async ({ page }) => {
-  const presets = page.getByRole('group', { name: 'Presets' }).getByRole('button');
-  expect(await presets.count()).toBe(5);
-  for (const projector of [false, true]) {
-    if (projector) await page.keyboard.press('p');
-    let previous = '';
-    for (let i = 0; i < 5; i++) {
-      const preset = presets.nth(i);
-      const id = await preset.getAttribute('data-preset');
-      await preset.click();
-      if (previous) await expect.poll(() => pixels(page)).not.toBe(previous);
-      previous = await pixels(page);
-      await snapshot(page, `hermite-${projector ? 'projector' : 'normal'}-${id}`);
-    }
+test('the script builds the patch from its points, and every scene steps from nothing', async ({
+  page,
+}) => {
+  await page.goto('./#/hermite?step=0');
+  const status = page.locator('.step-status');
+  const captions = [
+    'The points P0 … P1: where the curve must pass',
+    'The gradients D0 … D1, set by hand (arrows drawn a third as long)',
+    'H0 and H1 weight the end points: H0 + H1 = 1',
+    'H2 and H3 weight the end gradients: H2 is never negative, H3 never positive',
+    'Patch 1 of 1, from P0 to P1: the patch matrix turns its four conditions into a0 … a3',
+    'P(μ) on patch 1: H0 P + H1 P + H2 D + H3 D',
+  ];
+  await expect(page.getByRole('button', { name: /^D0 at/ })).toHaveCount(0);
+  let previous = await pixels(page);
+  for (const [k, caption] of captions.entries()) {
+    if (k > 0) await page.keyboard.press('PageDown');
+    await expect(status).toHaveText(`Step ${k}/5: ${caption}`);
+    if (k > 0) await expect.poll(() => pixels(page)).not.toBe(previous);
+    previous = await pixels(page);
+  }
+  // The gradients' tips became handles at step 1.
+  await expect(page.getByRole('button', { name: /^D0 at/ })).toHaveCount(1);
+  // In presenter view the patch step's formula is the patch matrix with its numbers.
+  await page.keyboard.press('PageUp');
+  await page.keyboard.press('p');
+  await expect(page.locator('.caption-formula .katex')).toBeVisible();
+  const tex = await page.locator('.caption-formula annotation').first().textContent();
+  // a2 = 3(P1 − P0) − 2D0 − D1 = (3, −4.5) for the lecture patch, worked out by hand.
+  expect(tex).toContain('-4.5');
+  await snapshot(page, 'hermite-script-patch-projector');
+  // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).
+  // Away and back: the lesson opens afresh at the first scene.
+  await page.goto('./#/');
+  await page.goto('./#/hermite?scene=one&step=0');
+  const ids = await page
+    .locator('button[data-scene]')
+    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
+  if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
+    await page.keyboard.press('p');
+  for (const id of ids) {
+    await expectHash(page, 'scene', (v) => v === id);
+    await expectHash(page, 'step', (v) => v === '0');
+    const first = await pixels(page);
+    await snapshot(page, `hermite-projector-${id}-first`);
+    await page.keyboard.press('End');
+    await expect(status).toHaveText(/^Step (\d+)\/\1:/);
+    expect(Number((await status.innerText()).match(/^Step (\d+)/)![1])).toBeLessThanOrEqual(20);
+    expect(await pixels(page)).not.toBe(first);
+    await snapshot(page, `hermite-projector-${id}-last`);
+    await page.keyboard.press('PageDown');
   }
 });

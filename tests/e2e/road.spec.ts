@@ -80,6 +80,13 @@ test('the overlay draws every answer with a legend, and each curve can be left o
   await page.getByRole('button', { name: 'Every answer at once' }).click();
   await expectHash(page, 'overlay', (v) => v === '1');
   await expectHash(page, 'compare', (v) => v === '0,1,2,3,4,5,6,7,8,9,10');
+  // One answer a step: the villages alone, then the Roman road, …
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText(/^Step 0\/11: The 6 villages/);
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText('Step 1/11: Answer 1 of 11: Roman road (straight)');
+  await page.keyboard.press('End');
+  await expect(status).toHaveText('Step 11/11: Answer 11 of 11: Cubic B-spline (approximating)');
   const all = await pixels(page);
   await snapshot(page, 'road-overlay-all');
   await page.getByLabel('Lagrange polynomial').uncheck();
@@ -116,12 +123,16 @@ test('the gradient handles move with Tab and the arrow keys', async ({ page }) =
   expect(Number(hashState(page).a.split(',')[1])).toBeLessThan(Number(before.split(',')[1]));
 });
 
-test('stepping the solve sweeps one row per step, then fixes one D per step, ending at naturalCubicDerivatives', async ({
+test('the script: the villages, the system, one row swept per step, one D fixed per step, ending at naturalCubicDerivatives', async ({
   page,
 }) => {
   const n = villages(page).length;
-  await page.keyboard.press('Home');
-  await expectHash(page, 'step', (v) => v === '0');
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText(
+    `Step 0/${2 * n + 1}: The ${n} villages P0 … P${n - 1}, in the order the road visits them`,
+  );
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'step', (v) => v === '1');
   await expect(swept(page)).toHaveCount(0);
   await expect(fixed(page)).toHaveCount(0);
   const system = page.getByRole('table', { name: 'Tridiagonal system' });
@@ -132,23 +143,30 @@ test('stepping the solve sweeps one row per step, then fixes one D per step, end
   await expect(system.getByRole('row', { name: /^row 1 / })).toContainText(/1\s+4\s+1/, {
     useInnerText: true,
   });
-  for (let k = 1; k <= 2 * n; k++) {
+  for (let k = 2; k <= 2 * n + 1; k++) {
     await page.keyboard.press('PageDown');
     await expectHash(page, 'step', (v) => v === String(k));
-    if (k <= n) {
-      await expect(swept(page)).toHaveCount(k);
+    const s = k - 1;
+    if (s <= n) {
+      await expect(swept(page)).toHaveCount(s);
       await expect(fixed(page)).toHaveCount(0);
-      await expect(system.locator('tr.current')).toHaveAttribute('data-row', String(k - 1));
-      // A swept row reads [1 γ | Γ]: its diagonal is 1.
-      await expect(page.getByText(`sweep row ${k - 1}`)).toBeVisible();
+      await expect(system.locator('tr.current')).toHaveAttribute('data-row', String(s - 1));
+      await expect(status).toHaveText(
+        `Step ${k}/${2 * n + 1}: Forward sweep: row ${s - 1} becomes [1 γ | Γ]`,
+      );
     } else {
       await expect(swept(page)).toHaveCount(n);
-      await expect(fixed(page)).toHaveCount(k - n);
-      await expect(system.locator('tr.current')).toHaveAttribute('data-row', String(2 * n - k));
+      await expect(fixed(page)).toHaveCount(s - n);
+      await expect(system.locator('tr.current')).toHaveAttribute('data-row', String(2 * n - s));
     }
-    if (k === n + 3) await snapshot(page, 'road-solve-midway');
+    if (k === 8) {
+      await snapshot(page, 'road-normal-step8');
+      await page.keyboard.press('p');
+      await expect(page.locator('.caption-formula .katex')).toBeVisible();
+      await snapshot(page, 'road-projector-step8');
+      await page.keyboard.press('p');
+    }
   }
-  await expect(page.getByRole('button', { name: 'Step forward' })).toBeDisabled();
   const v = villages(page);
   const expected = [0, 1].map((d) => naturalCubicDerivatives(v.map((p) => p[d])));
   for (let i = 0; i < n; i++) {
@@ -158,6 +176,10 @@ test('stepping the solve sweeps one row per step, then fixes one D per step, end
     expect(Math.abs(dx - expected[0][i])).toBeLessThanOrEqual(0.0005);
     expect(Math.abs(dy - expected[1][i])).toBeLessThanOrEqual(0.0005);
   }
+  // Past the last step the clicker opens the next scene at its first step.
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'scene', (v) => v === 'compare');
+  await expectHash(page, 'step', (v) => v === '0');
 });
 
 test('the ring road closes smoothly: the last segment meets the first with equal gradient and curvature', async ({
@@ -165,6 +187,9 @@ test('the ring road closes smoothly: the last segment meets the first with equal
 }) => {
   await page.getByRole('button', { name: 'Villages round a lake' }).click();
   await expectHash(page, 'road', (v) => v === 'ring');
+  // The cyclic system, then the seven segments one a step: the whole ring at step 8.
+  await page.keyboard.press('End');
+  await expectHash(page, 'step', (v) => v === '8');
   const n = villages(page).length;
   const slider = page.getByRole('slider', { name: 'p̄ along the road' });
   await slider.fill(String(n - 0.5));
@@ -186,6 +211,12 @@ test('the ring road closes smoothly: the last segment meets the first with equal
 test('500 villages load from a short enough link and a drag completes', async ({ page }) => {
   await page.getByRole('button', { name: 'Valley: 500 villages' }).click();
   await expectHash(page, 'v', (v) => v.split(';').length === 500);
+  // The solve of 500 rows in chunks of 56: the system, 9 sweeps, 9 substitutions.
+  await page.keyboard.press('End');
+  await expectHash(page, 'step', (v) => v === '19');
+  await expect(page.locator('.step-status')).toHaveText(
+    /^Step 19\/19: Back substitution reaches D0/,
+  );
   const query = new URL(page.url()).hash;
   expect(query.length).toBeLessThan(20_000);
   // Only a few rows of the 500-row system are drawn.
@@ -219,13 +250,4 @@ test('villages on one spot, in a line, or only two still draw a road and say why
   await page.getByRole('radio', { name: 'Ring road: a closed spline' }).check();
   await expect(page.getByText('A ring road needs at least three villages.')).toBeVisible();
   await snapshot(page, 'road-two-villages-ring');
-});
-
-test('normal and projector screenshots of the solve mid-way', async ({ page }) => {
-  await page.keyboard.press('Home');
-  for (let k = 0; k < 8; k++) await page.keyboard.press('PageDown');
-  await expectHash(page, 'step', (v) => v === '8');
-  await snapshot(page, 'road-normal-step8');
-  await page.keyboard.press('p');
-  await snapshot(page, 'road-projector-step8');
 });

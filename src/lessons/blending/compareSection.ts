@@ -5,7 +5,8 @@ import { radioGroup } from '../../app/panelControls';
 import { formula } from '../../render/formula';
 import { comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
-import { type BlendingState, type Comparison, texMu } from './state';
+import { keepLastStep } from './scriptKit';
+import { type BlendingState, type Comparison, stepCount, texMu } from './state';
 
 const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'none', label: 'Bernstein only' },
@@ -17,7 +18,7 @@ const CHOICES: { value: Comparison; label: string }[] = [
 const EXPLAIN: Record<Comparison, string> = {
   none: 'Pick a basis to draw it dashed on the same axes as the Bernstein functions.',
   hermite:
-    'The Hermite bases weight the two end points x0, x1 and the two end tangents x0′, x1′ of one cubic patch. H0 + H1 = 1, but H2 and H3 take negative values: they weight vectors, not points, so there is no convex hull to stay in. For the cubic, x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
+    'The Hermite bases weight the two end points x0, x1 and the two end tangents x0′, x1′ of one cubic patch. H0 + H1 = 1, and H2 = μ(1−μ)² is never negative, but H3 = −μ²(1−μ) is below zero on the whole of (0, 1): H2 and H3 weight vectors, not points, so there is no convex hull to stay in. For the cubic, x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
   bspline:
     'The four blending functions of one uniform cubic B-spline segment, which weight four consecutive points. Like Bernstein’s they are never negative and sum to 1, so the curve stays in the convex hull; but none of them reaches 1, so the curve passes through no control point. Dashed in the figure: the uniform B-spline of these control points.',
   lagrange:
@@ -32,7 +33,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     name: 'compare',
     choices: CHOICES,
     get: (s) => s.b,
-    set: (s, b) => ({ ...s, b }),
+    set: (s, b) => keepLastStep(s, { ...s, b }, stepCount),
   });
   const explain = h('p', {});
   const body = h('tbody', {});

@@ -2,8 +2,9 @@ import type { FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
 import type { Painter } from '../../render/painter';
 import { highlightedIndex } from './hover';
+import { keepLastStep, seriesDash } from './scriptKit';
 import type { BlendingModel, Compared } from './model';
-import { type BlendingState, MAX_POINTS } from './state';
+import { type BlendingState, MAX_POINTS, stepCount } from './state';
 
 /** Weight labels beside the points stay readable up to this degree. */
 const LABEL_WEIGHTS_UP_TO = 8;
@@ -15,41 +16,51 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
   bounds: (m) => m.curveBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, n, weights, point, compared } = m;
+    const { state, n, weights, point, compared, shown } = m;
     const highlighted = highlightedIndex(info.hover);
 
-    if (compared?.curve) {
-      painter.polyline(compared.curve, {
-        color: theme.muted,
-        width: theme.sizes.curve * 0.8,
-        dash: [10, 6],
-      });
+    if (compared && shown.compared) {
+      if (compared.curve) {
+        painter.polyline(compared.curve, {
+          color: theme.muted,
+          width: theme.sizes.curve * 0.8,
+          dash: [10, 6],
+        });
+      }
+      drawHermiteData(painter, compared);
     }
-    if (compared) drawHermiteData(painter, compared);
 
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    painter.polylineFlat(m.curve, { color: theme.curve });
+    if (shown.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
 
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
     const largest = theme.sizes.handle * 5;
+    // Weights written so far: a point too close to one of them goes without (its row in the table has it).
+    const placed: Point[] = [];
     state.p.forEach((control, i) => {
+      if (i >= shown.weights) return;
       const color = painter.color(i);
+      const dash = seriesDash(painter, i);
       const radius = theme.sizes.handle * 1.3 + largest * weights[i];
       const lit = highlighted === i;
       painter.ring(
         control,
         radius,
-        { color, width: lit ? theme.sizes.line * 2 : theme.sizes.thin, alpha: 0.9 },
+        { color, width: lit ? theme.sizes.line * 2 : theme.sizes.thin, alpha: 0.9, dash },
         color,
         lit ? 0.4 : 0.22,
       );
-      painter.segment(control, point, {
-        color,
-        width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
-        alpha: lit ? 0.9 : 0.45,
-      });
-      if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO) {
+      if (shown.point) {
+        painter.segment(control, point, {
+          color,
+          width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
+          alpha: lit ? 0.9 : 0.45,
+          dash,
+        });
+      }
+      if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO && !crowded(painter, placed, control)) {
+        placed.push(control);
         painter.label(weights[i].toFixed(3), control, {
           dy: theme.sizes.handle + theme.sizes.small * 1.1,
           align: 'center',
@@ -60,31 +71,37 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
         });
       }
     });
+    // The weights are written under the points: P(μ), its label and the
+    // compared point keep clear of them.
+    const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
+    const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
 
-    const other = compared?.point;
+    const other = shown.compared ? compared?.point : null;
     if (other) {
       painter.ring(other.at, theme.sizes.point * 1.4, {
         color: theme.muted,
         width: theme.sizes.line * 1.5,
       });
       if (!info.thumbnail) {
-        painter.label(other.label, other.at, {
-          dx: theme.sizes.point + 6,
-          dy: -theme.sizes.label * 0.9,
+        painter.labelClear(other.label, other.at, [...crowd, point], {
           color: theme.muted,
           halo: true,
           bold: true,
         });
       }
     }
+    if (m.note && !info.thumbnail) painter.note(m.note);
+    if (!shown.point) return;
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
-      // Away from the control points and the weights written under them.
-      const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
-      const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
-      painter.labelClear('P(μ)', point, crowd, { color: theme.ink, halo: true, bold: true });
+      painter.labelClear('P(μ)', point, other ? [...crowd, other.at] : crowd, {
+        color: theme.ink,
+        halo: true,
+        bold: true,
+      });
     }
   },
+  trail: (m) => (m.shown.point ? m.point : null),
   handles: (m) =>
     m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
   moveHandle(state, id, to) {
@@ -94,12 +111,12 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: insertPoint(state.p, at) };
+    return keepLastStep(state, { ...state, p: insertPoint(state.p, at) }, stepCount);
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
+    return keepLastStep(state, { ...state, p: state.p.filter((_, k) => k !== i) }, stepCount);
   },
 };
 
@@ -115,5 +132,15 @@ function drawHermiteData(painter: Painter, compared: Compared): void {
       halo: true,
       bold: true,
     });
+  });
+}
+
+/** Would a weight written under `p` run into one written under an earlier point? */
+function crowded(painter: Painter, placed: readonly Point[], p: Point): boolean {
+  const [x, y] = painter.view.toScreen(p);
+  const size = painter.theme.sizes.small;
+  return placed.some((q) => {
+    const [qx, qy] = painter.view.toScreen(q);
+    return Math.abs(qx - x) < size * 3.6 && Math.abs(qy - y) < size * 1.6;
   });
 }

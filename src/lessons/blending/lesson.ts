@@ -3,7 +3,8 @@ import { curveFigure } from './curveFigure';
 import { type BlendingModel, derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
-import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
+import { describeStep, stepFormula } from './script';
+import { type BlendingState, type Comparison, LECTURE_CUBIC, schema, stepCount } from './state';
 
 const preset = (id: string, label: string, p: Point[], mu: number, b: Comparison = 'none') => ({
   id,
@@ -18,6 +19,7 @@ export default defineLesson<BlendingState, BlendingModel>({
   figures: [curveFigure, plotFigure],
   layout: 'row',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
+  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
     preset('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
     preset(

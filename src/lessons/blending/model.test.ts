@@ -2,7 +2,10 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { comparedIndex, curveNear, highlightedIndex } from './hover';
 import { derive } from './model';
-import { type BlendingState, schema } from './state';
+import type { AnyLesson } from '../../app/lesson';
+import { describeStep, stepFormula } from './script';
+import { checkScript } from './scriptCheck';
+import { type BlendingState, revealed, schema, stepCount } from './state';
 
 // Values worked out by hand for the lecture's cubic P0 = (0, 0), P1 = (1, 2),
 // P2 = (3, 2), P3 = (4, 0), with W(3, i, μ) = C(3, i) μⁱ (1 − μ)³⁻ⁱ.
@@ -77,6 +80,7 @@ describe('derive (blending)', () => {
       ],
       mu: 1 / 6,
       b: 'lagrange',
+      step: 0,
     };
     const c = derive(steps).compared!;
     close(c.point!.at, [1, 0]);
@@ -93,6 +97,77 @@ describe('derive (blending)', () => {
     expect(m.compared).toBeNull();
     expect(m.plotBounds).toEqual({ minX: 0, maxX: 1, minY: -0.04, maxY: 1.16 });
     expect(m.handleY).toBeCloseTo(1.1, 12);
+  });
+});
+
+describe('the script (blending)', () => {
+  it('steps from the points through each weight, P(μ), the curve and the comparison, and draws more at the end', async () => {
+    checkScript((await import('./lesson')).default as AnyLesson);
+  });
+
+  it('reveals the weights one by one: N + 3 steps, one more with a comparison', () => {
+    expect(stepCount(cubic)).toBe(6);
+    expect(stepCount({ ...cubic, b: 'hermite' })).toBe(7);
+    expect(revealed({ ...cubic, step: 0 })).toEqual({
+      weights: 0,
+      point: false,
+      curve: false,
+      compared: false,
+    });
+    expect(revealed({ ...cubic, step: 2 })).toEqual({
+      weights: 2,
+      point: false,
+      curve: false,
+      compared: false,
+    });
+    expect(revealed({ ...cubic, step: 5 })).toEqual({
+      weights: 4,
+      point: true,
+      curve: false,
+      compared: false,
+    });
+    expect(revealed({ ...cubic, step: 6 })).toEqual({
+      weights: 4,
+      point: true,
+      curve: true,
+      compared: false,
+    });
+    expect(describeStep(cubic, 2)).toBe('The weight of P1: W(3, 1, μ), largest at μ = 1/3');
+    // W(3, 1, ½) = 3 · ½ · ¼ = 0.375.
+    expect(stepFormula(derive({ ...cubic, step: 2 }), { ...cubic, step: 2 })).toMatch(/= 0\.3750$/);
+  });
+
+  it('says what coincident and collinear control points do to the curve', () => {
+    const line = derive({
+      ...cubic,
+      p: [
+        [0, 0],
+        [1, 1],
+        [3, 3],
+        [2, 2],
+      ],
+    });
+    expect(line.note).toMatch(/^The control points lie on one line/);
+    const twice = derive({
+      ...cubic,
+      p: [
+        [0, 0],
+        [1, 2],
+        [1, 2],
+        [4, 0],
+      ],
+    });
+    expect(twice.note).toMatch(/^P1 = P2: that spot carries the weights of both/);
+    const spot = derive({
+      ...cubic,
+      p: [
+        [1, 1],
+        [1, 1],
+        [1, 1],
+      ],
+    });
+    expect(spot.note).toMatch(/^All control points are on one spot/);
+    expect(derive(cubic).note).toBeNull();
   });
 });
 

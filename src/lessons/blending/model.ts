@@ -11,8 +11,9 @@ import {
   uniformBSplinePoint,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
+import { degenerate, repeatsText } from './scriptKit';
 import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
-import { type BlendingState, type Comparison, degree } from './state';
+import { type BlendingState, type Comparison, type Revealed, degree, revealed } from './state';
 
 /** Another basis beside Bernstein's, and what it makes of the same control points. */
 export interface Compared extends Family {
@@ -35,6 +36,8 @@ export interface BlendingModel {
   state: BlendingState;
   /** Degree N. */
   n: number;
+  /** What the step shows. */
+  shown: Revealed;
   bernstein: Family;
   /** W(N, i, μ) for every i, and their sum (1 up to rounding). */
   weights: number[];
@@ -52,6 +55,8 @@ export interface BlendingModel {
   plotBounds: Bounds;
   /** Height of the plot cursor's handle: at the top, clear of the curves. */
   handleY: number;
+  /** What is degenerate about the control points and what it does to the curve, or null. */
+  note: string | null;
 }
 
 export function derive(state: BlendingState): BlendingModel {
@@ -63,6 +68,7 @@ export function derive(state: BlendingState): BlendingModel {
   return {
     state,
     n,
+    shown: revealed(state),
     bernstein,
     weights,
     sum: weights.reduce((a, b) => a + b, 0),
@@ -78,7 +84,25 @@ export function derive(state: BlendingState): BlendingModel {
     ]),
     plotBounds,
     handleY: plotBounds.maxY - 0.05 * (plotBounds.maxY - plotBounds.minY),
+    note: noteFor(state.p),
   };
+}
+
+/** Coincident or collinear control points, in words: what the curve does then. */
+function noteFor(p: readonly Point[]): string | null {
+  const { allSame, collinear, repeats } = degenerate(p);
+  if (allSame)
+    return 'All control points are on one spot: every weighted average of them is that spot, so the whole curve is one point.';
+  const notes: string[] = [];
+  if (collinear)
+    notes.push(
+      'The control points lie on one line: an average of points on a line is on that line, so the curve is a stretch of it (it may run back along it).',
+    );
+  if (repeats.length)
+    notes.push(
+      `${repeatsText(repeats)}: that spot carries the weights of both points, so the curve is pulled harder towards it.`,
+    );
+  return notes.length ? notes.join(' ') : null;
 }
 
 function compare(state: BlendingState, n: number): Compared | null {

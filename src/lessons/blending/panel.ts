@@ -6,7 +6,8 @@ import { formula } from '../../render/formula';
 import { compareSection } from './compareSection';
 import { formsSection } from './formsSection';
 import type { BlendingModel } from './model';
-import { type BlendingState, MAX_POINTS } from './state';
+import { keepLastStep } from './scriptKit';
+import { type BlendingState, MAX_POINTS, stepCount } from './state';
 import { weightsSection } from './weightsSection';
 
 export function blendingPanel(
@@ -18,8 +19,8 @@ export function blendingPanel(
     count: (s) => s.p.length,
     min: 2,
     max: MAX_POINTS,
-    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
+    add: (s) => keepLastStep(s, { ...s, p: [...s.p, extendPolygon(s.p)] }, stepCount),
+    remove: (s) => keepLastStep(s, { ...s, p: s.p.slice(0, -1) }, stepCount),
   });
   const weights = weightsSection(api);
   const forms = formsSection();
@@ -31,7 +32,7 @@ export function blendingPanel(
     h(
       'p',
       {},
-      'Every point of a Bézier curve is a weighted average of its control points. The weights are the blending functions W(N, i, μ): as μ runs from 0 to 1 the weight moves from P0 to PN, and the point follows.',
+      'Every point of a Bézier curve is a weighted average of its control points. The weights are the blending functions W(N, i, μ): as μ runs from 0 to 1 the weight moves from P0 to PN, and the point follows. In this lesson the parameter is μ, from 0 to 1.',
     ),
     formula('P(\\mu) = \\sum_{i=0}^{N} W(N,i,\\mu)\\,P_i', true),
     formula('W(N,i,\\mu) = \\binom{N}{i}\\mu^{i}(1-\\mu)^{N-i}', true),

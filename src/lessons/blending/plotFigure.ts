@@ -3,6 +3,7 @@ import type { Painter } from '../../render/painter';
 import { niceStep } from '../../render/projection';
 import type { Family } from './families';
 import { comparedIndex, curveNear, highlightedIndex } from './hover';
+import { plotYName, seriesDash } from './scriptKit';
 import type { BlendingModel } from './model';
 import type { BlendingState } from './state';
 
@@ -23,35 +24,43 @@ export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
     const highlighted = highlightedIndex(info.hover);
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
-      painter.plotAxes(bounds, 0.2, yStep, 'μ', 'W');
+      painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
+      plotYName(painter, bounds.minX, bounds.maxY, 'W(N, i, μ)');
     }
 
     drawFamily(painter, m.bernstein, {
       dash: undefined,
-      faded: compared !== null,
+      faded: compared !== null && m.shown.compared,
       highlighted,
-      labels: !info.thumbnail && !compared && n + 1 <= LABEL_CURVES_UP_TO,
+      labels: !info.thumbnail && (!compared || !m.shown.compared) && n + 1 <= LABEL_CURVES_UP_TO,
+      count: m.shown.weights,
     });
-    if (compared) {
+    if (compared && m.shown.compared) {
       drawFamily(painter, compared, {
         dash: [9, 5],
         faded: false,
         highlighted: comparedIndex(info.hover),
         labels: !info.thumbnail && compared.labels.length <= LABEL_CURVES_UP_TO,
+        count: compared.labels.length,
       });
     }
 
-    // The cursor: a vertical line at μ, a dot where it meets each curve.
+    // The cursor: a vertical line at μ in ink (no basis function's colour),
+    // a dot where it meets each curve shown.
     painter.segment([mu, bounds.minY], [mu, m.handleY], {
-      color: theme.accent,
+      color: theme.ink,
       width: theme.sizes.line,
+      dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
     });
     m.weights.forEach((w, i) => {
+      if (i >= m.shown.weights) return;
       painter.dot([mu, w], painter.color(i), theme.sizes.point * (highlighted === i ? 1.4 : 1));
     });
-    compared?.atMu.forEach((w) => {
-      painter.ring([mu, w], theme.sizes.point, { color: theme.ink, width: theme.sizes.thin });
-    });
+    if (m.shown.compared) {
+      compared?.atMu.forEach((w) => {
+        painter.ring([mu, w], theme.sizes.point, { color: theme.ink, width: theme.sizes.thin });
+      });
+    }
   },
   handles: (m) => [{ id: 'mu', label: 'μ', position: [m.state.mu, m.handleY], shape: 'diamond' }],
   // The cursor moves along μ only: the height of the pointer does not matter.
@@ -72,18 +81,21 @@ interface FamilyStyle {
   faded: boolean;
   highlighted: number | null;
   labels: boolean;
+  /** Functions 0 … count − 1 are drawn (the step reveals them one by one). */
+  count: number;
 }
 
 function drawFamily(painter: Painter, family: Family, style: FamilyStyle): void {
   const theme = painter.theme;
   family.samples.curves.forEach((curve, i) => {
+    if (i >= style.count) return;
     const color = painter.color(family.colors[i]);
     const lit = style.highlighted === i;
     const dim = style.faded || (style.highlighted !== null && !lit);
     painter.polylineFlat(curve, {
       color,
       width: lit ? theme.sizes.curve * 1.6 : theme.sizes.curve * (style.faded ? 0.6 : 0.8),
-      dash: style.dash,
+      dash: style.dash ?? seriesDash(painter, family.colors[i]),
       alpha: dim ? 0.35 : 1,
     });
     if (!style.labels) return;

@@ -1,6 +1,8 @@
 import type { FigureSpec } from '../../app/lesson';
 import { basisValuesAt } from '../../math';
+import { texNumber } from '../../render/formula';
 import type { Bounds } from '../../render/projection';
+import { plotYName, valueColumn } from '../blending/scriptKit';
 import type { HermiteModel } from './model';
 import type { HermiteState } from './state';
 
@@ -16,25 +18,32 @@ export const basisFigure: FigureSpec<HermiteState, HermiteModel> = {
   draw(painter, m, info) {
     const theme = painter.theme;
     const mu = m.state.mu;
-    painter.plotAxes(BOUNDS, 0.1, 0.25, 'μ', info.thumbnail ? '' : 'H_k(μ)');
-    m.basis.curves.forEach((curve, k) =>
+    const shown = m.shown.basis;
+    painter.plotAxes(BOUNDS, 0.1, 0.25, 'μ', '');
+    const top = info.thumbnail ? 0 : plotYName(painter, BOUNDS.minX, BOUNDS.maxY, 'H_k(μ)');
+    m.basis.curves.forEach((curve, k) => {
+      if (k >= shown) return;
       painter.polylineFlat(curve, {
         color: painter.color(k),
         width: info.hover === `H${k}` ? theme.sizes.curve * 1.6 : theme.sizes.line * 1.4,
-      }),
-    );
-    painter.segment([mu, BOUNDS.minY], [mu, BOUNDS.maxY], {
-      color: theme.accent,
-      width: theme.sizes.line,
+      });
     });
-    const weights = m.patch.weights;
+    // The cursor in ink: no basis function has its colour.
+    painter.segment([mu, BOUNDS.minY], [mu, BOUNDS.maxY], {
+      color: theme.ink,
+      width: theme.sizes.line,
+      dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
+    });
+    const weights = m.patch.weights.slice(0, shown);
     weights.forEach((w, k) => painter.dot([mu, w], painter.color(k), theme.sizes.point));
-    if (info.thumbnail) return;
-    painter.cursorLabels(
+    if (info.thumbnail || !shown) return;
+    valueColumn(
+      painter,
       mu,
+      BOUNDS,
+      top,
       weights.map((w, k) => ({
-        y: w,
-        text: `H_${k} = ${w.toFixed(3)} (× ${WEIGHS[k]})`,
+        text: `H_${k} = ${texNumber(w, 3).replace('-', '−')} (× ${WEIGHS[k]})`,
         color: painter.color(k),
       })),
     );

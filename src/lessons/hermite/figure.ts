@@ -1,6 +1,7 @@
 import type { FigureSpec, Handle, Point } from '../../app/lesson';
 import { ARROW_SCALE, type HermiteModel } from './model';
-import { type HermiteState, MAX_POINTS, patchCount } from './state';
+import { keepLastStep } from '../blending/scriptKit';
+import { type HermiteState, MAX_POINTS, patchCount, stepCount } from './state';
 
 export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   id: 'patches',
@@ -10,10 +11,12 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, segments, patch } = m;
-    if (state.bezier) {
+    const { state, segments, patch, shown } = m;
+    // The order the patches take, faintly: P0 to P1 to … (the points alone say little).
+    painter.polyline(state.p, { color: theme.curveFaint, width: theme.sizes.thin, dash: [4, 6] });
+    if (shown.bezier) {
       segments.forEach((segment, i) => {
-        const strong = i === state.patch;
+        const strong = i === patch.index;
         painter.polyline(segment, {
           color: painter.color(3),
           width: strong ? theme.sizes.line : theme.sizes.thin,
@@ -24,24 +27,26 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
           painter.dot(q, painter.color(3), theme.sizes.point * (strong ? 1 : 0.7));
       });
     }
-    painter.cubicSegments(segments, { color: theme.curve });
-    if (segments.length > 1) {
-      painter.cubicSegments([segments[state.patch]], {
+    const built = segments.slice(0, shown.patches);
+    painter.cubicSegments(built, { color: theme.curve, role: 'curve' });
+    if (segments.length > 1 && patch.index < shown.patches) {
+      painter.cubicSegments([segments[patch.index]], {
         color: painter.color(0),
         width: theme.sizes.curve * 1.2,
+        role: 'curve',
       });
     }
-    state.p.forEach((p, i) =>
-      painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
-    );
-    painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
+    if (shown.gradients) {
+      state.p.forEach((p, i) =>
+        painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
+      );
+    }
+    if (shown.point) painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
-    painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
-    if (state.bezier) {
+    if (shown.point) painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
+    if (shown.bezier) {
       patch.bezier.slice(1, 3).forEach((q, j) =>
-        painter.label(`B_${j + 1}`, q, {
-          dx: 8,
-          dy: theme.sizes.label,
+        painter.labelClear(`B_${j + 1}`, q, [...m.marks, ...patch.bezier], {
           color: painter.color(3),
           halo: true,
         }),
@@ -49,15 +54,17 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
     }
     if (m.note) painter.note(m.note);
   },
+  trail: (m) => (m.shown.point ? m.patch.point : null),
   handles(m) {
     const points: Handle[] = m.state.p.map((position, i) => ({
       id: `p${i}`,
-      label: `P_${i}`,
+      label: `P_{${i}}`,
       position,
     }));
+    if (!m.shown.gradients) return points;
     const tips: Handle[] = m.tips.map((position, i) => ({
       id: `d${i}`,
-      label: `D_${i}`,
+      label: `D_{${i}}`,
       position,
       shape: 'square',
     }));
@@ -84,16 +91,17 @@ export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {
     const last = state.p[state.p.length - 1];
     // A new point arrives heading away from the last one.
     const d: Point = [at[0] - last[0], at[1] - last[1]];
-    return { ...state, p: [...state.p, at], d: [...state.d, d] };
+    return keepLastStep(state, { ...state, p: [...state.p, at], d: [...state.d, d] }, stepCount);
   },
   removeHandle(state, id) {
     if (!id.startsWith('p') || state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return {
+    const after = {
       ...state,
       p: state.p.filter((_, k) => k !== i),
       d: state.d.filter((_, k) => k !== i),
       patch: Math.min(state.patch, patchCount(state) - 2),
     };
+    return keepLastStep(state, after, stepCount);
   },
 };

@@ -22,14 +22,18 @@ const INVERSE = `\\begin{pmatrix}${hermiteMatrix()
   .map((row) => row.join(' & '))
   .join('\\\\')}\\end{pmatrix}`;
 
-/** Equation 7: the data [Pi, Pi+1, Di, Di+1] as a matrix times a0 … a3, its inverse, and a0 … a3. */
+/** The four conditions: the data [Pi, Pi+1, Di, Di+1] as a matrix times a0 … a3, its inverse, and a0 … a3. */
 export const system = (data: readonly Point[], coefficients: readonly Point[]): FormulaParts =>
   tex`\begin{aligned}${column(data)} &= ${CONDITIONS}${UNKNOWNS}\\ ${UNKNOWNS} &= ${INVERSE}${column(data)}\\ &= ${column(coefficients)}\end{aligned}`;
 
-/** P(μ) on patch i from the basis: the names, the weights, the point. */
+/** P(μ) on patch i from the basis: the names, the weights (signs in the shape, never "+ −"), the point. */
 export function basisLine(i: number, mu: number, weights: readonly number[], point: Point) {
-  const [h0, h1, h2, h3] = weights.map((w) => live(texNumber(w, 3)));
-  return tex`\begin{aligned}P(${live(texNumber(mu, 3))}) &= H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2 D_{${i}} + H_3 D_{${i + 1}}\\ &= ${h0}\,P_{${i}} + ${h1}\,P_{${i + 1}} + ${h2}\,D_{${i}} + ${h3}\,D_{${i + 1}}\\ &= ${livePoint(point, 3)}\end{aligned}`;
+  const names = [`P_{${i}}`, `P_{${i + 1}}`, `D_{${i}}`, `D_{${i + 1}}`];
+  const terms = weights.map((w, k) => {
+    const sign = k === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
+    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[k]}`;
+  });
+  return tex`\begin{aligned}P(${live(texNumber(mu, 3))}) &= H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2 D_{${i}} + H_3 D_{${i + 1}}\\ &= ${joined(terms, '')}\\ &= ${livePoint(point, 3)}\end{aligned}`;
 }
 
 /** B0 … B3 of the patch as a Bézier curve. */
@@ -38,3 +42,19 @@ export const bezierPoints = (bezier: readonly Point[]) =>
     bezier.map((q, k) => tex`B_${k} &= ${livePoint(q, 2)}`),
     '\\\\ ',
   )}\end{aligned}`;
+
+/** The patch matrix at work, in one line for the presenter's caption: a0 … a3 = M · data = numbers. */
+export const patchMatrixLine = (
+  data: readonly Point[],
+  coefficients: readonly Point[],
+): FormulaParts => tex`${UNKNOWNS} = ${INVERSE}${column(data)} = ${column(coefficients)}`;
+
+/** P(μ) from the basis in one line, signs in the shape: for the presenter's caption. */
+export function basisOneLine(i: number, mu: number, weights: readonly number[], point: Point) {
+  const names = [`P_{${i}}`, `P_{${i + 1}}`, `D_{${i}}`, `D_{${i + 1}}`];
+  const terms = weights.map((w, k) => {
+    const sign = k === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
+    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[k]}`;
+  });
+  return tex`P(${live(texNumber(mu, 3))}) = ${joined(terms, '')} = ${livePoint(point, 3)}`;
+}

@@ -9,9 +9,10 @@ import {
   ONE_PATCH,
   ONE_PATCH_GRADIENTS,
   normalize,
-  patchCount,
   schema,
+  stepCount,
 } from './state';
+import { describeStep, stepFormula } from './script';
 
 const SEVERAL: Point[] = [
   [0, 0],
@@ -56,11 +57,7 @@ export default defineLesson<HermiteState, HermiteModel>({
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
-  steps: {
-    key: 'patch',
-    count: (state) => patchCount(state) - 1,
-    describe: (state, k) => `Patch ${k + 1} of ${patchCount(state)}`,
-  },
+  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
     preset('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),
     preset('long', 'Long gradients: a loop', ONE_PATCH, [

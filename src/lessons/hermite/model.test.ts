@@ -1,9 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { derive } from './model';
-import { type HermiteState, schema } from './state';
+import type { AnyLesson } from '../../app/lesson';
+import { checkScript } from '../blending/scriptCheck';
+import { stepFormula } from './script';
+import { type HermiteState, normalize, revealed, schema, stepCount } from './state';
 
-// Values worked out by hand from lecture equation 7:
+// Values worked out by hand from the four conditions P(0) = Pi, P(1) = Pi+1, P′(0) = Di, P′(1) = Di+1:
 // a0 = Pi, a1 = Di, a2 = 3(Pi+1 − Pi) − 2Di − Di+1, a3 = 2(Pi − Pi+1) + Di + Di+1.
 
 const lecture: HermiteState = defaultsOf(schema); // P0 = (0, 0), P1 = (4, 0), D0 = (3, 4.5), D1 = (3, −4.5)
@@ -31,7 +34,7 @@ const close = (actual: readonly (readonly number[])[], expected: readonly (reado
   expected.forEach((row, i) => row.forEach((v, d) => expect(actual[i][d]).toBeCloseTo(v, 12)));
 
 describe('derive (Hermite)', () => {
-  it('solves equation 7 for the lecture patch', () => {
+  it('solves the four conditions for the lecture patch', () => {
     const m = derive(lecture);
     close(m.patch.coefficients, [
       [0, 0],
@@ -107,7 +110,92 @@ describe('derive (Hermite)', () => {
     expect(derive(lecture).note).toBeNull();
   });
 
-  it('fits points, tips and control points', () => {
+  it('fits points, curve and tips', () => {
     expect(derive(lecture).bounds).toEqual({ minX: 0, minY: -1.5, maxX: 5, maxY: 1.5 });
+  });
+
+  it('fits the loop of long gradients, not their arrows', () => {
+    // D0 = (15, 12), D1 = (15, −12): tips at (5, 4) and (9, −4). The curve is
+    // the Bézier (0, 0), (5, 4), (−1, 4), (4, 0), between y = 0 and y(½) = 3.
+    const m = derive({
+      ...lecture,
+      d: [
+        [15, 12],
+        [15, -12],
+      ],
+    });
+    // The tip (5, 4) is near enough to keep; (9, −4) is kept only half the curve's size away.
+    expect(m.bounds.maxY).toBe(4);
+    expect(m.bounds.maxX).toBeLessThan(7);
+    expect(m.bounds.minY).toBeGreaterThan(-2.5);
+  });
+
+  it('keeps a valid patch and says when it cannot', () => {
+    const fixed = normalize({ ...several, p: lecture.p, d: lecture.d, patch: 2 });
+    expect(fixed.state.patch).toBe(0);
+    expect(fixed.issues.join(' ')).toMatch(/^patch: there is no patch 3 among 1/);
+    expect(normalize(several).issues).toEqual([]);
+  });
+
+  it('says what points on one spot or on one line do', () => {
+    expect(
+      derive({
+        ...lecture,
+        p: [
+          [0, 0],
+          [1, 1],
+          [3, 3],
+        ],
+        d: [
+          [1, 0],
+          [1, 0],
+          [1, 0],
+        ],
+      }).note,
+    ).toMatch(/^The points lie on one line: the patches stay on it only/);
+    expect(
+      derive({
+        ...lecture,
+        p: [
+          [0, 0],
+          [0, 0],
+        ],
+      }).note,
+    ).toMatch(/^All points are on one spot/);
+  });
+});
+
+describe('the script (Hermite)', () => {
+  it('every scene steps from the points to the whole construction, drawing more at the end', async () => {
+    checkScript((await import('./lesson')).default as AnyLesson);
+  });
+
+  it('points, gradients, H0 H1, H2 H3, then each patch solved in turn, then P(μ)', () => {
+    const five = { ...several, mode: 'hand' as const };
+    expect(stepCount(five)).toBe(4 + 4);
+    expect(revealed({ ...five, step: 1 })).toMatchObject({ gradients: true, basis: 0, patches: 0 });
+    expect(revealed({ ...five, step: 3 })).toMatchObject({ basis: 4, patches: 0, building: null });
+    expect(revealed({ ...five, step: 6 })).toMatchObject({ patches: 3, building: 2, point: false });
+    expect(revealed({ ...five, step: 8 })).toMatchObject({
+      patches: 4,
+      building: null,
+      point: true,
+    });
+    // While patch 3 (index 2) is solved, the matrix is about it: a0 = P2, a1 = D2.
+    const m = derive({ ...five, step: 6 });
+    expect(m.patch.index).toBe(2);
+    close(m.patch.coefficients.slice(0, 2), [
+      [5, 1.5],
+      [2, -2],
+    ]);
+    expect(derive({ ...five, step: 8 }).patch.index).toBe(1);
+    expect(stepCount({ ...lecture, bezier: true })).toBe(6);
+  });
+
+  it('writes P(μ) with the signs in the formula, never "+ −"', () => {
+    const m = derive({ ...lecture, mu: 0.5, step: 5 });
+    const tex = stepFormula(m, m.state)!;
+    expect(tex).not.toMatch(/\+\s*-/);
+    expect(tex).toMatch(/0\.125\\,D_\{0\} - 0\.125\\,D_\{1\}/);
   });
 });

@@ -4,6 +4,7 @@ import {
   type Point,
   add,
   bezierDerivative,
+  bezierPoint,
   bezierJointContinuity,
   catmullRomTangents,
   cubicSplineSegments,
@@ -14,7 +15,8 @@ import {
   scale,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { type HermiteState, patchCount } from './state';
+import { degenerate, repeatsText } from '../blending/scriptKit';
+import { type HermiteState, type Revealed, patchCount, revealed } from './state';
 
 /** The arrow for a gradient D is drawn D/3 long: its tip is where the Bézier control point sits. */
 export const ARROW_SCALE = 1 / 3;
@@ -53,6 +55,8 @@ export interface HermiteModel {
   state: HermiteState;
   /** Number of patches, m. */
   m: number;
+  /** What the step shows. */
+  shown: Revealed;
   /** The gradients in force: the hand-set ones, or Catmull-Rom's from the neighbours. */
   gradients: Point[];
   /** Where each gradient's arrow ends: Pk + Dk/3 (a handle). */
@@ -82,29 +86,33 @@ export function derive(state: HermiteState): HermiteModel {
   const segments = cubicSplineSegments(state.p, gradients);
   const joins = measureJoins(segments);
   const straight = state.mode === 'catmull-rom' && state.p.length === 2;
+  const shown = revealed(state);
+  // While the patches are built one by one, the matrix and P(μ) are about the newest.
+  const index = shown.building ?? state.patch;
   return {
     state,
     m: patchCount(state),
+    shown,
     gradients,
     tips,
     segments,
-    patch: patchAt(state, gradients, segments),
+    patch: patchAt(state, index, gradients, segments),
     joins,
     onlyC1: joins.filter((join) => join.continuity === 'C1').length,
     marks: state.p.flatMap((p, k) => [p, tips[k]]),
-    bounds: boundsOf([...state.p, ...tips, ...segments.flat()]),
+    bounds: fitBounds(state.p, tips, segments),
     straight,
-    note: noteFor(state, gradients, straight),
+    note: noteFor(state, index, gradients, straight),
     basis: BASIS,
   };
 }
 
 function patchAt(
   state: HermiteState,
+  i: number,
   gradients: readonly Point[],
   segments: readonly Point[][],
 ): Patch {
-  const i = state.patch;
   const [p0, p1, d0, d1] = [state.p[i], state.p[i + 1], gradients[i], gradients[i + 1]];
   return {
     index: i,
@@ -131,10 +139,10 @@ function measureJoins(segments: readonly Point[][]): Join[] {
 
 function noteFor(
   state: HermiteState,
+  i: number,
   gradients: readonly Point[],
   straight: boolean,
 ): string | null {
-  const i = state.patch;
   const [a, b] = [state.p[i], state.p[i + 1]];
   const still = (d: Point) => d[0] === 0 && d[1] === 0;
   if (a[0] === b[0] && a[1] === b[1] && still(gradients[i]) && still(gradients[i + 1])) {
@@ -143,5 +151,40 @@ function noteFor(
   if (straight) {
     return 'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment. Add a point.';
   }
-  return null;
+  const { allSame, collinear, repeats } = degenerate(state.p);
+  if (allSame)
+    return 'All points are on one spot: each patch starts and ends there, so it is a loop shaped by its gradients alone.';
+  const notes: string[] = [];
+  if (repeats.length)
+    notes.push(
+      `${repeatsText(repeats)}: that patch starts and ends on one spot, so it is a loop shaped by its two gradients (a point if both are zero).`,
+    );
+  if (collinear)
+    notes.push(
+      'The points lie on one line: the patches stay on it only where the gradients point along it too.',
+    );
+  return notes.length ? notes.join(' ') : null;
+}
+
+/**
+ * What "fit" shows: the points and the curve, with the gradient tips only as
+ * far as half their size beyond them. Long gradients (a loop) would otherwise frame
+ * the arrows and shrink the curve.
+ */
+function fitBounds(
+  p: readonly Point[],
+  tips: readonly Point[],
+  segments: readonly Point[][],
+): Bounds {
+  const curve: Point[] = [...p];
+  for (const segment of segments)
+    for (let k = 1; k < 16; k++) curve.push(bezierPoint(segment, k / 16));
+  const box = boundsOf(curve);
+  const grow = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1) / 2;
+  const clamp = (v: number, low: number, high: number) => Math.min(high, Math.max(low, v));
+  const near = tips.map((q): Point => [
+    clamp(q[0], box.minX - grow, box.maxX + grow),
+    clamp(q[1], box.minY - grow, box.maxY + grow),
+  ]);
+  return boundsOf([...curve, ...near]);
 }

@@ -7,7 +7,9 @@ import { LiveFormula, formula } from '../../render/formula';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
-import { type GradientMode, type HermiteState, MAX_POINTS } from './state';
+import type { Point } from '../../app/lesson';
+import { keepLastStep } from '../blending/scriptKit';
+import { type GradientMode, type HermiteState, MAX_POINTS, stepCount } from './state';
 
 const MODES: [GradientMode, string][] = [
   ['hand', 'By hand: drag the square tips of the arrows'],
@@ -27,7 +29,7 @@ export function hermitePanel(
     id: 'hermite-bezier',
     label: 'Show each patch as a Bézier curve: control points at P ± D/3',
     get: (s) => s.bezier,
-    set: (s, on) => ({ ...s, bezier: on }),
+    set: (s, on) => keepLastStep(s, { ...s, bezier: on }, stepCount),
   });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
@@ -39,11 +41,32 @@ export function hermitePanel(
       const last = s.p[s.p.length - 1];
       const next = extendPolygon(s.p);
       // The new point's gradient follows the new edge.
-      return { ...s, p: [...s.p, next], d: [...s.d, [next[0] - last[0], next[1] - last[1]]] };
+      const d: Point = [next[0] - last[0], next[1] - last[1]];
+      return keepLastStep(s, { ...s, p: [...s.p, next], d: [...s.d, d] }, stepCount);
     },
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1), d: s.d.slice(0, -1) }),
+    remove: (s) =>
+      keepLastStep(
+        s,
+        {
+          ...s,
+          p: s.p.slice(0, -1),
+          d: s.d.slice(0, -1),
+          patch: Math.min(s.patch, s.p.length - 3),
+        },
+        stepCount,
+      ),
   });
   const patchTitle = h('h2', {});
+  // Which patch the matrix, the basis and P(μ) are about (the steps build them all in turn).
+  const choosePatch = (delta: number) => {
+    const s = api.get();
+    const patch = Math.min(s.p.length - 2, Math.max(0, s.patch + delta));
+    if (patch !== s.patch) api.set({ ...s, patch });
+  };
+  const previousPatch = h('button', { type: 'button' }, 'Previous patch');
+  const nextPatch = h('button', { type: 'button' }, 'Next patch');
+  previousPatch.addEventListener('click', () => choosePatch(-1));
+  nextPatch.addEventListener('click', () => choosePatch(1));
   const warning = h(
     'p',
     { class: 'warning', role: 'note' },
@@ -66,7 +89,7 @@ export function hermitePanel(
     h(
       'p',
       {},
-      'A cubic has four coefficients, so it can match four conditions: where a patch starts and ends, and which way and how fast it leaves and arrives (the gradients). Chain such patches through several points and share the gradient at each point: the curve is smooth at every join.',
+      'A cubic has four coefficients, so it can match four conditions: where a patch starts and ends, and which way and how fast it leaves and arrives (the gradients). Chain such patches through several points and share the gradient at each point: the curve is smooth at every join. In this lesson the parameter is μ, from 0 to 1 on each patch.',
     ),
     formula(
       "\\begin{aligned}P(\\mu) &= a_3\\mu^3 + a_2\\mu^2 + a_1\\mu + a_0\\\\ P(0) &= P_i,\\quad P(1) = P_{i+1}\\\\ P'(0) &= D_i,\\quad P'(1) = D_{i+1}\\end{aligned}",
@@ -82,7 +105,8 @@ export function hermitePanel(
     warning,
     pointCount.element,
     patchTitle,
-    h('p', {}, 'Equation 7: the four conditions as a matrix, and their solution.'),
+    h('div', { class: 'lesson-tools' }, previousPatch, nextPatch),
+    h('p', {}, 'The four conditions as a matrix, and their solution: the patch matrix.'),
     systemFormula.element,
     dataTable('Coefficients of the patch', ['Coefficient', 'x', 'y'], coefficientsBody),
     h('h2', {}, 'The Hermite basis at μ'),
@@ -109,6 +133,8 @@ export function hermitePanel(
       pointCount.update(state);
       setHidden(warning, !m.straight);
       setText(patchTitle, `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`);
+      previousPatch.disabled = state.patch <= 0;
+      nextPatch.disabled = state.patch >= m.m - 1;
 
       systemFormula.set(system([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients));
       coefficients.set(

@@ -19,6 +19,8 @@ export interface HermiteState {
   patch: number;
   /** Draw each patch's Bézier control polygon. */
   bezier: boolean;
+  /** Step of the script: points, gradients, the basis, each patch solved, P(μ), the Bézier view. */
+  step: number;
 }
 
 export const MAX_POINTS = 10;
@@ -40,6 +42,7 @@ export const schema: Schema<HermiteState> = {
   mu: number({ default: 0.3, min: 0, max: 1 }),
   patch: int({ default: 0, min: 0, max: MAX_POINTS - 2 }),
   bezier: bool({ default: false }),
+  step: int({ default: 0, min: 0, max: MAX_POINTS + 4 }),
 };
 
 /** Number of patches, m. */
@@ -57,5 +60,44 @@ export function normalize(state: HermiteState): { state: HermiteState; issues: s
     );
   }
   const patch = Math.min(state.patch, state.p.length - 2);
+  if (patch !== state.patch)
+    issues.push(
+      `patch: there is no patch ${state.patch + 1} among ${state.p.length - 1}, so it shows patch ${patch + 1}`,
+    );
   return { state: { ...state, d, patch }, issues };
+}
+
+/**
+ * Steps of the script: 0 the points; 1 their gradients; 2 the basis
+ * functions H0, H1 that weight the points; 3 H2, H3 that weight the
+ * gradients; then each patch solved and drawn in turn; then P(μ) on the
+ * chosen patch; then, in the Bézier scene, its control points.
+ */
+export const stepCount = (state: HermiteState) => 4 + patchCount(state) + (state.bezier ? 1 : 0);
+
+/** What step `step` shows. */
+export interface Revealed {
+  gradients: boolean;
+  /** H0 … H(basis − 1) in the plot. */
+  basis: number;
+  /** Patches 0 … patches − 1 are drawn. */
+  patches: number;
+  /** The patch solved at this step, while the patches are being built; else null. */
+  building: number | null;
+  point: boolean;
+  bezier: boolean;
+}
+
+export function revealed(state: HermiteState): Revealed {
+  const k = state.step;
+  const m = patchCount(state);
+  const patches = Math.max(0, Math.min(k - 3, m));
+  return {
+    gradients: k >= 1,
+    basis: k >= 3 ? 4 : k >= 2 ? 2 : 0,
+    patches,
+    building: k >= 4 && k < 4 + m ? k - 4 : null,
+    point: k >= 4 + m,
+    bezier: state.bezier && k >= 5 + m,
+  };
 }

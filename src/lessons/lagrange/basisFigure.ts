@@ -1,6 +1,8 @@
 import type { FigureSpec } from '../../app/lesson';
 import { basisValuesAt } from '../../math';
+import { texNumber } from '../../render/formula';
 import { niceStep } from '../../render/projection';
+import { plotYName, seriesDash, valueColumn } from '../blending/scriptKit';
 import { CLIP, type LagrangeModel } from './model';
 import type { LagrangeState } from './state';
 
@@ -14,41 +16,50 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
   bounds: (m) => m.plotBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { ts, weights, plotBounds: bounds } = m;
+    const { ts, weights, plotBounds: bounds, shown } = m;
     const t = m.state.t;
     const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
-    painter.plotAxes(bounds, 0.1, yStep, 't', info.thumbnail ? '' : 'L_k(t)');
+    painter.plotAxes(bounds, 0.1, yStep, 't', '');
+    const top = info.thumbnail ? 0 : plotYName(painter, bounds.minX, bounds.maxY, 'L_k(t)');
     m.basisPieces.forEach((pieces, k) => {
+      if (k >= shown.basis) return;
       const strong = info.hover === `L${k}`;
       for (const piece of pieces) {
         painter.polylineFlat(piece, {
           color: painter.color(k),
           width: strong ? theme.sizes.curve * 1.6 : theme.sizes.line * 1.3,
+          dash: seriesDash(painter, k),
         });
       }
     });
     // L_k(t_k) = 1 and L_k(t_j) = 0: a dot where each is 1.
-    ts.forEach((tk, k) => painter.dot([tk, 1], painter.color(k), theme.sizes.point * 0.8));
-    painter.segment([t, bounds.minY], [t, bounds.maxY], {
-      color: theme.accent,
-      width: theme.sizes.line,
+    ts.forEach((tk, k) => {
+      if (k < shown.basis) painter.dot([tk, 1], painter.color(k), theme.sizes.point * 0.8);
     });
-    const shown = weights
+    // The cursor in ink: no basis polynomial has its colour.
+    painter.segment([t, bounds.minY], [t, bounds.maxY], {
+      color: theme.ink,
+      width: theme.sizes.line,
+      dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
+    });
+    const inView = weights
       .map((w, k) => ({ w, k }))
-      .filter(({ w }) => w >= bounds.minY && w <= bounds.maxY);
-    for (const { w, k } of shown) painter.dot([t, w], painter.color(k), theme.sizes.point);
-    if (!info.thumbnail && ts.length <= LABEL_UP_TO)
-      painter.cursorLabels(
+      .filter(({ w, k }) => k < shown.basis && w >= bounds.minY && w <= bounds.maxY);
+    for (const { w, k } of inView) painter.dot([t, w], painter.color(k), theme.sizes.point);
+    if (!info.thumbnail && shown.basis > 0 && ts.length <= LABEL_UP_TO)
+      valueColumn(
+        painter,
         t,
-        shown.map(({ w, k }) => ({
-          y: w,
-          text: `L_${k} = ${w.toFixed(2)}`,
+        bounds,
+        top,
+        weights.slice(0, shown.basis).map((w, k) => ({
+          text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
           color: painter.color(k),
         })),
       );
-    if (!info.thumbnail && m.basisCut) {
-      const [x, y] = painter.view.toScreen([1, bounds.maxY]);
-      painter.screenLabel(`cut at ±${CLIP}`, x, y + theme.sizes.small, {
+    if (!info.thumbnail && m.basisCut && shown.basis > 0) {
+      const [x, y] = painter.view.toScreen([1, bounds.minY]);
+      painter.screenLabel(`cut at ±${CLIP}`, x, y - theme.sizes.small * 1.2, {
         align: 'right',
         size: theme.sizes.small,
         color: theme.muted,

@@ -1,7 +1,8 @@
 import type { FigureSpec } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
+import { keepLastStep, seriesDash } from '../blending/scriptKit';
 import type { LagrangeModel } from './model';
-import { type LagrangeState, MAX_POINTS } from './state';
+import { type LagrangeState, MAX_POINTS, stepCount } from './state';
 
 /** Every point is labelled up to this many; beyond, only the first and the last. */
 const LABEL_ALL_UP_TO = 9;
@@ -14,13 +15,26 @@ export const curveFigure: FigureSpec<LagrangeState, LagrangeModel> = {
   bounds: (m) => m.curveBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, at } = m;
+    const { state, at, shown } = m;
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [5, 5] });
-    painter.polylineFlat(m.curve, { color: theme.curve });
+    // Each point whose basis polynomial is shown wears its colour (a dash past the palette).
+    state.p.forEach((point, k) => {
+      if (k >= shown.basis || shown.curve) return;
+      painter.ring(point, theme.sizes.handle * 1.8, {
+        color: painter.color(k),
+        width: theme.sizes.line,
+        dash: seriesDash(painter, k),
+      });
+    });
+    if (shown.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
     // The spline on top: where the two agree, it is the spline one sees.
-    if (m.spline)
-      painter.cubicSegments(m.spline, { color: painter.color(2), width: theme.sizes.curve });
-    painter.dot(at, theme.accent, theme.sizes.point * 1.5);
+    if (m.spline && shown.spline)
+      painter.cubicSegments(m.spline, {
+        color: painter.color(2),
+        width: theme.sizes.curve,
+        dash: [theme.sizes.curve * 2, theme.sizes.curve * 1.2],
+      });
+    if (shown.curve) painter.dot(at, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
     const hovered = /^L\d+$/.test(info.hover ?? '') ? Number(info.hover!.slice(1)) : -1;
     if (hovered >= 0 && hovered < state.p.length) {
@@ -29,11 +43,13 @@ export const curveFigure: FigureSpec<LagrangeState, LagrangeModel> = {
         width: theme.sizes.line,
       });
     }
-    painter.label('P(t)', at, { dx: 10, dy: theme.sizes.label, halo: true, bold: true });
+    if (shown.curve) painter.labelClear('P(t)', at, state.p, { halo: true, bold: true });
     let top = theme.sizes.label * 0.5;
     if (m.collapsedNote) top = painter.note(m.collapsedNote);
-    legend(painter, m, top);
+    if (m.note) top = painter.note(m.note, { top });
+    if (shown.curve) legend(painter, m, top);
   },
+  trail: (m) => (m.shown.curve ? m.at : null),
   handles: (m) =>
     m.state.p.map((point, i) => ({
       id: `p${i}`,
@@ -48,12 +64,12 @@ export const curveFigure: FigureSpec<LagrangeState, LagrangeModel> = {
   },
   addPoint(state, at) {
     if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: [...state.p, [at[0], at[1]]] };
+    return keepLastStep(state, { ...state, p: [...state.p, [at[0], at[1]]] }, stepCount);
   },
   removeHandle(state, id) {
     if (state.p.length <= 2) return null;
     const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
+    return keepLastStep(state, { ...state, p: state.p.filter((_, k) => k !== i) }, stepCount);
   },
 };
 
@@ -63,12 +79,12 @@ function legend(painter: Painter, m: LagrangeModel, top: number) {
   const size = theme.sizes.label;
   const x = size * 0.8;
   let y = top + size * 0.8;
-  const entry = (text: string, color: string) => {
+  const entry = (text: string, color: string, dashed = false) => {
     const c = painter.ctx;
     c.save();
     c.strokeStyle = color;
     c.lineWidth = theme.sizes.curve;
-    c.setLineDash([]);
+    c.setLineDash(dashed ? [theme.sizes.curve * 2, theme.sizes.curve * 1.2] : []);
     c.beginPath();
     c.moveTo(x, y);
     c.lineTo(x + size * 1.6, y);
@@ -78,5 +94,5 @@ function legend(painter: Painter, m: LagrangeModel, top: number) {
     y += size * 1.5;
   };
   entry(`Lagrange polynomial, degree ${m.n}`, theme.curve);
-  if (m.spline) entry('natural cubic spline', painter.color(2));
+  if (m.spline && m.shown.spline) entry('natural cubic spline', painter.color(2), true);
 }

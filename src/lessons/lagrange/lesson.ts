@@ -3,7 +3,15 @@ import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
 import { type LagrangeModel, derive } from './model';
 import { lagrangePanel } from './panel';
-import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, type Spacing, schema } from './state';
+import { describeStep, stepFormula } from './script';
+import {
+  DEFAULT_POINTS,
+  type LagrangeState,
+  RUNGE_POINTS,
+  type Spacing,
+  schema,
+  stepCount,
+} from './state';
 
 const preset = (
   id: string,
@@ -29,6 +37,7 @@ export default defineLesson<LagrangeState, LagrangeModel>({
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
+  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
     preset('five', 'Five points', DEFAULT_POINTS),
     preset(
@@ -43,7 +52,7 @@ export default defineLesson<LagrangeState, LagrangeModel>({
       ],
       { spacing: 'uniform' },
     ),
-    preset('runge', 'Runge: 12 nearly collinear points', RUNGE_POINTS, { t: 0.05 }),
+    preset('runge', 'Runge: 11 equally spaced points on a bump', RUNGE_POINTS, { t: 0.05 }),
     preset('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
     preset(
       'line',

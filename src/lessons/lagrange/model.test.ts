@@ -1,12 +1,17 @@
 import { describe, expect, it } from 'vitest';
 import { SAMPLES, derive } from './model';
-import { DEFAULT_POINTS, type LagrangeState } from './state';
+import type { AnyLesson } from '../../app/lesson';
+import { lagrangeBasis } from '../../math';
+import { checkScript } from '../blending/scriptCheck';
+import { describeStep } from './script';
+import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, revealed, stepCount } from './state';
 
 const state = (over: Partial<LagrangeState> = {}): LagrangeState => ({
   p: DEFAULT_POINTS,
   t: 0.4,
   spacing: 'uniform',
   spline: false,
+  step: 0,
   ...over,
 });
 
@@ -100,5 +105,80 @@ describe('Lagrange model', () => {
     for (const pieces of m.basisPieces)
       for (const piece of pieces)
         for (let i = 1; i < piece.length; i += 2) expect(Math.abs(piece[i])).toBeLessThanOrEqual(3);
+  });
+});
+
+describe('the script (Lagrange)', () => {
+  it('steps from the points through each Lₖ to the polynomial and the spline, drawing more at the end', async () => {
+    checkScript((await import('./lesson')).default as AnyLesson);
+  });
+
+  it('reveals L0 … Ln one by one, then the polynomial, then the spline', () => {
+    expect(stepCount(state())).toBe(6);
+    expect(stepCount(state({ spline: true }))).toBe(7);
+    expect(revealed(state({ step: 3 }))).toEqual({ basis: 3, curve: false, spline: false });
+    expect(revealed(state({ step: 6, spline: true }))).toEqual({
+      basis: 5,
+      curve: true,
+      spline: false,
+    });
+    expect(revealed(state({ step: 7, spline: true }))).toEqual({
+      basis: 5,
+      curve: true,
+      spline: true,
+    });
+    expect(describeStep(state(), 2)).toBe('L1(t): 1 at its own t1, 0 at every other tₖ');
+    // Sixteen points and the spline: still at most 20 presses.
+    const many = Array.from({ length: 16 }, (_, k) => [k, k % 3]);
+    expect(stepCount(state({ p: many, spline: true }))).toBe(18);
+  });
+
+  it('Runge: eleven points equally spaced on y = 4/(1 + x²); the polynomial wiggles past 7 near the ends', () => {
+    expect(RUNGE_POINTS.map((p) => p[0])).toEqual([-5, -4, -3, -2, -1, 0, 1, 2, 3, 4, 5]);
+    expect(RUNGE_POINTS[5][1]).toBe(4);
+    // Between the first two nodes, at x = −4.5 (t = 0.05), by the product formula directly:
+    // the classic interpolant of 1/(1 + x²) is above 1.5 there (the bump itself is 0.047).
+    const ts = RUNGE_POINTS.map((_, k) => k / 10);
+    const y = lagrangeBasis(ts, 0.05).reduce((sum, w, k) => sum + w * RUNGE_POINTS[k][1], 0);
+    expect(y).toBeGreaterThan(6);
+    const m = derive(state({ p: RUNGE_POINTS, t: 0.05 }));
+    expect(m.at[1]).toBeCloseTo(y, 10);
+    expect(m.at[0]).toBeCloseTo(-4.5, 10);
+  });
+
+  it('says what coincident and collinear points do', () => {
+    expect(
+      derive(
+        state({
+          p: [
+            [0, 0],
+            [1, 1],
+            [3, 3],
+          ],
+        }),
+      ).note,
+    ).toMatch(/^The points lie on one line/);
+    expect(
+      derive(
+        state({
+          p: [
+            [0, 0],
+            [1, 2],
+            [1, 2],
+            [4, 1],
+          ],
+        }),
+      ).note,
+    ).toMatch(/^P1 = P2: the polynomial must be at that spot at two values of t/);
+    expect(
+      derive(
+        state({
+          p: [
+            [2, 2],
+            [2, 2],
+          ],
+        }),
+      ).note,
+    ).toMatch(/^All points are on one spot/);
   });
 });

@@ -10,7 +10,8 @@ import {
   sampleBasis,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { type LagrangeState, degree } from './state';
+import { degenerate, repeatsText } from '../blending/scriptKit';
+import { type LagrangeState, type Revealed, degree, revealed } from './state';
 
 /**
  * The basis is sampled at t = i / SAMPLES, once: the plot, the curve
@@ -26,6 +27,10 @@ export interface LagrangeModel {
   state: LagrangeState;
   /** Degree n = number of points − 1. */
   n: number;
+  /** What the step shows. */
+  shown: Revealed;
+  /** Points on one spot or one line, and what the polynomial does then; or null. */
+  note: string | null;
   /** The parameter values t_k actually used. */
   ts: number[];
   /** Chord length was asked for but two neighbours coincide: which ones (then ts are uniform). */
@@ -78,6 +83,8 @@ export function derive(state: LagrangeState): LagrangeModel {
   return {
     state,
     n: degree(state),
+    shown: revealed(state),
+    note: noteFor(state, collapsed !== null),
     ts,
     collapsed,
     collapsedNote: collapsed
@@ -139,4 +146,20 @@ function basisBounds({ lowest, highest }: BasisSamples): Bounds {
   const low = Math.min(-0.3, lowest.value);
   const high = Math.max(1.2, highest.value);
   return { minX: 0, maxX: 1, minY: Math.max(-CLIP, low * 1.05), maxY: Math.min(CLIP, high * 1.05) };
+}
+
+/** Coincident or collinear points, in words: what the polynomial does through them. */
+function noteFor(state: LagrangeState, collapsed: boolean): string | null {
+  const { allSame, collinear, repeats } = degenerate(state.p);
+  if (allSame) return 'All points are on one spot: the polynomial through them is that one point.';
+  const notes: string[] = [];
+  if (collinear)
+    notes.push(
+      'The points lie on one line: so does the polynomial, but it may overshoot a point and run back along the line.',
+    );
+  if (repeats.length && !collapsed)
+    notes.push(
+      `${repeatsText(repeats)}: the polynomial must be at that spot at two values of t, so it stops there or makes a loop.`,
+    );
+  return notes.length ? notes.join(' ') : null;
 }

@@ -5,7 +5,8 @@ import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
 import type { LagrangeModel } from './model';
-import { type LagrangeState, MAX_POINTS, type Spacing } from './state';
+import { keepLastStep } from '../blending/scriptKit';
+import { type LagrangeState, MAX_POINTS, type Spacing, stepCount } from './state';
 
 const SPACINGS: [Spacing, string][] = [
   ['uniform', 'Equally spaced: tₖ = k / n'],
@@ -29,7 +30,7 @@ export function lagrangePanel(
     id: 'lagrange-spline',
     label: 'Compare with a natural cubic spline through the same points',
     get: (s) => s.spline,
-    set: (s, on) => ({ ...s, spline: on }),
+    set: (s, on) => keepLastStep(s, { ...s, spline: on }, stepCount),
   });
   const pointCount = pointButtons(api, {
     addLabel: 'Add a point',
@@ -37,8 +38,8 @@ export function lagrangePanel(
     count: (s) => s.p.length,
     min: 2,
     max: MAX_POINTS,
-    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
+    add: (s) => keepLastStep(s, { ...s, p: [...s.p, extendPolygon(s.p)] }, stepCount),
+    remove: (s) => keepLastStep(s, { ...s, p: s.p.slice(0, -1) }, stepCount),
   });
   const heading = h('h2', {});
   const warning = h('p', { class: 'warning', role: 'note' });
@@ -55,7 +56,7 @@ export function lagrangePanel(
     h(
       'p',
       {},
-      'Through n + 1 points there is exactly one polynomial curve of degree n, once we say at which parameter value tₖ it passes each point Pₖ. Lagrange wrote it down directly: each point gets a weight Lₖ(t), a polynomial that is 1 at its own tₖ and 0 at every other one.',
+      'Through n + 1 points there is exactly one polynomial curve of degree n, once we say at which parameter value tₖ it passes each point Pₖ. Lagrange wrote it down directly: each point gets a weight Lₖ(t), a polynomial that is 1 at its own tₖ and 0 at every other one. In this lesson the parameter is t, from 0 to 1.',
     ),
     formula(
       'P(t) = \\sum_{k=0}^{n} L_k(t)\\,P_k,\\qquad L_k(t) = \\prod_{j \\ne k} \\frac{t - t_j}{t_k - t_j}',
@@ -109,7 +110,7 @@ export function lagrangePanel(
       // Rows added for new points are marked too.
       markHovered();
       sumLine.textContent = `The weights add up to ${fmt(m.weightSum, 6)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
-      rungeText.textContent = `With many points the weights swing far beyond 0 and 1 near the ends. Here Σ|Lₖ(t)| reaches ${fmt(lebesgue.value, 1)} at t = ${fmt(lebesgue.t, 2)}: moving the points by 0.01 can move the curve by up to ${fmt(lebesgue.value * 0.01, 2)}. Try the Runge preset (twelve nearly collinear points): the polynomial oscillates wildly between them, while a cubic spline through the same points stays calm, because each of its pieces only listens to nearby points. That is the reason for splines.`;
+      rungeText.textContent = `With many points the weights swing far beyond 0 and 1 near the ends. Here Σ|Lₖ(t)| reaches ${fmt(lebesgue.value, 1)} at t = ${fmt(lebesgue.t, 2)}: moving the points by 0.01 can move the curve by up to ${fmt(lebesgue.value * 0.01, 2)}. Try the Runge preset (eleven equally spaced points on a bump): the polynomial wiggles ever wider between them towards the ends, while a cubic spline through the same points stays calm, because each of its pieces only listens to nearby points. That is the reason for splines.`;
     },
     hover(id) {
       hovered = id;

@@ -1,4 +1,4 @@
-import { bool, choice, number, points } from '../../app/fields';
+import { bool, choice, int, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -14,6 +14,8 @@ export interface LagrangeState {
   spacing: Spacing;
   /** Draw the natural cubic spline through the same points as well. */
   spline: boolean;
+  /** Step of the script: the points, each Lₖ in turn, the polynomial, the spline. */
+  step: number;
 }
 
 export const MAX_POINTS = 16;
@@ -26,27 +28,46 @@ export const DEFAULT_POINTS: Point[] = [
   [6, 2],
 ];
 
-/** Runge's phenomenon: twelve nearly collinear, unevenly spaced points. */
-export const RUNGE_POINTS: Point[] = [
-  [0, 0],
-  [1, 0.2],
-  [1.6, 0.1],
-  [3, 0.3],
-  [4.2, 0.2],
-  [5, 0.4],
-  [6.5, 0.3],
-  [7, 0.5],
-  [8.1, 0.4],
-  [9.5, 0.6],
-  [10, 0.5],
-  [11, 0.7],
-];
+/**
+ * Runge's phenomenon, the classic way: eleven points on the bump
+ * y = 4 / (1 + x²), equally spaced in x from −5 to 5 (and so in t). The
+ * polynomial through them wiggles ever wider towards the ends.
+ */
+export const RUNGE_POINTS: Point[] = Array.from({ length: 11 }, (_, k) => {
+  const x = k - 5;
+  return [x, Number((4 / (1 + x * x)).toFixed(4))];
+});
 
 export const schema: Schema<LagrangeState> = {
   p: points({ default: DEFAULT_POINTS, min: 2, max: MAX_POINTS }),
   t: number({ default: 0.4, min: 0, max: 1 }),
   spacing: choice<Spacing>({ default: 'uniform', values: ['uniform', 'chord'] }),
   spline: bool({ default: false }),
+  step: int({ default: 0, min: 0, max: MAX_POINTS + 3 }),
 };
 
 export const degree = (state: LagrangeState) => state.p.length - 1;
+
+/**
+ * Steps of the script: 0 the points; 1 … n + 1 the basis polynomials L0 … Ln
+ * one by one; then the polynomial Σ Lₖ(t) Pₖ and P(t); then the spline, when
+ * it is compared.
+ */
+export const stepCount = (state: LagrangeState) => degree(state) + 2 + (state.spline ? 1 : 0);
+
+/** What step `step` shows. */
+export interface Revealed {
+  /** L0 … L(basis − 1) are shown. */
+  basis: number;
+  curve: boolean;
+  spline: boolean;
+}
+
+export function revealed(state: LagrangeState): Revealed {
+  const n = degree(state);
+  return {
+    basis: Math.min(state.step, n + 1),
+    curve: state.step >= n + 2,
+    spline: state.spline && state.step >= n + 3,
+  };
+}

@@ -70,7 +70,7 @@ export function drawSolveProgress(painter: Painter, m: RoadModel): void {
   // Row i of the system belongs to village Pi: mark the rows swept so far.
   state.v.forEach((p, i) => {
     if (i >= progress.swept) return;
-    const current = i === progress.row && state.step <= solve.n;
+    const current = i === progress.row && (m.stage.solveStep ?? 0) <= solve.n;
     painter.ring(p, theme.sizes.handle * (current ? 2.4 : 1.7), {
       color: current ? theme.accent : painter.color(0),
       width: current ? theme.sizes.line * 1.5 : theme.sizes.thin,
@@ -98,9 +98,16 @@ export function drawMarkerLabel(painter: Painter, m: RoadModel): void {
   const marker = m.shown?.marker;
   if (!marker) return;
   const { sizes } = painter.theme;
-  painter.label(
-    `p̄ = ${m.state.s.toFixed(2)}: segment ${marker.piece}, p = ${marker.p.toFixed(2)}`,
+  // On the side away from the villages, so it covers none of them or their names (a phone's narrow map).
+  const v = m.state.v;
+  // A narrow map (a phone) gets the short form: the panel has the rest.
+  const narrow = painter.view.width < 40 * sizes.small;
+  painter.labelClear(
+    narrow
+      ? `p̄ = ${m.state.s.toFixed(2)}`
+      : `p̄ = ${m.state.s.toFixed(2)}: segment ${marker.piece}, p = ${marker.p.toFixed(2)}`,
     marker.point,
-    { dx: sizes.handle + 6, dy: sizes.handle + sizes.small, size: sizes.small, box: true },
+    v.length <= LABEL_VILLAGES ? v : [v[marker.piece], v[Math.min(marker.piece + 1, v.length - 1)]],
+    { size: sizes.small, box: true },
   );
 }

@@ -10,8 +10,9 @@ import { derive } from './model';
 import { type RoadState, normalize, schema, stepCount } from './state';
 
 function state(change: Partial<RoadState>): RoadState {
+  // The whole road (the last step) unless a step is asked for.
   const next = { ...defaultsOf(schema), ...change };
-  return normalize({ ...next, step: Math.min(next.step, stepCount(next)) }).state;
+  return normalize({ ...next, step: change.step ?? stepCount(next) }).state;
 }
 
 /** Draws the map of `s` to a recording context, as the shell does (without the handles). */

@@ -36,9 +36,11 @@ export const mapFigure: FigureSpec<RoadState, RoadModel> = {
       for (const village of m.state.v)
         painter.ring(village, theme.sizes.handle * 2.2, { alpha: 0 }, painter.color(2), 0.16);
     }
-    if (m.shown) drawMethodRoad(painter, m, m.shown, info);
+    if (m.stage.bare) drawBare(painter, m, info);
+    else if (m.shown) drawMethodRoad(painter, m, m.shown, info);
     else drawOverlay(painter, m, info);
   },
+  trail: (m) => m.shown?.marker?.point ?? null,
   drawOver(painter, m, info) {
     if (!info.thumbnail && m.shown) drawFixedGradients(painter, m);
   },
@@ -62,7 +64,7 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
   if (!shown.missing) {
     // The comb first: the road covers the bases of its teeth.
     if (shown.comb) drawCurvatureComb(painter, shown.comb, painter.color(3));
-    drawRoadway(painter, shown.cubics, painter.color(4));
+    drawRoadway(painter, shown.cubics, painter.color(4), true);
     const hovered = hoveredSegment(info.hover);
     if (hovered >= 0 && hovered < shown.cubics.length && !m.solving) {
       painter.cubicSegments([shown.cubics[hovered]], {
@@ -78,6 +80,13 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
   if (shown.ticks) drawParameterTicks(painter, shown.ticks);
   drawMarkerLabel(painter, m);
   if (m.mapNotes.length) drawFigureNote(painter, m.mapNotes);
+}
+
+/** Step 0: the villages alone, in the order the road will visit them, faintly. */
+function drawBare(painter: Painter, m: RoadModel, info: DrawInfo): void {
+  const { theme } = painter;
+  painter.polyline(m.state.v, { color: theme.curveFaint, width: theme.sizes.thin, dash: [4, 8] });
+  if (!info.thumbnail && m.mapNotes.length) drawFigureNote(painter, m.mapNotes);
 }
 
 /** Several answers at once, with a legend that says which curve is which. */

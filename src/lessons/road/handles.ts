@@ -17,13 +17,15 @@ export const LABEL_VILLAGES = 40;
 export function roadHandles(m: RoadModel): Handle[] {
   const v = m.state.v;
   const handles: Handle[] = [];
-  if (m.usesQuadraticHandle)
+  // Step 0 shows the villages alone: the chosen gradients come with the construction.
+  const aids = !m.stage.bare;
+  if (aids && m.usesQuadraticHandle)
     handles.push({ id: 'q', label: 'B_0', position: m.quadraticControl, shape: 'square' });
-  if (m.usesEndGradients) {
+  if (aids && m.usesEndGradients) {
     handles.push({ id: 'a', label: 'D_0', position: m.endHandles[0], shape: 'square' });
     handles.push({
       id: 'b',
-      label: `D_${v.length - 1}`,
+      label: `D_{${v.length - 1}}`,
       position: m.endHandles[1],
       shape: 'square',
     });
@@ -39,7 +41,13 @@ export function roadHandles(m: RoadModel): Handle[] {
     });
   const few = v.length <= LABEL_VILLAGES;
   v.forEach((village, i) =>
-    handles.push({ id: `p${i}`, label: `P_${i}`, position: village, showLabel: few, small: !few }),
+    handles.push({
+      id: `p${i}`,
+      label: `P_{${i}}`,
+      position: village,
+      showLabel: few,
+      small: !few,
+    }),
   );
   return handles;
 }

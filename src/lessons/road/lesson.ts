@@ -3,7 +3,7 @@ import { mapFigure } from './figure';
 import { type RoadModel, derive } from './model';
 import { roadPanel } from './panel';
 import { presets } from './presets';
-import { describeStep } from './solve';
+import { describeStep, roadFormula } from './script';
 import { type RoadState, normalize, schema, stepCount } from './state';
 
 export default defineLesson<RoadState, RoadModel>({
@@ -11,7 +11,7 @@ export default defineLesson<RoadState, RoadModel>({
   schema,
   derive,
   figures: [mapFigure],
-  steps: { key: 'step', count: stepCount, describe: describeStep },
+  steps: { key: 'step', count: stepCount, describe: describeStep, formula: roadFormula },
   normalize,
   scenes: presets,
   panel: roadPanel,

@@ -8,15 +8,23 @@ import { CURVES } from './roads';
 // the theme here, every position from the model.
 
 /** A road drawn as a road: dark casing, coloured surface, dashed centre line. */
-export function drawRoadway(painter: Painter, cubics: readonly Point[][], color: string): void {
+export function drawRoadway(
+  painter: Painter,
+  cubics: readonly Point[][],
+  color: string,
+  /** The road the lesson builds (the presenter may hide it), not one it joins. */
+  main = false,
+): void {
   const { theme } = painter;
   const w = theme.sizes.curve;
-  painter.cubicSegments(cubics, { color: theme.ink, width: w * 3.4 });
-  painter.cubicSegments(cubics, { color, width: w * 2.4 });
+  const role = main ? ('curve' as const) : undefined;
+  painter.cubicSegments(cubics, { color: theme.ink, width: w * 3.4, role });
+  painter.cubicSegments(cubics, { color, width: w * 2.4, role });
   painter.cubicSegments(cubics, {
     color: theme.background,
     width: Math.max(1, theme.sizes.thin),
     dash: [w * 2.5, w * 2.5],
+    role,
   });
 }
 
@@ -26,6 +34,7 @@ function overlayStyle(painter: Painter, index: number) {
     color: painter.color(index),
     width: painter.theme.sizes.curve * 0.9,
     dash: CURVES[index].dash.map((d) => d * painter.theme.sizes.line * 0.6),
+    role: 'curve' as const,
   };
 }
 

@@ -29,14 +29,15 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
     id: 'road-overlay',
     label: 'Compare: draw several answers at once',
     get: (s) => s.overlay,
-    set: (s, on) => ({ ...s, overlay: on }),
+    // Switching the overlay shows every answer chosen (its last step), as choosing a method does.
+    set: (s, on) => ({ ...s, overlay: on, step: stepCount({ ...s, overlay: on }) }),
   });
   const compareBoxes = CURVES.map((curve, index) => {
     const box = h('input', { type: 'checkbox', id: `road-compare-${curve.id}` });
     box.addEventListener('change', () => {
       const s = api.get();
       const compare = box.checked ? [...s.compare, index] : s.compare.filter((c) => c !== index);
-      api.set({ ...s, compare: compare.sort((x, y) => x - y) });
+      api.set(keepStepEnd(s, { ...s, compare: compare.sort((x, y) => x - y) }));
     });
     const line = h('span', { class: 'road-line', 'aria-hidden': 'true' });
     const why = h('span', { class: 'note' });

@@ -1,13 +1,27 @@
 import { describe, expect, it } from 'vitest';
 import type { Point } from '../../math';
 import { derive } from './model';
-import { LECTURE_VILLAGES, type RoadState, normalize, schema, stepCount } from './state';
+import type { AnyLesson } from '../../app/lesson';
+import { checkScript } from '../blending/scriptCheck';
+import { roadHandles } from './handles';
+import { valleyVillages } from './presets';
+import { describeStep } from './script';
+import {
+  LECTURE_VILLAGES,
+  type RoadState,
+  chunkSize,
+  normalize,
+  schema,
+  stage,
+  stepCount,
+} from './state';
 import { defaultsOf } from '../../app/urlState';
 
 /** A state of the lesson: its defaults with some fields changed, then its cross-field rules. */
 function state(change: Partial<RoadState>): RoadState {
+  // The whole road (the last step) unless a step is asked for.
   const next = { ...defaultsOf(schema), ...change };
-  return normalize({ ...next, step: Math.min(next.step, stepCount(next)) }).state;
+  return normalize({ ...next, step: change.step ?? stepCount(next) }).state;
 }
 
 /** Three villages whose y goes 0, 1, 0 and whose x goes 0, 1, 2. */
@@ -75,12 +89,13 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
   });
 
   it('while the solve is stepped through, shows only the pieces whose gradients are known', () => {
-    // 3 rows: steps 1–3 sweep, 4 fixes D2, 5 fixes D1: segment 1 (P1 to P2) can be drawn.
-    const fixing = derive(state({ v: hill, road: 'natural', step: 4 }));
+    // 3 rows: step 0 the villages, 1 the system, 2–4 sweep, 5 fixes D2, 6 fixes D1:
+    // segment 1 (P1 to P2) can be drawn.
+    const fixing = derive(state({ v: hill, road: 'natural', step: 5 }));
     expect(fixing.solving).toBe(true);
     expect(fixing.progress).toEqual({ swept: 3, fixed: 1, row: 2 });
     expect(fixing.shown!.pieces).toEqual([]);
-    const half = derive(state({ v: hill, road: 'natural', step: 5 }));
+    const half = derive(state({ v: hill, road: 'natural', step: 6 }));
     expect(half.shown!.offset).toBe(1);
     [
       [1, 1],
@@ -226,5 +241,57 @@ describe('notes about the villages', () => {
       }),
     );
     expect(m.notes[0]).toMatch(/on top of each other \(P1 = P2\)/);
+  });
+});
+
+describe('the script (road)', () => {
+  it('every scene steps from the villages alone to the whole road, in at most 20 steps', async () => {
+    checkScript((await import('./lesson')).default as AnyLesson);
+  });
+
+  it('the lecture villages: the system, six rows swept, six gradients fixed', () => {
+    const lecture = state({ step: 0 });
+    expect(stepCount(lecture)).toBe(13);
+    expect(stage({ ...lecture, step: 1 }).solveStep).toBe(0);
+    expect(stage({ ...lecture, step: 4 }).solveStep).toBe(3);
+    expect(stage({ ...lecture, step: 13 }).solveStep).toBe(12);
+    expect(describeStep(lecture, 3)).toBe('Forward sweep: row 1 becomes [1 γ | Γ]');
+    expect(describeStep(lecture, 8)).toBe(
+      'Back substitution: D5 fixed, the road grows back from Pm',
+    );
+  });
+
+  it('500 villages sweep and substitute in chunks of 56 rows: 19 steps, not 1000', () => {
+    const valley = state({ v: valleyVillages(500), step: 0 });
+    expect(chunkSize(500)).toBe(56);
+    expect(stepCount(valley)).toBe(1 + 9 + 9);
+    expect(stage({ ...valley, step: 2 }).solveStep).toBe(56);
+    expect(stage({ ...valley, step: 10 }).solveStep).toBe(500);
+    expect(stage({ ...valley, step: 19 }).solveStep).toBe(1000);
+    expect(describeStep(valley, 2)).toBe('Forward sweep: rows 0–55 become [1 γ | Γ]');
+  });
+
+  it('every method has steps: the others build their pieces from P0 after their construction', () => {
+    const roman = state({ road: 'roman', step: 0 });
+    expect(stepCount(roman)).toBe(5);
+    expect(derive({ ...roman, step: 2 }).shown!.pieces).toHaveLength(2);
+    expect(derive({ ...roman, step: 2 }).shown!.marker).toBeNull();
+    expect(derive({ ...roman, step: 5 }).shown!.marker).not.toBeNull();
+    const quadratic = state({ road: 'quadratic', step: 0 });
+    expect(stepCount(quadratic)).toBe(6);
+    expect(describeStep(quadratic, 1)).toMatch(/^One chosen gradient D0 at P0/);
+    expect(derive({ ...quadratic, step: 1 }).shown!.pieces).toHaveLength(0);
+    const ring = state({ road: 'ring', step: 0 });
+    expect(stepCount(ring)).toBe(1 + 6);
+    const overlay = state({ overlay: true, compare: [0, 3, 6], step: 2 });
+    expect(stepCount(overlay)).toBe(3);
+    expect(derive(overlay).overlay.map((c) => c.index)).toEqual([0, 3]);
+    expect(describeStep(overlay, 3)).toBe('Answer 3 of 3: Lagrange polynomial');
+  });
+
+  it('labels the 600th village’s gradient D_{599}, all digits subscripted', () => {
+    const v = valleyVillages(600);
+    const m = derive(state({ v, road: 'clamped' }));
+    expect(roadHandles(m).find((h) => h.id === 'b')!.label).toBe('D_{599}');
   });
 });

@@ -28,7 +28,7 @@ import {
   solveProgress,
   solvedGradients,
 } from './solve';
-import { type RoadState, isSolving, segmentCount } from './state';
+import { type RoadStage, type RoadState, segmentCount, stage } from './state';
 
 /** Up to this many pieces the method's road is fitted into the map whole (control points and all). */
 const FIT_PIECES = 100;
@@ -78,6 +78,8 @@ export interface RoadModel {
   progress: SolveProgress | null;
   /** Is the solve being stepped through, so only part of the road is built? */
   solving: boolean;
+  /** What the step shows. */
+  stage: RoadStage;
   /** The method's road on the map; null while the overlay is shown. */
   shown: ShownRoad | null;
   /** The overlay's curves in the order of CURVES; empty when it is off. */
@@ -123,11 +125,12 @@ export function derive(state: RoadState): RoadModel {
   const solve = buildSolve(state);
   const gradients = solve ? solvedGradients(solve) : roadGradients(state.road, state);
   const road = buildRoad(state.road, state, gradients);
-  const progress = solve && solveProgress(solve.n, state.step);
-  const solving = isSolving(state);
+  const at = stage(state);
+  const progress = solve && at.solveStep !== null ? solveProgress(solve.n, at.solveStep) : null;
+  const solving = !at.bare && progress !== null && at.solveStep! < 2 * solve!.n;
   const shown = state.overlay
     ? null
-    : showRoad(state, road, gradients, solving ? progress : null, span);
+    : showRoad(state, road, gradients, solving ? progress : null, span, at.bare ? 0 : at.pieces);
 
   const a = startGradient(state);
   const b = endGradient(state);
@@ -157,8 +160,9 @@ export function derive(state: RoadState): RoadModel {
     solve,
     progress,
     solving,
+    stage: at,
     shown,
-    overlay: state.overlay ? overlayCurves(state, road) : [],
+    overlay: state.overlay ? overlayCurves(state, road).slice(0, at.curves) : [],
     quadraticPolygon:
       !state.overlay && state.road === 'quadratic' ? controlPolygon(road, last) : null,
     notes,
@@ -234,5 +238,9 @@ function fitBounds(model: Omit<RoadModel, 'bounds'>, villages: Bounds): Bounds {
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
   }
-  return points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  const fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  // The overlay's legend sits top left: room for it there, so it covers no curve.
+  if (!state.overlay) return fitted;
+  const width = fitted.maxX - fitted.minX;
+  return { ...fitted, minX: fitted.minX - 0.45 * width };
 }

@@ -1,7 +1,7 @@
 import type { Point, Preset } from '../../app/lesson';
 import { defaultsOf } from '../../app/urlState';
 import { CURVES } from './roads';
-import { LECTURE_VILLAGES, type RoadState, roundPoint, schema, stepCount } from './state';
+import { LECTURE_VILLAGES, type RoadState, roundPoint, schema } from './state';
 
 /** A small seeded generator (mulberry32), so a preset is the same in every browser and test. */
 export function seededRandom(seed: number): () => number {
@@ -32,7 +32,7 @@ export function valleyVillages(count: number, seed = 6): Point[] {
   return villages;
 }
 
-/** A preset sets up villages (and what to look at); the whole solve is shown. */
+/** A preset sets up villages (and what to look at); the script opens it at step 0. */
 const preset = (
   id: string,
   label: string,
@@ -42,7 +42,7 @@ const preset = (
   label,
   apply: (current) => {
     const next = { ...current, ...change(current) };
-    return { ...next, s: Math.min(next.s, next.v.length - 1), step: stepCount(next) };
+    return { ...next, s: Math.min(next.s, next.v.length - 1), step: 0 };
   },
 });
 

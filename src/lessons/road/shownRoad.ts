@@ -43,19 +43,22 @@ export function showRoad(
   gradients: Point[] | undefined,
   progress: SolveProgress | null,
   span: number,
+  /** Without a solve under way: how many pieces are built so far, from P0. */
+  limit = Infinity,
 ): ShownRoad {
+  const all = road.kind === 'pieces' ? road.pieces : [];
   const pieces = progress
     ? builtPieces(state.v, gradients!, progress)
-    : road.kind === 'pieces'
-      ? road.pieces
-      : [];
-  const built = !progress && pieces.length > 0;
+    : limit < all.length
+      ? all.slice(0, limit)
+      : all;
+  const built = !progress && pieces.length > 0 && pieces.length === all.length;
   const marker = built ? localParameter(state.s, pieces.length) : null;
   return {
     pieces,
     cubics: asCubics(pieces),
     boxes: bezierPieceBoxes(pieces),
-    offset: segmentCount(state) - pieces.length,
+    offset: progress ? segmentCount(state) - pieces.length : 0,
     missing: road.kind === 'missing' ? road.why : null,
     marker: marker && { ...marker, point: bezierPoint(pieces[marker.piece], marker.p) },
     ticks: built && pieces.length <= TICK_SEGMENTS ? parameterTicks(pieces) : null,

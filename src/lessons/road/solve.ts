@@ -83,13 +83,3 @@ export function builtPieces(
   const from = villages.length - progress.fixed;
   return cubicSplineSegments(villages.slice(from), gradients.slice(from));
 }
-
-/** Text for the step status: what step k shows. */
-export function describeStep(state: RoadState, k: number): string {
-  const n = state.v.length;
-  if (!hasSolve(state)) return 'The steps walk through the solve of the natural or clamped spline';
-  const progress = solveProgress(n, k);
-  if (progress.row === null) return `Step 0 of ${2 * n}: the system`;
-  if (k <= n) return `Step ${k} of ${2 * n}: sweep row ${progress.row}`;
-  return `Step ${k} of ${2 * n}: D${progress.row} fixed`;
-}

@@ -35,14 +35,13 @@ export function solveSection() {
       const { progress, cost: counts } = m;
       setHidden(element, !solve);
       if (!solve || !progress || !counts) return;
-      if (shownStep >= 0 && shownStep !== state.step) revealInPanel(element);
-      shownStep = state.step;
+      const step = m.stage.solveStep ?? 2 * solve.n;
+      if (shownStep >= 0 && shownStep !== step) revealInPanel(element);
+      shownStep = step;
       const n = solve.n;
-      setText(title, `Solving for the gradients: step ${state.step} of ${2 * n}`);
-      setText(text, stepText(state, solve, progress.row));
-      formulas.forEach((formula, k) =>
-        formula.set(stepFormula(solve, k, state.step, progress.row)),
-      );
+      setText(title, `Solving for the gradients: step ${step} of ${2 * n}`);
+      setText(text, stepText(state, solve, step, progress.row));
+      formulas.forEach((formula, k) => formula.set(stepFormula(solve, k, step, progress.row)));
       tables.update(solve, progress);
 
       // The cost changes only with the number of villages: written and typeset again only then.

@@ -12,7 +12,12 @@ const number = (value: number) => live(t(value));
 /** A number in a sum: negatives in brackets (part of the shape). */
 const term = (value: number) => (value < 0 ? tex`(${number(value)})` : number(value));
 
-export function stepText(state: RoadState, solve: RoadSolve, row: number | null): string {
+export function stepText(
+  state: RoadState,
+  solve: RoadSolve,
+  step: number,
+  row: number | null,
+): string {
   const n = solve.n;
   const ends =
     state.road === 'clamped'
@@ -21,8 +26,8 @@ export function stepText(state: RoadState, solve: RoadSolve, row: number | null)
   if (row === null) {
     return `The system for the gradients D0 … D${n - 1} at the villages: one matrix for both coordinates, a right-hand side for x and one for y. ${ends} Step forward (or press the clicker) to sweep it row by row.`;
   }
-  if (state.step <= n) {
-    return `Forward sweep, row ${row}: subtract ${row === 0 ? 'nothing (it is the first row)' : `row ${row - 1} (already [1 γ${row - 1} | Γ${row - 1}])`} and divide by the pivot, so row ${row} becomes [1 γ${row} | Γ${row}].${state.step === n ? ' The sweep is done: the last row reads D' + (n - 1) + ' = Γ' + (n - 1) + '.' : ''}`;
+  if (step <= n) {
+    return `Forward sweep, row ${row}: subtract ${row === 0 ? 'nothing (it is the first row)' : `row ${row - 1} (already [1 γ${row - 1} | Γ${row - 1}])`} and divide by the pivot, so row ${row} becomes [1 γ${row} | Γ${row}].${step === n ? ' The sweep is done: the last row reads D' + (n - 1) + ' = Γ' + (n - 1) + '.' : ''}`;
   }
   const rule =
     row === n - 1

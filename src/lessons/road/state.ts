@@ -35,7 +35,7 @@ export interface RoadState {
   comb: boolean;
   /** The global parameter p̄ of the marker on the road. */
   s: number;
-  /** Step of the solve: 0 (the system), n sweep steps, then n back-substitution steps. */
+  /** Step of the script: 0 the villages, then the method's construction in at most 20 steps (see stage). */
   step: number;
 }
 
@@ -70,7 +70,7 @@ export const schema: Schema<RoadState> = {
   ends: bool({ default: false }),
   comb: bool({ default: false }),
   s: number({ default: 2.4, min: 0, max: MAX_VILLAGES }),
-  step: int({ default: 2 * MAX_VILLAGES, min: 0, max: 2 * MAX_VILLAGES }),
+  step: int({ default: 0, min: 0, max: 20 }),
 };
 
 /** Segments of the method's road: the ring road has one more, back to P0. */
@@ -80,13 +80,75 @@ export const segmentCount = (state: RoadState) =>
 /** Methods whose gradients come from one tridiagonal system solved by the Thomas algorithm. */
 export const hasSolve = (state: RoadState) => state.road === 'natural' || state.road === 'clamped';
 
-/** Steps of the solve: each row swept, then each D fixed (2(m + 1)); none for other methods. */
-export const stepCount = (state: RoadState) => (hasSolve(state) ? 2 * state.v.length : 0);
+/** A long sequence of rows or pieces is stepped in at most this many chunks. */
+const CHUNKS = 9;
 
-/** Is the solve being stepped through (so only part of the road is built)? */
-export const isSolving = (state: RoadState) => hasSolve(state) && state.step < stepCount(state);
+/** Rows or pieces per step, so that `total` of them take at most CHUNKS steps. */
+export const chunkSize = (total: number) => Math.max(1, Math.ceil(total / CHUNKS));
+/** Steps for `total` rows or pieces, in chunks. */
+const chunks = (total: number) => Math.ceil(total / chunkSize(total));
 
-/** Keeps "the whole solve shown" when the number of steps changes. */
+/** Does the method show a construction (gradients, B0, a system) before its first piece? */
+const hasAid = (state: RoadState) => state.road !== 'roman';
+
+/**
+ * Steps of the script. Step 0 shows the villages alone. With the overlay, each
+ * step adds one curve. Natural and clamped: the system, then its forward sweep
+ * row by row, then the back substitution one gradient at a time (each in
+ * chunks on a long road), the road growing from its end. The others: their
+ * construction (gradients, the first control point, the cyclic system), then
+ * the pieces from P0 onwards, in chunks.
+ */
+export function stepCount(state: RoadState): number {
+  if (state.overlay) return Math.max(1, state.compare.length);
+  if (hasSolve(state)) return 1 + 2 * chunks(state.v.length);
+  return (hasAid(state) ? 1 : 0) + chunks(segmentCount(state));
+}
+
+/** What the step shows. */
+export interface RoadStage {
+  /** The villages alone. */
+  bare: boolean;
+  /** Natural and clamped: the step of the solve, 0 (the system) … 2n (solved); else null. */
+  solveStep: number | null;
+  /** Other methods: the pieces shown, from P0 (all of them at the last step). */
+  pieces: number;
+  /** The overlay: its first `curves` curves are drawn. */
+  curves: number;
+}
+
+export function stage(state: RoadState): RoadStage {
+  const k = Math.min(state.step, stepCount(state));
+  const segments = segmentCount(state);
+  const bare = k === 0;
+  if (state.overlay) return { bare, solveStep: null, pieces: segments, curves: k };
+  if (hasSolve(state)) {
+    const n = state.v.length;
+    const size = chunkSize(n);
+    const sweep = chunks(n);
+    const solveStep =
+      k <= 1
+        ? 0
+        : k <= 1 + sweep
+          ? Math.min(n, (k - 1) * size)
+          : n + Math.min(n, (k - 1 - sweep) * size);
+    return { bare, solveStep, pieces: segments, curves: 0 };
+  }
+  const built = k - (hasAid(state) ? 1 : 0);
+  return {
+    bare,
+    solveStep: null,
+    pieces: Math.min(segments, Math.max(0, built) * chunkSize(segments)),
+    curves: 0,
+  };
+}
+
+/** Is the road being built step by step (so only part of it is shown)? */
+export function isSolving(state: RoadState): boolean {
+  return state.step < stepCount(state);
+}
+
+/** Keeps "the whole road shown" when the number of steps changes. */
 export function keepStepEnd(before: RoadState, after: RoadState): RoadState {
   return before.step >= stepCount(before) ? { ...after, step: stepCount(after) } : after;
 }
