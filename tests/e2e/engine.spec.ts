@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, lessonSlugs, test } from './fixtures';
+import { expect, hashState, lessonSlugs, settled, test } from './fixtures';
 
 const nextFrame = (page: Page) =>
   page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
@@ -51,8 +51,10 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
 }) => {
   // P0 and P1 both at the origin: a drag to the right takes the last of the stack, to the left the first.
   await page.goto('./#/de-casteljau?p=0,0;0,0;3,2;4,0&t=0.4&step=0&split=0');
-  const p0 = page.getByRole('button', { name: /^P0 at/ });
-  await expect(p0).toHaveAccessibleName('P0 at (0.00, 0.00)');
+  // The stack is named once, for both points: “P0 = P1 at (0.00, 0.00)”.
+  const p0 = page.getByRole('button', { name: /^P0( = P1)? at/ });
+  const p1 = page.getByRole('button', { name: /^P1 at/ });
+  await expect(p0).toHaveAccessibleName('P0 = P1 at (0.00, 0.00)');
   const box = (await p0.boundingBox())!;
   const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
   const pull = async (dx: number) => {
@@ -61,20 +63,23 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
     await page.mouse.move(x + dx, y, { steps: 6 });
     await page.mouse.up();
   };
+  const at = (name: string) => (v: string) => v.split(';')[name === 'P0' ? 0 : 1] === '0,0';
   await pull(80);
-  await expect(page.getByRole('button', { name: /^P1 at/ })).not.toHaveAccessibleName(
-    'P1 at (0.00, 0.00)',
-  );
+  await settled(page);
+  // Right takes the last of the stack: P1 left the origin, P0 stayed.
+  expect(at('P0')(hashState(page).p)).toBe(true);
+  expect(at('P1')(hashState(page).p)).toBe(false);
   await expect(p0).toHaveAccessibleName('P0 at (0.00, 0.00)');
+  await expect(p1).not.toHaveAccessibleName(/\(0\.00, 0\.00\)/);
   await page.keyboard.press('Control+z');
-  await expect(page.getByRole('button', { name: /^P1 at/ })).toHaveAccessibleName(
-    'P1 at (0.00, 0.00)',
-  );
+  await settled(page);
+  expect(hashState(page).p).toBe('0,0;0,0;3,2;4,0');
   await pull(-80);
-  await expect(p0).not.toHaveAccessibleName('P0 at (0.00, 0.00)');
-  await expect(page.getByRole('button', { name: /^P1 at/ })).toHaveAccessibleName(
-    'P1 at (0.00, 0.00)',
-  );
+  await settled(page);
+  // Left takes the first: P0 left, P1 stayed.
+  expect(at('P0')(hashState(page).p)).toBe(false);
+  expect(at('P1')(hashState(page).p)).toBe(true);
+  await expect(p1).toHaveAccessibleName('P1 at (0.00, 0.00)');
 });
 
 test('live formulas show their numbers to screen readers too, on every lesson', async ({
