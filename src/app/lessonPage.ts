@@ -520,6 +520,10 @@ export class LessonPage<S, M> {
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();
+    // A link is a new starting point of the script: its scene, and no memory of others.
+    this.sceneMemory.clear();
+    this.store.scene = loaded.scene;
+    this.sceneButtons.forEach((b, i) => b.setAttribute('aria-pressed', String(i === loaded.scene)));
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     const same = this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();
