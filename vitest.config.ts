@@ -5,6 +5,7 @@ export default defineConfig({
     include: ['src/**/*.test.ts', 'tests/**/*.test.ts'],
     exclude: ['tests/e2e/**', 'node_modules/**', 'dist/**'],
     environment: 'node',
+    setupFiles: ['tests/setup.ts'],
     // Property tests run thousands of cases: on a busy 2-core machine 5 s is too tight.
     testTimeout: 30_000,
   },

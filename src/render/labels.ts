@@ -57,7 +57,14 @@ export function splitSubscripts(text: string): { text: string; sub: boolean }[] 
   return runs;
 }
 
-/** A label at screen coordinates, kept whole inside the figure. */
+/** Do a placed label and a box overlap by more than a pixel each way? */
+function overlaps(b: LabelBox, x: number, y: number, width: number, height: number): boolean {
+  const w = Math.min(b.x + b.width, x + width) - Math.max(b.x, x);
+  const h = Math.min(b.y + b.height, y + height) - Math.max(b.y, y);
+  return w > 1 && h > 1;
+}
+
+/** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
 export function drawScreenLabel(
   painter: Painter,
   text: string,
@@ -88,15 +95,40 @@ export function drawScreenLabel(
   let middleY = baseline === 'top' ? y + size / 2 : baseline === 'bottom' ? y - size / 2 : y;
   // Keep the whole label inside the figure rather than cut at its edge.
   const margin = 2 + (style.box ? size * 0.35 : 0);
-  left = Math.max(margin, Math.min(left, view.width - total - margin));
-  middleY = Math.max(size * 0.7 + margin, Math.min(middleY, view.height - size * 0.7 - margin));
-  painter.labels.push({
-    text,
-    x: left,
-    y: middleY - size * 0.65,
-    width: total,
-    height: size * 1.3,
-  });
+  const inside = (l: number, m: number): [number, number] => [
+    Math.max(margin, Math.min(l, view.width - total - margin)),
+    Math.max(size * 0.7 + margin, Math.min(m, view.height - size * 0.7 - margin)),
+  ];
+  [left, middleY] = inside(left, middleY);
+  // A label never lands on one already placed this frame: it moves to the
+  // nearest free spot around its place (above, below, beside), and if all of
+  // them are taken it is left out rather than drawn unreadably on another.
+  const height = size * 1.3;
+  const free = (l: number, m: number) =>
+    !painter.labels.some((b) => overlaps(b, l, m - size * 0.65, total, height));
+  if (!free(left, middleY)) {
+    const gap = size * 0.3;
+    const spot = [
+      [0, -height],
+      [0, height],
+      [total + gap, 0],
+      [-(total + gap), 0],
+      [total + gap, -height],
+      [-(total + gap), -height],
+      [total + gap, height],
+      [-(total + gap), height],
+      [0, -2 * height],
+      [0, 2 * height],
+    ]
+      .map(([dx, dy]) => inside(left + dx, middleY + dy))
+      .find(([l, m]) => free(l, m));
+    if (!spot) {
+      c.restore();
+      return { width: 0 };
+    }
+    [left, middleY] = spot;
+  }
+  painter.labels.push({ text, x: left, y: middleY - size * 0.65, width: total, height });
   if (style.box) {
     const pad = size * 0.35;
     const box: [number, number, number, number] = [
