@@ -191,8 +191,12 @@ export function drawNote(
   }
   const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
   const lineHeight = size * 1.3;
-  const top = style.top ?? pad;
   const height = lines.length * lineHeight + pad;
+  // At the top of the figure, or at its foot if labels already sit up there.
+  const clash = (y: number) =>
+    painter.labels.filter((b) => overlaps(b, pad, y, width + 2 * pad, height)).length;
+  const foot = painter.view.height - height - pad;
+  const top = style.top ?? (clash(pad) > 0 && foot > pad && clash(foot) < clash(pad) ? foot : pad);
   painter.labels.push({ text, x: pad, y: top, width: width + 2 * pad, height });
   c.setLineDash([]);
   c.globalAlpha = 0.94;

@@ -33,6 +33,11 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     if (m.state.part === 'space') return drawTopView(painter, m, labels);
+    // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from
+    // step 3. First, so the labels drawn after it keep clear of it.
+    const at = m.plane?.at;
+    if (m.state.part === 'plane' && at?.why && labels && m.state.step >= (at.tangent ? 3 : 2))
+      painter.note(at.why);
     const plane = m.plane!;
     const theme = painter.theme;
     painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
@@ -61,17 +66,6 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     if (id.startsWith('q'))
       return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], q[2]] : q)) };
     return { ...state, p: state.p.map((p, k) => (k === i ? [to[0], to[1]] : p)) };
-  },
-  drawOver(painter, m, info) {
-    // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from step 3.
-    const at = m.plane?.at;
-    if (
-      m.state.part === 'plane' &&
-      at?.why &&
-      !info.thumbnail &&
-      m.state.step >= (at.tangent ? 3 : 2)
-    )
-      painter.note(at.why);
   },
   trail: (m) => (m.state.part === 'space' ? m.space.at.point.slice(0, 2) : m.plane!.at.point),
   weight: 3,
