@@ -11,7 +11,7 @@ import { expect, hashState, lessonFolders, settled, test } from './fixtures';
 
 const slugs = lessonFolders();
 
-const EVENTS = process.env.FUZZ === 'full' ? 400 : 60;
+const EVENTS = process.env.FUZZ === 'full' ? 400 : 30;
 
 const KEYS = [
   'PageDown',
