@@ -249,7 +249,7 @@ const pixels = (page: Page) =>
 test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by the next step', async ({
   page,
 }) => {
-  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&t=0.5&step=3');
+  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&t=0.5&step=5');
   await page.mouse.move(0, 0);
   await settled(page);
   const shown = await pixels(page);
@@ -264,7 +264,7 @@ test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by t
 
   // A ghost of the figure stays faintly behind a change, and goes with the tool.
   await page.keyboard.press('o');
-  await page.goto('./#/de-casteljau?p=0,0;1,3;3,3;4,0&t=0.5&step=3');
+  await page.goto('./#/de-casteljau?p=0,0;1,3;3,3;4,0&t=0.5&step=5');
   await settled(page);
   const withGhost = await pixels(page);
   await page.keyboard.press('o');

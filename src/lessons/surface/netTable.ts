@@ -68,7 +68,7 @@ export function netTable(
       h(
         'tr',
         {},
-        h('th', { scope: 'col' }, ''),
+        h('th', { scope: 'col' }, h('span', { class: 'visually-hidden' }, 'Row')),
         ...[0, 1, 2, 3].map((n) => h('th', { scope: 'col' }, `n = ${n}`)),
       ),
     ),
