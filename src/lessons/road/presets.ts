@@ -1,19 +1,8 @@
 import type { Point, Preset } from '../../app/lesson';
 import { defaultsOf } from '../../app/urlState';
+import { seededRandom } from '../../math/seededRandom';
 import { CURVES } from './roads';
 import { LECTURE_VILLAGES, type RoadState, roundPoint, schema } from './state';
-
-/** A small seeded generator (mulberry32), so a preset is the same in every browser and test. */
-export function seededRandom(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /**
  * `count` villages up a winding valley: hairpin bends climbing a hillside, each
