@@ -132,7 +132,9 @@ export interface StepsSpec<S, M = S> {
   describe(state: S, k: number): string;
   /**
    * The formula of the current step with its numbers (TeX), drawn large under
-   * the caption in presenter view; null when the step has none.
+   * the caption in presenter view; null when the step has none. The shell
+   * makes its decimal numbers live (`slotNumbers`): a drag that changes only
+   * numbers rewrites their text, it does not typeset again.
    */
   formula?(model: M, state: S): string | null;
 }

@@ -6,6 +6,7 @@
  * page does nothing.
  */
 import { fitToWidth, refitAll } from '../render/fit';
+import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
 import type { LabelBox } from '../render/labels';
 import type { Theme } from '../render/theme';
 import { ParameterControl, StepControl } from './controls';
@@ -34,6 +35,13 @@ let firstDrawMarked = false;
 let framesMeasured = 0;
 /** The name of each frame's measure in the Performance timeline. */
 const FRAME = 'spline-lab:frame';
+/**
+ * Milliseconds of figure drawing after which the panel waits for the next
+ * frame (once): the figure answers the hand first, the text follows.
+ */
+const PANEL_BUDGET_MS = 12;
+/** Milliseconds of a frame in which new formulas are typeset; the rest wait for the next frame. */
+const TYPESET_BUDGET_MS = 20;
 
 /** Points of a trail kept per figure (a long play is thinned to this many). */
 const TRAIL_MAX = 4000;
@@ -54,6 +62,8 @@ export class LessonPage<S, M> {
   // What the next frame must do.
   private drawnState: S | null = null;
   private panelState: S | null = null;
+  /** The panel's update was put off to this frame: it is not put off again. */
+  private panelDeferred = false;
   private hoverChanged = false;
   private refreshAll = true;
   private readonly dirtyFigures = new Set<FigureView<S, M>>();
@@ -434,6 +444,11 @@ export class LessonPage<S, M> {
       fitToWidth(this.panel.element);
       fitToWidth(this.presenter.caption);
     }
+    // Formulas that waited for this frame, then this frame's own (see formula.ts).
+    if (openTypesetBudget(TYPESET_BUDGET_MS) > 0) {
+      this.fitPending = true;
+      this.requestFrame();
+    }
     const state = this.store.state;
     const model = this.model(state);
     const stateChanged = state !== this.drawnState || this.refreshAll;
@@ -444,8 +459,13 @@ export class LessonPage<S, M> {
     }
     this.dirtyFigures.clear();
     // On the first frame the figure goes first: the panel (a page of formulas
-    // to typeset) follows in the next frame, so the figure shows sooner.
-    const panelDue = (stateChanged || state !== this.panelState) && this.drawnState !== null;
+    // to typeset) follows in the next frame, so the figure shows sooner. So it
+    // does when the figures took long (a new scene): one long task would hold
+    // the pointer and keys up, two shorter ones do not.
+    const wanted = (stateChanged || state !== this.panelState) && this.drawnState !== null;
+    const deferred = wanted && !this.panelDeferred && performance.now() - start > PANEL_BUDGET_MS;
+    this.panelDeferred = deferred;
+    const panelDue = wanted && !deferred;
     if (panelDue) {
       this.panelState = state;
       this.panel.update(model, state);
@@ -461,6 +481,11 @@ export class LessonPage<S, M> {
       this.requestFrame();
     }
     if (!panelDue && this.panelState !== state) this.requestFrame();
+    if (typesetWaiting()) {
+      this.fitPending = true;
+      this.requestFrame();
+    }
+    closeTypesetBudget();
     this.drawnState = state;
     this.hoverChanged = false;
     this.refreshAll = false;
@@ -484,6 +509,7 @@ export class LessonPage<S, M> {
       const busy =
         this.frame !== 0 ||
         this.fitPending ||
+        typesetWaiting() ||
         this.url.pending ||
         this.panelState !== this.store.state ||
         this.drawnState !== this.store.state;

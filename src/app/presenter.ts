@@ -6,7 +6,8 @@
  * with, and a trail of the moving point.
  */
 import type { Shown } from '../render/painter';
-import { renderFormula } from '../render/formula';
+import { LiveFormula } from '../render/formula';
+import { type FormulaParts, slotNumbers } from '../render/formulaParts';
 import { h, setHidden, setText } from './dom';
 import type { PresenterTool } from './keymap';
 
@@ -43,7 +44,8 @@ export class Presenter {
   private readonly sceneText: HTMLElement;
   private readonly stepText: HTMLElement;
   private readonly formulaBox: HTMLElement;
-  private formulaTex: string | null = null;
+  /** The step's formula: its shape typeset once, its numbers written as text during a drag. */
+  private readonly formula = new LiveFormula(true);
   private readonly blankCover: HTMLElement;
   private readonly laserDot: HTMLElement;
   private laserTimer = 0;
@@ -59,7 +61,7 @@ export class Presenter {
   ) {
     this.sceneText = h('span', { class: 'caption-scene' });
     this.stepText = h('span', { class: 'caption-step' });
-    this.formulaBox = h('div', { class: 'caption-formula' });
+    this.formulaBox = h('div', { class: 'caption-formula' }, this.formula.element);
     this.caption = h(
       'div',
       { class: 'caption', 'data-caption': '' },
@@ -149,15 +151,14 @@ export class Presenter {
     this.ink.clear();
   }
 
-  /** The caption of the current step; the formula is typeset again only when its TeX changed. */
-  setCaption(scene: string, step: string, formula: string | null): void {
+  /**
+   * The caption of the current step. Its formula is typeset again only when
+   * its shape changes: a drag that changes its numbers rewrites their text.
+   */
+  setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
     setText(this.sceneText, scene);
     setText(this.stepText, step);
-    if (formula !== this.formulaTex) {
-      this.formulaTex = formula;
-      if (formula) renderFormula(this.formulaBox, formula, true);
-      else this.formulaBox.replaceChildren();
-    }
+    if (formula) this.formula.set(typeof formula === 'string' ? slotNumbers(formula) : formula);
     setHidden(this.formulaBox, !formula);
   }
 

@@ -18,8 +18,60 @@ const OPTIONS = {
 export function renderFormula(el: HTMLElement, tex: string, display = false): void {
   if (el.dataset.tex === tex) return;
   el.dataset.tex = tex;
-  katex.render(tex, el, { ...OPTIONS, displayMode: display });
-  if (display) markForFit(el);
+  typesetSoon(el, () => {
+    katex.render(tex, el, { ...OPTIONS, displayMode: display });
+    if (display) markForFit(el);
+  });
+}
+
+/**
+ * Typesetting within a frame's budget. A new scene can bring a page of new
+ * formulas (an 11 × 11 matrix takes 35 ms): typeset in one frame they would
+ * hold the pointer and the keys up for that long. While a budget is open
+ * (the lesson page opens one per frame), a typeset that would start after it
+ * is spent waits, newest text kept, for the next frame's budget; at least
+ * one typeset is done per frame, so the queue always drains. Outside a
+ * frame's budget (building a panel, the gallery) typesetting is immediate.
+ */
+const waiting = new Map<object, () => void>();
+let budgetEnd = Number.POSITIVE_INFINITY;
+let typesetThisFrame = 0;
+
+function typesetSoon(owner: object, job: () => void): void {
+  waiting.delete(owner);
+  if (typesetThisFrame > 0 && performance.now() > budgetEnd) {
+    waiting.set(owner, job);
+    return;
+  }
+  typesetThisFrame++;
+  job();
+}
+
+/**
+ * Opens a frame's typesetting budget and does what waited from the last
+ * frames within it; says how many waiting formulas it typeset.
+ */
+export function openTypesetBudget(milliseconds: number): number {
+  budgetEnd = performance.now() + milliseconds;
+  typesetThisFrame = 0;
+  for (const [owner, job] of [...waiting]) {
+    if (typesetThisFrame > 0 && performance.now() > budgetEnd) break;
+    waiting.delete(owner);
+    typesetThisFrame++;
+    job();
+  }
+  return typesetThisFrame;
+}
+
+/** Closes the frame's budget: typesetting is immediate again until the next frame. */
+export function closeTypesetBudget(): void {
+  budgetEnd = Number.POSITIVE_INFINITY;
+  typesetThisFrame = 0;
+}
+
+/** Formulas still waiting for a frame to be typeset in. */
+export function typesetWaiting(): boolean {
+  return waiting.size > 0;
 }
 
 /** A new element holding a typeset formula (for formulas that never change). */
@@ -41,7 +93,10 @@ export const SLOT = '\\val';
  */
 export class LiveFormula {
   readonly element: HTMLElement;
+  /** The shape typeset now, and the one asked for last (they differ while it waits for a frame). */
   private shape: string | null = null;
+  private wanted: string | null = null;
+  private latest: { shape: string; values: readonly string[] } = { shape: '', values: [] };
   private slots: { html: Element; mathml: Element | null; text: string }[] = [];
   private annotation: Element | null = null;
 
@@ -56,7 +111,20 @@ export class LiveFormula {
     values?: readonly string[],
   ): void {
     const parts = typeof shape === 'string' ? { shape, values: values ?? [] } : shape;
-    if (parts.shape !== this.shape) this.typeset(parts.shape);
+    this.latest = parts;
+    if (parts.shape === this.wanted) {
+      // Its shape is typeset (or waits to be, with these newest numbers).
+      if (parts.shape === this.shape) this.fill(parts);
+      return;
+    }
+    this.wanted = parts.shape;
+    typesetSoon(this, () => {
+      this.typeset(this.latest.shape);
+      this.fill(this.latest);
+    });
+  }
+
+  private fill(parts: { shape: string; values: readonly string[] }): void {
     let changed = false;
     parts.values.forEach((value, i) => {
       const slot = this.slots[i];

@@ -49,3 +49,22 @@ export const livePoint = (p: readonly number[], digits = 2): FormulaParts =>
     p.map((v) => live(texNumber(v, digits))),
     ',\\ ',
   )})`;
+
+/**
+ * A TeX formula written with its numbers in it, split for a LiveFormula: each
+ * decimal number (digits, a point, digits) becomes a slot, so a drag that
+ * only changes the numbers writes text instead of typesetting again. Signs
+ * stay in the shape (a binary and a unary minus are spaced differently), and
+ * so do integers (indices, counts: they change the shape when they change)
+ * and lengths in TeX units (`\kern0.5em`).
+ */
+export function slotNumbers(texText: string): FormulaParts {
+  const values: string[] = [];
+  const shape = texText.replace(NUMBER, (number: string) => {
+    values.push(number);
+    return SLOT;
+  });
+  return { shape, values };
+}
+
+const NUMBER = /(?<![\\A-Za-z\d.])\d+\.\d+(?![\d.]|\s*(?:em|ex|mu|pt|px|cm|mm|in|bp|pc)\b)/g;
