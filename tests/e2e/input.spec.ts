@@ -176,3 +176,71 @@ test('Play animates t and respects reduced motion with calm jumps', async ({ pag
   await page.waitForTimeout(1100);
   expect(Number(hashState(page).t)).toBe(t);
 });
+
+test.describe('with motion allowed', () => {
+  test.use({ reducedMotion: 'no-preference' });
+
+  /** The parameter the slider shows on each of the next `frames` animation frames, with the frame's time. */
+  const sample = (page: Page, frames: number) =>
+    page.evaluate(
+      (count) =>
+        new Promise<[number, number][]>((resolve) => {
+          const slider = document.querySelector<HTMLInputElement>('.controls input[type=range]')!;
+          const seen: [number, number][] = [];
+          const frame = (now: number) => {
+            // Its spoken value has three decimals (the slider's own value snaps to its step).
+            seen.push([now, Number(slider.getAttribute('aria-valuetext')!.split('=')[1])]);
+            if (seen.length < count) requestAnimationFrame(frame);
+            else resolve(seen);
+          };
+          requestAnimationFrame(frame);
+        }),
+      frames,
+    );
+
+  /**
+   * Parameter per second of play over the samples (a wrap from 1 back to 0 is
+   * not a step back). Play counts at most 0.1 s for one frame, so a frame the
+   * machine made late is counted as Play counts it.
+   */
+  const rate = (seen: [number, number][]) => {
+    let moved = 0;
+    let seconds = 0;
+    for (let i = 1; i < seen.length; i++) {
+      const step = seen[i][1] - seen[i - 1][1];
+      moved += step < -0.5 ? step + 1 : step;
+      seconds += Math.min(0.1, (seen[i][0] - seen[i - 1][0]) / 1000);
+    }
+    return moved / seconds;
+  };
+
+  test('Play glides t continuously, one sweep in five seconds, and the speed key doubles it', async ({
+    page,
+  }) => {
+    await page.getByRole('button', { name: 'Play' }).click();
+    const seen = await sample(page, 40);
+    const values = new Set(seen.map(([, t]) => t));
+    // A glide: a new value on most frames, each a small step (no calm jumps of 0.1).
+    expect(values.size).toBeGreaterThan(25);
+    for (let i = 1; i < seen.length; i++) {
+      const step = seen[i][1] - seen[i - 1][1];
+      expect(step < -0.5 ? step + 1 : step).toBeLessThan(0.05);
+    }
+    // 1×: the range [0, 1] in 5 s is 0.2 per second; 2× is 0.4.
+    const normal = rate(seen);
+    expect(normal).toBeGreaterThan(0.17);
+    expect(normal).toBeLessThan(0.23);
+    await page.keyboard.press('>');
+    await expect(page.getByRole('button', { name: 'Speed 2×' })).toBeVisible();
+    const fast = rate(await sample(page, 40));
+    expect(fast).toBeGreaterThan(0.34);
+    expect(fast).toBeLessThan(0.46);
+    // Pause: the state is final and in the link, and stays.
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await settled(page);
+    const t = Number(hashState(page).t);
+    const after = await sample(page, 10);
+    expect(after.every(([, v]) => v === after[0][1])).toBe(true);
+    expect(Math.abs(after[0][1] - t)).toBeLessThanOrEqual(0.0005 + 1e-12);
+  });
+});
