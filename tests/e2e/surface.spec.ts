@@ -110,9 +110,17 @@ test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => 
   expect(await pixels(page)).not.toBe(before);
   await expectPointMatches(page);
   // Not three numbers: the cell is put back and nothing changes.
+  const frame = await figure(page).boundingBox();
   await cell.fill('2, oops');
   await cell.press('Enter');
   await expect(cell).toHaveValue('2, 1, -1.25');
+  await expect(
+    page.getByRole('status').filter({ hasText: /^x2,1: type three numbers/ }),
+  ).toBeVisible();
+  // Said under the table, not in the page's notices, which would push the
+  // figures down: the figure keeps its size, so the link shows the same picture.
+  await expect(page.locator('.notice')).toHaveCount(0);
+  expect(await figure(page).boundingBox()).toEqual(frame);
 });
 
 test('the clicker walks every scene from its first step to its last, in presenter view', async ({
