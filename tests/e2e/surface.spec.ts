@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { bezierSurfacePoint } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, hashState, settled, snapshot, test } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="patch"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
@@ -149,4 +149,22 @@ test('two patches: moving a point next to the edge breaks C¹', async ({ page })
   await page.keyboard.press('Control+ArrowUp');
   await expect(page.getByText(/not collinear: C⁰ only/).first()).toBeVisible();
   await snapshot(page, 'surface-join-broken');
+});
+
+test('presenter view at 1920 × 1080: the patch has a frame its box fits, and the heat map a square one', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await page.keyboard.press('p');
+  await settled(page);
+  const box = async (id: string) =>
+    (await page.locator(`canvas[data-figure="${id}"]`).boundingBox())!;
+  const patch = await box('patch');
+  const weights = await box('weights');
+  // The lecture's net seen from the starting camera is 4.1 wide and 4.43 tall
+  // (its box's corners projected): a frame more than 1.6 times wider than tall
+  // leaves most of it empty.
+  expect(patch.width / patch.height).toBeLessThan(1.6);
+  expect(weights.width / weights.height).toBeGreaterThan(0.9);
+  expect(patch.width).toBeGreaterThan(weights.width);
 });
