@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { bezierSurfacePoint } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, hashState, settled, snapshot, test } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="patch"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
@@ -110,9 +110,17 @@ test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => 
   expect(await pixels(page)).not.toBe(before);
   await expectPointMatches(page);
   // Not three numbers: the cell is put back and nothing changes.
+  const frame = await figure(page).boundingBox();
   await cell.fill('2, oops');
   await cell.press('Enter');
   await expect(cell).toHaveValue('2, 1, -1.25');
+  await expect(
+    page.getByRole('status').filter({ hasText: /^x2,1: type three numbers/ }),
+  ).toBeVisible();
+  // Said under the table, not in the page's notices, which would push the
+  // figures down: the figure keeps its size, so the link shows the same picture.
+  await expect(page.locator('.notice')).toHaveCount(0);
+  expect(await figure(page).boundingBox()).toEqual(frame);
 });
 
 test('the clicker walks every scene from its first step to its last, in presenter view', async ({
@@ -141,4 +149,22 @@ test('two patches: moving a point next to the edge breaks C¹', async ({ page })
   await page.keyboard.press('Control+ArrowUp');
   await expect(page.getByText(/not collinear: C⁰ only/).first()).toBeVisible();
   await snapshot(page, 'surface-join-broken');
+});
+
+test('presenter view at 1920 × 1080: the patch has a frame its box fits, and the heat map a square one', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await page.keyboard.press('p');
+  await settled(page);
+  const box = async (id: string) =>
+    (await page.locator(`canvas[data-figure="${id}"]`).boundingBox())!;
+  const patch = await box('patch');
+  const weights = await box('weights');
+  // The lecture's net seen from the starting camera is 4.1 wide and 4.43 tall
+  // (its box's corners projected), so it takes the frame's height: a frame
+  // twice as wide as tall (the 2.4 : 1 row gave 2.0 here) leaves most of it empty.
+  expect(patch.width / patch.height).toBeLessThan(1.8);
+  expect(weights.width / weights.height).toBeGreaterThan(0.9);
+  expect(patch.width).toBeGreaterThan(weights.width);
 });

@@ -119,12 +119,15 @@ function drawPatch(
   }
 }
 
+/** The patch's share of the figures' row, against the heat map's 1. */
+export const PATCH_WEIGHT = 1.4;
+
 export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
   id: 'patch',
   title: 'The bicubic Bézier patch in space (drag to orbit, wheel to zoom)',
   kind: 'space',
   camera: { yaw: -60, pitch: 36, perspective: false },
-  weight: 2.4,
+  weight: PATCH_WEIGHT,
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const theme = painter.theme;

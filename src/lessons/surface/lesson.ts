@@ -1,5 +1,5 @@
 import { defineLesson } from '../../app/lesson';
-import { spaceFigure } from './figure';
+import { PATCH_WEIGHT, spaceFigure } from './figure';
 import { type SurfaceModel, derive } from './model';
 import { surfacePanel } from './panel';
 import { SCENES } from './presets';
@@ -12,7 +12,11 @@ export default defineLesson<SurfaceState, SurfaceModel>({
   schema,
   derive,
   figures: [spaceFigure, weightsFigure],
-  layout: { row: ['patch', 'weights'], weights: [2.4, 1] },
+  // The patch's box seen from the camera is about as tall as it is wide, and the
+  // heat map is square. In presenter view's wide, low row a share of 2.4 left the
+  // patch in the middle of a frame twice its width; 1.4 still leaves it its full
+  // height in presenter view and at 1400 × 850, and gives the heat map room.
+  layout: { row: ['patch', 'weights'], weights: [PATCH_WEIGHT, 1] },
   parameter: { key: 'u', label: 'u', min: 0, max: 1, step: 0.01 },
   steps,
   scenes: SCENES,

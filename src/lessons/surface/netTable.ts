@@ -21,6 +21,8 @@ const tripleText = (p: readonly number[]) => p.map(formatNumber).join(', ');
 /**
  * The control net as an editable 4 × 4 table: one cell per point, "x, y, z",
  * m down and n across as in the lecture's x(m,n). Enter or leaving the cell applies it.
+ * A cell that is not three numbers is put back and says so under the table, not in
+ * the page's notices: a notice would push the figures down and change their size.
  */
 export function netTable(
   api: LessonApi<SurfaceState, SurfaceModel>,
@@ -28,6 +30,7 @@ export function netTable(
 ): { element: HTMLElement; update(state: SurfaceState): void } {
   const inputs: HTMLInputElement[][] = [];
   const body = h('tbody', {});
+  const message = h('p', { class: 'net-table-message', role: 'status' });
   for (let m = 0; m < 4; m++) {
     const row = h('tr', {}, h('th', { scope: 'row' }, `m = ${m}`));
     inputs.push([]);
@@ -43,12 +46,11 @@ export function netTable(
         const state = api.get();
         const p = parseTriple(input.value);
         if (!p) {
-          api.notice(
-            `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[which][m][n])}.`,
-          );
+          message.textContent = `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[which][m][n])}.`;
           input.value = tripleText(state[which][m][n]);
           return;
         }
+        message.textContent = '';
         const net = state[which].map((points, i) =>
           points.map((q, j) => (i === m && j === n ? p : q)),
         );
@@ -59,7 +61,7 @@ export function netTable(
     }
     body.append(row);
   }
-  const element = h(
+  const table = h(
     'table',
     { class: 'data-table net-table', 'aria-label': `Control net ${which} (x, y, z of each point)` },
     h(
@@ -74,6 +76,7 @@ export function netTable(
     ),
     body,
   );
+  const element = h('div', {}, table, message);
   return {
     element,
     update(state) {
