@@ -87,6 +87,32 @@ describe('chordDeviation', () => {
     );
   });
 
+  it('skipping pieces by their control points changes nothing: the same piece, gap and t as measuring each piece alone', () => {
+    fc.assert(
+      fc.property(
+        polygon2D(2, 8),
+        fc.array(fc.double({ min: 0.01, max: 1, noNaN: true }), { minLength: 1, maxLength: 12 }),
+        (points, lengths) => {
+          // Increasing parameters from 0 to 1 with the given relative lengths.
+          const total = lengths.reduce((a, b) => a + b, 0);
+          const parameters = [0];
+          for (const length of lengths)
+            parameters.push(parameters[parameters.length - 1] + length / total);
+          parameters[parameters.length - 1] = 1;
+          if (parameters.some((t, k) => k > 0 && !(t > parameters[k - 1]))) return;
+          const each = parameters
+            .slice(1)
+            .map((t1, k) => chordDeviation(points, [parameters[k], t1]).distance);
+          const largest = Math.max(...each);
+          const d = chordDeviation(points, parameters);
+          expect(d.distance).toBe(largest);
+          expect(d.piece).toBe(each.indexOf(largest));
+        },
+      ),
+      { numRuns: 60 },
+    );
+  });
+
   it('refuses parameters that do not increase', () => {
     expect(() => chordDeviation(PARABOLA, [0, 0.5, 0.5, 1])).toThrow(RangeError);
     expect(() => chordDeviation(PARABOLA, [0])).toThrow(RangeError);

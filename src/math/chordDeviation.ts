@@ -69,16 +69,24 @@ export function chordDeviation(
       );
     }
   }
+  const curve = curveEvaluator(points);
+  // Branch and bound: a piece cannot stray further than its control points,
+  // so pieces are measured from the largest bound down and the rest skipped
+  // once the largest gap found exceeds their bounds (with a margin for
+  // rounding). The result is the one measuring every piece in order gives.
+  const bounds = parameters.slice(1).map((t1, k) => pieceHullGap(points, parameters[k], t1));
+  const order = bounds.map((_, k) => k).sort((i, j) => bounds[j] - bounds[i] || i - j);
+  // Rounding in the gaps is of the order of 1e-16 of the coordinates.
+  let slack = 0;
+  for (const p of points) for (const v of p) slack = Math.max(slack, 1e-12 * Math.abs(v));
   let best: ChordDeviation | null = null;
-  for (let k = 0; k + 1 < parameters.length; k++) {
+  for (const k of order) {
+    if (best !== null && bounds[k] * (1 + 1e-7) + slack < best.distance) break;
     const t0 = parameters[k];
     const t1 = parameters[k + 1];
     const a = bezierPoint(points, t0);
     const b = bezierPoint(points, t1);
-    const gap = (t: number) => {
-      const p = bezierPoint(points, t);
-      return distanceBetween(p, nearestOnSegment(p, a, b));
-    };
+    const gap = (t: number) => distanceToChord(curve(t), a, b);
     let bestIndex = 0;
     let bestGap = -1;
     for (let i = 0; i <= samples; i++) {
@@ -96,9 +104,95 @@ export function chordDeviation(
     const point = bezierPoint(points, t);
     const foot = nearestOnSegment(point, a, b);
     const distance = distanceBetween(point, foot);
-    if (best === null || distance > best.distance) best = { distance, t, piece: k, point, foot };
+    const better =
+      best === null || distance > best.distance || (distance === best.distance && k < best.piece);
+    if (better) best = { distance, t, piece: k, point, foot };
   }
   return best as ChordDeviation;
+}
+
+/**
+ * The largest distance from a control point of the piece t0 … t1 to its
+ * chord Q0–Qn (Q by de Casteljau at t1, then at t0/t1 on the left part). The
+ * piece lies in the convex hull of Q, and the distance to a segment is convex,
+ * so no point of the piece is further from the chord than this.
+ */
+function pieceHullGap(points: readonly Point[], t0: number, t1: number): number {
+  const count = points.length;
+  const n = count - 1;
+  const dimension = points[0].length;
+  const piece = new Float64Array(count * dimension);
+  const row = new Float64Array(count);
+  const u = t0 / t1;
+  for (let d = 0; d < dimension; d++) {
+    for (let i = 0; i < count; i++) row[i] = points[i][d];
+    // Left part at t1: the first point of every level.
+    const left = new Float64Array(count);
+    left[0] = row[0];
+    for (let r = 1; r <= n; r++) {
+      for (let i = 0; i + r <= n; i++) row[i] = (1 - t1) * row[i] + t1 * row[i + 1];
+      left[r] = row[0];
+    }
+    // Right part of that at u: the last point of every level.
+    row.set(left);
+    piece[d * count + n] = row[n];
+    for (let r = 1; r <= n; r++) {
+      for (let i = 0; i + r <= n; i++) row[i] = (1 - u) * row[i] + u * row[i + 1];
+      piece[d * count + n - r] = row[n - r];
+    }
+  }
+  const a = Array.from({ length: dimension }, (_, d) => piece[d * count]);
+  const b = Array.from({ length: dimension }, (_, d) => piece[d * count + n]);
+  const q = new Float64Array(dimension);
+  let largest = 0;
+  for (let i = 1; i < n; i++) {
+    for (let d = 0; d < dimension; d++) q[d] = piece[d * count + i];
+    largest = Math.max(largest, distanceToChord(q, a, b));
+  }
+  return largest;
+}
+
+/**
+ * P(t) for many t without an allocation each: de Casteljau's interpolations
+ * (the same, in the same order, as bezierPoint's) on one scratch row, into one
+ * reused vector. The search evaluates the curve ~90 times per piece, so this
+ * is most of chordDeviation's time.
+ */
+function curveEvaluator(points: readonly Point[]): (t: number) => Float64Array {
+  const count = points.length;
+  const dimension = points[0].length;
+  const coordinates = new Float64Array(count * dimension);
+  for (let i = 0; i < count; i++)
+    for (let d = 0; d < dimension; d++) coordinates[d * count + i] = points[i][d];
+  const row = new Float64Array(count);
+  const result = new Float64Array(dimension);
+  return (t) => {
+    const s = 1 - t;
+    for (let d = 0; d < dimension; d++) {
+      for (let i = 0; i < count; i++) row[i] = coordinates[d * count + i];
+      for (let r = count - 1; r > 0; r--)
+        for (let i = 0; i < r; i++) row[i] = s * row[i] + t * row[i + 1];
+      result[d] = row[0];
+    }
+    return result;
+  };
+}
+
+/** The distance from p to segment a–b: nearestOnSegment and distanceBetween's arithmetic, without the arrays. */
+function distanceToChord(p: ArrayLike<number>, a: Point, b: Point): number {
+  let along = 0;
+  let length = 0;
+  for (let d = 0; d < a.length; d++) {
+    along += (p[d] - a[d]) * (b[d] - a[d]);
+    length += (b[d] - a[d]) ** 2;
+  }
+  const s = length > 0 ? Math.min(1, Math.max(0, along / length)) : 0;
+  let squared = 0;
+  for (let d = 0; d < a.length; d++) {
+    const foot = a[d] + s * (b[d] - a[d]);
+    squared += (p[d] - foot) ** 2;
+  }
+  return Math.sqrt(squared);
 }
 
 const GOLDEN = (Math.sqrt(5) - 1) / 2;
