@@ -2,7 +2,12 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { polygon2D } from './arbitraries.test-helpers';
 import { bezierPoint } from './bezier';
-import { chordDeviation, uniformCountWithin, uniformParameters } from './chordDeviation';
+import {
+  chordDeviation,
+  uniformCountEstimate,
+  uniformCountWithin,
+  uniformParameters,
+} from './chordDeviation';
 import { flattenBezier } from './flatten';
 import { flatteningTree } from './flatteningTree';
 
@@ -107,6 +112,66 @@ describe('chordDeviation', () => {
           const d = chordDeviation(points, parameters);
           expect(d.distance).toBe(largest);
           expect(d.piece).toBe(each.indexOf(largest));
+        },
+      ),
+      { numRuns: 60 },
+    );
+  });
+
+  it('the estimate √(max‖P″‖ / 8τ): the parabola has P″ = 2·(P2 − 2P1 + P0) = (0, −8) everywhere', () => {
+    // n = ⌈√(8 / 8τ)⌉ = ⌈1/√τ⌉.
+    expect(uniformCountEstimate(PARABOLA, 1)).toBe(1);
+    expect(uniformCountEstimate(PARABOLA, 1 / 16)).toBe(4);
+    expect(uniformCountEstimate(PARABOLA, 0.01)).toBe(10);
+    expect(uniformCountEstimate(PARABOLA, 0.0099)).toBe(11);
+    // A cubic with P″(t) = 6(1 − t)·(P2 − 2P1 + P0) + 6t·(P3 − 2P2 + P1): here (−12, 0)
+    // at t = 0 and (12, 0) at t = 1, largest at the ends: n = ⌈√(12 / 8τ)⌉.
+    const cubic = [
+      [0, 0],
+      [1, 1],
+      [0, 2],
+      [1, 3],
+    ];
+    expect(uniformCountEstimate(cubic, 12 / 8 / 49)).toBe(7);
+    // A straight line needs one segment.
+    expect(
+      uniformCountEstimate(
+        [
+          [0, 0],
+          [5, 5],
+        ],
+        0.1,
+      ),
+    ).toBe(1);
+    expect(() => uniformCountEstimate(PARABOLA, 0)).toThrow(RangeError);
+  });
+
+  it('the parabola within 1/16: 4 segments (chords sloped ±½ or ±3/2, gaps (1/16)·2/√5), not 3 (the middle chord is level, gap 1/9)', () => {
+    expect(uniformCountWithin(PARABOLA, 1 / 16)).toBe(4);
+    expect(uniformCountWithin(PARABOLA, 1 / 9)).toBe(3);
+  });
+
+  it('says "more than the maximum" instead of searching past it', () => {
+    // About 1/n² for n segments: 1e-8 needs about 10 000, far above 512.
+    expect(uniformCountWithin(PARABOLA, 1e-8, 512)).toBe(513);
+    expect(uniformCountWithin(PARABOLA, 1 / 16, 3)).toBe(4);
+    expect(uniformCountWithin(PARABOLA, 1 / 16, 4)).toBe(4);
+  });
+
+  it('the count found reaches the tolerance and one segment fewer does not, whenever it is within the maximum', () => {
+    fc.assert(
+      fc.property(
+        polygon2D(2, 7),
+        fc.double({ min: 0.01, max: 20, noNaN: true }),
+        (points, tolerance) => {
+          const count = uniformCountWithin(points, tolerance, 256);
+          const gap = (n: number) => chordDeviation(points, uniformParameters(n)).distance;
+          if (count > 256) {
+            expect(gap(256)).toBeGreaterThan(tolerance);
+            return;
+          }
+          expect(gap(count)).toBeLessThanOrEqual(tolerance);
+          if (count > 1) expect(gap(count - 1)).toBeGreaterThan(tolerance);
         },
       ),
       { numRuns: 60 },

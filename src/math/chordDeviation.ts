@@ -1,4 +1,4 @@
-import { bezierPoint } from './bezier';
+import { bezierDerivative, bezierPoint } from './bezier';
 import { checkInteger, checkNumber, checkPoints } from './validate';
 import type { Point } from './vec';
 
@@ -232,19 +232,79 @@ export function uniformParameters(count: number): number[] {
 }
 
 /**
- * The fewest uniform segments (parameters k / n) whose chords stay within
- * `tolerance` of the curve, searching n = 1 … `maximum`; `maximum` + 1 if none
- * of them does.
+ * The uniform count the curvature asks for: a piece of parameter length h
+ * strays about h²/8 · ‖P″‖ from its chord (the second-order Taylor term), so n
+ * uniform segments stray about max‖P″‖ / (8n²), and n ≈ √(max‖P″‖ / (8·tolerance)),
+ * rounded up and at least 1. max‖P″‖ is sampled at 65 parameters of the
+ * hodograph's hodograph (control points n(n−1)·Δ²P). An estimate to start a
+ * search from, not a guarantee.
+ */
+export function uniformCountEstimate(points: readonly Point[], tolerance: number): number {
+  const caller = 'uniformCountEstimate';
+  checkPoints(caller, 'points', points, 1);
+  checkPositive(caller, tolerance);
+  if (points.length < 3) return 1;
+  const second = bezierDerivative(bezierDerivative(points));
+  let largest = 0;
+  for (let i = 0; i <= 64; i++) {
+    const v = bezierPoint(second, i / 64);
+    largest = Math.max(largest, Math.hypot(...v));
+  }
+  return Math.max(1, Math.ceil(Math.sqrt(largest / (8 * tolerance))));
+}
+
+/**
+ * A uniform count n ≤ `maximum` (parameters k / n) whose chords stay within
+ * `tolerance` of the curve while those of n − 1 do not (or n = 1), found from
+ * uniformCountEstimate by steps doubling away from it, then bisection: a few
+ * chordDeviation calls, not one per count. Where the deviation falls as n
+ * grows (it need not everywhere) this is the fewest. `maximum` + 1 when
+ * `maximum` segments do not reach the tolerance either: more than `maximum`.
  */
 export function uniformCountWithin(
   points: readonly Point[],
   tolerance: number,
   maximum = 512,
 ): number {
-  checkNumber('uniformCountWithin', 'tolerance', tolerance);
+  checkPositive('uniformCountWithin', tolerance);
   checkInteger('uniformCountWithin', 'maximum', maximum, 1);
-  for (let n = 1; n <= maximum; n++) {
-    if (chordDeviation(points, uniformParameters(n)).distance <= tolerance) return n;
+  const within = (n: number) => chordDeviation(points, uniformParameters(n)).distance <= tolerance;
+  const guess = Math.min(maximum, uniformCountEstimate(points, tolerance));
+  // `pass` reaches the tolerance, `fail` does not (0 segments never do).
+  let pass: number;
+  let fail = 0;
+  if (within(guess)) {
+    pass = guess;
+    for (let step = 1; pass - step >= 1; step *= 2) {
+      if (!within(pass - step)) {
+        fail = pass - step;
+        break;
+      }
+      pass -= step;
+    }
+  } else {
+    fail = guess;
+    for (let step = 1; ; step *= 2) {
+      if (fail === maximum) return maximum + 1;
+      const n = Math.min(maximum, fail + step);
+      if (within(n)) {
+        pass = n;
+        break;
+      }
+      fail = n;
+    }
   }
-  return maximum + 1;
+  while (pass - fail > 1) {
+    const middle = Math.floor((pass + fail) / 2);
+    if (within(middle)) pass = middle;
+    else fail = middle;
+  }
+  return pass;
+}
+
+function checkPositive(caller: string, tolerance: number): void {
+  checkNumber(caller, 'tolerance', tolerance);
+  if (!(tolerance > 0)) {
+    throw new RangeError(`${caller}: tolerance = ${tolerance}; it must be a positive distance.`);
+  }
 }
