@@ -167,3 +167,5 @@ export type { JointReport } from './jointReport';
 export { bezierJointReport, snapJoint } from './jointReport';
 export { bezierChainSelfIntersections } from './chainIntersections';
 export { uniformCountEstimate } from './chordDeviation';
+export type { PixelBox } from './rasterizeLine';
+export { rasterizeLineInBox } from './rasterizeLine';
