@@ -118,22 +118,28 @@ describe('chordDeviation', () => {
     );
   });
 
-  it('the estimate √(max‖P″‖ / 8τ): the parabola has P″ = 2·(P2 − 2P1 + P0) = (0, −8) everywhere', () => {
+  it('the estimate √(max‖P″⊥‖ / 8τ): the parabola has P″ = 2·(P2 − 2P1 + P0) = (0, −8), all across the tangent (2, 0) at t = ½', () => {
     // n = ⌈√(8 / 8τ)⌉ = ⌈1/√τ⌉.
     expect(uniformCountEstimate(PARABOLA, 1)).toBe(1);
     expect(uniformCountEstimate(PARABOLA, 1 / 16)).toBe(4);
     expect(uniformCountEstimate(PARABOLA, 0.01)).toBe(10);
     expect(uniformCountEstimate(PARABOLA, 0.0099)).toBe(11);
-    // A cubic with P″(t) = 6(1 − t)·(P2 − 2P1 + P0) + 6t·(P3 − 2P2 + P1): here (−12, 0)
-    // at t = 0 and (12, 0) at t = 1, largest at the ends: n = ⌈√(12 / 8τ)⌉.
+    // The same parabola as a cubic (degree elevated: Qi = i/3·P(i−1) + (1 − i/3)·Pi).
     const cubic = [
       [0, 0],
-      [1, 1],
-      [0, 2],
-      [1, 3],
+      [2 / 3, 4 / 3],
+      [4 / 3, 4 / 3],
+      [2, 0],
     ];
-    expect(uniformCountEstimate(cubic, 12 / 8 / 49)).toBe(7);
-    // A straight line needs one segment.
+    expect(uniformCountEstimate(cubic, 0.01)).toBe(10);
+    // Speeding up along a straight line, P″ ∥ P′: one segment, however fast.
+    const ray = [
+      [0, 0],
+      [0, 0],
+      [1000, 1000],
+    ];
+    expect(uniformCountEstimate(ray, 0.001)).toBe(1);
+    expect(uniformCountWithin(ray, 0.001)).toBe(1);
     expect(
       uniformCountEstimate(
         [

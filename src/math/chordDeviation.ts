@@ -233,22 +233,36 @@ export function uniformParameters(count: number): number[] {
 
 /**
  * The uniform count the curvature asks for: a piece of parameter length h
- * strays about h²/8 · ‖P″‖ from its chord (the second-order Taylor term), so n
- * uniform segments stray about max‖P″‖ / (8n²), and n ≈ √(max‖P″‖ / (8·tolerance)),
- * rounded up and at least 1. max‖P″‖ is sampled at 65 parameters of the
- * hodograph's hodograph (control points n(n−1)·Δ²P). An estimate to start a
- * search from, not a guarantee.
+ * strays about h²/8 · ‖P″⊥‖ from its chord (the second-order Taylor term; P″⊥
+ * is the part of P″ across the tangent, as speeding up along a straight line
+ * strays nowhere), so n uniform segments stray about max‖P″⊥‖ / (8n²), and
+ * n ≈ √(max‖P″⊥‖ / (8·tolerance)), rounded up and at least 1. P′ and P″ are
+ * sampled at 65 parameters of the hodographs. An estimate to start a search
+ * from, not a guarantee.
  */
 export function uniformCountEstimate(points: readonly Point[], tolerance: number): number {
   const caller = 'uniformCountEstimate';
   checkPoints(caller, 'points', points, 1);
   checkPositive(caller, tolerance);
   if (points.length < 3) return 1;
-  const second = bezierDerivative(bezierDerivative(points));
+  const first = bezierDerivative(points);
+  const second = bezierDerivative(first);
   let largest = 0;
   for (let i = 0; i <= 64; i++) {
-    const v = bezierPoint(second, i / 64);
-    largest = Math.max(largest, Math.hypot(...v));
+    const velocity = bezierPoint(first, i / 64);
+    const acceleration = bezierPoint(second, i / 64);
+    let speed = 0;
+    let along = 0;
+    let size = 0;
+    for (let d = 0; d < velocity.length; d++) {
+      speed += velocity[d] ** 2;
+      along += velocity[d] * acceleration[d];
+      size += acceleration[d] ** 2;
+    }
+    // ‖P″⊥‖² = ‖P″‖² − (P′·P″)²/‖P′‖²; where the curve stops, P″ is its tangent.
+    if (speed === 0) continue;
+    const across = size - (along * along) / speed;
+    largest = Math.max(largest, Math.sqrt(Math.max(0, across)));
   }
   return Math.max(1, Math.ceil(Math.sqrt(largest / (8 * tolerance))));
 }
@@ -266,10 +280,12 @@ export function uniformCountWithin(
   tolerance: number,
   maximum = 512,
 ): number {
-  checkPositive('uniformCountWithin', tolerance);
+  checkNumber('uniformCountWithin', 'tolerance', tolerance);
   checkInteger('uniformCountWithin', 'maximum', maximum, 1);
   const within = (n: number) => chordDeviation(points, uniformParameters(n)).distance <= tolerance;
-  const guess = Math.min(maximum, uniformCountEstimate(points, tolerance));
+  // A tolerance of 0 (a straight curve's own gap) is only met by a straight piece.
+  const guess =
+    tolerance > 0 ? Math.min(maximum, uniformCountEstimate(points, tolerance)) : maximum;
   // `pass` reaches the tolerance, `fail` does not (0 segments never do).
   let pass: number;
   let fail = 0;

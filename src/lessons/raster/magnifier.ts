@@ -103,8 +103,7 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
   const [u1, v1] = line.to;
   painter.segment([u0, v0], [u1, v1], { color: painter.color(0), width: theme.sizes.line * 1.3 });
   if (k < 1) return;
-  const first = line.pixels[0];
-  const last = line.pixels[line.pixels.length - 1];
+  const { first, last } = line;
   painter.segment(first, last, { color: theme.ink, width: theme.sizes.thin, dash: [6, 5] });
   for (const [i, j] of [first, last])
     painter.polyline(square(i, j), { color: theme.accent, width: theme.sizes.line * 1.2 }, true);

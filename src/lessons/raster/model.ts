@@ -61,8 +61,13 @@ export interface RasterModel {
   adaptive: Polyline;
   /** Uniform segments the flatness bound asks for: ⌈√(n(n−1)·max‖Δ²P‖ / (8τ))⌉. */
   boundCount: number;
-  /** Fewest uniform segments with at most the adaptive polyline's deviation (compare scene). */
+  /**
+   * Fewest uniform segments with at most the adaptive polyline's deviation
+   * (compare scene; null elsewhere, or when that is more than SAME_ERROR_MAX).
+   */
   sameError: Polyline | null;
+  /** In the compare scene: uniform sampling would need more than SAME_ERROR_MAX segments (not drawn). */
+  sameErrorBeyond: boolean;
   /** The raster of the pixel scenes. */
   size: RasterSize;
   /** The adaptive polyline's pixels (line rasteriser). */
@@ -76,6 +81,9 @@ export interface RasterModel {
   /** The gap between the curve and the uniform polyline over t, as (t, gap) pairs (plot scene). */
   gaps: Float64Array | null;
 }
+
+/** Uniform segments the compare scene searches up to; past it the lesson says "more than". */
+export const SAME_ERROR_MAX = 512;
 
 /** Samples per piece of the gap function. */
 const GAP_SAMPLES = 24;
@@ -118,8 +126,13 @@ const leafParameters = (tree: readonly FlatteningNode[]) => [
 function adaptiveAt(points: readonly Point[], tolerance: number) {
   const tree = flatteningTree(points, tolerance);
   const adaptive = polyline(points, leafParameters(tree));
-  // The drawn vertices are flattenBezier's own (the tree's leaves are the same points).
-  adaptive.points = flattenBezier(points, tolerance);
+  // The drawn vertices are the leaves' end points: flattenBezier's polyline,
+  // point for point, without flattening a second time.
+  const leaves = tree.filter((node) => !node.split);
+  adaptive.points = [
+    tree[0].points[0],
+    ...leaves.map((node) => node.points[node.points.length - 1]),
+  ];
   return { tree, adaptive };
 }
 
@@ -167,9 +180,11 @@ export function derive(state: RasterState): RasterModel {
   // The root's flatness is n(n−1)/8 · max‖Δ²P‖ of the whole curve.
   const boundCount = Math.max(1, Math.ceil(Math.sqrt(tree[0].flatness / tolerance)));
   let sameError: Polyline | null = null;
+  let sameErrorBeyond = false;
   if (state.x === 'compare') {
-    const count = uniformCountWithin(state.p, adaptive.deviation.distance, 4 * boundCount + 16);
-    sameError = polyline(state.p, uniformParameters(count));
+    const count = uniformCountWithin(state.p, adaptive.deviation.distance, SAME_ERROR_MAX);
+    if (count > SAME_ERROR_MAX) sameErrorBeyond = true;
+    else sameError = polyline(state.p, uniformParameters(count));
   }
   const size = rasterSize(state.z);
   const segment = Math.min(state.seg, adaptive.points.length - 2);
@@ -183,6 +198,7 @@ export function derive(state: RasterState): RasterModel {
     adaptive,
     boundCount,
     sameError,
+    sameErrorBeyond,
     size,
     pixels: rasterizePolyline(adaptive.points, size),
     segment,
