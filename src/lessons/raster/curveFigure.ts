@@ -118,7 +118,7 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
   drawCurve(painter, m.curve);
   drawPolyline(painter, m.uniform.points, painter.color(0));
   // Where adaptive flattening would put its vertices at this zoom.
-  for (const p of zoom.adaptive.points) painter.dot(p, painter.color(1), theme.sizes.point * 0.6);
+  for (const p of zoom.adaptive) painter.dot(p, painter.color(1), theme.sizes.point * 0.6);
   const [x0, y0] = [size.left / size.zoom, size.bottom / size.zoom];
   const [x1, y1] = [(size.left + size.width) / size.zoom, (size.bottom + size.height) / size.zoom];
   painter.polyline(

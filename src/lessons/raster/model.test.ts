@@ -99,8 +99,10 @@ describe('raster lesson model', () => {
       farPixels(
         lit,
         [
-          [0.5, 1.5],
-          [6.5, 1.5],
+          [
+            [0.5, 1.5],
+            [6.5, 1.5],
+          ],
         ],
         1,
       ),
@@ -109,8 +111,10 @@ describe('raster lesson model', () => {
       farPixels(
         lit,
         [
-          [0.5, 2.6],
-          [6.5, 2.6],
+          [
+            [0.5, 2.6],
+            [6.5, 2.6],
+          ],
         ],
         1,
       ),
@@ -128,7 +132,7 @@ describe('raster lesson model', () => {
       [256, 192],
     ]);
     for (const v of views) expect([v.size.width, v.size.height]).toEqual([32, 24]);
-    const counts = views.map((v) => v.adaptive.points.length);
+    const counts = views.map((v) => v.adaptive.length);
     for (let k = 1; k < counts.length; k++) expect(counts[k]).toBeGreaterThanOrEqual(counts[k - 1]);
     expect(views[0].uniformFar).toHaveLength(0);
     expect(views[4].uniformFar.length).toBeGreaterThan(0);

@@ -16,6 +16,7 @@ import {
   type Pixel,
   type RasterSize,
   coveragePolyline,
+  curveNear,
   farPixels,
   lineSteps,
   rasterizePolyline,
@@ -40,8 +41,8 @@ export interface ZoomView {
   /** The whole raster the curve would fill at this zoom. */
   full: RasterSize;
   uniformPixels: Map<string, Pixel>;
-  /** Adaptive flattening to the tolerance at this zoom. */
-  adaptive: Polyline;
+  /** Adaptive flattening's vertices to the tolerance at this zoom. */
+  adaptive: Point[];
   /** Lit pixels more than a pixel from the curve: pixels the curve itself would never light. */
   uniformFar: Pixel[];
   adaptiveFar: Pixel[];
@@ -154,9 +155,15 @@ function zoomView(state: RasterState, uniform: Polyline): ZoomView {
     width: RASTER_WIDTH,
     height: RASTER_HEIGHT,
   };
-  const { adaptive } = adaptiveAt(state.p, state.tol / zoom);
-  // The curve, within 1/50 of a pixel.
-  const curve = flattenBezier(state.p, 0.02 / zoom);
+  const adaptive = flattenBezier(state.p, state.tol / zoom);
+  // The curve within 1/50 of a pixel, where it passes the window (and 2 pixels round it).
+  const window = {
+    minX: size.left / zoom,
+    minY: size.bottom / zoom,
+    maxX: (size.left + size.width) / zoom,
+    maxY: (size.bottom + size.height) / zoom,
+  };
+  const curve = curveNear(state.p, window, 2 / zoom, 0.02 / zoom);
   const uniformPixels = rasterizePolyline(uniform.points, size);
   return {
     size,
@@ -164,7 +171,7 @@ function zoomView(state: RasterState, uniform: Polyline): ZoomView {
     uniformPixels,
     adaptive,
     uniformFar: farPixels(uniformPixels, curve, zoom),
-    adaptiveFar: farPixels(rasterizePolyline(adaptive.points, size), curve, zoom),
+    adaptiveFar: farPixels(rasterizePolyline(adaptive, size), curve, zoom),
   };
 }
 

@@ -1,10 +1,12 @@
 import {
   type PixelBox,
   type Point,
+  flattenBezier,
   nearestOnSegment,
   rasterizeLine,
   rasterizeLineInBox,
   segmentCoverage,
+  splitBezier,
 } from '../../math';
 
 // From segments to pixels. Pixel (i, j) of a raster with `zoom` pixels per
@@ -143,26 +145,74 @@ export function lineSteps(a: Point, b: Point, zoom: number, limit = LINE_LIMIT):
   return { from, to, first, last, count, pixels, major, ideal };
 }
 
+/** A rectangle in units of the control points. */
+export interface Box {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+/**
+ * The curve near a box, as polylines within `tolerance` of it: a piece whose
+ * control polygon's bounding box misses the box widened by `margin` is
+ * dropped (the piece lies in its control polygon's hull), the others are
+ * halved (de Casteljau) until no larger than the box, then flattened. The
+ * work follows what the box shows, not how far the curve reaches beyond it.
+ */
+export function curveNear(
+  points: readonly Point[],
+  box: Box,
+  margin: number,
+  tolerance: number,
+): Point[][] {
+  const paths: Point[][] = [];
+  const size = Math.max(box.maxX - box.minX, box.maxY - box.minY) + 2 * margin;
+  const visit = (piece: readonly Point[], depth: number) => {
+    const xs = piece.map((p) => p[0]);
+    const ys = piece.map((p) => p[1]);
+    const [minX, maxX, minY, maxY] = [
+      Math.min(...xs),
+      Math.max(...xs),
+      Math.min(...ys),
+      Math.max(...ys),
+    ];
+    if (minX > box.maxX + margin || maxX < box.minX - margin) return;
+    if (minY > box.maxY + margin || maxY < box.minY - margin) return;
+    if (depth >= 40 || Math.max(maxX - minX, maxY - minY) <= size) {
+      paths.push(flattenBezier(piece, tolerance));
+      return;
+    }
+    const [left, right] = splitBezier(piece, 0.5);
+    visit(left, depth + 1);
+    visit(right, depth + 1);
+  };
+  visit(points, 0);
+  return paths;
+}
+
 /**
  * The lit pixels whose centres lie more than `limit` pixels from the curve,
- * given as a polyline far finer than a pixel: a pixel any rasteriser of the
- * curve itself might light is within ½ pixel across of it, so these are
- * pixels the curve would never light.
+ * given as polylines far finer than a pixel (the curve near the raster): a
+ * pixel any rasteriser of the curve itself might light is within ½ pixel
+ * across of it, so these are pixels the curve would never light.
  */
 export function farPixels(
   lit: Map<string, Pixel>,
-  curve: readonly Point[],
+  curve: readonly (readonly Point[])[],
   zoom: number,
   limit = 1,
 ): Pixel[] {
-  const path = curve.map((p) => toPixel(p, zoom));
+  const paths = curve.map((path) => path.map((p) => toPixel(p, zoom)));
   const far: Pixel[] = [];
   for (const pixel of lit.values()) {
     const centre = [pixel.i, pixel.j];
     let nearest = Infinity;
-    for (let k = 0; k + 1 < path.length && nearest > limit; k++) {
-      const q = nearestOnSegment(centre, path[k], path[k + 1]);
-      nearest = Math.min(nearest, Math.hypot(q[0] - centre[0], q[1] - centre[1]));
+    for (const path of paths) {
+      for (let k = 0; k + 1 < path.length && nearest > limit; k++) {
+        const q = nearestOnSegment(centre, path[k], path[k + 1]);
+        nearest = Math.min(nearest, Math.hypot(q[0] - centre[0], q[1] - centre[1]));
+      }
     }
     if (nearest > limit) far.push(pixel);
   }

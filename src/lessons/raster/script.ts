@@ -134,7 +134,7 @@ function describeZoom(m: RasterModel, k: number): string {
   const n = segmentsOf(m.state);
   const gap = m.uniform.deviation.distance * zoom.size.zoom;
   const factor = k === 0 ? '½' : String(zoomAtStep(k));
-  const adaptive = zoom.adaptive.points.length - 1;
+  const adaptive = zoom.adaptive.length - 1;
   const verdict =
     zoom.uniformFar.length === 0
       ? 'every lit pixel within 1 px of the curve'
