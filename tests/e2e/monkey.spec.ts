@@ -61,7 +61,6 @@ const fields = (page: Page) =>
 const KNOWN: Record<string, string> = {
   'b-splines': 'a frame of 57 ms (knot-strip and NURBS scenes)',
   blending: 'a frame of 52 ms (a scene change typesets the panel)',
-  raster: 'frames over 50 ms at high zoom (uniform-count search)',
   curvature: 'the fitted picture differs after a round trip through the link',
   surface: 'the fitted picture differs after a round trip through the link',
 };
