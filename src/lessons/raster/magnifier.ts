@@ -1,7 +1,6 @@
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { RasterModel } from './model';
-import { segmentPixels } from './raster';
 import { pixelsShown, stepCount } from './script';
 
 // One segment magnified, in pixel coordinates: pixel (i, j) is the square
@@ -59,11 +58,8 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
   const theme = painter.theme;
   const { line } = m;
   const k = m.state.step;
-  const a = m.adaptive.points[m.segment];
-  const b = m.adaptive.points[m.segment + 1];
-  const coverage = m.state.x === 'coverage';
-  if (coverage) {
-    const pixels = segmentPixels(a, b, m.size);
+  const pixels = m.segmentCoverage;
+  if (pixels) {
     if (k >= 1)
       for (const { i, j, value } of pixels) painter.polygon(square(i, j), theme.ink, value * 0.85);
     grid(painter, m, labels);

@@ -226,4 +226,15 @@ describe('raster lesson model', () => {
     expect(all.some(([x]) => x <= 0.9) && all.some(([x]) => x >= 1.1)).toBe(true);
     expect(curveNear(parabola, { minX: 5, minY: 5, maxX: 6, maxY: 6 }, 0.1, 1e-3)).toEqual([]);
   });
+
+  it('the coverage scene keeps the stepped segment’s shaded pixels in the model, each at most the whole curve’s shade', () => {
+    const m = derive(scenes[4].apply(defaults));
+    const pixels = m.segmentCoverage!;
+    expect(pixels.length).toBeGreaterThan(0);
+    for (const { i, j, value } of pixels) {
+      expect(value).toBeGreaterThan(0);
+      expect(value).toBeLessThanOrEqual(m.coverage!.get(`${i},${j}`)!.value);
+    }
+    expect(at({ x: 'pixels' }).segmentCoverage).toBeNull();
+  });
 });

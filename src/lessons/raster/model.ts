@@ -20,6 +20,7 @@ import {
   farPixels,
   lineSteps,
   rasterizePolyline,
+  segmentPixels,
 } from './raster';
 import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState, segmentsOf } from './state';
 
@@ -78,6 +79,8 @@ export interface RasterModel {
   line: LineSteps;
   /** The adaptive polyline anti-aliased (coverage scene). */
   coverage: Map<string, Pixel> | null;
+  /** The stepped segment's pixels with their coverage (coverage scene, magnified). */
+  segmentCoverage: Pixel[] | null;
   zoom: ZoomView | null;
   /** The gap between the curve and the uniform polyline over t, as (t, gap) pairs (plot scene). */
   gaps: Float64Array | null;
@@ -211,6 +214,10 @@ export function derive(state: RasterState): RasterModel {
     segment,
     line: lineSteps(adaptive.points[segment], adaptive.points[segment + 1], state.z),
     coverage: state.x === 'coverage' ? coveragePolyline(adaptive.points, size) : null,
+    segmentCoverage:
+      state.x === 'coverage'
+        ? segmentPixels(adaptive.points[segment], adaptive.points[segment + 1], size)
+        : null,
     zoom: state.x === 'zoom' ? zoomView(state, uniform) : null,
     gaps: state.x === 'plot' ? gapFunction(state.p, uniform) : null,
   };
