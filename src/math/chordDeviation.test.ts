@@ -2,7 +2,12 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { polygon2D } from './arbitraries.test-helpers';
 import { bezierPoint } from './bezier';
-import { chordDeviation, uniformCountWithin, uniformParameters } from './chordDeviation';
+import {
+  chordDeviation,
+  uniformCountEstimate,
+  uniformCountWithin,
+  uniformParameters,
+} from './chordDeviation';
 import { flattenBezier } from './flatten';
 import { flatteningTree } from './flatteningTree';
 
@@ -84,6 +89,98 @@ describe('chordDeviation', () => {
         },
       ),
       { numRuns: 40 },
+    );
+  });
+
+  it('skipping pieces by their control points changes nothing: the same piece, gap and t as measuring each piece alone', () => {
+    fc.assert(
+      fc.property(
+        polygon2D(2, 8),
+        fc.array(fc.double({ min: 0.01, max: 1, noNaN: true }), { minLength: 1, maxLength: 12 }),
+        (points, lengths) => {
+          // Increasing parameters from 0 to 1 with the given relative lengths.
+          const total = lengths.reduce((a, b) => a + b, 0);
+          const parameters = [0];
+          for (const length of lengths)
+            parameters.push(parameters[parameters.length - 1] + length / total);
+          parameters[parameters.length - 1] = 1;
+          if (parameters.some((t, k) => k > 0 && !(t > parameters[k - 1]))) return;
+          const each = parameters
+            .slice(1)
+            .map((t1, k) => chordDeviation(points, [parameters[k], t1]).distance);
+          const largest = Math.max(...each);
+          const d = chordDeviation(points, parameters);
+          expect(d.distance).toBe(largest);
+          expect(d.piece).toBe(each.indexOf(largest));
+        },
+      ),
+      { numRuns: 60 },
+    );
+  });
+
+  it('the estimate √(max‖P″⊥‖ / 8τ): the parabola has P″ = 2·(P2 − 2P1 + P0) = (0, −8), all across the tangent (2, 0) at t = ½', () => {
+    // n = ⌈√(8 / 8τ)⌉ = ⌈1/√τ⌉.
+    expect(uniformCountEstimate(PARABOLA, 1)).toBe(1);
+    expect(uniformCountEstimate(PARABOLA, 1 / 16)).toBe(4);
+    expect(uniformCountEstimate(PARABOLA, 0.01)).toBe(10);
+    expect(uniformCountEstimate(PARABOLA, 0.0099)).toBe(11);
+    // The same parabola as a cubic (degree elevated: Qi = i/3·P(i−1) + (1 − i/3)·Pi).
+    const cubic = [
+      [0, 0],
+      [2 / 3, 4 / 3],
+      [4 / 3, 4 / 3],
+      [2, 0],
+    ];
+    expect(uniformCountEstimate(cubic, 0.01)).toBe(10);
+    // Speeding up along a straight line, P″ ∥ P′: one segment, however fast.
+    const ray = [
+      [0, 0],
+      [0, 0],
+      [1000, 1000],
+    ];
+    expect(uniformCountEstimate(ray, 0.001)).toBe(1);
+    expect(uniformCountWithin(ray, 0.001)).toBe(1);
+    expect(
+      uniformCountEstimate(
+        [
+          [0, 0],
+          [5, 5],
+        ],
+        0.1,
+      ),
+    ).toBe(1);
+    expect(() => uniformCountEstimate(PARABOLA, 0)).toThrow(RangeError);
+  });
+
+  it('the parabola within 1/16: 4 segments (chords sloped ±½ or ±3/2, gaps (1/16)·2/√5), not 3 (the middle chord is level, gap 1/9)', () => {
+    expect(uniformCountWithin(PARABOLA, 1 / 16)).toBe(4);
+    expect(uniformCountWithin(PARABOLA, 1 / 9)).toBe(3);
+  });
+
+  it('says "more than the maximum" instead of searching past it', () => {
+    // About 1/n² for n segments: 1e-8 needs about 10 000, far above 512.
+    expect(uniformCountWithin(PARABOLA, 1e-8, 512)).toBe(513);
+    expect(uniformCountWithin(PARABOLA, 1 / 16, 3)).toBe(4);
+    expect(uniformCountWithin(PARABOLA, 1 / 16, 4)).toBe(4);
+  });
+
+  it('the count found reaches the tolerance and one segment fewer does not, whenever it is within the maximum', () => {
+    fc.assert(
+      fc.property(
+        polygon2D(2, 7),
+        fc.double({ min: 0.01, max: 20, noNaN: true }),
+        (points, tolerance) => {
+          const count = uniformCountWithin(points, tolerance, 256);
+          const gap = (n: number) => chordDeviation(points, uniformParameters(n)).distance;
+          if (count > 256) {
+            expect(gap(256)).toBeGreaterThan(tolerance);
+            return;
+          }
+          expect(gap(count)).toBeLessThanOrEqual(tolerance);
+          if (count > 1) expect(gap(count - 1)).toBeGreaterThan(tolerance);
+        },
+      ),
+      { numRuns: 60 },
     );
   });
 

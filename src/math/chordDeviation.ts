@@ -1,4 +1,4 @@
-import { bezierPoint } from './bezier';
+import { bezierDerivative, bezierPoint } from './bezier';
 import { checkInteger, checkNumber, checkPoints } from './validate';
 import type { Point } from './vec';
 
@@ -69,16 +69,24 @@ export function chordDeviation(
       );
     }
   }
+  const curve = curveEvaluator(points);
+  // Branch and bound: a piece cannot stray further than its control points,
+  // so pieces are measured from the largest bound down and the rest skipped
+  // once the largest gap found exceeds their bounds (with a margin for
+  // rounding). The result is the one measuring every piece in order gives.
+  const bounds = parameters.slice(1).map((t1, k) => pieceHullGap(points, parameters[k], t1));
+  const order = bounds.map((_, k) => k).sort((i, j) => bounds[j] - bounds[i] || i - j);
+  // Rounding in the gaps is of the order of 1e-16 of the coordinates.
+  let slack = 0;
+  for (const p of points) for (const v of p) slack = Math.max(slack, 1e-12 * Math.abs(v));
   let best: ChordDeviation | null = null;
-  for (let k = 0; k + 1 < parameters.length; k++) {
+  for (const k of order) {
+    if (best !== null && bounds[k] * (1 + 1e-7) + slack < best.distance) break;
     const t0 = parameters[k];
     const t1 = parameters[k + 1];
     const a = bezierPoint(points, t0);
     const b = bezierPoint(points, t1);
-    const gap = (t: number) => {
-      const p = bezierPoint(points, t);
-      return distanceBetween(p, nearestOnSegment(p, a, b));
-    };
+    const gap = (t: number) => distanceToChord(curve(t), a, b);
     let bestIndex = 0;
     let bestGap = -1;
     for (let i = 0; i <= samples; i++) {
@@ -96,9 +104,95 @@ export function chordDeviation(
     const point = bezierPoint(points, t);
     const foot = nearestOnSegment(point, a, b);
     const distance = distanceBetween(point, foot);
-    if (best === null || distance > best.distance) best = { distance, t, piece: k, point, foot };
+    const better =
+      best === null || distance > best.distance || (distance === best.distance && k < best.piece);
+    if (better) best = { distance, t, piece: k, point, foot };
   }
   return best as ChordDeviation;
+}
+
+/**
+ * The largest distance from a control point of the piece t0 … t1 to its
+ * chord Q0–Qn (Q by de Casteljau at t1, then at t0/t1 on the left part). The
+ * piece lies in the convex hull of Q, and the distance to a segment is convex,
+ * so no point of the piece is further from the chord than this.
+ */
+function pieceHullGap(points: readonly Point[], t0: number, t1: number): number {
+  const count = points.length;
+  const n = count - 1;
+  const dimension = points[0].length;
+  const piece = new Float64Array(count * dimension);
+  const row = new Float64Array(count);
+  const u = t0 / t1;
+  for (let d = 0; d < dimension; d++) {
+    for (let i = 0; i < count; i++) row[i] = points[i][d];
+    // Left part at t1: the first point of every level.
+    const left = new Float64Array(count);
+    left[0] = row[0];
+    for (let r = 1; r <= n; r++) {
+      for (let i = 0; i + r <= n; i++) row[i] = (1 - t1) * row[i] + t1 * row[i + 1];
+      left[r] = row[0];
+    }
+    // Right part of that at u: the last point of every level.
+    row.set(left);
+    piece[d * count + n] = row[n];
+    for (let r = 1; r <= n; r++) {
+      for (let i = 0; i + r <= n; i++) row[i] = (1 - u) * row[i] + u * row[i + 1];
+      piece[d * count + n - r] = row[n - r];
+    }
+  }
+  const a = Array.from({ length: dimension }, (_, d) => piece[d * count]);
+  const b = Array.from({ length: dimension }, (_, d) => piece[d * count + n]);
+  const q = new Float64Array(dimension);
+  let largest = 0;
+  for (let i = 1; i < n; i++) {
+    for (let d = 0; d < dimension; d++) q[d] = piece[d * count + i];
+    largest = Math.max(largest, distanceToChord(q, a, b));
+  }
+  return largest;
+}
+
+/**
+ * P(t) for many t without an allocation each: de Casteljau's interpolations
+ * (the same, in the same order, as bezierPoint's) on one scratch row, into one
+ * reused vector. The search evaluates the curve ~90 times per piece, so this
+ * is most of chordDeviation's time.
+ */
+function curveEvaluator(points: readonly Point[]): (t: number) => Float64Array {
+  const count = points.length;
+  const dimension = points[0].length;
+  const coordinates = new Float64Array(count * dimension);
+  for (let i = 0; i < count; i++)
+    for (let d = 0; d < dimension; d++) coordinates[d * count + i] = points[i][d];
+  const row = new Float64Array(count);
+  const result = new Float64Array(dimension);
+  return (t) => {
+    const s = 1 - t;
+    for (let d = 0; d < dimension; d++) {
+      for (let i = 0; i < count; i++) row[i] = coordinates[d * count + i];
+      for (let r = count - 1; r > 0; r--)
+        for (let i = 0; i < r; i++) row[i] = s * row[i] + t * row[i + 1];
+      result[d] = row[0];
+    }
+    return result;
+  };
+}
+
+/** The distance from p to segment a–b: nearestOnSegment and distanceBetween's arithmetic, without the arrays. */
+function distanceToChord(p: ArrayLike<number>, a: Point, b: Point): number {
+  let along = 0;
+  let length = 0;
+  for (let d = 0; d < a.length; d++) {
+    along += (p[d] - a[d]) * (b[d] - a[d]);
+    length += (b[d] - a[d]) ** 2;
+  }
+  const s = length > 0 ? Math.min(1, Math.max(0, along / length)) : 0;
+  let squared = 0;
+  for (let d = 0; d < a.length; d++) {
+    const foot = a[d] + s * (b[d] - a[d]);
+    squared += (p[d] - foot) ** 2;
+  }
+  return Math.sqrt(squared);
 }
 
 const GOLDEN = (Math.sqrt(5) - 1) / 2;
@@ -138,9 +232,48 @@ export function uniformParameters(count: number): number[] {
 }
 
 /**
- * The fewest uniform segments (parameters k / n) whose chords stay within
- * `tolerance` of the curve, searching n = 1 … `maximum`; `maximum` + 1 if none
- * of them does.
+ * The uniform count the curvature asks for: a piece of parameter length h
+ * strays about h²/8 · ‖P″⊥‖ from its chord (the second-order Taylor term; P″⊥
+ * is the part of P″ across the tangent, as speeding up along a straight line
+ * strays nowhere), so n uniform segments stray about max‖P″⊥‖ / (8n²), and
+ * n ≈ √(max‖P″⊥‖ / (8·tolerance)), rounded up and at least 1. P′ and P″ are
+ * sampled at 65 parameters of the hodographs. An estimate to start a search
+ * from, not a guarantee.
+ */
+export function uniformCountEstimate(points: readonly Point[], tolerance: number): number {
+  const caller = 'uniformCountEstimate';
+  checkPoints(caller, 'points', points, 1);
+  checkPositive(caller, tolerance);
+  if (points.length < 3) return 1;
+  const first = bezierDerivative(points);
+  const second = bezierDerivative(first);
+  let largest = 0;
+  for (let i = 0; i <= 64; i++) {
+    const velocity = bezierPoint(first, i / 64);
+    const acceleration = bezierPoint(second, i / 64);
+    let speed = 0;
+    let along = 0;
+    let size = 0;
+    for (let d = 0; d < velocity.length; d++) {
+      speed += velocity[d] ** 2;
+      along += velocity[d] * acceleration[d];
+      size += acceleration[d] ** 2;
+    }
+    // ‖P″⊥‖² = ‖P″‖² − (P′·P″)²/‖P′‖²; where the curve stops, P″ is its tangent.
+    if (speed === 0) continue;
+    const across = size - (along * along) / speed;
+    largest = Math.max(largest, Math.sqrt(Math.max(0, across)));
+  }
+  return Math.max(1, Math.ceil(Math.sqrt(largest / (8 * tolerance))));
+}
+
+/**
+ * A uniform count n ≤ `maximum` (parameters k / n) whose chords stay within
+ * `tolerance` of the curve while those of n − 1 do not (or n = 1), found from
+ * uniformCountEstimate by steps doubling away from it, then bisection: a few
+ * chordDeviation calls, not one per count. Where the deviation falls as n
+ * grows (it need not everywhere) this is the fewest. `maximum` + 1 when
+ * `maximum` segments do not reach the tolerance either: more than `maximum`.
  */
 export function uniformCountWithin(
   points: readonly Point[],
@@ -149,8 +282,45 @@ export function uniformCountWithin(
 ): number {
   checkNumber('uniformCountWithin', 'tolerance', tolerance);
   checkInteger('uniformCountWithin', 'maximum', maximum, 1);
-  for (let n = 1; n <= maximum; n++) {
-    if (chordDeviation(points, uniformParameters(n)).distance <= tolerance) return n;
+  const within = (n: number) => chordDeviation(points, uniformParameters(n)).distance <= tolerance;
+  // A tolerance of 0 (a straight curve's own gap) is only met by a straight piece.
+  const guess =
+    tolerance > 0 ? Math.min(maximum, uniformCountEstimate(points, tolerance)) : maximum;
+  // `pass` reaches the tolerance, `fail` does not (0 segments never do).
+  let pass: number;
+  let fail = 0;
+  if (within(guess)) {
+    pass = guess;
+    for (let step = 1; pass - step >= 1; step *= 2) {
+      if (!within(pass - step)) {
+        fail = pass - step;
+        break;
+      }
+      pass -= step;
+    }
+  } else {
+    fail = guess;
+    for (let step = 1; ; step *= 2) {
+      if (fail === maximum) return maximum + 1;
+      const n = Math.min(maximum, fail + step);
+      if (within(n)) {
+        pass = n;
+        break;
+      }
+      fail = n;
+    }
   }
-  return maximum + 1;
+  while (pass - fail > 1) {
+    const middle = Math.floor((pass + fail) / 2);
+    if (within(middle)) pass = middle;
+    else fail = middle;
+  }
+  return pass;
+}
+
+function checkPositive(caller: string, tolerance: number): void {
+  checkNumber(caller, 'tolerance', tolerance);
+  if (!(tolerance > 0)) {
+    throw new RangeError(`${caller}: tolerance = ${tolerance}; it must be a positive distance.`);
+  }
 }

@@ -26,17 +26,12 @@ export function flattenBezier(points: readonly Point[], tolerance: number): Poin
   const n = points.length - 1;
   const first = points[0].slice();
   if (n === 0) return [first];
-  // Rounding can keep a piece above a tolerance far below the coordinates'
-  // precision; stop at the depth the uniform count would need.
-  const uniformCount = Math.ceil(
-    Math.sqrt((n * (n - 1) * secondDifference(points)) / (8 * tolerance)),
-  );
-  const maximumDepth = Math.min(50, Math.ceil(Math.log2(Math.max(1, uniformCount))) + 1);
+  const maximumDepth = flatteningDepth(points, tolerance);
   const polyline: Point[] = [first];
   const stack: { piece: readonly Point[]; depth: number }[] = [{ piece: points, depth: 0 }];
   while (stack.length > 0) {
     const { piece, depth } = stack.pop() as { piece: readonly Point[]; depth: number };
-    if (depth >= maximumDepth || (n * (n - 1) * secondDifference(piece)) / 8 <= tolerance) {
+    if (depth >= maximumDepth || flatness(piece) <= tolerance) {
       polyline.push(piece[n].slice());
       continue;
     }
@@ -45,6 +40,25 @@ export function flattenBezier(points: readonly Point[], tolerance: number): Poin
     stack.push({ piece: right, depth: depth + 1 }, { piece: left, depth: depth + 1 });
   }
   return polyline;
+}
+
+/**
+ * n(n−1)/8 · max‖P(i+2) − 2P(i+1) + Pi‖: no point of the piece is further than
+ * this from its chord. The split test of flattenBezier and flatteningTree.
+ */
+export function flatness(piece: readonly Point[]): number {
+  const n = piece.length - 1;
+  return (n * (n - 1) * secondDifference(piece)) / 8;
+}
+
+/**
+ * The depth at which flattening stops splitting: rounding can keep a piece
+ * above a tolerance far below the coordinates' precision, so stop at the
+ * depth the uniform count would need (and at most 50 halvings).
+ */
+export function flatteningDepth(points: readonly Point[], tolerance: number): number {
+  const uniformCount = Math.ceil(Math.sqrt(flatness(points) / tolerance));
+  return Math.min(50, Math.ceil(Math.log2(Math.max(1, uniformCount))) + 1);
 }
 
 /** max‖P(i+2) − 2P(i+1) + Pi‖ over the control polygon. */

@@ -1,4 +1,5 @@
 import { splitBezier } from './bezier';
+import { flatness, flatteningDepth } from './flatten';
 import { checkNumber, checkPoints } from './validate';
 import type { Point } from './vec';
 
@@ -40,14 +41,12 @@ export function flatteningTree(points: readonly Point[], tolerance: number): Fla
   if (!(tolerance > 0)) {
     throw new RangeError(`${caller}: tolerance = ${tolerance}; it must be a positive distance.`);
   }
-  const n = points.length - 1;
-  const factor = (n * (n - 1)) / 8;
-  const uniformCount = Math.ceil(Math.sqrt((factor * secondDifference(points)) / tolerance));
-  const maximumDepth = Math.min(50, Math.ceil(Math.log2(Math.max(1, uniformCount))) + 1);
+  // flattenBezier's own split test and depth limit.
+  const maximumDepth = flatteningDepth(points, tolerance);
   const nodes: FlatteningNode[] = [];
   const visit = (piece: Point[], parent: number, depth: number, t0: number, t1: number) => {
-    const flatness = factor * secondDifference(piece);
-    const flat = flatness <= tolerance;
+    const bound = flatness(piece);
+    const flat = bound <= tolerance;
     const split = !flat && depth < maximumDepth;
     const node: FlatteningNode = {
       index: nodes.length,
@@ -56,7 +55,7 @@ export function flatteningTree(points: readonly Point[], tolerance: number): Fla
       t0,
       t1,
       points: piece,
-      flatness,
+      flatness: bound,
       split,
       cut: !flat && !split,
     };
@@ -75,18 +74,4 @@ export function flatteningTree(points: readonly Point[], tolerance: number): Fla
     1,
   );
   return nodes;
-}
-
-/** max‖P(i+2) − 2P(i+1) + Pi‖ over the control polygon. */
-function secondDifference(points: readonly Point[]): number {
-  let maximum = 0;
-  for (let i = 0; i + 2 < points.length; i++) {
-    let squared = 0;
-    for (let d = 0; d < points[i].length; d++) {
-      const value = points[i + 2][d] - 2 * points[i + 1][d] + points[i][d];
-      squared += value * value;
-    }
-    maximum = Math.max(maximum, squared);
-  }
-  return Math.sqrt(maximum);
 }

@@ -166,3 +166,6 @@ export {
 export type { JointReport } from './jointReport';
 export { bezierJointReport, snapJoint } from './jointReport';
 export { bezierChainSelfIntersections } from './chainIntersections';
+export { uniformCountEstimate } from './chordDeviation';
+export type { PixelBox } from './rasterizeLine';
+export { rasterizeLineInBox } from './rasterizeLine';

@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { rasterizeLine } from './rasterizeLine';
+import { rasterizeLine, rasterizeLineInBox } from './rasterizeLine';
 
 describe('rasterizeLine', () => {
   it('lights the pixels worked out by hand', () => {
@@ -158,5 +158,41 @@ describe('rasterizeLine', () => {
     );
     expect(() => rasterizeLine(0, 0, 1, Infinity)).toThrow(/^rasterizeLine: y1 is Infinity/);
     expect(() => rasterizeLine(0, '1' as unknown as number, 1, 1)).toThrow(RangeError);
+  });
+});
+
+describe('rasterizeLineInBox', () => {
+  const box = { left: -3, bottom: -2, right: 4, top: 5 };
+  const inside = ([i, j]: [number, number]) =>
+    i >= box.left && i <= box.right && j >= box.bottom && j <= box.top;
+
+  it('is rasterizeLine with the pixels outside the box left out, in the same order', () => {
+    const coordinate = fc.double({ min: -30, max: 30, noNaN: true });
+    fc.assert(
+      fc.property(coordinate, coordinate, coordinate, coordinate, (x0, y0, x1, y1) => {
+        expect(rasterizeLineInBox(x0, y0, x1, y1, box)).toEqual(
+          rasterizeLine(x0, y0, x1, y1).filter(inside),
+        );
+      }),
+      { numRuns: 500 },
+    );
+  });
+
+  it('a line ten million pixels long costs only the box: y = 0.3x lights (x, ⌊0.3x + ½⌋)', () => {
+    const far = { left: 5_000_000, bottom: 0, right: 5_000_003, top: 10_000_000 };
+    // 0.3·5 000 001 = 1 500 000.3 → 1 500 000; 0.3·5 000 002 = 1 500 000.6 → 1 500 001.
+    expect(rasterizeLineInBox(0, 0, 10_000_000, 3_000_000, far)).toEqual([
+      [5_000_000, 1_500_000],
+      [5_000_001, 1_500_000],
+      [5_000_002, 1_500_001],
+      [5_000_003, 1_500_001],
+    ]);
+    expect(rasterizeLineInBox(0, 0, 10_000_000, 3_000_000, box)).toEqual([
+      [0, 0],
+      [1, 0],
+      [2, 1],
+      [3, 1],
+      [4, 1],
+    ]);
   });
 });

@@ -86,9 +86,6 @@ test('a link to points a million units apart opens without a long frame, on ever
 }) => {
   test.setTimeout(120_000);
   for (const slug of await lessonSlugs(page)) {
-    // Known and not yet fixed (stop 16's note): the raster lesson's pixel grid
-    // costs 225 ms a frame for points a million units apart.
-    if (slug === 'raster') continue;
     await page.goto(`./#/${slug}`);
     await expect(page.locator('canvas').first()).toBeVisible();
     // Zoom in first: the far point must not make the kept view expensive.

@@ -11,7 +11,7 @@ import {
   pixelGrid,
   pixelSquare,
 } from './draw';
-import type { RasterModel } from './model';
+import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { piecesShown, pixelsShown, stepCount } from './script';
 import { MAX_POINTS, RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
 
@@ -43,6 +43,12 @@ function drawCompare(painter: Painter, m: RasterModel, labels: boolean): void {
   const k = m.state.step;
   controlPolygon(painter, m);
   drawCurve(painter, m.curve);
+  if (k >= 3 && m.sameErrorBeyond) {
+    // Not computed, so not drawn: the count is past the search's end.
+    painter.note(`Uniform sampling needs more than ${SAME_ERROR_MAX} segments for the same gap.`);
+    if (labels) heading(painter, `Uniform: more than ${SAME_ERROR_MAX} segments`);
+    return;
+  }
   const shown = k >= 3 && m.sameError ? m.sameError : m.uniform;
   if (k >= 1) {
     drawPolyline(painter, shown.points, painter.color(k >= 3 ? 2 : 0));
@@ -112,7 +118,7 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
   drawCurve(painter, m.curve);
   drawPolyline(painter, m.uniform.points, painter.color(0));
   // Where adaptive flattening would put its vertices at this zoom.
-  for (const p of zoom.adaptive.points) painter.dot(p, painter.color(1), theme.sizes.point * 0.6);
+  for (const p of zoom.adaptive) painter.dot(p, painter.color(1), theme.sizes.point * 0.6);
   const [x0, y0] = [size.left / size.zoom, size.bottom / size.zoom];
   const [x1, y1] = [(size.left + size.width) / size.zoom, (size.bottom + size.height) / size.zoom];
   painter.polyline(

@@ -1,5 +1,4 @@
 import { defineLesson } from '../../app/lesson';
-import { flattenBezier } from '../../math';
 import { curveFigure } from './curveFigure';
 import { sideFigure } from './sideFigure';
 import { type RasterModel, derive } from './model';
@@ -17,8 +16,9 @@ export default defineLesson<RasterState, RasterModel>({
   steps,
   scenes,
   normalize(state) {
-    // The segment stepped through must exist on the current polyline.
-    const segments = flattenBezier(state.p, state.tol / state.z).length - 1;
+    // The segment stepped through must exist on the current polyline (the
+    // model of this state, derived once: the shell asks for the same one).
+    const segments = derive(state).adaptive.points.length - 1;
     const next = state.seg > segments - 1 ? { ...state, seg: segments - 1 } : state;
     return { state: next, issues: [] };
   },

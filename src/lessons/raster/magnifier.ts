@@ -1,7 +1,6 @@
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { RasterModel } from './model';
-import { segmentPixels } from './raster';
 import { pixelsShown, stepCount } from './script';
 
 // One segment magnified, in pixel coordinates: pixel (i, j) is the square
@@ -59,11 +58,8 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
   const theme = painter.theme;
   const { line } = m;
   const k = m.state.step;
-  const a = m.adaptive.points[m.segment];
-  const b = m.adaptive.points[m.segment + 1];
-  const coverage = m.state.x === 'coverage';
-  if (coverage) {
-    const pixels = segmentPixels(a, b, m.size);
+  const pixels = m.segmentCoverage;
+  if (pixels) {
     if (k >= 1)
       for (const { i, j, value } of pixels) painter.polygon(square(i, j), theme.ink, value * 0.85);
     grid(painter, m, labels);
@@ -103,8 +99,7 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
   const [u1, v1] = line.to;
   painter.segment([u0, v0], [u1, v1], { color: painter.color(0), width: theme.sizes.line * 1.3 });
   if (k < 1) return;
-  const first = line.pixels[0];
-  const last = line.pixels[line.pixels.length - 1];
+  const { first, last } = line;
   painter.segment(first, last, { color: theme.ink, width: theme.sizes.thin, dash: [6, 5] });
   for (const [i, j] of [first, last])
     painter.polyline(square(i, j), { color: theme.accent, width: theme.sizes.line * 1.2 }, true);

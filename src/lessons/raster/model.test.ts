@@ -1,8 +1,15 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import { chordDeviation, flattenBezier } from '../../math';
-import { type RasterModel, derive, instructiveSegment, zoomAtStep } from './model';
-import { coveragePolyline, farPixels, lineSteps, rasterizePolyline } from './raster';
+import { chordDeviation, flattenBezier, rasterizeLine, uniformParameters } from '../../math';
+import { type RasterModel, SAME_ERROR_MAX, derive, instructiveSegment, zoomAtStep } from './model';
+import {
+  LINE_LIMIT,
+  coveragePolyline,
+  curveNear,
+  farPixels,
+  lineSteps,
+  rasterizePolyline,
+} from './raster';
 import { scenes, stepCount, steps } from './script';
 import { type RasterState, schema } from './state';
 
@@ -99,8 +106,10 @@ describe('raster lesson model', () => {
       farPixels(
         lit,
         [
-          [0.5, 1.5],
-          [6.5, 1.5],
+          [
+            [0.5, 1.5],
+            [6.5, 1.5],
+          ],
         ],
         1,
       ),
@@ -109,8 +118,10 @@ describe('raster lesson model', () => {
       farPixels(
         lit,
         [
-          [0.5, 2.6],
-          [6.5, 2.6],
+          [
+            [0.5, 2.6],
+            [6.5, 2.6],
+          ],
         ],
         1,
       ),
@@ -128,7 +139,7 @@ describe('raster lesson model', () => {
       [256, 192],
     ]);
     for (const v of views) expect([v.size.width, v.size.height]).toEqual([32, 24]);
-    const counts = views.map((v) => v.adaptive.points.length);
+    const counts = views.map((v) => v.adaptive.length);
     for (let k = 1; k < counts.length; k++) expect(counts[k]).toBeGreaterThanOrEqual(counts[k - 1]);
     expect(views[0].uniformFar).toHaveLength(0);
     expect(views[4].uniformFar.length).toBeGreaterThan(0);
@@ -148,5 +159,82 @@ describe('raster lesson model', () => {
         expect(text).not.toMatch(/NaN|undefined|\\/);
       }
     }
+  });
+
+  it('at zoom 16 and τ = 0.05 px the same-gap count reaches the adaptive gap and one fewer does not', () => {
+    const m = at({ x: 'compare', z: 16, tol: 0.05 });
+    const gap = m.adaptive.deviation.distance;
+    const count = m.sameError!.points.length - 1;
+    expect(count).toBeLessThanOrEqual(SAME_ERROR_MAX);
+    expect(m.sameErrorBeyond).toBe(false);
+    expect(chordDeviation(defaults.p, uniformParameters(count)).distance).toBeLessThanOrEqual(gap);
+    expect(chordDeviation(defaults.p, uniformParameters(count - 1)).distance).toBeGreaterThan(gap);
+  });
+
+  it('past 512 uniform segments the compare scene says "more than 512" instead of searching on', () => {
+    // A parabola 2000 units wide: P″ = 2·(P2 − 2P1 + P0) = (0, −8000), so a piece of 1/n
+    // in t sags 8000/(8n²) = 1000/n² vertically: 0.0038 for n = 512, more than τ = 0.05/16.
+    const p = [
+      [0, 0],
+      [1000, 2000],
+      [2000, 0],
+    ];
+    const m = at({ x: 'compare', p, z: 16, tol: 0.05 });
+    const gap = m.adaptive.deviation.distance;
+    expect(m.sameErrorBeyond).toBe(true);
+    expect(m.sameError).toBeNull();
+    expect(chordDeviation(p, uniformParameters(SAME_ERROR_MAX)).distance).toBeGreaterThan(gap);
+    expect(steps.describe({ ...m.state, step: 3 }, 3)).toContain(
+      `more than ${SAME_ERROR_MAX} segments`,
+    );
+  });
+
+  it('a segment a million pixels long: all its pixels on the raster, the first 512 listed, and its count', () => {
+    const a = [0.5, 0.5];
+    const b = [1_000_000.5, 300_000.5];
+    // Pixel coordinates (0, 0) to (1 000 000, 300 000): one pixel per x, 1 000 001 of them.
+    const line = lineSteps(a, b, 1);
+    expect(line.count).toBe(1_000_001);
+    expect(line.pixels).toHaveLength(LINE_LIMIT);
+    expect(line.first).toEqual([0, 0]);
+    expect(line.last).toEqual([1_000_000, 300_000]);
+    // The first pixels of the whole line, and y = 0.3x at each.
+    expect(line.pixels).toEqual(rasterizeLine(0, 0, 1_000_000, 300_000).slice(0, LINE_LIMIT));
+    line.ideal.forEach((y, k) => expect(y).toBeCloseTo(0.3 * k, 9));
+    // On the 32 × 24 raster it lights x = 0 … 31, y = ⌊0.3x + ½⌋ (up to 9).
+    const lit = rasterizePolyline([a, b], raster);
+    expect([...lit.values()].map(({ i, j }) => [i, j])).toEqual(
+      Array.from({ length: 32 }, (_, x) => [x, Math.floor(0.3 * x + 0.5)]),
+    );
+  });
+
+  it('the curve near a window is the flattened curve where it passes the window, and nothing far away', () => {
+    // The parabola (0,0), (1,2), (2,0): y = 4t(1 − t), x = 2t, its top (1, 1) at t = ½.
+    const parabola = [
+      [0, 0],
+      [1, 2],
+      [2, 0],
+    ];
+    const paths = curveNear(parabola, { minX: 0.9, minY: 0.9, maxX: 1.1, maxY: 1.1 }, 0.05, 1e-3);
+    const all = paths.flat();
+    expect(all.length).toBeGreaterThan(0);
+    // Every vertex is on the curve (y = x(2 − x)) and near the window; the top is in one piece.
+    for (const [x, y] of all) {
+      expect(y).toBeCloseTo(x * (2 - x), 12);
+      expect(Math.abs(x - 1)).toBeLessThan(0.6);
+    }
+    expect(all.some(([x]) => x <= 0.9) && all.some(([x]) => x >= 1.1)).toBe(true);
+    expect(curveNear(parabola, { minX: 5, minY: 5, maxX: 6, maxY: 6 }, 0.1, 1e-3)).toEqual([]);
+  });
+
+  it('the coverage scene keeps the stepped segment’s shaded pixels in the model, each at most the whole curve’s shade', () => {
+    const m = derive(scenes[4].apply(defaults));
+    const pixels = m.segmentCoverage!;
+    expect(pixels.length).toBeGreaterThan(0);
+    for (const { i, j, value } of pixels) {
+      expect(value).toBeGreaterThan(0);
+      expect(value).toBeLessThanOrEqual(m.coverage!.get(`${i},${j}`)!.value);
+    }
+    expect(at({ x: 'pixels' }).segmentCoverage).toBeNull();
   });
 });

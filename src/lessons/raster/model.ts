@@ -16,9 +16,11 @@ import {
   type Pixel,
   type RasterSize,
   coveragePolyline,
+  curveNear,
   farPixels,
   lineSteps,
   rasterizePolyline,
+  segmentPixels,
 } from './raster';
 import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState, segmentsOf } from './state';
 
@@ -40,8 +42,8 @@ export interface ZoomView {
   /** The whole raster the curve would fill at this zoom. */
   full: RasterSize;
   uniformPixels: Map<string, Pixel>;
-  /** Adaptive flattening to the tolerance at this zoom. */
-  adaptive: Polyline;
+  /** Adaptive flattening's vertices to the tolerance at this zoom. */
+  adaptive: Point[];
   /** Lit pixels more than a pixel from the curve: pixels the curve itself would never light. */
   uniformFar: Pixel[];
   adaptiveFar: Pixel[];
@@ -61,8 +63,13 @@ export interface RasterModel {
   adaptive: Polyline;
   /** Uniform segments the flatness bound asks for: ⌈√(n(n−1)·max‖Δ²P‖ / (8τ))⌉. */
   boundCount: number;
-  /** Fewest uniform segments with at most the adaptive polyline's deviation (compare scene). */
+  /**
+   * Fewest uniform segments with at most the adaptive polyline's deviation
+   * (compare scene; null elsewhere, or when that is more than SAME_ERROR_MAX).
+   */
   sameError: Polyline | null;
+  /** In the compare scene: uniform sampling would need more than SAME_ERROR_MAX segments (not drawn). */
+  sameErrorBeyond: boolean;
   /** The raster of the pixel scenes. */
   size: RasterSize;
   /** The adaptive polyline's pixels (line rasteriser). */
@@ -72,10 +79,15 @@ export interface RasterModel {
   line: LineSteps;
   /** The adaptive polyline anti-aliased (coverage scene). */
   coverage: Map<string, Pixel> | null;
+  /** The stepped segment's pixels with their coverage (coverage scene, magnified). */
+  segmentCoverage: Pixel[] | null;
   zoom: ZoomView | null;
   /** The gap between the curve and the uniform polyline over t, as (t, gap) pairs (plot scene). */
   gaps: Float64Array | null;
 }
+
+/** Uniform segments the compare scene searches up to; past it the lesson says "more than". */
+export const SAME_ERROR_MAX = 512;
 
 /** Samples per piece of the gap function. */
 const GAP_SAMPLES = 24;
@@ -118,8 +130,13 @@ const leafParameters = (tree: readonly FlatteningNode[]) => [
 function adaptiveAt(points: readonly Point[], tolerance: number) {
   const tree = flatteningTree(points, tolerance);
   const adaptive = polyline(points, leafParameters(tree));
-  // The drawn vertices are flattenBezier's own (the tree's leaves are the same points).
-  adaptive.points = flattenBezier(points, tolerance);
+  // The drawn vertices are the leaves' end points: flattenBezier's polyline,
+  // point for point, without flattening a second time.
+  const leaves = tree.filter((node) => !node.split);
+  adaptive.points = [
+    tree[0].points[0],
+    ...leaves.map((node) => node.points[node.points.length - 1]),
+  ];
   return { tree, adaptive };
 }
 
@@ -141,9 +158,15 @@ function zoomView(state: RasterState, uniform: Polyline): ZoomView {
     width: RASTER_WIDTH,
     height: RASTER_HEIGHT,
   };
-  const { adaptive } = adaptiveAt(state.p, state.tol / zoom);
-  // The curve, within 1/50 of a pixel.
-  const curve = flattenBezier(state.p, 0.02 / zoom);
+  const adaptive = flattenBezier(state.p, state.tol / zoom);
+  // The curve within 1/50 of a pixel, where it passes the window (and 2 pixels round it).
+  const window = {
+    minX: size.left / zoom,
+    minY: size.bottom / zoom,
+    maxX: (size.left + size.width) / zoom,
+    maxY: (size.bottom + size.height) / zoom,
+  };
+  const curve = curveNear(state.p, window, 2 / zoom, 0.02 / zoom);
   const uniformPixels = rasterizePolyline(uniform.points, size);
   return {
     size,
@@ -151,7 +174,7 @@ function zoomView(state: RasterState, uniform: Polyline): ZoomView {
     uniformPixels,
     adaptive,
     uniformFar: farPixels(uniformPixels, curve, zoom),
-    adaptiveFar: farPixels(rasterizePolyline(adaptive.points, size), curve, zoom),
+    adaptiveFar: farPixels(rasterizePolyline(adaptive, size), curve, zoom),
   };
 }
 
@@ -167,9 +190,11 @@ export function derive(state: RasterState): RasterModel {
   // The root's flatness is n(n−1)/8 · max‖Δ²P‖ of the whole curve.
   const boundCount = Math.max(1, Math.ceil(Math.sqrt(tree[0].flatness / tolerance)));
   let sameError: Polyline | null = null;
+  let sameErrorBeyond = false;
   if (state.x === 'compare') {
-    const count = uniformCountWithin(state.p, adaptive.deviation.distance, 4 * boundCount + 16);
-    sameError = polyline(state.p, uniformParameters(count));
+    const count = uniformCountWithin(state.p, adaptive.deviation.distance, SAME_ERROR_MAX);
+    if (count > SAME_ERROR_MAX) sameErrorBeyond = true;
+    else sameError = polyline(state.p, uniformParameters(count));
   }
   const size = rasterSize(state.z);
   const segment = Math.min(state.seg, adaptive.points.length - 2);
@@ -183,11 +208,16 @@ export function derive(state: RasterState): RasterModel {
     adaptive,
     boundCount,
     sameError,
+    sameErrorBeyond,
     size,
     pixels: rasterizePolyline(adaptive.points, size),
     segment,
     line: lineSteps(adaptive.points[segment], adaptive.points[segment + 1], state.z),
     coverage: state.x === 'coverage' ? coveragePolyline(adaptive.points, size) : null,
+    segmentCoverage:
+      state.x === 'coverage'
+        ? segmentPixels(adaptive.points[segment], adaptive.points[segment + 1], size)
+        : null,
     zoom: state.x === 'zoom' ? zoomView(state, uniform) : null,
     gaps: state.x === 'plot' ? gapFunction(state.p, uniform) : null,
   };

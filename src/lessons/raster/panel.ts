@@ -4,7 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { formula } from '../../render/formula';
-import type { RasterModel } from './model';
+import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { HAIRPIN, MAX_POINTS, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './state';
 
 const INTRO =
@@ -138,6 +138,19 @@ export function rasterPanel(
         row(`Uniform, n = ${segmentsOf(state)}`, m.uniform, 'uniform'),
         row(`Adaptive, τ = ${fmt(state.tol, 2)} px`, m.adaptive, 'adaptive'),
         ...(m.sameError ? [row('Uniform, same gap as adaptive', m.sameError, 'same')] : []),
+        ...(m.sameErrorBeyond
+          ? [
+              {
+                data: { polyline: 'same', segments: '', gap: '' },
+                cells: [
+                  'Uniform, same gap as adaptive',
+                  `more than ${SAME_ERROR_MAX}`,
+                  `≤ ${fmt(m.adaptive.deviation.distance * zoom, 4)}`,
+                  '—',
+                ],
+              },
+            ]
+          : []),
         {
           data: { polyline: 'bound', segments: String(m.boundCount), gap: '' },
           cells: ['Uniform, planned for τ', String(m.boundCount), `≤ ${fmt(state.tol, 2)}`, '—'],
@@ -153,9 +166,13 @@ export function rasterPanel(
         const [u1, v1] = line.to;
         segmentTitle.dataset.from = `${u0},${v0}`;
         segmentTitle.dataset.to = `${u1},${v1}`;
+        const listed =
+          line.count > line.pixels.length
+            ? ` It lights ${line.count} pixels; the table lists the first ${line.pixels.length}.`
+            : '';
         setText(
           segmentTitle,
-          `Segment ${m.segment + 1} runs from (${fmt(u0, 3)}, ${fmt(v0, 3)}) to (${fmt(u1, 3)}, ${fmt(v1, 3)}) in pixel coordinates (pixel centres at whole numbers). It steps along ${line.major}: one pixel per step, the nearest across.`,
+          `Segment ${m.segment + 1} runs from (${fmt(u0, 3)}, ${fmt(v0, 3)}) to (${fmt(u1, 3)}, ${fmt(v1, 3)}) in pixel coordinates (pixel centres at whole numbers). It steps along ${line.major}: one pixel per step, the nearest across.${listed}`,
         );
         pixelRows.set(
           line.pixels.map(([i, j], k) => ({

@@ -1,4 +1,13 @@
-import { type Point, nearestOnSegment, rasterizeLine, segmentCoverage } from '../../math';
+import {
+  type PixelBox,
+  type Point,
+  flattenBezier,
+  nearestOnSegment,
+  rasterizeLine,
+  rasterizeLineInBox,
+  segmentCoverage,
+  splitBezier,
+} from '../../math';
 
 // From segments to pixels. Pixel (i, j) of a raster with `zoom` pixels per
 // unit covers [i, i + 1] × [j, j + 1] / zoom; its centre is at pixel
@@ -26,18 +35,26 @@ export const toPixel = (p: Point, zoom: number): [number, number] => [
   p[1] * zoom - 0.5,
 ];
 
-const inside = (size: RasterSize, i: number, j: number) =>
-  i >= size.left && j >= size.bottom && i < size.left + size.width && j < size.bottom + size.height;
+/** The raster's pixels as a box of pixel centres. */
+const boxOf = (size: RasterSize): PixelBox => ({
+  left: size.left,
+  bottom: size.bottom,
+  right: size.left + size.width - 1,
+  top: size.bottom + size.height - 1,
+});
 
-/** The pixels a line rasteriser lights for a polyline, each once, on the raster only. */
+/**
+ * The pixels a line rasteriser lights for a polyline, each once, on the raster
+ * only: the work is the raster's, however far the segments reach beyond it.
+ */
 export function rasterizePolyline(points: readonly Point[], size: RasterSize): Map<string, Pixel> {
   const lit = new Map<string, Pixel>();
+  const box = boxOf(size);
   for (let k = 0; k + 1 < points.length; k++) {
     const [u0, v0] = toPixel(points[k], size.zoom);
     const [u1, v1] = toPixel(points[k + 1], size.zoom);
-    for (const [i, j] of rasterizeLine(u0, v0, u1, v1)) {
-      if (inside(size, i, j)) lit.set(`${i},${j}`, { i, j, value: 1 });
-    }
+    for (const [i, j] of rasterizeLineInBox(u0, v0, u1, v1, box))
+      lit.set(`${i},${j}`, { i, j, value: 1 });
   }
   return lit;
 }
@@ -63,9 +80,12 @@ export function segmentPixels(a: Point, b: Point, size: RasterSize): Pixel[] {
   const [u0, v0] = toPixel(a, size.zoom);
   const [u1, v1] = toPixel(b, size.zoom);
   const pixels: Pixel[] = [];
-  for (let i = Math.floor(Math.min(u0, u1)) - 1; i <= Math.ceil(Math.max(u0, u1)) + 1; i++) {
-    for (let j = Math.floor(Math.min(v0, v1)) - 1; j <= Math.ceil(Math.max(v0, v1)) + 1; j++) {
-      if (!inside(size, i, j)) continue;
+  const box = boxOf(size);
+  // The segment's bounding box (and a pixel round it), cut to the raster.
+  const [i0, i1] = [Math.floor(Math.min(u0, u1)) - 1, Math.ceil(Math.max(u0, u1)) + 1];
+  const [j0, j1] = [Math.floor(Math.min(v0, v1)) - 1, Math.ceil(Math.max(v0, v1)) + 1];
+  for (let i = Math.max(i0, box.left); i <= Math.min(i1, box.right); i++) {
+    for (let j = Math.max(j0, box.bottom); j <= Math.min(j1, box.top); j++) {
       const value = segmentCoverage(u0, v0, u1, v1, 1, i, j);
       if (value > 0) pixels.push({ i, j, value });
     }
@@ -73,12 +93,20 @@ export function segmentPixels(a: Point, b: Point, size: RasterSize): Pixel[] {
   return pixels;
 }
 
+/** Pixels of one segment listed step by step at most (a longer one shows its first ones). */
+export const LINE_LIMIT = 512;
+
 /** One segment rasterised step by step: what each step along the major axis decides. */
 export interface LineSteps {
   /** The segment's ends in pixel coordinates. */
   from: [number, number];
   to: [number, number];
-  /** The pixels, one per unit step along the major axis. */
+  /** The end pixels: the ends rounded. */
+  first: [number, number];
+  last: [number, number];
+  /** How many pixels the whole segment lights: one per step along the major axis. */
+  count: number;
+  /** Its first pixels, one per unit step along the major axis (all of them, up to LINE_LIMIT). */
   pixels: [number, number][];
   /** Which coordinate steps by one pixel each time. */
   major: 'x' | 'y';
@@ -86,41 +114,105 @@ export interface LineSteps {
   ideal: number[];
 }
 
-export function lineSteps(a: Point, b: Point, zoom: number): LineSteps {
+export function lineSteps(a: Point, b: Point, zoom: number, limit = LINE_LIMIT): LineSteps {
   const from = toPixel(a, zoom);
   const to = toPixel(b, zoom);
-  const pixels = rasterizeLine(from[0], from[1], to[0], to[1]);
-  const first = pixels[0];
-  const last = pixels[pixels.length - 1];
+  const round = (p: [number, number]): [number, number] => [
+    Math.round(p[0]) + 0,
+    Math.round(p[1]) + 0,
+  ];
+  const first = round(from);
+  const last = round(to);
   const major = Math.abs(last[0] - first[0]) >= Math.abs(last[1] - first[1]) ? 'x' : 'y';
   const [m, n] = major === 'x' ? [0, 1] : [1, 0];
   const run = last[m] - first[m];
+  const count = Math.abs(run) + 1;
+  let pixels: [number, number][];
+  if (count <= limit) pixels = rasterizeLine(from[0], from[1], to[0], to[1]);
+  else {
+    // The first `limit` steps from the start, towards the end.
+    const reach = first[m] + Math.sign(run) * (limit - 1);
+    const [low, high] = [Math.min(first[m], reach), Math.max(first[m], reach)];
+    const box =
+      major === 'x'
+        ? { left: low, right: high, bottom: -Infinity, top: Infinity }
+        : { left: -Infinity, right: Infinity, bottom: low, top: high };
+    pixels = rasterizeLineInBox(from[0], from[1], to[0], to[1], box);
+  }
   const ideal = pixels.map((pixel) =>
     run === 0 ? first[n] : first[n] + ((pixel[m] - first[m]) * (last[n] - first[n])) / run,
   );
-  return { from, to, pixels, major, ideal };
+  return { from, to, first, last, count, pixels, major, ideal };
+}
+
+/** A rectangle in units of the control points. */
+export interface Box {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+/**
+ * The curve near a box, as polylines within `tolerance` of it: a piece whose
+ * control polygon's bounding box misses the box widened by `margin` is
+ * dropped (the piece lies in its control polygon's hull), the others are
+ * halved (de Casteljau) until no larger than the box, then flattened. The
+ * work follows what the box shows, not how far the curve reaches beyond it.
+ */
+export function curveNear(
+  points: readonly Point[],
+  box: Box,
+  margin: number,
+  tolerance: number,
+): Point[][] {
+  const paths: Point[][] = [];
+  const size = Math.max(box.maxX - box.minX, box.maxY - box.minY) + 2 * margin;
+  const visit = (piece: readonly Point[], depth: number) => {
+    const xs = piece.map((p) => p[0]);
+    const ys = piece.map((p) => p[1]);
+    const [minX, maxX, minY, maxY] = [
+      Math.min(...xs),
+      Math.max(...xs),
+      Math.min(...ys),
+      Math.max(...ys),
+    ];
+    if (minX > box.maxX + margin || maxX < box.minX - margin) return;
+    if (minY > box.maxY + margin || maxY < box.minY - margin) return;
+    if (depth >= 40 || Math.max(maxX - minX, maxY - minY) <= size) {
+      paths.push(flattenBezier(piece, tolerance));
+      return;
+    }
+    const [left, right] = splitBezier(piece, 0.5);
+    visit(left, depth + 1);
+    visit(right, depth + 1);
+  };
+  visit(points, 0);
+  return paths;
 }
 
 /**
  * The lit pixels whose centres lie more than `limit` pixels from the curve,
- * given as a polyline far finer than a pixel: a pixel any rasteriser of the
- * curve itself might light is within ½ pixel across of it, so these are
- * pixels the curve would never light.
+ * given as polylines far finer than a pixel (the curve near the raster): a
+ * pixel any rasteriser of the curve itself might light is within ½ pixel
+ * across of it, so these are pixels the curve would never light.
  */
 export function farPixels(
   lit: Map<string, Pixel>,
-  curve: readonly Point[],
+  curve: readonly (readonly Point[])[],
   zoom: number,
   limit = 1,
 ): Pixel[] {
-  const path = curve.map((p) => toPixel(p, zoom));
+  const paths = curve.map((path) => path.map((p) => toPixel(p, zoom)));
   const far: Pixel[] = [];
   for (const pixel of lit.values()) {
     const centre = [pixel.i, pixel.j];
     let nearest = Infinity;
-    for (let k = 0; k + 1 < path.length && nearest > limit; k++) {
-      const q = nearestOnSegment(centre, path[k], path[k + 1]);
-      nearest = Math.min(nearest, Math.hypot(q[0] - centre[0], q[1] - centre[1]));
+    for (const path of paths) {
+      for (let k = 0; k + 1 < path.length && nearest > limit; k++) {
+        const q = nearestOnSegment(centre, path[k], path[k + 1]);
+        nearest = Math.min(nearest, Math.hypot(q[0] - centre[0], q[1] - centre[1]));
+      }
     }
     if (nearest > limit) far.push(pixel);
   }

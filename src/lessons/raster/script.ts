@@ -1,7 +1,7 @@
 import type { Scene, StepsSpec } from '../../app/lesson';
 import { flattenBezier } from '../../math';
 import { texNumber } from '../../render/formula';
-import { type RasterModel, derive, instructiveSegment, zoomAtStep } from './model';
+import { type RasterModel, SAME_ERROR_MAX, derive, instructiveSegment, zoomAtStep } from './model';
 import { type RasterState, type View, segmentsOf } from './state';
 
 /** Pixel steps of one segment are shown in at most this many clicks. */
@@ -73,7 +73,7 @@ function describeCompare(m: RasterModel, k: number): string {
     case 2:
       return `Adaptive to τ = ${tol} px: ${plural(a.points.length - 1, 'segment')}, largest gap ${num(px(m, a.deviation.distance))} px, short ones only in the bend.`;
     case 3:
-      return `For the same gap of ${num(px(m, a.deviation.distance))} px, uniform sampling needs ${plural((same?.points.length ?? 1) - 1, 'segment')}.`;
+      return `For the same gap of ${num(px(m, a.deviation.distance))} px, uniform sampling needs ${same ? plural(same.points.length - 1, 'segment') : `more than ${SAME_ERROR_MAX} segments`}.`;
     default:
       return `Without measuring, uniform sampling must plan for the sharpest bend: ${plural(m.boundCount, 'segment')} to be sure of τ.`;
   }
@@ -102,8 +102,12 @@ function describePixels(m: RasterModel, k: number): string {
   if (k === 0)
     return `${m.size.width} × ${m.size.height} pixels and the ${plural(m.adaptive.points.length - 1, 'segment')} to draw on them.`;
   if (k === 1) {
-    const [a, b] = [line.pixels[0], line.pixels[total - 1]];
-    return `Segment ${segment}: its ends rounded to the pixels (${a[0]}, ${a[1]}) and (${b[0]}, ${b[1]}).`;
+    const [a, b] = [line.first, line.last];
+    const listed =
+      line.count > total
+        ? ` It lights ${line.count} pixels; the first ${total} are stepped through.`
+        : '';
+    return `Segment ${segment}: its ends rounded to the pixels (${a[0]}, ${a[1]}) and (${b[0]}, ${b[1]}).${listed}`;
   }
   if (k === count)
     return `Every segment drawn the same way: ${plural(m.pixels.size, 'pixel')} make the curve.`;
@@ -130,7 +134,7 @@ function describeZoom(m: RasterModel, k: number): string {
   const n = segmentsOf(m.state);
   const gap = m.uniform.deviation.distance * zoom.size.zoom;
   const factor = k === 0 ? '½' : String(zoomAtStep(k));
-  const adaptive = zoom.adaptive.points.length - 1;
+  const adaptive = zoom.adaptive.length - 1;
   const verdict =
     zoom.uniformFar.length === 0
       ? 'every lit pixel within 1 px of the curve'
