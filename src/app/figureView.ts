@@ -193,9 +193,15 @@ export class FigureView<S, M> {
     }
   }
 
-  /** The view for the link, when the user has moved it; else null (the link fits). */
+  /**
+   * The view for the link, when the user has moved it; else null (the link
+   * fits). A figure in space turned and then fitted keeps its angles: the
+   * link says them, and the fit follows on whatever screen opens it.
+   */
   viewText(): string | null {
-    return this.movable && this.userView ? this.view.encode() : null;
+    if (!this.movable) return null;
+    if (this.userView) return this.view.encode();
+    return this.view instanceof OrbitCamera ? this.view.encodeAngles(this.spec.camera) : null;
   }
 
   /** Takes the view from a link; false if it could not be read (then it fits). */
@@ -207,6 +213,13 @@ export class FigureView<S, M> {
     // Fit first, so a camera read from the link has the distance that fits the scene.
     this.sizeCanvas();
     this.applyFit(this.host.model(), this.host.theme());
+    // Angles only: turned, then fitted to the scene on this screen.
+    if (this.view instanceof OrbitCamera && this.view.decodeAngles(text)) {
+      this.userView = false;
+      this.fitted = false;
+      this.host.invalidate(this);
+      return true;
+    }
     const ok = this.view.decode(text);
     this.userView = ok;
     this.fitted = true;

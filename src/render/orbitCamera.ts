@@ -25,6 +25,9 @@ export interface Ray {
 const dot3 = (a: readonly number[], b: readonly number[]) =>
   a[0] * b[0] + a[1] * b[1] + (a[2] ?? 0) * (b[2] ?? 0);
 
+/** Where a figure in space looks from when its lesson does not say. */
+const DEFAULT_CAMERA: CameraSettings = { yaw: -60, pitch: 25, perspective: false };
+
 export class OrbitCamera implements Projection {
   readonly dimension = 3;
   width = 300;
@@ -43,7 +46,7 @@ export class OrbitCamera implements Projection {
   up: number[] = [0, 0, 1];
   back: number[] = [0, -1, 0];
 
-  constructor(settings: CameraSettings = { yaw: -60, pitch: 25, perspective: false }) {
+  constructor(settings: CameraSettings = DEFAULT_CAMERA) {
     this.yaw = settings.yaw * DEG;
     this.pitch = settings.pitch * DEG;
     this.perspective = settings.perspective;
@@ -192,6 +195,34 @@ export class OrbitCamera implements Projection {
     return [this.yaw / DEG, this.pitch / DEG, this.scale, ...this.target, this.perspective ? 1 : 0]
       .map(viewNumber)
       .join(',');
+  }
+
+  /**
+   * The camera's angles and projection alone, when they are not `start`'s:
+   * the link of a view that was turned and then fitted (`decodeAngles`).
+   */
+  encodeAngles(start: CameraSettings | undefined): string | null {
+    const from = start ?? DEFAULT_CAMERA;
+    const angles = [this.yaw / DEG, this.pitch / DEG].map(viewNumber);
+    const same =
+      Number(angles[0]) === from.yaw &&
+      Number(angles[1]) === from.pitch &&
+      this.perspective === from.perspective;
+    return same ? null : `${angles.join(',')},${this.perspective ? 1 : 0}`;
+  }
+
+  /** Takes angles and projection from `encodeAngles`' text; false if it is not that. */
+  decodeAngles(text: string): boolean {
+    const values = readNumbers(text, 3);
+    if (!values) return false;
+    const [yaw, pitch, perspective] = values;
+    if (Math.abs(yaw) > 36000 || Math.abs(pitch) > 89 || (perspective !== 0 && perspective !== 1))
+      return false;
+    this.yaw = yaw * DEG;
+    this.pitch = pitch * DEG;
+    this.perspective = perspective === 1;
+    this.updateFrame();
+    return true;
   }
 
   decode(text: string): boolean {

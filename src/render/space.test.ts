@@ -61,3 +61,30 @@ describe('SpaceScene: drawing in space far to near', () => {
     expect(shade('#808080', 0)).toBe('#000000');
   });
 });
+
+describe('OrbitCamera: angles alone in the link (turned, then fitted)', () => {
+  const start = { yaw: -60, pitch: 25, perspective: false };
+
+  it('says nothing while the camera looks from where it started', () => {
+    expect(new OrbitCamera(start).encodeAngles(start)).toBeNull();
+  });
+
+  it('gives back exactly the angles and projection it was turned to', () => {
+    const camera = new OrbitCamera(start);
+    camera.orbit(37, -12);
+    camera.perspective = true;
+    const text = camera.encodeAngles(start);
+    expect(text).toBe('-23,13,1');
+    const other = new OrbitCamera(start);
+    expect(other.decodeAngles(text!)).toBe(true);
+    expect(other.yaw).toBeCloseTo((-23 * Math.PI) / 180, 14);
+    expect(other.pitch).toBeCloseTo((13 * Math.PI) / 180, 14);
+    expect(other.perspective).toBe(true);
+  });
+
+  it('refuses what is not three numbers in range', () => {
+    const camera = new OrbitCamera(start);
+    for (const text of ['1,2', '1,2,3', '1,95,0', 'a,b,c', '1,2,0,4,5,6,7'])
+      expect(camera.decodeAngles(text), text).toBe(false);
+  });
+});

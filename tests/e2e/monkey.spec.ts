@@ -60,8 +60,6 @@ const fields = (page: Page) =>
  */
 const KNOWN: Record<string, string> = {
   'b-splines': 'a frame of 57 ms (knot-strip and NURBS scenes)',
-  curvature: 'the fitted picture differs after a round trip through the link',
-  surface: 'Fit (0) keeps the orbit but drops view.patch from the link (app/figureView.ts)',
 };
 
 for (const [index, slug] of slugs.entries()) {
