@@ -169,3 +169,4 @@ export { bezierChainSelfIntersections } from './chainIntersections';
 export { uniformCountEstimate } from './chordDeviation';
 export type { PixelBox } from './rasterizeLine';
 export { rasterizeLineInBox } from './rasterizeLine';
+export { onOneSpot } from './oneSpot';

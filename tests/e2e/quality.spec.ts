@@ -119,20 +119,34 @@ function fuzz(valid: Record<string, string>, rand: () => number): Fuzzed {
   return { query: parts.join('&'), kept };
 }
 
-/** How far from uniform a figure's pixels are: a drawn figure has many colours. */
+/** The sentences drawn on the figures as notes (labels of several words). */
+async function figureNotes(page: Page): Promise<string[]> {
+  const figures = await page.evaluate(() =>
+    (
+      window as unknown as { splineLab: { labels(): { labels: { text: string }[] }[] } }
+    ).splineLab.labels(),
+  );
+  return figures.flatMap((f) => f.labels.map((l) => l.text)).filter((t) => t.includes(' '));
+}
+
+/** A drawn figure has many colours: the figures shown, together (one may show little: two points). */
 async function figureDrawn(page: Page): Promise<boolean> {
   return page.evaluate(() => {
-    const canvas = document.querySelector<HTMLCanvasElement>('canvas[data-figure]');
-    if (!canvas || canvas.width === 0) return false;
-    const probe = document.createElement('canvas');
-    probe.width = 48;
-    probe.height = 32;
-    const c = probe.getContext('2d')!;
-    c.drawImage(canvas, 0, 0, 48, 32);
-    const data = c.getImageData(0, 0, 48, 32).data;
+    const canvases = [
+      ...document.querySelectorAll<HTMLCanvasElement>('canvas[data-figure]'),
+    ].filter((canvas) => canvas.width > 0);
+    if (!canvases.length) return false;
     const colours = new Set<number>();
-    for (let i = 0; i < data.length; i += 4)
-      colours.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    for (const canvas of canvases) {
+      const probe = document.createElement('canvas');
+      probe.width = 96;
+      probe.height = 64;
+      const c = probe.getContext('2d')!;
+      c.drawImage(canvas, 0, 0, 96, 64);
+      const data = c.getImageData(0, 0, 96, 64).data;
+      for (let i = 0; i < data.length; i += 4)
+        colours.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    }
     return colours.size > 3;
   });
 }
@@ -259,6 +273,15 @@ for (const slug of slugs) {
         // Kept as given, or a notice says why not.
         if (hashState(page)[key] !== extreme)
           expect(await noticeText(page), `${label}: changed without a word`).toContain(key);
+        // Points all on one spot: the page says what that makes of the curve,
+        // in a note on a figure or a notice, in a sentence.
+        if (name === 'all points on one spot') {
+          const said = [await noticeText(page), ...(await figureNotes(page))];
+          expect(
+            said.filter((text) => text.trim().split(/\s+/).length >= 4),
+            `${label}: explained`,
+          ).not.toEqual([]);
+        }
       }
     }
   });

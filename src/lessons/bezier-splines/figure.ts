@@ -88,6 +88,10 @@ export const mainFigure: Spec = {
     const given =
       m.state.part === 'inspector' ? m.state.q.filter((_, j) => j % 3 === 0) : m.state.p;
     for (const q of given) painter.dot(q, painter.theme.ink);
+    if (m.oneSpot)
+      painter.note(
+        'All the points are on one spot: every piece shrinks to that point, so the spline is a single point with no direction, and its joins have nothing to match.',
+      );
   },
   handles,
   moveHandle(state, id, to) {

@@ -9,6 +9,7 @@ import {
   cubicSplineC2,
   cubicSplineSegments,
   elevateDegree,
+  onOneSpot,
   sampleBezier,
   type JointReport,
   type Point,
@@ -65,6 +66,8 @@ export interface BezierSplinesModel {
   oneSided: Point[][];
   oneSidedTangents: Point[];
   alphas: { alpha: number; name: string; segments: Point[][]; crossings: Point[] }[];
+  /** The points the figure starts from are all on one spot (the figure says what that makes). */
+  oneSpot: boolean;
 }
 
 export const SWING = 0.5;
@@ -93,6 +96,7 @@ export function derive(state: BezierSplinesState): BezierSplinesModel {
   const catmull = state.part === 'catmull';
   return {
     state,
+    oneSpot: onOneSpot(state.part === 'inspector' ? state.q : p),
     moved,
     movedPoints,
     single: sampleBezier(p, 200),

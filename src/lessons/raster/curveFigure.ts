@@ -142,6 +142,10 @@ export const curveFigure: FigureSpec<RasterState, RasterModel> = {
   bounds: (m) => unionBounds(boundsOf(m.state.p), RASTER_BOX),
   draw(painter, m, info) {
     const labels = !info.thumbnail;
+    if (m.oneSpot)
+      painter.note(
+        'All control points are on one spot: the curve is that single point, so every segment has length 0 and covers at most one pixel.',
+      );
     switch (m.state.x) {
       case 'plot':
         return drawPlot(painter, m, labels);

@@ -5,6 +5,7 @@ import {
   bezierPoint,
   chordDeviation,
   nearestOnSegment,
+  onOneSpot,
   flattenBezier,
   flatteningTree,
   sampleBezier,
@@ -51,6 +52,8 @@ export interface ZoomView {
 
 export interface RasterModel {
   state: RasterState;
+  /** All control points on one spot: the curve is that point (the figure says so). */
+  oneSpot: boolean;
   degree: number;
   curve: Float64Array;
   /** n uniform segments (the slider). */
@@ -200,6 +203,7 @@ export function derive(state: RasterState): RasterModel {
   const segment = Math.min(state.seg, adaptive.points.length - 2);
   const model: RasterModel = {
     state,
+    oneSpot: onOneSpot(state.p),
     degree,
     curve: sampleBezier(state.p, 400),
     uniform,

@@ -185,6 +185,10 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
           bold: true,
         });
     }
+    if (m.oneSpot)
+      painter.note(
+        'All 16 control points are on one spot: every row curve, every column curve and the patch shrink to that point, so there is no surface and no normal to draw.',
+      );
   },
   drawOver(painter, m, info) {
     drawOverConstruction(painter, m, info);

@@ -9,6 +9,7 @@ import {
   bezierSurfaceDerivatives,
   bezierSurfaceNormal,
   cross,
+  onOneSpot,
   surfaceColumnPoints,
   surfaceDeCasteljau,
   surfaceRowPoints,
@@ -91,6 +92,8 @@ export interface SurfaceModel {
   weightSum: number;
   matrix: MatrixForm;
   bounds: Bounds;
+  /** All 16 control points on one spot: the patch is that point (the figure says so). */
+  oneSpot: boolean;
 }
 
 export function derive(state: SurfaceState): SurfaceModel {
@@ -109,6 +112,7 @@ export function derive(state: SurfaceState): SurfaceModel {
   const pair = state.s === 'join';
   return {
     state,
+    oneSpot: onOneSpot(x.flat()),
     patch: samplePatch(x),
     second: pair ? samplePatch(state.y) : null,
     join: pair ? joinReport(x, state.y) : null,
