@@ -166,3 +166,4 @@ export {
 export type { JointReport } from './jointReport';
 export { bezierJointReport, snapJoint } from './jointReport';
 export { bezierChainSelfIntersections } from './chainIntersections';
+export { bezierChainSegments, bezierInflections } from './bezierChain';
