@@ -1,12 +1,13 @@
 import { type ArcModel, deriveArc } from './arcModel';
 import { type PlaneModel, derivePlane } from './planeModel';
+import { piecewiseCurve } from './sources';
 import { type SpaceModel, deriveSpace } from './spaceModel';
 import type { CurvatureState } from './state';
 
 /** Everything the figures and the panel show, computed once per state. */
 export interface CurvatureModel {
   state: CurvatureState;
-  /** The plane cubic (parts plane and arc). */
+  /** The plane curve, any source as Bézier pieces (parts plane and arc). */
   plane: PlaneModel | null;
   /** The space curve (part space), or the plane curve lying in z = 0. */
   space: SpaceModel;
@@ -15,7 +16,10 @@ export interface CurvatureModel {
 }
 
 export function derive(state: CurvatureState): CurvatureModel {
-  const plane = state.part === 'space' ? null : derivePlane(state.p, state.t);
+  const plane =
+    state.part === 'space'
+      ? null
+      : derivePlane(piecewiseCurve(state.src, state.p, state.d), state.t);
   return {
     state,
     plane,

@@ -4,6 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
 import { formula } from '../../render/formula';
 import type { CurvatureModel } from './model';
+import { SOURCES, SOURCE_NAMES, type Source } from './sources';
 import { type CurvatureState, type Part, type SpaceCurve, STEPS, stepCount } from './state';
 import { arcRows, valueRows } from './values';
 
@@ -70,6 +71,22 @@ export function curvaturePanel(
   const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
   const n = numberInput('Equal steps n', 'n', 2, 24, 1);
   const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
+  const sourceChoice = radioGroup<CurvatureState, Source>(api, {
+    name: 'plane-curve',
+    choices: SOURCES.map((value) => ({ value, label: SOURCE_NAMES[value] })),
+    get: (s) => s.src,
+    set: (s, src) => ({ ...s, src }),
+  });
+  const pieces = h('p', { class: 'note' });
+  const notice = h('p', { class: 'note', role: 'status' });
+  const sourceControls = h(
+    'div',
+    {},
+    h('h2', {}, 'The plane curve'),
+    h('div', { class: 'lesson-tools' }, ...sourceChoice.labels),
+    pieces,
+    notice,
+  );
   const helixControls = h('div', {}, a.element, b.element);
 
   const element = h(
@@ -82,6 +99,7 @@ export function curvaturePanel(
       { class: 'note' },
       'The parameter is t (slider and Play below the figure; or drag the cursor in the plot).',
     ),
+    sourceControls,
     spaceControls,
     helixControls,
     n.element,
@@ -101,6 +119,19 @@ export function curvaturePanel(
         setChildren(lectureFormula, formula(FORMULAS[state.part], true));
       }
       setHidden(spaceControls, state.part !== 'space');
+      setHidden(sourceControls, state.part !== 'plane');
+      sourceChoice.update(state);
+      if (m.plane) {
+        const count = m.plane.pieces.segments.length;
+        setText(
+          pieces,
+          count === 1
+            ? `One piece: the plot runs over t ∈ [0, 1].`
+            : `${count} pieces, joined at the dots: the plot runs over the global parameter s = ${count}·t ∈ [0, ${count}], piece i for s ∈ [i, i + 1] with local u = s − i. A C² join keeps κ continuous; at a C¹ or G¹ join κ may jump.`,
+        );
+        setText(notice, m.plane.pieces.notice ?? '');
+        setHidden(notice, !m.plane.pieces.notice);
+      }
       setHidden(helixControls, state.part !== 'space' || state.curve !== 'helix');
       setHidden(n.element, state.part !== 'arc');
       curveChoice.update(state);
