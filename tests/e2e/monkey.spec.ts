@@ -62,7 +62,8 @@ const KNOWN: Record<string, string> = {
   'b-splines': 'a frame of 57 ms (knot-strip and NURBS scenes)',
   blending: 'a frame of 52 ms (a scene change typesets the panel)',
   raster: 'frames over 50 ms at high zoom (uniform-count search)',
-  curvature: 'the fitted picture differs after a round trip through the link',
+  curvature:
+    'the fitted picture differs after a round trip: key 0 fits the space figure but keeps its orbited yaw/pitch (OrbitCamera.fit), while the link then carries no view.space',
   surface: 'the fitted picture differs after a round trip through the link',
 };
 

@@ -123,7 +123,7 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
       markPoint(
         painter,
         mark.point,
-        mark.kind === 'cusp' ? 'cusp: P′ = 0' : 'inflection: κ = 0',
+        mark.kind === 'inflection' ? 'inflection: κ = 0' : cuspWords(mark.t, plane),
         labels,
       );
   }
@@ -238,4 +238,10 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
       color: theme.muted,
       halo: true,
     });
+}
+
+/** Speed 0 inside the curve is a cusp; at an end (a Catmull-Rom spline's zero end gradients) the curve just starts or stops. */
+export function cuspWords(s: number, plane: PlaneModel): string {
+  const end = s === 0 || s === plane.pieces.segments.length;
+  return end ? 'P′ = 0 at the end' : 'cusp: P′ = 0';
 }

@@ -155,7 +155,7 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
   if (part === 'plane' && step >= 6) {
     for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
-    for (const t of m.plane!.cusps) vertical(t, 'cusp');
+    for (const t of m.plane!.cusps) vertical(t, t === 0 || t === pieces(m) ? 'P′ = 0' : 'cusp');
   }
   if (part === 'space' && step >= 6) for (const t of m.space.flips) vertical(t, 'flip');
   if (part !== 'arc') return;
