@@ -27,14 +27,14 @@ export function bezierChainSegments(points: readonly Point[], degree: number): P
 }
 
 /** Samples per degree when the sign changes of P′ × P″ are looked for (degree ≥ 4). */
-const SCAN = 24;
+const SCAN = 8;
 
 /**
  * The parameters t in [0, 1] where a 2D Bézier curve of any degree inflects:
  * `P′(t) × P″(t)` changes sign. Cubics use the closed form of
  * `cubicInflections`; a line or a parabola never inflects; higher degrees scan
- * the numerator (a polynomial of degree 2n − 4) at 24·n steps and bisect each
- * change of sign to 1e-13, so two inflections closer than 1/(24n) can be missed.
+ * the numerator (a polynomial of degree 2n − 4) at 8·n steps and bisect each
+ * change of sign to 1e-13, so two inflections closer than 1/(8n) can be missed.
  */
 export function bezierInflections(points: readonly Point[]): number[] {
   checkPoints('bezierInflections', 'points', points, 1, 2);

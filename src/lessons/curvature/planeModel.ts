@@ -152,7 +152,15 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
   };
 }
 
-export function derivePlane(pieces: PiecewiseCurve, t: number): PlaneModel {
+/** Everything of the plane model that does not depend on the cursor t: computed once per curve. */
+export type PlaneCurve = Omit<PlaneModel, 'at'>;
+
+/** The plane model at the cursor t: the curve's part reused, only P(t) and its frame new. */
+export function derivePlane(curve: PlaneCurve, t: number): PlaneModel {
+  return { ...curve, at: planeAt(curve.pieces.segments, t, curve.size) };
+}
+
+export function deriveCurve(pieces: PiecewiseCurve): PlaneCurve {
   const { segments } = pieces;
   const m = segments.length;
   const size = sizeOf(segments.flat());
@@ -220,7 +228,6 @@ export function derivePlane(pieces: PiecewiseCurve, t: number): PlaneModel {
     curve,
     pieces,
     size,
-    at: planeAt(segments, t, size),
     comb,
     combScale,
     kappa,
