@@ -16,7 +16,7 @@ import type { PiecewiseCurve } from './sources';
 
 /** Below this |κ| times the size of the control polygon, κ counts as 0. */
 const FLAT = 1e-9;
-/** Samples of the plot and teeth of the comb along the whole curve (at least 12 and 8 per piece). */
+/** Samples of the plot and teeth of the comb along the whole curve (at least 12 and 4 per piece). */
 const PLOT_SAMPLES = 240;
 const COMB_TEETH = 64;
 const CURVE_SAMPLES = 160;
@@ -166,7 +166,7 @@ export function deriveCurve(pieces: PiecewiseCurve): PlaneCurve {
   const size = sizeOf(segments.flat());
   const perPiece = (total: number, least: number) => Math.max(least, Math.ceil(total / m));
   const samples = perPiece(PLOT_SAMPLES, 12);
-  const teeth = perPiece(COMB_TEETH, 8);
+  const teeth = perPiece(COMB_TEETH, 4);
   // κ per piece: the plot's runs are cut at every join, so a jump of κ shows as a step.
   const values = segments.map((p) =>
     Array.from({ length: samples + 1 }, (_, k) => curvatureOrNull(p, k / samples)),

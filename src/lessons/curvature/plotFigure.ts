@@ -184,13 +184,20 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
 function drawJoins(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
   const theme = painter.theme;
   const labels = !thumbnail && m.state.step >= 4;
-  for (const join of m.plane!.pieces.joins) {
+  const { joins } = m.plane!.pieces;
+  // Many joins would bury each other's names: then only the one nearest the cursor is named.
+  const cursor = m.state.t * pieces(m);
+  const nearest = joins.reduce(
+    (best, join) => (Math.abs(join.s - cursor) < Math.abs(best - cursor) ? join.s : best),
+    Infinity,
+  );
+  for (const join of joins) {
     painter.segment([join.s, bounds.minY], [join.s, bounds.maxY], {
       color: theme.polygon,
       width: theme.sizes.thin,
       dash: [2, 4],
     });
-    if (labels)
+    if (labels && (joins.length <= 8 || join.s === nearest))
       painter.label(joinLabel(join), [join.s, bounds.minY], {
         color: theme.muted,
         halo: true,
