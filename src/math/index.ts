@@ -170,3 +170,4 @@ export { uniformCountEstimate } from './chordDeviation';
 export type { PixelBox } from './rasterizeLine';
 export { rasterizeLineInBox } from './rasterizeLine';
 export { onOneSpot } from './oneSpot';
+export { bezierChainSegments, bezierInflections } from './bezierChain';

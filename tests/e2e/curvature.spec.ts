@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
-import { bezierArcLength, bezierCurvature } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { bezierArcLength, bezierCurvature, catmullRomSegments } from '../../src/math';
+import { expect, expectHash, hashState, settled, snapshot, test } from './fixtures';
 
 const figure = (page: Page, id: string) => page.locator(`canvas[data-figure="${id}"]`);
 /** The value cell of a row of the panel's table, as a number. */
@@ -112,4 +112,54 @@ test('every scene in presenter view, stepped by the clicker; the space view from
       await snapshot(page, 'curvature-presenter-twisted-turned');
     }
   }
+});
+
+test('a de Casteljau curve opens here through its link: the same control points, and κ at the cursor as bezierCurvature gives it', async ({
+  page,
+}) => {
+  // A quartic: the link carries any degree.
+  const p = [
+    [0, 0],
+    [1, 3],
+    [3, 3.5],
+    [5, 1],
+    [6, 2.5],
+  ];
+  await page.goto(`./#/de-casteljau?p=${p.map((q) => q.join(',')).join(';')}&t=0.35`);
+  await settled(page);
+  await page.getByRole('link', { name: 'Curvature of this curve →' }).click();
+  await expect(page).toHaveURL(/#\/curvature\?/);
+  await settled(page);
+  expect(hashState(page).src).toBe('bezier');
+  expect(controlPoints(page)).toEqual(p);
+  // Each handle names its place, two decimals: "P3 at (5.00, 1.00)".
+  for (const [i, q] of p.entries())
+    await expect(
+      page.getByRole('button', { name: `P${i} at (${q[0].toFixed(2)}, ${q[1].toFixed(2)})` }),
+    ).toBeVisible();
+  await expect.poll(() => value(page, 't')).toBe(0.35);
+  await expect.poll(() => value(page, 'κ')).toBeCloseTo(bezierCurvature(p, 0.35), 10);
+  // Moving the cursor keeps the page on the curve of the link.
+  await page.getByRole('spinbutton', { name: 't value' }).fill('0.8');
+  await page.keyboard.press('Enter');
+  await expectHash(page, 't', (v) => v === '0.8');
+  await expect.poll(() => value(page, 'κ')).toBeCloseTo(bezierCurvature(p, 0.8), 10);
+});
+
+test('a Catmull-Rom spline: κ on the piece under the cursor, and its joins named C¹', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'A Catmull-Rom spline: κ jumps at its C¹ joins' }).click();
+  await expectHash(page, 'src', (v) => v === 'catmull-rom');
+  const p = controlPoints(page);
+  const segments = catmullRomSegments(p, 0);
+  const t = Number(hashState(page).t);
+  // Global s = pieces·t: piece i = ⌊s⌋, local u = s − i.
+  const s = segments.length * t;
+  const i = Math.min(Math.floor(s), segments.length - 1);
+  await expect.poll(() => value(page, 'κ')).toBeCloseTo(bezierCurvature(segments[i], s - i), 10);
+  await expect(page.getByText(`${segments.length} pieces, joined at the dots`)).toBeVisible();
+  await page.keyboard.press('End');
+  await expectHash(page, 'step', (v) => Number(v) >= 5);
+  await snapshot(page, 'curvature-catmull-rom-joins');
 });

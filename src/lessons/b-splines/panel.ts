@@ -2,6 +2,7 @@ import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { formula, renderFormula } from '../../render/formula';
+import { curvatureLink } from '../curvature/link';
 import { facts } from './facts';
 import { knotControls } from './knotControls';
 import type { BSplineModel } from './model';
@@ -37,6 +38,7 @@ export function bsplinePanel(
   const triangle = triangleTable();
   const factBody = h('tbody', {});
   const factRows = new LiveRows(factBody);
+  const curvature = curvatureLink();
   const element = h(
     'div',
     { class: 'lesson-text' },
@@ -56,6 +58,7 @@ export function bsplinePanel(
     knots.element,
     weights.element,
     triangle.element,
+    curvature.element,
     h('h2', {}, 'Numbers'),
     dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody),
   );
@@ -87,6 +90,7 @@ export function bsplinePanel(
       weights.update(state);
       triangle.update(m, state, api.theme().palette);
       factRows.set(facts(m));
+      curvature.update(state.x === 'uniform' ? { src: 'b-spline', p: state.p, t: state.t } : null);
     },
     hover(id) {
       segments.hover(id);

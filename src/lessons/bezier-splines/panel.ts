@@ -3,6 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { type Point, snapJoint } from '../../math';
 import { renderFormula } from '../../render/formula';
+import { type CurvatureOf, curvatureLink } from '../curvature/link';
 import { verdict } from './drawParts';
 import { asCubic, type BezierSplinesModel } from './model';
 import { introductions } from './sections';
@@ -287,6 +288,7 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
     inspector: inspectorTools(api),
     catmull: catmullTools(api),
   };
+  const curvature = curvatureLink();
   const element = h(
     'div',
     { class: 'lesson-text bs-panel' },
@@ -296,6 +298,7 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
     caption,
     stepFormula,
     ...PARTS.map((part) => tools[part]?.element),
+    curvature.element,
     h(
       'p',
       { class: 'note' },
@@ -320,6 +323,16 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
         if (next) renderFormula(stepFormula, next, true);
       }
       tools[s.part]?.update(m, s);
+      curvature.update(curvatureOf(s));
     },
   };
+}
+
+/** The part's spline as the curvature lesson takes it (none for the quadratic and the grid). */
+function curvatureOf(s: BezierSplinesState): CurvatureOf | null {
+  if (s.part === 'system') return { src: 'natural', p: s.p };
+  if (s.part === 'inspector') return { src: 'chain', p: s.q };
+  if (s.part === 'catmull')
+    return { src: 'hermite', p: s.p, d: s.tg.length === s.p.length ? s.tg : handTangents(s.p) };
+  return null;
 }

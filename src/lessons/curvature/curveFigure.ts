@@ -5,6 +5,7 @@ import { boundsOf } from '../../render/projection';
 import { COLOURS, arrowUnit, show, vectorArrow } from './marks';
 import type { CurvatureModel } from './model';
 import type { PlaneModel } from './planeModel';
+import { THROUGH_POINTS } from './sources';
 import type { CurvatureState } from './state';
 
 /** The plane cubic with its frame, circle and comb; or the top view of the space cubic; or the arc length ticks. */
@@ -26,7 +27,13 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
             [-1, 1].map((k) => circle.centre.map((v, e) => v + (e === d ? k * circle.radius : 0))),
           )
         : [];
-    const box = boundsOf([...m.state.p, ...plane.comb.flat().map((tooth) => tooth[1]), ...round]);
+    const box = boundsOf([
+      ...m.state.p,
+      ...curvePoints(plane),
+      ...gradientTips(m.state),
+      ...plane.comb.flat().map((tooth) => tooth[1]),
+      ...round,
+    ]);
     // Room at the top for the note that says why N or T is undefined.
     return plane.at.why ? { ...box, maxY: box.maxY + 0.35 * (box.maxY - box.minY) } : box;
   },
@@ -40,19 +47,32 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
       painter.note(at.why);
     const plane = m.plane!;
     const theme = painter.theme;
-    painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    if (!THROUGH_POINTS[m.state.src])
+      painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    for (const [i, tip] of gradientTips(m.state).entries())
+      painter.segment(m.state.p[i], tip, { color: theme.polygon, width: theme.sizes.thin });
     if (m.state.part === 'plane' && m.state.step >= 5) drawComb(painter, plane);
     painter.polylineFlat(plane.curve, {
       color: theme.curve,
       width: theme.sizes.curve,
       role: 'curve',
     });
+    for (const join of plane.pieces.joins)
+      painter.dot(join.point, theme.ink, theme.sizes.point * 0.6);
     if (m.state.part === 'arc') drawTicks(painter, m, labels);
     else drawFrame(painter, m, plane, labels);
   },
   handles(m) {
     if (m.state.part !== 'space')
-      return m.state.p.map((p, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: p }));
+      return [
+        ...m.state.p.map((p, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: p })),
+        ...gradientTips(m.state).map((tip, i): Handle => ({
+          id: `d${i}`,
+          label: `P_{${i}} + D_{${i}}/3`,
+          position: tip,
+          small: true,
+        })),
+      ];
     if (m.state.curve !== 'bezier') return [];
     return m.state.q.map((q, i): Handle => ({
       id: `q${i}`,
@@ -63,6 +83,14 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   },
   moveHandle(state, id, to) {
     const i = Number(id.slice(1));
+    // A Hermite gradient's handle is Pi + Di/3, the inner Bézier control point.
+    if (id.startsWith('d'))
+      return {
+        ...state,
+        d: state.d.map((v, k) =>
+          k === i ? [3 * (to[0] - state.p[i][0]), 3 * (to[1] - state.p[i][1])] : v,
+        ),
+      };
     if (id.startsWith('q'))
       return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], q[2]] : q)) };
     return { ...state, p: state.p.map((p, k) => (k === i ? [to[0], to[1]] : p)) };
@@ -70,6 +98,20 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   trail: (m) => (m.state.part === 'space' ? m.space.at.point.slice(0, 2) : m.plane!.at.point),
   weight: 3,
 };
+
+/** Every eighth sample of the curve: a spline through the points may swing beyond them. */
+function curvePoints(plane: PlaneModel): Point[] {
+  const out: Point[] = [];
+  for (let i = 0; i < plane.curve.length; i += 16) out.push([plane.curve[i], plane.curve[i + 1]]);
+  return out;
+}
+
+/** The Hermite gradients' handles Pi + Di/3 (none for other sources). */
+function gradientTips(state: CurvatureState): Point[] {
+  if (state.src !== 'hermite' || state.part !== 'plane' || state.d.length !== state.p.length)
+    return [];
+  return state.p.map((p, i) => [p[0] + state.d[i][0] / 3, p[1] + state.d[i][1] / 3]);
+}
 
 function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, labels: boolean): void {
   const theme = painter.theme;
@@ -81,7 +123,7 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
       markPoint(
         painter,
         mark.point,
-        mark.kind === 'cusp' ? 'cusp: P′ = 0' : 'inflection: κ = 0',
+        mark.kind === 'inflection' ? 'inflection: κ = 0' : cuspWords(mark.t, plane),
         labels,
       );
   }
@@ -196,4 +238,10 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
       color: theme.muted,
       halo: true,
     });
+}
+
+/** Speed 0 inside the curve is a cusp; at an end (a Catmull-Rom spline's zero end gradients) the curve just starts or stops. */
+export function cuspWords(s: number, plane: PlaneModel): string {
+  const end = s === 0 || s === plane.pieces.segments.length;
+  return end ? 'P′ = 0 at the end' : 'cusp: P′ = 0';
 }

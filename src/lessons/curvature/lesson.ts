@@ -5,6 +5,7 @@ import { stepFormula } from './formulas';
 import { type CurvatureModel, derive } from './model';
 import { curvaturePanel } from './panel';
 import { plotFigure } from './plotFigure';
+import { hermiteGradients } from './sources';
 import { spaceFigure } from './spaceFigure';
 import {
   type CurvatureState,
@@ -37,11 +38,49 @@ const UNEVEN: Point[] = [
   [5, 0],
 ];
 
+/** Five points with a bend each way: a spline through them has joins to look at. */
+const SPLINE_POINTS: Point[] = [
+  [0, 0],
+  [1, 2],
+  [3, 2.5],
+  [4.5, 0.5],
+  [6, 2],
+];
+
 const plane = (id: string, label: string, p: Point[], t: number) => ({
   id,
   label,
-  apply: (s: CurvatureState): CurvatureState => ({ ...s, part: 'plane', p, t }),
+  apply: (s: CurvatureState): CurvatureState => ({ ...s, part: 'plane', src: 'bezier', p, t }),
 });
+
+const spline = (id: string, label: string, src: 'natural' | 'catmull-rom') => ({
+  id,
+  label,
+  apply: (s: CurvatureState): CurvatureState => ({
+    ...s,
+    part: 'plane',
+    src,
+    p: SPLINE_POINTS,
+    t: 0.45,
+  }),
+});
+
+/** Arc length is worked on one Bézier curve; Hermite gradients come one per point. */
+function normalize(state: CurvatureState): { state: CurvatureState; issues: string[] } {
+  const issues: string[] = [];
+  let next = state;
+  if (next.part === 'arc' && next.src !== 'bezier') {
+    next = { ...next, src: 'bezier' };
+    issues.push('Arc length is worked on one Bézier curve: its control points are the points P.');
+  }
+  if (next.src === 'hermite' && next.d.length !== next.p.length) {
+    issues.push(
+      `d: ${next.d.length} gradients for ${next.p.length} points; where one is missing Catmull-Rom's is used, extra ones are left out.`,
+    );
+    next = { ...next, d: hermiteGradients(next.p, next.d) };
+  }
+  return { state: next, issues };
+}
 
 export default defineLesson<CurvatureState, CurvatureModel>({
   slug: 'curvature',
@@ -68,8 +107,11 @@ export default defineLesson<CurvatureState, CurvatureModel>({
     {
       id: 'arc',
       label: 'Arc length against parameter',
-      apply: (s) => ({ ...s, part: 'arc', p: UNEVEN, n: 8, t: 0.5 }),
+      apply: (s) => ({ ...s, part: 'arc', src: 'bezier', p: UNEVEN, n: 8, t: 0.5 }),
     },
+    spline('natural', 'A natural spline: κ is continuous at its C² joins', 'natural'),
+    spline('catmull', 'A Catmull-Rom spline: κ jumps at its C¹ joins', 'catmull-rom'),
   ],
+  normalize,
   panel: curvaturePanel,
 });

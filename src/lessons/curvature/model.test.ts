@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
+import { bezierCurvature, cubicSplineC2 } from '../../math';
 import lesson from './lesson';
 import { derive } from './model';
 import { cuspParameters } from './planeModel';
@@ -105,5 +106,80 @@ describe('arc length', () => {
       expect(lesson.steps!.count(state)).toBeGreaterThanOrEqual(5);
       expect(lesson.steps!.describe(state, 0)).not.toBe('');
     }
+  });
+});
+
+describe('the plane curve from another lesson’s spline', () => {
+  const through = scene('natural').p;
+
+  it('puts the cursor on piece i at local u = m·t − i, with κ of that piece', () => {
+    // Four pieces, t = 0.6: s = 2.4, piece 2, u = 0.4.
+    const m = derive({ ...scene('natural'), t: 0.6 }).plane!;
+    const segments = cubicSplineC2(through);
+    expect(m.pieces.segments).toEqual(segments);
+    expect(m.at.piece).toBe(2);
+    expect(m.at.u).toBeCloseTo(0.4, 14);
+    expect(m.at.curvature).toBeCloseTo(bezierCurvature(segments[2], 0.4), 12);
+    // The plot runs over s ∈ [0, 4], cut at every join.
+    expect(m.kappa[0][0]).toBe(0);
+    expect(m.kappa.at(-1)!.at(-2)).toBe(4);
+    expect(m.kappa.length).toBeGreaterThanOrEqual(4);
+  });
+
+  it('names the natural spline’s joins C² with κ equal on both sides, the Catmull-Rom’s C¹ with a jump', () => {
+    const natural = derive(scene('natural')).plane!.pieces.joins;
+    expect(natural.map((j) => j.continuity)).toEqual(['C2', 'C2', 'C2']);
+    for (const j of natural) expect(j.after!).toBeCloseTo(j.before!, 10);
+    const catmull = derive(scene('catmull')).plane!.pieces.joins;
+    expect(catmull.map((j) => j.continuity)).toEqual(['C1', 'C1', 'C1']);
+    expect(Math.max(...catmull.map((j) => Math.abs(j.after! - j.before!)))).toBeGreaterThan(0.1);
+  });
+
+  it('falls back to the Bézier curve of too few B-spline points, and says so', () => {
+    const three = through.slice(0, 3);
+    const m = derive({ ...defaults, src: 'b-spline', p: three }).plane!;
+    expect(m.pieces.segments).toEqual([three]);
+    expect(m.pieces.notice).toMatch(/at least 4 control points/);
+    const b = derive({ ...defaults, src: 'b-spline', p: through }).plane!;
+    expect(b.pieces.notice).toBeNull();
+    expect(b.pieces.segments).toHaveLength(2);
+  });
+
+  it('takes a repeated point of a spline through points once, and a chain’s extra points not at all', () => {
+    const repeated = [through[0], through[1], through[1], through[2]];
+    const m = derive({ ...defaults, src: 'catmull-rom', p: repeated }).plane!;
+    expect(m.pieces.segments).toHaveLength(2);
+    expect(m.pieces.notice).toMatch(/repeats the one before/);
+    const chain = derive({ ...defaults, src: 'chain', p: through }).plane!;
+    expect(chain.pieces.segments).toEqual([through.slice(0, 4)]);
+    expect(chain.pieces.notice).toMatch(/the last 1 of 5/);
+  });
+
+  it('gives a Hermite spline one gradient per point, Catmull-Rom’s where the link has none', () => {
+    const { state, issues } = lesson.normalize!({
+      ...scene('natural'),
+      src: 'hermite',
+      d: [[1, 0]],
+    });
+    expect(state.d).toHaveLength(through.length);
+    expect(state.d[0]).toEqual([1, 0]);
+    expect(state.d[2]).toEqual([
+      (through[3][0] - through[1][0]) / 2,
+      (through[3][1] - through[1][1]) / 2,
+    ]);
+    expect(issues[0]).toMatch(/1 gradients for 5 points/);
+    expect(lesson.normalize!({ ...scene('arc'), src: 'natural' }).state.src).toBe('bezier');
+  });
+
+  it('a line (two control points) is straight: κ = 0 and the page says why N is undefined', () => {
+    const m = derive({
+      ...defaults,
+      p: [
+        [0, 0],
+        [2, 1],
+      ],
+    }).plane!;
+    expect(m.at.curvature).toBe(0);
+    expect(m.at.why).toMatch(/Inflection/);
   });
 });

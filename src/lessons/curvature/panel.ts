@@ -4,12 +4,13 @@ import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
 import { formula } from '../../render/formula';
 import type { CurvatureModel } from './model';
-import { type CurvatureState, type Part, type SpaceCurve, STEPS, stepCount } from './state';
+import { SOURCES, SOURCE_NAMES, type Source } from './sources';
+import { type CurvatureState, type Part, type SpaceCurve, STEPS, schema, stepCount } from './state';
 import { arcRows, valueRows } from './values';
 
 const INTRO: Record<Part, string> = {
   plane:
-    'Drag the control points P0 … P3 and move t. The velocity P′(t) has the curve’s direction; divided by the speed |P′| it is the unit tangent T. The normal N is perpendicular to T, on the side the curve turns to, and the curvature κ says how fast T turns per unit of length: the osculating circle, of radius 1/|κ|, bends exactly as the curve does at P(t).',
+    'Drag the points P0, P1, … and move t. The velocity P′(t) has the curve’s direction; divided by the speed |P′| it is the unit tangent T. The normal N is perpendicular to T, on the side the curve turns to, and the curvature κ says how fast T turns per unit of length: the osculating circle, of radius 1/|κ|, bends exactly as the curve does at P(t).',
   space:
     'In space T turns towards the principal normal N, and the binormal B = T × N completes a right-handed frame. The curvature κ measures how fast T turns, the torsion τ how fast the osculating plane (spanned by T and N) turns about T. Drag the control points Q0 … Q3 in space (Shift: along one axis) or in the top view; orbit the space figure by dragging empty space.',
   arc: 'The parameter t is not length: equal steps of t cover short stretches where the curve is slow and long ones where it is fast. The arc length s(t) adds up the speed; a table of s at equal steps of t, read backwards, gives the parameters of equal steps of length.',
@@ -59,10 +60,12 @@ export function curvaturePanel(
   ) => {
     const input = h('input', { type: 'number', min, max, step, 'aria-label': label });
     input.addEventListener('change', () => {
-      const value = Number(input.value);
+      const value = key === 'n' ? Math.round(Number(input.value)) : Number(input.value);
       // The link's field checks the range too; here an out-of-range entry is simply not taken.
-      if (input.value !== '' && value >= min && value <= max)
-        api.set({ ...api.get(), [key]: value });
+      if (input.value === '' || !(value >= min && value <= max)) return;
+      // The state keeps what the link keeps (ten significant digits), so a link opens this picture.
+      const kept = schema[key].decode(schema[key].encode(value));
+      if (kept.ok) api.set({ ...api.get(), [key]: kept.value });
     });
     return { element: h('label', { class: 'toggle' }, `${label} `, input), input };
   };
@@ -70,6 +73,22 @@ export function curvaturePanel(
   const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
   const n = numberInput('Equal steps n', 'n', 2, 24, 1);
   const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
+  const sourceChoice = radioGroup<CurvatureState, Source>(api, {
+    name: 'plane-curve',
+    choices: SOURCES.map((value) => ({ value, label: SOURCE_NAMES[value] })),
+    get: (s) => s.src,
+    set: (s, src) => ({ ...s, src }),
+  });
+  const pieces = h('p', { class: 'note' });
+  const notice = h('p', { class: 'note', role: 'status' });
+  const sourceControls = h(
+    'div',
+    {},
+    h('h2', {}, 'The plane curve'),
+    h('div', { class: 'lesson-tools' }, ...sourceChoice.labels),
+    pieces,
+    notice,
+  );
   const helixControls = h('div', {}, a.element, b.element);
 
   const element = h(
@@ -82,6 +101,7 @@ export function curvaturePanel(
       { class: 'note' },
       'The parameter is t (slider and Play below the figure; or drag the cursor in the plot).',
     ),
+    sourceControls,
     spaceControls,
     helixControls,
     n.element,
@@ -101,6 +121,19 @@ export function curvaturePanel(
         setChildren(lectureFormula, formula(FORMULAS[state.part], true));
       }
       setHidden(spaceControls, state.part !== 'space');
+      setHidden(sourceControls, state.part !== 'plane');
+      sourceChoice.update(state);
+      if (m.plane) {
+        const count = m.plane.pieces.segments.length;
+        setText(
+          pieces,
+          count === 1
+            ? `One piece: the plot runs over t ∈ [0, 1].`
+            : `${count} pieces, joined at the dots: the plot runs over the global parameter s = ${count}·t ∈ [0, ${count}], piece i for s ∈ [i, i + 1] with local u = s − i. A C² join keeps κ continuous; at a C¹ or G¹ join κ may jump.`,
+        );
+        setText(notice, m.plane.pieces.notice ?? '');
+        setHidden(notice, !m.plane.pieces.notice);
+      }
       setHidden(helixControls, state.part !== 'space' || state.curve !== 'helix');
       setHidden(n.element, state.part !== 'arc');
       curveChoice.update(state);

@@ -5,22 +5,29 @@ import {
   bezierDerivative,
   bezierFrenetFrame,
   bezierPoint,
+  bezierInflections,
   bezierTangent,
-  cubicInflections,
   norm,
   osculatingCircle,
   sampleBezier,
 } from '../../math';
 import { robustCap, runs, sizeOf } from './measure';
+import type { PiecewiseCurve } from './sources';
 
 /** Below this |κ| times the size of the control polygon, κ counts as 0. */
 const FLAT = 1e-9;
+/** Samples of the plot and teeth of the comb along the whole curve (at least 12 and 4 per piece). */
 const PLOT_SAMPLES = 240;
 const COMB_TEETH = 64;
+const CURVE_SAMPLES = 160;
 
 /** What the plane curve has at the cursor t; null where it is undefined (`why` says why). */
 export interface PlaneAt {
   t: number;
+  /** The global parameter s = pieces·t, its piece i and local u = s − i. */
+  s: number;
+  piece: number;
+  u: number;
   point: Point;
   velocity: Point;
   acceleration: Point;
@@ -37,6 +44,8 @@ export interface PlaneAt {
 export interface PlaneModel {
   /** The curve sampled, interleaved x, y. */
   curve: Float64Array;
+  /** The pieces (one for a single Bézier curve), their joins, and what the source could not take. */
+  pieces: PiecewiseCurve;
   /** Extent of the control polygon: scales arrows and comb teeth. */
   size: number;
   at: PlaneAt;
@@ -46,14 +55,15 @@ export interface PlaneModel {
    */
   comb: [Point, Point][][];
   combScale: number;
-  /** κ(t) and |P′(t)| for the plot, cut where undefined (interleaved t, value). */
+  /** κ and |P′| against the global s for the plot, cut where undefined and at every join (interleaved s, value). */
   kappa: Float64Array[];
-  speed: Float64Array;
+  speed: Float64Array[];
   /** |κ| above which the plot and comb clip (huge near a cusp). */
   kappaCap: number;
+  /** Global s of the inflections and cusps. */
   inflections: number[];
   cusps: number[];
-  /** Where they are on the curve. */
+  /** Where they are on the curve (t is the global s). */
   marks: { t: number; point: Point; kind: 'inflection' | 'cusp' }[];
 }
 
@@ -93,13 +103,23 @@ function curvatureOrNull(p: readonly Point[], t: number): number | null {
   }
 }
 
-function planeAt(p: readonly Point[], t: number, size: number): PlaneAt {
-  const point = bezierPoint(p, t);
-  const velocity = bezierTangent(p, t);
-  const acceleration = bezierTangent(bezierDerivative(p), t);
+/** The piece and local parameter of the global s ∈ [0, pieces] (the lecture convention). */
+export function locate(pieces: number, t: number): { s: number; piece: number; u: number } {
+  const s = pieces * t;
+  const piece = Math.min(Math.floor(s), pieces - 1);
+  return { s, piece, u: s - piece };
+}
+
+function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt {
+  const where = locate(segments.length, t);
+  const p = segments[where.piece];
+  const u = where.u;
+  const point = bezierPoint(p, u);
+  const velocity = bezierTangent(p, u);
+  const acceleration = p.length > 2 ? bezierTangent(bezierDerivative(p), u) : point.map(() => 0);
   const speed = norm(velocity);
-  const base = { t, point, velocity, acceleration, speed };
-  const curvature = curvatureOrNull(p, t);
+  const base = { t, ...where, point, velocity, acceleration, speed };
+  const curvature = curvatureOrNull(p, u);
   if (curvature === null) {
     return {
       ...base,
@@ -110,7 +130,7 @@ function planeAt(p: readonly Point[], t: number, size: number): PlaneAt {
       why: `Cusp: P′(t) = 0, the curve stops here and turns back. T = P′/|P′| divides by 0, so T, N, κ and the osculating circle are undefined.`,
     };
   }
-  const frame = bezierFrenetFrame(p, t);
+  const frame = bezierFrenetFrame(p, u);
   if (Math.abs(curvature) * size <= FLAT) {
     return {
       ...base,
@@ -127,50 +147,87 @@ function planeAt(p: readonly Point[], t: number, size: number): PlaneAt {
     tangent: frame.tangent,
     normal: frame.normal.map((v) => side * v),
     curvature,
-    circle: osculatingCircle(p, t),
+    circle: osculatingCircle(p, u),
     why: null,
   };
 }
 
-export function derivePlane(p: readonly Point[], t: number): PlaneModel {
-  const size = sizeOf(p);
-  const values: (number | null)[] = [];
-  const speed = new Float64Array(2 * (PLOT_SAMPLES + 1));
-  for (let i = 0; i <= PLOT_SAMPLES; i++) {
-    const u = i / PLOT_SAMPLES;
-    values.push(curvatureOrNull(p, u));
-    speed[2 * i] = u;
-    speed[2 * i + 1] = norm(bezierTangent(p, u));
-  }
+/** Everything of the plane model that does not depend on the cursor t: computed once per curve. */
+export type PlaneCurve = Omit<PlaneModel, 'at'>;
+
+/** The plane model at the cursor t: the curve's part reused, only P(t) and its frame new. */
+export function derivePlane(curve: PlaneCurve, t: number): PlaneModel {
+  return { ...curve, at: planeAt(curve.pieces.segments, t, curve.size) };
+}
+
+export function deriveCurve(pieces: PiecewiseCurve): PlaneCurve {
+  const { segments } = pieces;
+  const m = segments.length;
+  const size = sizeOf(segments.flat());
+  const perPiece = (total: number, least: number) => Math.max(least, Math.ceil(total / m));
+  const samples = perPiece(PLOT_SAMPLES, 12);
+  const teeth = perPiece(COMB_TEETH, 4);
+  // κ per piece: the plot's runs are cut at every join, so a jump of κ shows as a step.
+  const values = segments.map((p) =>
+    Array.from({ length: samples + 1 }, (_, k) => curvatureOrNull(p, k / samples)),
+  );
   // A robust scale for κ: a cusp sends |κ| to infinity, so take the 90th percentile.
-  const kappaCap = Math.max(robustCap(values), 1e-9 / size);
-  // Runs of κ(t) for the plot, cut where it is undefined or leaves the plot (±1.25 cap).
-  const kappa = runs(values.map((v) => (v !== null && Math.abs(v) <= 1.25 * kappaCap ? v : null)));
+  const kappaCap = Math.max(robustCap(values.flat()), 1e-9 / size);
+  const shift = (run: Float64Array, i: number) => run.map((v, k) => (k % 2 === 0 ? v + i : v));
+  const kappa = values.flatMap((row, i) =>
+    runs(row.map((v) => (v !== null && Math.abs(v) <= 1.25 * kappaCap ? v : null))).map((run) =>
+      shift(run, i),
+    ),
+  );
+  const speed = segments.map((p, i) => {
+    const run = new Float64Array(2 * (samples + 1));
+    for (let k = 0; k <= samples; k++) {
+      run[2 * k] = i + k / samples;
+      run[2 * k + 1] = norm(bezierTangent(p, k / samples));
+    }
+    return run;
+  });
 
   const combScale = (0.3 * size) / kappaCap;
   // Teeth too long to draw (near a cusp |κ| → ∞) are left out, and the line
-  // through the tips is broken there.
+  // through the tips is broken there and at every join.
   const comb: [Point, Point][][] = [];
-  let run: [Point, Point][] = [];
-  for (let i = 0; i <= COMB_TEETH; i++) {
-    const u = i / COMB_TEETH;
-    const k = curvatureOrNull(p, u);
-    if (k === null || Math.abs(k) > 1.25 * kappaCap) {
-      if (run.length) comb.push(run);
-      run = [];
-      continue;
+  for (const p of segments) {
+    let run: [Point, Point][] = [];
+    for (let k = 0; k <= teeth; k++) {
+      const u = k / teeth;
+      const kappaHere = curvatureOrNull(p, u);
+      if (kappaHere === null || Math.abs(kappaHere) > 1.25 * kappaCap) {
+        if (run.length) comb.push(run);
+        run = [];
+        continue;
+      }
+      const frame = bezierFrenetFrame(p, u);
+      run.push([
+        frame.point,
+        frame.point.map((v, d) => v - combScale * kappaHere * frame.normal[d]),
+      ]);
     }
-    const frame = bezierFrenetFrame(p, u);
-    run.push([frame.point, frame.point.map((v, d) => v - combScale * k * frame.normal[d])]);
+    if (run.length) comb.push(run);
   }
-  if (run.length) comb.push(run);
-  const cusps = cuspParameters(p);
+  const cusps = unique(
+    segments.flatMap((p, i) => (p.length === 4 ? cuspParameters(p) : []).map((u) => i + u)),
+  );
   // At a cusp the curve turns back with κ → ±∞ on both sides: it is not an inflection.
-  const inflections = cubicInflections(p).filter((u) => cusps.every((c) => Math.abs(c - u) > 1e-9));
+  const inflections = unique(
+    segments.flatMap((p, i) => bezierInflections(p).map((u) => i + u)),
+  ).filter((s) => cusps.every((c) => Math.abs(c - s) > 1e-9));
+  const pointAt = (s: number) => {
+    const where = locate(m, s / m);
+    return bezierPoint(segments[where.piece], where.u);
+  };
+  const curve = new Float64Array(2 * m * perPiece(CURVE_SAMPLES, 16) + 2);
+  const pieceSamples = perPiece(CURVE_SAMPLES, 16);
+  segments.forEach((p, i) => curve.set(sampleBezier(p, pieceSamples), 2 * i * pieceSamples));
   return {
-    curve: sampleBezier(p, 160),
+    curve,
+    pieces,
     size,
-    at: planeAt(p, t, size),
     comb,
     combScale,
     kappa,
@@ -179,8 +236,14 @@ export function derivePlane(p: readonly Point[], t: number): PlaneModel {
     inflections,
     cusps,
     marks: [
-      ...inflections.map((u) => ({ t: u, point: bezierPoint(p, u), kind: 'inflection' as const })),
-      ...cusps.map((u) => ({ t: u, point: bezierPoint(p, u), kind: 'cusp' as const })),
+      ...inflections.map((s) => ({ t: s, point: pointAt(s), kind: 'inflection' as const })),
+      ...cusps.map((s) => ({ t: s, point: pointAt(s), kind: 'cusp' as const })),
     ],
   };
+}
+
+/** Sorted, with values closer than 1e-9 (the same join seen from both pieces) taken once. */
+function unique(values: number[]): number[] {
+  const sorted = values.sort((a, b) => a - b);
+  return sorted.filter((v, i) => i === 0 || v - sorted[i - 1] > 1e-9);
 }

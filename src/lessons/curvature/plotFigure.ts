@@ -3,6 +3,7 @@ import type { Painter } from '../../render/painter';
 import { type Bounds, niceStep } from '../../render/projection';
 import { COLOURS, show } from './marks';
 import type { CurvatureModel } from './model';
+import type { Join } from './sources';
 import type { CurvatureState } from './state';
 
 const clampT = (t: number) => Math.min(1, Math.max(0, Number(t.toFixed(4))));
@@ -12,7 +13,7 @@ function series(m: CurvatureModel): { name: string; runs: Float64Array[]; colour
   const { part, step } = m.state;
   if (part === 'plane') {
     if (step >= 4) return [{ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature }];
-    return step >= 1 ? [{ name: '|P′|', runs: [m.plane!.speed], colour: 4 }] : [];
+    return step >= 1 ? [{ name: '|P′|', runs: m.plane!.speed, colour: 4 }] : [];
   }
   if (part === 'space') {
     const out = [];
@@ -31,7 +32,7 @@ function plotBounds(m: CurvatureModel): Bounds {
     part === 'plane'
       ? step >= 4
         ? m.plane!.kappa
-        : [m.plane!.speed]
+        : m.plane!.speed
       : part === 'space'
         ? [...m.space.kappa, ...m.space.tau]
         : [m.arc!.plot];
@@ -49,25 +50,32 @@ function plotBounds(m: CurvatureModel): Bounds {
   low = Math.max(low, -cap);
   high = Math.min(high, cap);
   const pad = 0.08 * (high - low || 1);
-  return { minX: 0, maxX: 1, minY: low - (low < 0 ? pad : 0), maxY: high + pad };
+  return { minX: 0, maxX: pieces(m), minY: low - (low < 0 ? pad : 0), maxY: high + pad };
 }
+
+/** The plane curve's pieces: the plot runs over the global s ∈ [0, pieces], s = pieces·t. */
+const pieces = (m: CurvatureModel) =>
+  m.state.part === 'plane' ? m.plane!.pieces.segments.length : 1;
+
+/** The plot's x: t for one piece; the global s = i + u across pieces (piece i, local u). */
+const axisName = (m: CurvatureModel) => (pieces(m) > 1 ? 's = i + u' : 't');
 
 export const plotFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   id: 'plot',
-  title: 'κ(t), τ(t) or s(t) plotted against t, with a cursor at t',
+  title: 'κ(t), τ(t) or s(t) plotted against t (or the global s across pieces), with a cursor at t',
   kind: 'plot',
   bounds: plotBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
     const bounds = plotBounds(m);
     const shown = series(m);
-    const t = m.state.t;
+    const t = m.state.t * pieces(m);
     if (!info.thumbnail)
       painter.plotAxes(
         bounds,
-        0.1,
+        pieces(m) > 1 ? niceStep(pieces(m) / 8) : 0.1,
         yStep(painter, bounds),
-        't',
+        axisName(m),
         shown.map((s) => s.name).join(', '),
       );
     drawMarks(painter, m, bounds, info.thumbnail);
@@ -97,13 +105,14 @@ export const plotFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     {
       id: 'cursor',
       label: 't',
-      position: [m.state.t, plotBounds(m).minY],
+      position: [m.state.t * pieces(m), plotBounds(m).minY],
       shape: 'diamond',
       showLabel: false,
     },
   ],
-  moveHandle: (state, _id, to) => ({ ...state, t: clampT(to[0]) }),
-  pickAt: (m, at, tolerance) => (Math.abs(at[0] - m.state.t) <= tolerance ? 'cursor' : null),
+  moveHandle: (state, _id, to, m) => ({ ...state, t: clampT(to[0] / pieces(m)) }),
+  pickAt: (m, at, tolerance) =>
+    Math.abs(at[0] - m.state.t * pieces(m)) <= tolerance ? 'cursor' : null,
   weight: 2,
 };
 
@@ -143,9 +152,10 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
         dy: theme.sizes.small,
       });
   };
+  if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
   if (part === 'plane' && step >= 6) {
     for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
-    for (const t of m.plane!.cusps) vertical(t, 'cusp');
+    for (const t of m.plane!.cusps) vertical(t, t === 0 || t === pieces(m) ? 'P′ = 0' : 'cusp');
   }
   if (part === 'space' && step >= 6) for (const t of m.space.flips) vertical(t, 'flip');
   if (part !== 'arc') return;
@@ -165,6 +175,45 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
         width: theme.sizes.thin,
       });
     }
+}
+
+/**
+ * The joins of a piecewise curve: a line at each, named by its continuity from
+ * step 4 (κ shown) on, where a C¹ or G¹ join also says how far κ jumps.
+ */
+function drawJoins(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
+  const theme = painter.theme;
+  const labels = !thumbnail && m.state.step >= 4;
+  const { joins } = m.plane!.pieces;
+  // Many joins would bury each other's names: then only the one nearest the cursor is named.
+  const cursor = m.state.t * pieces(m);
+  const nearest = joins.reduce(
+    (best, join) => (Math.abs(join.s - cursor) < Math.abs(best - cursor) ? join.s : best),
+    Infinity,
+  );
+  for (const join of joins) {
+    painter.segment([join.s, bounds.minY], [join.s, bounds.maxY], {
+      color: theme.polygon,
+      width: theme.sizes.thin,
+      dash: [2, 4],
+    });
+    if (labels && (joins.length <= 8 || join.s === nearest))
+      painter.label(joinLabel(join), [join.s, bounds.minY], {
+        color: theme.muted,
+        halo: true,
+        dx: 4,
+        dy: -theme.sizes.small,
+      });
+  }
+}
+
+/** "C²", or "C¹: κ 0.52 → 0.61" where κ jumps. */
+export function joinLabel(join: Join): string {
+  const name = join.continuity.replace('1', '¹').replace('2', '²').replace('0', '⁰');
+  const { before, after } = join;
+  if (before === null || after === null) return name;
+  const jumps = Math.abs(after - before) > 1e-9 * Math.max(1, Math.abs(before));
+  return jumps ? `${name}: κ ${show(before, 3)} → ${show(after, 3)}` : name;
 }
 
 /** A y step whose tick numbers have room: about one per three text heights. */

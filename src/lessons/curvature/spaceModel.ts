@@ -154,9 +154,13 @@ function findFlips(state: CurvatureState, kappa: readonly (number | null)[]): nu
 export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): SpaceModel {
   if (state.part !== 'space' && plane) {
     const at = liftPlane(plane);
+    // At most about 240 points: the space view strokes each segment on its own.
+    const samples = plane.curve.length / 2;
+    const every = Math.max(1, Math.ceil((samples - 1) / 240));
     const curve: Point[] = [];
-    for (let i = 0; i < plane.curve.length; i += 2)
-      curve.push([plane.curve[i], plane.curve[i + 1], 0]);
+    for (let i = 0; i < samples; i += every)
+      curve.push([plane.curve[2 * i], plane.curve[2 * i + 1], 0]);
+    if ((samples - 1) % every) curve.push([plane.curve.at(-2)!, plane.curve.at(-1)!, 0]);
     return {
       curve,
       size: plane.size,

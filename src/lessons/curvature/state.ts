@@ -1,6 +1,7 @@
 import { choice, int, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
+import { SOURCES, type Source } from './sources';
 
 /** The three parts of the lesson, in teaching order. */
 export type Part = 'plane' | 'space' | 'arc';
@@ -10,8 +11,12 @@ export type SpaceCurve = 'helix' | 'bezier';
 /** Everything the curvature lesson shows, and all of it goes in the link. */
 export interface CurvatureState {
   part: Part;
-  /** Control points of the plane cubic P0 … P3. */
+  /** Where the plane curve comes from: one Bézier curve, or another lesson's spline. */
+  src: Source;
+  /** The plane curve's points: control points of a Bézier curve or a B-spline, or the points a spline passes through. */
   p: Point[];
+  /** The gradients D0 … Dm of a Hermite spline (src=hermite). */
+  d: Point[];
   /** Control points of the space cubic Q0 … Q3 (x, y, z). */
   q: Point[];
   curve: SpaceCurve;
@@ -23,6 +28,9 @@ export interface CurvatureState {
   /** Arc length part: the number of equal steps (of t, and of arc length). */
   n: number;
 }
+
+/** The most points of the plane curve a link carries (another lesson's spline included). */
+export const MAX_POINTS = 40;
 
 /** The helix is drawn for θ = 2π·turns·t, t ∈ [0, 1]. */
 export const HELIX_TURNS = 2;
@@ -48,7 +56,9 @@ export const TWISTED_CUBIC: Point[] = [
 
 export const schema: Schema<CurvatureState> = {
   part: choice<Part>({ default: 'plane', values: ['plane', 'space', 'arc'] }),
-  p: points({ default: LECTURE_CUBIC, min: 4, max: 4 }),
+  src: choice<Source>({ default: 'bezier', values: SOURCES }),
+  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
+  d: points({ default: [], min: 0, max: MAX_POINTS }),
   q: points({ default: TWISTED_CUBIC, min: 4, max: 4, dimension: 3 }),
   curve: choice<SpaceCurve>({ default: 'helix', values: ['helix', 'bezier'] }),
   a: number({ default: 1, min: 0.1, max: 5 }),

@@ -26,8 +26,16 @@ export function valueRows(
   });
   if (state.part === 'plane') {
     const at = m.plane!.at;
+    const global =
+      m.plane!.pieces.segments.length > 1
+        ? [
+            named('s = pieces·t', precise(at.s)),
+            named('piece i, local u', `${at.piece}, ${precise(at.u)}`),
+          ]
+        : [];
     return [
       named('t', precise(at.t)),
+      ...global,
       named('P(t)', vector(at.point)),
       named('P′(t)', vector(at.velocity)),
       named('|P′(t)|', precise(at.speed)),

@@ -4,6 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
+import { curvatureLink } from '../curvature/link';
 import { halfColour, levelColour } from './colours';
 import type { DeCasteljauModel } from './model';
 import { describeStep, texT, words } from './script';
@@ -61,6 +62,7 @@ export function deCasteljauPanel(
     }),
   });
 
+  const curvature = curvatureLink();
   const element = h(
     'div',
     { class: 'lesson-text' },
@@ -85,6 +87,7 @@ export function deCasteljauPanel(
     split.element,
     splitInfo,
     pointCount.element,
+    curvature.element,
     h('h2', {}, 'Every constructed point'),
     dataTable('Constructed points', ['Point', 'x', 'y'], tableBody),
   );
@@ -99,6 +102,7 @@ export function deCasteljauPanel(
       const r = shown.levels;
       split.update(state);
       pointCount.update(state);
+      curvature.update({ src: 'bezier', p: state.p, t: state.t });
 
       stepTitle.textContent = `Step ${state.step} of ${lastStep(state)}`;
       stepText.textContent = `${describeStep(state, state.step)}.`;

@@ -4,6 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, formula } from '../../render/formula';
+import { curvatureLink } from '../curvature/link';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
@@ -82,6 +83,7 @@ export function hermitePanel(
   const bezierBody = h('tbody', {});
   const bezierRows = new LiveRows(bezierBody);
   const joins = joinsSection();
+  const curvature = curvatureLink();
 
   const element = h(
     'div',
@@ -104,6 +106,7 @@ export function hermitePanel(
     bezier.element,
     warning,
     pointCount.element,
+    curvature.element,
     patchTitle,
     h('div', { class: 'lesson-tools' }, previousPatch, nextPatch),
     h('p', {}, 'The four conditions as a matrix, and their solution: the patch matrix.'),
@@ -131,6 +134,7 @@ export function hermitePanel(
       mode.update(state);
       bezier.update(state);
       pointCount.update(state);
+      curvature.update({ src: 'hermite', p: state.p, d: m.gradients, t: (i + state.mu) / m.m });
       setHidden(warning, !m.straight);
       setText(patchTitle, `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`);
       previousPatch.disabled = state.patch <= 0;

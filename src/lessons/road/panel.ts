@@ -2,6 +2,7 @@ import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
+import { type CurvatureOf, curvatureLink } from '../curvature/link';
 import { setText } from '../../app/dom';
 import { methodSection } from './methodPanel';
 import type { RoadModel } from './model';
@@ -45,6 +46,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
   let shownNotes: readonly string[] = [];
   let hover: string | null = null;
 
+  const curvature = curvatureLink();
   const element = h(
     'div',
     { class: 'lesson-text' },
@@ -57,6 +59,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
     method.element,
     comb.element,
     pointCount.element,
+    curvature.element,
     method.explanation,
     solve.element,
     h('h2', {}, 'The parameter along the road'),
@@ -82,6 +85,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       solve.update(m);
       comb.update(state);
       pointCount.update(state);
+      curvature.update(roadCurve(m, state));
       const max = String(segmentCount(state));
       if (slider.max !== max) slider.max = max;
       if (Number(slider.value) !== state.s) slider.value = String(state.s);
@@ -102,4 +106,13 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       segment.update(api.model(), hover);
     },
   };
+}
+
+/** The road as the curvature lesson takes it: natural, or Hermite with the method's gradients. */
+function roadCurve(m: RoadModel, state: RoadState): CurvatureOf | null {
+  const t = state.s / Math.max(1, state.v.length - 1);
+  if (state.road === 'natural') return { src: 'natural', p: state.v, t };
+  if ((state.road === 'hermite' || state.road === 'clamped') && m.gradients)
+    return { src: 'hermite', p: state.v, d: m.gradients, t };
+  return null;
 }
