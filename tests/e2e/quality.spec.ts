@@ -274,9 +274,13 @@ for (const slug of slugs) {
         if (hashState(page)[key] !== extreme)
           expect(await noticeText(page), `${label}: changed without a word`).toContain(key);
         // Points all on one spot: the page says what that makes of the curve,
-        // in a note on a figure or a notice, in a sentence.
+        // in a sentence: a note on a figure, a notice, or a status in the panel.
         if (name === 'all points on one spot') {
-          const said = [await noticeText(page), ...(await figureNotes(page))];
+          const said = [
+            await noticeText(page),
+            ...(await figureNotes(page)),
+            ...(await page.locator('.lesson-page [role=status]:visible').allInnerTexts()),
+          ];
           expect(
             said.filter((text) => text.trim().split(/\s+/).length >= 4),
             `${label}: explained`,

@@ -8,6 +8,7 @@ import {
   catmullRomTangents,
   cubicSplineC2,
   cubicSplineSegments,
+  onOneSpot,
   uniformBSplineSegments,
 } from '../../math';
 
@@ -101,6 +102,10 @@ function build(
   d: readonly Point[],
 ): { segments: Point[][]; notice: string | null } {
   const whole = (notice: string | null) => ({ segments: [p.map((q) => q.slice())], notice });
+  if (onOneSpot(p))
+    return whole(
+      'All the points are on one spot: the curve is that point. Its velocity is 0 everywhere, so T, N, κ and the osculating circle are undefined along all of it.',
+    );
   switch (source) {
     case 'bezier':
       return whole(null);
