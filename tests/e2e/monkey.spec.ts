@@ -59,7 +59,6 @@ const fields = (page: Page) =>
  * stop 16): each is a real defect to fix, not a tolerance to keep.
  */
 const KNOWN: Record<string, string> = {
-  'b-splines': 'a frame of 57 ms (knot-strip and NURBS scenes)',
   blending: 'a frame of 52 ms (a scene change typesets the panel)',
   raster: 'frames over 50 ms at high zoom (uniform-count search)',
   curvature: 'the fitted picture differs after a round trip through the link',
