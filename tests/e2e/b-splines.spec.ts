@@ -157,6 +157,17 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
   await expect(page.getByRole('slider', { name: 'w3' })).toHaveValue(String(w[3]));
   await expect.poll(async () => gap(await curvePoint(), closedForm(w[3]))).toBeLessThan(1e-4);
   expect(gap(await curvePoint(), p[3])).toBeLessThan(gap(before, p[3]) - 0.3);
+
+  // The last step writes C(½) with its denominator Σ wᵢNᵢ = (5 + 4·w3)/6; a new weight
+  // rewrites the numbers of the same formula.
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '3');
+  const stepFormula = page.locator('.step-formulas .katex-html');
+  await expect(stepFormula).toContainText(((5 + 4 * w[3]) / 6).toFixed(3));
+  const slider = page.getByRole('slider', { name: 'w3' });
+  await slider.fill('2');
+  await expectHash(page, 'w', (v) => v === '1,1,4,2,1,0.25,1');
+  await expect(stepFormula).toContainText((13 / 6).toFixed(3));
 });
 
 test('every scene at its last step, in presenter view (screenshots)', async ({ page }) => {
