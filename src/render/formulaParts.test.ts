@@ -13,6 +13,18 @@ describe('slotNumbers', () => {
     );
   });
 
+  it('takes a number right after a command, and an exponent with its number', () => {
+    expect(
+      slotNumbers('C(0.300) = \\dfrac{4.00\\cdot0.588\\,x_{2}}{2.764} = (3.06,\\ -3.64)'),
+    ).toEqual({
+      shape: `C(${SLOT}) = \\dfrac{${SLOT}\\cdot${SLOT}\\,x_{2}}{${SLOT}} = (${SLOT},\\ -${SLOT})`,
+      values: ['0.300', '4.00', '0.588', '2.764', '3.06', '3.64'],
+    });
+    expect(slotNumbers('Q_{4}(0) = \\tfrac16(x_{1} + 4x_{2}) = 1.2e-16').values).toEqual([
+      '1.2e-16',
+    ]);
+  });
+
   it('fills back to the same TeX', () => {
     const texts = [
       '\\frac{1}{6}\\begin{pmatrix}1.000 & -4.25\\end{pmatrix}',

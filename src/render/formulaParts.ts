@@ -52,7 +52,7 @@ export const livePoint = (p: readonly number[], digits = 2): FormulaParts =>
 
 /**
  * A TeX formula written with its numbers in it, split for a LiveFormula: each
- * decimal number (digits, a point, digits) becomes a slot, so a drag that
+ * decimal number (digits, a point, digits, perhaps an exponent) becomes a slot, so a drag that
  * only changes the numbers writes text instead of typesetting again. Signs
  * stay in the shape (a binary and a unary minus are spaced differently), and
  * so do integers (indices, counts: they change the shape when they change)
@@ -67,4 +67,4 @@ export function slotNumbers(texText: string): FormulaParts {
   return { shape, values };
 }
 
-const NUMBER = /(?<![\\A-Za-z\d.])\d+\.\d+(?![\d.]|\s*(?:em|ex|mu|pt|px|cm|mm|in|bp|pc)\b)/g;
+const NUMBER = /(?<![\d.])\d+\.\d+(?:e[-+]?\d+)?(?![\d.]|\s*(?:em|ex|mu|pt|px|cm|mm|in|bp|pc)\b)/g;

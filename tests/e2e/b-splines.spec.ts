@@ -108,6 +108,68 @@ test('NURBS: the circle is exact, and a projective map with the weights keeps th
   expect(Number(await value(page, /^H\(C\) vs old weights/).innerText())).toBeGreaterThan(0.05);
 });
 
+test('NURBS: dragging a halo outwards raises that weight alone and pulls the curve toward its point', async ({
+  page,
+}) => {
+  await openScene(page, 'NURBS weights', 'nurbs');
+  await page.keyboard.press('PageDown');
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '2');
+  const number = page.getByRole('spinbutton', { name: 't value' });
+  await number.fill('0.5');
+  await number.press('Enter');
+  await expectHash(page, 't', (v) => v === '0.5');
+  const p = list(hashState(page).p);
+  expect(hashState(page).w).toBe('1,1,4,1,1,0.25,1');
+  // Clamped uniform knots 0,0,0,0,¼,½,¾,1,1,1,1: at the knot ½ Cox–de Boor gives
+  // N2 = 1/6, N3 = 2/3, N4 = 1/6 (by hand), so with w2 = 4, w4 = 1:
+  // C(½) = (4·x2 + 4·w3·x3 + x4) / (5 + 4·w3).
+  const closedForm = (w3: number) =>
+    [0, 1].map((d) => (4 * p[2][d] + 4 * w3 * p[3][d] + p[4][d]) / (5 + 4 * w3));
+  const gap = (a: number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+  const curvePoint = async () => point(await value(page, /^C\(u\)/).innerText());
+  const before = await curvePoint();
+  expect(gap(before, closedForm(1))).toBeLessThan(1e-4);
+
+  // Pixels per unit from the handles of x0 and x6.
+  const centre = async (name: RegExp) => {
+    const box = (await page.getByRole('button', { name }).boundingBox())!;
+    return [box.x + box.width / 2, box.y + box.height / 2];
+  };
+  const [s0, s6, [cx, cy]] = [
+    await centre(/^x0 at/),
+    await centre(/^x6 at/),
+    await centre(/^x3 at/),
+  ];
+  const scale = gap(s0, s6) / gap(p[0], p[6]);
+  // A halo unit is 6% of the diagonal of the points' box (10 × 4); weight 1 is one unit.
+  const unit = 0.06 * Math.hypot(10, 4) * scale;
+  await page.mouse.move(cx + unit, cy);
+  await expect(page.locator('canvas[data-figure="curve"]')).toHaveClass(/over-handle/);
+  await page.mouse.down();
+  await page.mouse.move(cx + 1.8 * unit, cy, { steps: 8 });
+  await page.mouse.up();
+  await expectHash(page, 'w', (v) => v !== '1,1,4,1,1,0.25,1');
+  const w = hashState(page).w.split(',').map(Number);
+  // A radius of 1.8 units is 0.3 + 0.7·√w: w = (1.5/0.7)² ≈ 4.59 (to a pixel's worth).
+  expect(Math.abs(w[3] - 4.59)).toBeLessThan(0.2);
+  expect(w.filter((_, i) => i !== 3)).toEqual([1, 1, 4, 1, 0.25, 1]);
+  await expect(page.getByRole('slider', { name: 'w3' })).toHaveValue(String(w[3]));
+  await expect.poll(async () => gap(await curvePoint(), closedForm(w[3]))).toBeLessThan(1e-4);
+  expect(gap(await curvePoint(), p[3])).toBeLessThan(gap(before, p[3]) - 0.3);
+
+  // The last step writes C(½) with its denominator Σ wᵢNᵢ = (5 + 4·w3)/6; a new weight
+  // rewrites the numbers of the same formula.
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '3');
+  const stepFormula = page.locator('.step-formulas .katex-html');
+  await expect(stepFormula).toContainText(((5 + 4 * w[3]) / 6).toFixed(3));
+  const slider = page.getByRole('slider', { name: 'w3' });
+  await slider.fill('2');
+  await expectHash(page, 'w', (v) => v === '1,1,4,2,1,0.25,1');
+  await expect(stepFormula).toContainText((13 / 6).toFixed(3));
+});
+
 test('every scene at its last step, in presenter view (screenshots)', async ({ page }) => {
   const scenes: [string, number][] = [
     ['uniform', 4],

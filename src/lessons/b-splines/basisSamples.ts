@@ -5,7 +5,8 @@ const STEPS = 240;
 
 /**
  * Every row of the Cox–de Boor triangle sampled over [u_0, u_last]:
- * rows[r][i] holds N_{i,r}(u) as interleaved (u, N) pairs, for the basis plot.
+ * rows[r][i] holds N_{i,r}(u) as interleaved (u, N) pairs over its support
+ * [u_i, u_{i+r+1}] and one zero sample either side, for the basis plot.
  * A sample just left of each knot keeps the jumps of the low rows upright.
  */
 export function basisRows(knots: readonly number[], degree: number): Float64Array[][] {
@@ -41,5 +42,17 @@ function sampleRows(knots: readonly number[], degree: number): Float64Array[][] 
       }),
     );
   });
-  return rows;
+  // Each N_{i,r} is 0 outside [u_i, u_{i+r+1}]: keep its support and the zero on
+  // either side, so the plot draws (and hover searches) only where it lives.
+  return rows.map((row, r) =>
+    row.map((samples, i) => {
+      const from = knots[i];
+      const to = knots[i + r + 1];
+      let first = 0;
+      while (first + 1 < sorted.length && sorted[first + 1] < from) first++;
+      let last = sorted.length - 1;
+      while (last > first + 1 && sorted[last - 1] >= to) last--;
+      return samples.subarray(2 * first, 2 * last + 2);
+    }),
+  );
 }

@@ -11,6 +11,7 @@ import {
   drawUniform,
   segmentAt,
 } from './drawScenes';
+import { dragHalo, haloAt, showsHalos } from './halo';
 import type { BSplineModel } from './model';
 import { type BSplineState, MAX_POINTS, refitKnots } from './state';
 
@@ -70,8 +71,9 @@ export const curveFigure: FigureSpec<BSplineState, BSplineModel> = {
     }
     return handles;
   },
-  moveHandle(state, id, to) {
+  moveHandle(state, id, to, m) {
     const i = Number(id.slice(1));
+    if (id.startsWith('w')) return m.rational ? dragHalo(state, i, to, m.rational.haloUnit) : state;
     const moved = (list: readonly Point[]) =>
       list.map((point, k) => (k === i ? [to[0], to[1]] : point));
     return id.startsWith('l') ? { ...state, l: moved(state.l) } : { ...state, p: moved(state.p) };
@@ -92,6 +94,11 @@ export const curveFigure: FigureSpec<BSplineState, BSplineModel> = {
       false,
     );
   },
+  // A weight's halo is grabbed on its ring, away from the point: in or out sets the weight.
+  pickAt: (m, at, tolerance) =>
+    m.rational && showsHalos(m.state)
+      ? haloAt(m.state.p, m.weights, m.rational.haloUnit, at, tolerance)
+      : null,
   hoverAt: (m, at, tolerance) => segmentAt(m, at, tolerance),
   trail: (m) => (m.state.k >= 1 ? m.point : null),
 };

@@ -7,7 +7,8 @@ import type { BSplineModel } from './model';
 export function emphasis(m: BSplineModel, info: DrawInfo): (i: number) => 'strong' | 'weak' | '' {
   const hover = info.hover ?? '';
   const seg = /^seg(\d+)$/.exec(hover);
-  const point = /^p(\d+)$/.exec(hover);
+  // A point, or its weight's halo: the segments it acts on.
+  const point = /^[pw](\d+)$/.exec(hover);
   if (seg) return (i) => (i === Number(seg[1]) ? 'strong' : 'weak');
   if (point) {
     const j = Number(point[1]);

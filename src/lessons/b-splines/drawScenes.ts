@@ -8,6 +8,7 @@ import {
   drawSegments,
   ringHovered,
 } from './drawParts';
+import { haloRadius } from './halo';
 import { CIRCLE, type BSplineModel } from './model';
 import { segmentName, superscript } from './steps';
 
@@ -317,17 +318,22 @@ function drawProjective(painter: Painter, m: BSplineModel, info: DrawInfo): void
   }
 }
 
-/** A halo around each control point, its size growing with the weight, and the weight written. */
+/**
+ * A halo around each control point, its radius growing with the weight (drag
+ * the ring to change it), and the weight written. The hovered or dragged ring is drawn bold.
+ */
 function weightHalos(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   const theme = painter.theme;
+  const pixels = 1 / painter.view.worldLength(1);
   m.weights.forEach((w, i) => {
     const point = m.state.p[i];
+    const strong = info.hover === `w${i}`;
     painter.ring(
       point,
-      theme.sizes.handle * (1.4 + 0.9 * Math.sqrt(w)),
-      { color: theme.accent, width: theme.sizes.thin },
+      haloRadius(w, m.rational!.haloUnit) * pixels,
+      { color: theme.accent, width: strong ? theme.sizes.line * 1.5 : theme.sizes.thin },
       theme.accent,
-      0.12,
+      strong ? 0.2 : 0.12,
     );
     if (!info.thumbnail) {
       painter.label(`w_{${i}} = ${Number(w.toFixed(3))}`, point, {

@@ -12,6 +12,7 @@ import {
   type Point,
 } from '../../math';
 import { basisRows } from './basisSamples';
+import { haloUnit } from './halo';
 import { type Crossings, crossings } from './crossings';
 import { type BSplineState, isRationalPart, isUniformPart } from './state';
 
@@ -124,6 +125,8 @@ export interface Rational {
   /** Rational basis R_i(u) = w_i N_i(u) / Σ w_j N_j(u). */
   rbasis: number[];
   denominator: number;
+  /** World length of one halo unit (the halo of weight 1), from the control points' extent. */
+  haloUnit: number;
 }
 
 export interface Projective {
@@ -286,6 +289,7 @@ function deriveKnots(state: BSplineState): BSplineModel {
       ),
       rbasis: products.map((v) => v / denominator),
       denominator,
+      haloUnit: haloUnit(points),
     };
   }
   if (state.x === 'circle') model.circle = circleCheck(model, at);

@@ -1,10 +1,11 @@
-import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
+import { dataTable, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { formula, renderFormula } from '../../render/formula';
+import { LiveFormula, formula } from '../../render/formula';
 import { curvatureLink } from '../curvature/link';
 import { facts } from './facts';
 import { knotControls } from './knotControls';
+import { slotNumbers } from '../../render/formulaParts';
 import type { BSplineModel } from './model';
 import { segmentButtons } from './segmentButtons';
 import { type BSplineState, isRationalPart, isUniformPart } from './state';
@@ -24,7 +25,9 @@ export function bsplinePanel(
   const title = h('h2', {});
   const text = h('p', {});
   const stepLine = h('p', { class: 'note' });
-  const stepFormula = h('div', { class: 'step-formulas' });
+  // The step's formula: its shape typeset once, its numbers (u, N, C(u)) written as text.
+  const stepFormula = new LiveFormula(true);
+  const stepBox = h('div', { class: 'step-formulas' }, stepFormula.element);
   const matrix = formula(MATRIX, true);
   const recursion = formula(RECURSION, true);
   const segments = segmentButtons(api);
@@ -50,7 +53,7 @@ export function bsplinePanel(
       'The slider t moves the cursor along the whole curve, from its start (0) to its end (1).',
     ),
     stepLine,
-    stepFormula,
+    stepBox,
     matrix,
     recursion,
     segments.element,
@@ -63,7 +66,6 @@ export function bsplinePanel(
     dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody),
   );
   let shownPart = '';
-  let shownTex: string | null = null;
 
   return {
     element,
@@ -80,11 +82,8 @@ export function bsplinePanel(
       }
       setText(stepLine, `Step ${state.k} of ${stepCount(state)}: ${describeStep(state, state.k)}`);
       const tex = steps.formula?.(m, state) ?? null;
-      if (tex !== shownTex) {
-        shownTex = tex;
-        if (tex) renderFormula(stepFormula, tex, true);
-        else setChildren(stepFormula);
-      }
+      setHidden(stepBox, tex === null);
+      if (tex !== null) stepFormula.set(slotNumbers(tex));
       segments.update(m, state);
       knots.update(state);
       weights.update(state);

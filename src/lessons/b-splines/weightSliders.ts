@@ -1,12 +1,13 @@
 import { h, setChildren } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
+import { WEIGHT_MAX, WEIGHT_MIN } from './halo';
 import type { BSplineModel } from './model';
 import type { BSplineState } from './state';
 
 /** One line per weight: name, slider, value. */
 const ROW = 'display: grid; grid-template-columns: 2.5em 1fr 4em; gap: 0.5em; align-items: center';
 
-/** A slider per weight (0.1 … 5), with its value written beside it. */
+/** A slider per weight (WEIGHT_MIN … WEIGHT_MAX, as a halo drag), with its value written beside it. */
 export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
   const list = h('div', { class: 'weights' });
   const element = h('div', {}, h('h2', {}, 'Weights'), list);
@@ -21,8 +22,8 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
         inputs = state.w.map((_, i) => {
           const input = h('input', {
             type: 'range',
-            min: '0.1',
-            max: '5',
+            min: String(WEIGHT_MIN),
+            max: String(WEIGHT_MAX),
             step: '0.01',
             'aria-label': `w${i}`,
           });
