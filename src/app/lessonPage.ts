@@ -444,20 +444,27 @@ export class LessonPage<S, M> {
       fitToWidth(this.panel.element);
       fitToWidth(this.presenter.caption);
     }
+    const typesetting = performance.now();
     // Formulas that waited for this frame, then this frame's own (see formula.ts).
     if (openTypesetBudget(TYPESET_BUDGET_MS) > 0) {
       this.fitPending = true;
       this.requestFrame();
     }
     const state = this.store.state;
+    const deriving = performance.now();
     const model = this.model(state);
+    const drawing = performance.now();
     const stateChanged = state !== this.drawnState || this.refreshAll;
     if (state !== this.drawnState && this.presenter.tools.trail) this.extendTrails(model);
     const all = stateChanged || this.hoverChanged;
     for (const figure of this.figures) {
-      if (all || this.dirtyFigures.has(figure)) figure.draw(model);
+      if (!all && !this.dirtyFigures.has(figure)) continue;
+      const from = performance.now();
+      figure.draw(model);
+      performance.measure(`${FRAME}:figure:${figure.spec.id}`, { start: from });
     }
     this.dirtyFigures.clear();
+    const panelStart = performance.now();
     // On the first frame the figure goes first: the panel (a page of formulas
     // to typeset) follows in the next frame, so the figure shows sooner. So it
     // does when the figures took long (a new scene): one long task would hold
@@ -494,7 +501,13 @@ export class LessonPage<S, M> {
       firstDrawMarked = true;
       performance.mark('spline-lab:first-draw');
     }
-    if (++framesMeasured % 1000 === 0) performance.clearMeasures(FRAME);
+    if (++framesMeasured % 1000 === 0) performance.clearMeasures();
+    // The frame, and its parts: fitting, waiting formulas, the model, the figures, the panel.
+    performance.measure(`${FRAME}:fit`, { start, end: typesetting });
+    performance.measure(`${FRAME}:typeset`, { start: typesetting, end: deriving });
+    performance.measure(`${FRAME}:derive`, { start: deriving, end: drawing });
+    performance.measure(`${FRAME}:figures`, { start: drawing, end: panelStart });
+    performance.measure(`${FRAME}:panel`, { start: panelStart });
     performance.measure(FRAME, { start });
   }
 

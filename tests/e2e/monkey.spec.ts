@@ -54,32 +54,34 @@ async function picture(page: Page): Promise<string[]> {
 const fields = (page: Page) =>
   Object.fromEntries(Object.entries(hashState(page)).filter(([k]) => !k.startsWith('view.')));
 
-/**
- * Found by this test on 2026-11-22 and not yet fixed (see the closing note of
- * stop 16): each is a real defect to fix, not a tolerance to keep.
- */
-const KNOWN: Record<string, string> = {
-  'b-splines': 'a frame of 57 ms (knot-strip and NURBS scenes)',
-};
-
 for (const [index, slug] of slugs.entries()) {
   test(`${slug}: ${EVENTS} random events leave no error, no long frame, no broken number, and a faithful link`, async ({
     page,
     context,
   }) => {
-    test.fixme(slug in KNOWN, KNOWN[slug]);
     test.setTimeout(120_000);
     const rand = seededRandom(0xbeef + index);
     const pick = <T>(list: readonly T[]): T => list[Math.floor(rand() * list.length)];
     await page.goto(`./#/${slug}`);
     await settled(page);
     await page.evaluate(() => {
-      const store = window as unknown as { longFrames: number[] };
+      // Each long frame with its parts (measured just before it), to say where it went.
+      const store = window as unknown as { longFrames: string[] };
       store.longFrames = [];
+      const parts: Record<string, number> = {};
       new PerformanceObserver((list) => {
-        for (const entry of list.getEntries())
-          if (entry.name === 'spline-lab:frame' && entry.duration > 50)
-            store.longFrames.push(Math.round(entry.duration));
+        // In the order they ended: a frame's parts end before the frame does.
+        const entries = list
+          .getEntries()
+          .sort((a, b) => a.startTime + a.duration - (b.startTime + b.duration));
+        for (const entry of entries) {
+          const part = /^spline-lab:frame:(\w+)$/.exec(entry.name);
+          if (part) parts[part[1]] = Math.round(entry.duration);
+          else if (entry.name === 'spline-lab:frame' && entry.duration > 50)
+            store.longFrames.push(
+              `${Math.round(entry.duration)} ms (fit ${parts.fit}, typeset ${parts.typeset}, model ${parts.derive}, figures ${parts.figures}, panel ${parts.panel})`,
+            );
+        }
       }).observe({ type: 'measure' });
     });
     const canvases = page.locator('canvas[data-figure]');
@@ -135,7 +137,7 @@ for (const [index, slug] of slugs.entries()) {
     await settled(page);
 
     const longFrames = await page.evaluate(
-      () => (window as unknown as { longFrames: number[] }).longFrames,
+      () => (window as unknown as { longFrames: string[] }).longFrames,
     );
     expect(longFrames, `${slug}: frames over 50 ms`).toEqual([]);
     const text = await page.locator('.lesson-page').innerText();
