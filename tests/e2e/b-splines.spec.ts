@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { bsplineBasis } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const numbers = (page: Page) => page.getByRole('table', { name: 'Numbers of the curve' });
 /** The value cell of a row of the Numbers table. */
@@ -27,7 +27,7 @@ test('local control: moving one point changes only its segments of the uniform c
   await expect(value(page, /^segments changed/)).toHaveText('4 of 7');
   await page.getByRole('button', { name: /new “before”/ }).click();
   await expect(value(page, /^segments changed/)).toHaveText('0 of 7');
-  const before = hashState(page).p;
+  const before = (await linkState(page)).p;
   await page.getByRole('button', { name: /^x9 at/ }).focus();
   await page.keyboard.press('ArrowUp');
   await expectHash(page, 'p', (v) => v !== before);
@@ -39,7 +39,7 @@ test('clamped knots interpolate the end points; a knot of multiplicity p passes 
   page,
 }) => {
   await openScene(page, 'Clamped ends', 'clamped');
-  const p = list(hashState(page).p);
+  const p = list((await linkState(page)).p);
   await expect(value(page, /^curve start/)).toHaveText(/\(/);
   const start = point(await value(page, /^curve start/).innerText());
   const end = point(await value(page, /^curve end/).innerText());
@@ -74,7 +74,7 @@ test('the Cox–de Boor triangle: its last row sums to 1 and matches bsplineBasi
   await openScene(page, 'Knots and Cox–de Boor', 'knots');
   await page.keyboard.press('End');
   await expectHash(page, 'k', (v) => v === '6');
-  const knots = hashState(page).u.split(',').map(Number);
+  const knots = (await linkState(page)).u.split(',').map(Number);
   const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
     name: /^N\(i,3\)/,
   });
@@ -119,8 +119,8 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
   await number.fill('0.5');
   await number.press('Enter');
   await expectHash(page, 't', (v) => v === '0.5');
-  const p = list(hashState(page).p);
-  expect(hashState(page).w).toBe('1,1,4,1,1,0.25,1');
+  const p = list((await linkState(page)).p);
+  expect((await linkState(page)).w).toBe('1,1,4,1,1,0.25,1');
   // Clamped uniform knots 0,0,0,0,¼,½,¾,1,1,1,1: at the knot ½ Cox–de Boor gives
   // N2 = 1/6, N3 = 2/3, N4 = 1/6 (by hand), so with w2 = 4, w4 = 1:
   // C(½) = (4·x2 + 4·w3·x3 + x4) / (5 + 4·w3).
@@ -150,7 +150,7 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
   await page.mouse.move(cx + 1.8 * unit, cy, { steps: 8 });
   await page.mouse.up();
   await expectHash(page, 'w', (v) => v !== '1,1,4,1,1,0.25,1');
-  const w = hashState(page).w.split(',').map(Number);
+  const w = (await linkState(page)).w.split(',').map(Number);
   // A radius of 1.8 units is 0.3 + 0.7·√w: w = (1.5/0.7)² ≈ 4.59 (to a pixel's worth).
   expect(Math.abs(w[3] - 4.59)).toBeLessThan(0.2);
   expect(w.filter((_, i) => i !== 3)).toEqual([1, 1, 4, 1, 0.25, 1]);

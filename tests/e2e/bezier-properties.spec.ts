@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { bezierPoint, elevateDegree, type Point } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="experiment"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
@@ -64,7 +64,7 @@ test('raising the degree keeps the curve within 1e-9 and brings the polygon clos
   }
   for (let j = 1; j < gaps.length; j++) expect(gaps[j]).toBeLessThan(gaps[j - 1]);
   // The same check on our own: the points in the link, elevated six times, sample the same curve.
-  const p = pointsOf(hashState(page).p);
+  const p = pointsOf((await linkState(page)).p);
   let q: readonly Point[] = p;
   for (let j = 0; j < 6; j++) q = elevateDegree(q);
   expect(q).toHaveLength(10);
@@ -93,15 +93,15 @@ test('moving an inner point of twelve barely moves the curve, and "before" survi
   ).toBeVisible();
   // The link is written shortly after a change: wait for the preset's "before" to be in it.
   await expectHash(page, 'q', (v) => v.split(';').length === 12);
-  const before = hashState(page).q;
+  const before = (await linkState(page)).q;
   const p5 = page.getByRole('button', { name: /^P5 at/ });
   await p5.focus();
   await page.keyboard.press('Shift+ArrowUp');
   await expectHash(page, 'p', (v) => pointsOf(v)[5][1] > pointsOf(before)[5][1] + 2);
-  expect(hashState(page).q).toBe(before);
+  expect((await linkState(page)).q).toBe(before);
   const text = await page.getByText(/Largest displacement of the curve/).innerText();
   const largest = Number(/curve: ([\d.]+)/.exec(text)![1]);
-  const moved = pointsOf(hashState(page).p)[5][1] - pointsOf(before)[5][1];
+  const moved = pointsOf((await linkState(page)).p)[5][1] - pointsOf(before)[5][1];
   // W(11, 5, 5/11) ≈ 0.236: the curve moves less than a quarter of the point.
   expect(largest / moved).toBeGreaterThan(0.23);
   expect(largest / moved).toBeLessThan(0.24);

@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { naturalCubicDerivatives } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const scene = (page: Page, name: string) =>
   page.getByRole('group', { name: 'Scenes' }).getByRole('button', { name, exact: true });
@@ -53,7 +53,7 @@ test('the solved (3n+1) system gives the natural cubic spline’s control points
   const residual = Number(await page.locator('output[aria-label="Residual"]').textContent());
   expect(residual).toBeLessThan(1e-9);
 
-  const p = points(hashState(page).p);
+  const p = points((await linkState(page)).p);
   const solved = await page
     .getByRole('table', { name: 'Solved control points' })
     .locator('tbody tr')
@@ -93,7 +93,7 @@ test('dragging a point in one cell of the 3 × 3 grid moves it in the other cell
 }) => {
   await scene(page, 'C⁰ · C¹ · C² grid').click();
   await page.keyboard.press('End');
-  const before = hashState(page);
+  const before = await linkState(page);
   const handle = (cell: string) =>
     page.locator(`[data-figure="${cell}"]`).getByRole('button', { name: /^p2 at/ });
   await handle('spi-c1').focus();
@@ -102,7 +102,7 @@ test('dragging a point in one cell of the 3 × 3 grid moves it in the other cell
   const name = await handle('spi-c1').getAttribute('aria-label');
   await expect(handle('spi-c0')).toHaveAttribute('aria-label', name!);
   await expect(handle('spi-c2')).toHaveAttribute('aria-label', name!);
-  expect(hashState(page).inf ?? '').toBe(before.inf ?? '');
+  expect((await linkState(page)).inf ?? '').toBe(before.inf ?? '');
   await snapshot(page, 'bezier-splines-grid');
 });
 

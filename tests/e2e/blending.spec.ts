@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
 const plot = (page: Page) => page.locator('canvas[data-figure="blending"]');
@@ -44,7 +44,7 @@ test('dragging the plot cursor changes μ, the weights and the curve figure; the
   await page.mouse.move(x + 90, y + 40, { steps: 6 });
   await page.mouse.up();
   await expectHash(page, 'mu', (v) => Number(v) > 0.55);
-  const mu = Number(hashState(page).mu);
+  const mu = Number((await linkState(page)).mu);
   await expect(page.getByRole('slider', { name: 'μ' })).toHaveValue(String(Number(mu.toFixed(2))));
   const after = await listedWeights(page);
   expect(after).not.toEqual(before);
@@ -75,7 +75,7 @@ test('the cursor moves with the keyboard, and the weights of every degree sum to
   await expectHash(page, 'mu', (v) => Number(v) > 0.5);
   await page.keyboard.press('ArrowUp');
   // Up and down do not move μ: the cursor only slides along the μ axis.
-  const mu = hashState(page).mu;
+  const mu = (await linkState(page)).mu;
   await page.keyboard.press('ArrowLeft');
   await expectHash(page, 'mu', (v) => Number(v) < Number(mu));
   const add = page.getByRole('button', { name: 'N + 1: add a control point' });
@@ -195,7 +195,7 @@ test('every scene opens at step 0 and ends with everything drawn, walked with th
     await snapshot(page, `blending-projector-${id}-first`);
     await page.keyboard.press('End');
     // N + 1 weights, P(μ), the curve, and the comparison if there is one: at most 20 steps.
-    const n = hashState(page).p.split(';').length - 1;
+    const n = (await linkState(page)).p.split(';').length - 1;
     const compared = ['hermite', 'bspline', 'lagrange'].includes(id) ? 1 : 0;
     await expectHash(page, 'step', (v) => v === String(n + 3 + compared));
     await expect(status).toHaveText(/^Step (\d+)\/\1:/);

@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { bezierArcLength, bezierCurvature, catmullRomSegments } from '../../src/math';
-import { expect, expectHash, hashState, settled, snapshot, test } from './fixtures';
+import { expect, expectHash, settled, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page, id: string) => page.locator(`canvas[data-figure="${id}"]`);
 /** The value cell of a row of the panel's table, as a number. */
@@ -12,10 +12,8 @@ const value = async (page: Page, quantity: string) =>
       .nth(1)
       .textContent(),
   );
-const controlPoints = (page: Page) =>
-  hashState(page)
-    .p.split(';')
-    .map((p) => p.split(',').map(Number));
+const controlPoints = async (page: Page) =>
+  (await linkState(page)).p.split(';').map((p) => p.split(',').map(Number));
 
 test.beforeEach(async ({ page }) => {
   await page.goto('./#/curvature?step=4&t=0.3');
@@ -26,8 +24,8 @@ test('the osculating circle has radius 1/|κ|, κ as bezierCurvature gives it, a
   page,
 }) => {
   const check = async () => {
-    const t = Number(hashState(page).t);
-    const kappa = bezierCurvature(controlPoints(page), t);
+    const t = Number((await linkState(page)).t);
+    const kappa = bezierCurvature(await controlPoints(page), t);
     await expect.poll(() => value(page, 'κ')).toBeCloseTo(kappa, 10);
     await expect.poll(() => value(page, 'R = 1/|κ|')).toBeCloseTo(1 / Math.abs(kappa), 10);
   };
@@ -49,7 +47,7 @@ test('on the helix the page shows κ and τ equal to a/(a² + b²) and b/(a² + 
   await page.getByRole('button', { name: 'The Frenet frame of a helix' }).click();
   await expectHash(page, 'part', (v) => v === 'space');
   const check = async () => {
-    const { a, b } = hashState(page);
+    const { a, b } = await linkState(page);
     const [ra, rb] = [Number(a), Number(b)];
     await expect.poll(() => value(page, 'κ')).toBeCloseTo(ra / (ra * ra + rb * rb), 9);
     await expect.poll(() => value(page, 'τ')).toBeCloseTo(rb / (ra * ra + rb * rb), 9);
@@ -78,7 +76,7 @@ test('equal steps of arc length: the table’s t(sᵢ) give s = iL/n', async ({ 
   await expectHash(page, 'part', (v) => v === 'arc');
   const table = page.getByRole('table', { name: 'Arc length table' });
   await expect(table.locator('tbody tr')).toHaveCount(9);
-  const p = controlPoints(page);
+  const p = await controlPoints(page);
   const length = bezierArcLength(p);
   for (const i of [1, 4, 7]) {
     const cells = table.locator(`tr[data-quantity="row ${i}"] td`);
@@ -105,7 +103,7 @@ test('every scene in presenter view, stepped by the clicker; the space view from
     await expectHash(page, 'step', (v) => Number(v) >= 5);
     await snapshot(page, `curvature-presenter-${id}`);
     if (id === 'twisted') {
-      const before = hashState(page)['view.space'] ?? '';
+      const before = (await linkState(page))['view.space'] ?? '';
       await page.keyboard.press(']');
       await page.keyboard.press('}');
       await expectHash(page, 'view.space', (v) => v !== '' && v !== before);
@@ -130,8 +128,8 @@ test('a de Casteljau curve opens here through its link: the same control points,
   await page.getByRole('link', { name: 'Curvature of this curve →' }).click();
   await expect(page).toHaveURL(/#\/curvature\?/);
   await settled(page);
-  expect(hashState(page).src).toBe('bezier');
-  expect(controlPoints(page)).toEqual(p);
+  expect((await linkState(page)).src).toBe('bezier');
+  expect(await controlPoints(page)).toEqual(p);
   // Each handle names its place, two decimals: "P3 at (5.00, 1.00)".
   for (const [i, q] of p.entries())
     await expect(
@@ -151,9 +149,9 @@ test('a Catmull-Rom spline: κ on the piece under the cursor, and its joins name
 }) => {
   await page.getByRole('button', { name: 'A Catmull-Rom spline: κ jumps at its C¹ joins' }).click();
   await expectHash(page, 'src', (v) => v === 'catmull-rom');
-  const p = controlPoints(page);
+  const p = await controlPoints(page);
   const segments = catmullRomSegments(p, 0);
-  const t = Number(hashState(page).t);
+  const t = Number((await linkState(page)).t);
   // Global s = pieces·t: piece i = ⌊s⌋, local u = s − i.
   const s = segments.length * t;
   const i = Math.min(Math.floor(s), segments.length - 1);

@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="construction"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
@@ -26,7 +26,7 @@ test('a point is dragged, added and removed, and undo brings each back', async (
   await page.mouse.move(x + 40, y + 60, { steps: 5 });
   await page.mouse.up();
   await expectHash(page, 'p', (v) => v.split(';')[1] !== '1,2');
-  const [p0, p1] = hashState(page).p.split(';');
+  const [p0, p1] = (await linkState(page)).p.split(';');
   expect(p0).toBe('0,0');
   expect(Number(p1.split(',')[0])).toBeGreaterThan(1);
   expect(Number(p1.split(',')[1])).toBeLessThan(2);

@@ -1,4 +1,4 @@
-import { expect, hashState, lessonSlugs, settled, test } from './fixtures';
+import { expect, lessonSlugs, settled, test, linkState } from './fixtures';
 
 test('a moved view is part of the link and opens exactly as shared', async ({ page }) => {
   await page.goto('./#/de-casteljau');
@@ -63,18 +63,18 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
   await pull(80);
   await settled(page);
   // Right takes the last of the stack: P1 left the origin, P0 stayed.
-  expect(at('P0')(hashState(page).p)).toBe(true);
-  expect(at('P1')(hashState(page).p)).toBe(false);
+  expect(at('P0')((await linkState(page)).p)).toBe(true);
+  expect(at('P1')((await linkState(page)).p)).toBe(false);
   await expect(p0).toHaveAccessibleName('P0 at (0.00, 0.00)');
   await expect(p1).not.toHaveAccessibleName(/\(0\.00, 0\.00\)/);
   await page.keyboard.press('Control+z');
   await settled(page);
-  expect(hashState(page).p).toBe('0,0;0,0;3,2;4,0');
+  expect((await linkState(page)).p).toBe('0,0;0,0;3,2;4,0');
   await pull(-80);
   await settled(page);
   // Left takes the first: P0 left, P1 stayed.
-  expect(at('P0')(hashState(page).p)).toBe(false);
-  expect(at('P1')(hashState(page).p)).toBe(true);
+  expect(at('P0')((await linkState(page)).p)).toBe(false);
+  expect(at('P1')((await linkState(page)).p)).toBe(true);
   await expect(p1).toHaveAccessibleName('P1 at (0.00, 0.00)');
 });
 

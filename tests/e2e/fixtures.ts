@@ -86,3 +86,13 @@ export async function lessonSlugs(page: Page): Promise<string[]> {
     .locator('a.card')
     .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
 }
+
+/**
+ * The state in the link once the page has settled. The link is written
+ * shortly after a change: read straight after an action it may still hold the
+ * state before it (stop 17's CI failed on exactly that).
+ */
+export async function linkState(page: Page): Promise<Record<string, string>> {
+  await settled(page);
+  return hashState(page);
+}

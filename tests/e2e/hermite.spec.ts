@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, hashState, snapshot, test, linkState } from './fixtures';
 
 const patches = (page: Page) => page.locator('canvas[data-figure="patches"]');
 const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');
@@ -25,7 +25,7 @@ async function coefficients(page: Page): Promise<number[][]> {
 
 /** Equation 7 read back: a0 = P_i, a1 = D_i, Σ a_k = P_i+1, a1 + 2a2 + 3a3 = D_i+1 (to the 4 decimals shown). */
 async function expectEquation7(page: Page, i: number, D: number[][]) {
-  const p = list(hashState(page).p);
+  const p = list((await linkState(page)).p);
   await expect
     .poll(async () => {
       const [a0, a1, a2, a3] = await coefficients(page);
@@ -49,7 +49,7 @@ test.beforeEach(async ({ page }) => {
 test('dragging a gradient tip sets D = 3 × (tip − P), and the matrix solve follows', async ({
   page,
 }) => {
-  await expectEquation7(page, 0, list(hashState(page).d));
+  await expectEquation7(page, 0, list((await linkState(page)).d));
   const before = await pixels(page);
   const tip = page.getByRole('button', { name: /^D0 at \(1\.00, 1\.50\)/ });
   const box = (await tip.boundingBox())!;
@@ -67,7 +67,7 @@ test('dragging a gradient tip sets D = 3 × (tip − P), and the matrix solve fo
     return `D0 at (${(d[0] / 3).toFixed(2)}, ${(d[1] / 3).toFixed(2)})`;
   };
   await expect.poll(() => page.getByRole('button', { name: tipName() }).count()).toBe(1);
-  const D = list(hashState(page).d);
+  const D = list((await linkState(page)).d);
   expect(D[0][0]).toBeGreaterThan(3);
   expect(D[0][1]).toBeGreaterThan(4.5);
   await expectEquation7(page, 0, D);
@@ -79,8 +79,8 @@ test('a gradient tip moves with the keyboard too', async ({ page }) => {
   await page.getByRole('button', { name: /^D1 at/ }).focus();
   await page.keyboard.press('ArrowUp');
   await expectHash(page, 'd', (v) => v.split(';')[1] !== '3,-4.5');
-  expect(list(hashState(page).d)[1][1]).toBeGreaterThan(-4.5);
-  await expectEquation7(page, 0, list(hashState(page).d));
+  expect(list((await linkState(page)).d)[1][1]).toBeGreaterThan(-4.5);
+  await expectEquation7(page, 0, list((await linkState(page)).d));
 });
 
 test('the basis cursor shows H0…H3 at μ and what each weighs', async ({ page }) => {
@@ -118,7 +118,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
     await expect(row).toContainText(/C1|C2/);
   }
   // D2 = (P3 − P1) / 2 = ((6.5 − 2) / 2, (−1 − 2) / 2), drawn at P2 + D2/3.
-  const p = list(hashState(page).p);
+  const p = list((await linkState(page)).p);
   const tip = [p[2][0] + (p[3][0] - p[1][0]) / 6, p[2][1] + (p[3][1] - p[1][1]) / 6];
   await expect(
     page.getByRole('button', { name: `D2 at (${tip[0].toFixed(2)}, ${tip[1].toFixed(2)})` }),
@@ -174,12 +174,12 @@ test('the Bézier view lists B0…B3 at P ± D/3', async ({ page }) => {
 test('points can be added and removed, gradients with them', async ({ page }) => {
   await page.getByRole('button', { name: 'Add a point' }).click();
   await expectHash(page, 'p', (v) => v.split(';').length === 3);
-  expect(hashState(page).d.split(';').length).toBe(3);
+  expect((await linkState(page)).d.split(';').length).toBe(3);
   await expect(page.getByRole('table', { name: 'Joins' })).toBeVisible();
   await page.getByRole('button', { name: /^P2 at/ }).focus();
   await page.keyboard.press('Delete');
   await expectHash(page, 'p', (v) => v.split(';').length === 2);
-  expect(hashState(page).d.split(';').length).toBe(2);
+  expect((await linkState(page)).d.split(';').length).toBe(2);
 });
 
 test('a link with too few gradients is repaired and says so', async ({ page }) => {

@@ -1,5 +1,5 @@
 import type { Locator, Page } from '@playwright/test';
-import { expect, expectHash, hashState, settled, test } from './fixtures';
+import { expect, expectHash, settled, test, linkState } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="construction"]');
 
@@ -66,7 +66,7 @@ for (const type of ['touch', 'pen'] as const) {
       [x + 64, y + 40],
     ]);
     await expectHash(page, 'p', (v) => v.split(';')[1] !== '1,2');
-    const [px, py] = hashState(page).p.split(';')[1].split(',').map(Number);
+    const [px, py] = (await linkState(page)).p.split(';')[1].split(',').map(Number);
     expect(px).toBeGreaterThan(1);
     expect(py).toBeLessThan(2);
   });
@@ -80,7 +80,7 @@ test('a mouse 24 px from a point pans instead of grabbing it', async ({ page }) 
   await page.mouse.move(x + 64, y + 40, { steps: 4 });
   await page.mouse.up();
   await expect.poll(async () => (await centre(p1))[0]).toBeCloseTo(x + 40, 0);
-  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+  expect((await linkState(page)).p).toBe('0,0;1,2;3,2;4,0');
 });
 
 test('a long press on empty space adds a point; a short one does not', async ({ page }) => {
@@ -91,7 +91,7 @@ test('a long press on empty space adds a point; a short one does not', async ({ 
   // The long press added one point; had the short one added one too, there would be six.
   await expectHash(page, 'p', (v) => v.split(';').length >= 5);
   await settled(page);
-  expect(hashState(page).p.split(';')).toHaveLength(5);
+  expect((await linkState(page)).p.split(';')).toHaveLength(5);
 });
 
 test('dragging empty space pans the view and the wheel zooms it, without touching the state', async ({
@@ -117,7 +117,7 @@ test('dragging empty space pans the view and the wheel zooms it, without touchin
   const before = await centre(p2);
   await page.keyboard.press('0');
   await expect.poll(async () => (await centre(p2))[0]).not.toBeCloseTo(before[0], 0);
-  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+  expect((await linkState(page)).p).toBe('0,0;1,2;3,2;4,0');
 });
 
 test('two fingers pinch to zoom the figure', async ({ page }) => {
@@ -146,7 +146,7 @@ test('two fingers pinch to zoom the figure', async ({ page }) => {
   await cdp.detach();
   // Fingers twice as far apart: the figure twice as large.
   await expect.poll(span).toBeCloseTo(before * 2, -1);
-  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
+  expect((await linkState(page)).p).toBe('0,0;1,2;3,2;4,0');
 });
 
 test('moving a point by keyboard is announced to screen readers', async ({ page }) => {
@@ -154,7 +154,7 @@ test('moving a point by keyboard is announced to screen readers', async ({ page 
   await page.keyboard.press('ArrowLeft');
   await settled(page);
   // One key step left: x a little under 4 (the step follows the zoom), y kept.
-  const [x, y] = hashState(page).p.split(';')[3].split(',').map(Number);
+  const [x, y] = (await linkState(page)).p.split(';')[3].split(',').map(Number);
   expect(x).toBeLessThan(4);
   expect(x).toBeGreaterThan(3.4);
   expect(y).toBe(0);
@@ -169,12 +169,12 @@ test('Play animates t and respects reduced motion with calm jumps', async ({ pag
   await page.getByRole('button', { name: 'Pause' }).click();
   await settled(page);
   // Calm jumps of a tenth of the range from 0.4, not a continuous glide.
-  const t = Number(hashState(page).t);
+  const t = Number((await linkState(page)).t);
   const jumps = (t < 0.4 ? t + 1 - 0.4 : t - 0.4) / 0.1;
   expect(Math.abs(jumps - Math.round(jumps))).toBeLessThan(1e-9);
   // Paused: a jump's time later, t has not moved.
   await page.waitForTimeout(1100);
-  expect(Number(hashState(page).t)).toBe(t);
+  expect(Number((await linkState(page)).t)).toBe(t);
 });
 
 test.describe('with motion allowed', () => {
@@ -238,7 +238,7 @@ test.describe('with motion allowed', () => {
     // Pause: the state is final and in the link, and stays.
     await page.getByRole('button', { name: 'Pause' }).click();
     await settled(page);
-    const t = Number(hashState(page).t);
+    const t = Number((await linkState(page)).t);
     const after = await sample(page, 10);
     expect(after.every(([, v]) => v === after[0][1])).toBe(true);
     expect(Math.abs(after[0][1] - t)).toBeLessThanOrEqual(0.0005 + 1e-12);

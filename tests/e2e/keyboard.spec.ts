@@ -4,7 +4,7 @@
  * keys, and the clicker keys step the construction from wherever Tab left the
  * focus. No pointer is used after the page opens.
  */
-import { expect, hashState, lessonFolders, settled, test } from './fixtures';
+import { expect, lessonFolders, settled, test, linkState } from './fixtures';
 
 const slugs = lessonFolders();
 
@@ -51,7 +51,7 @@ for (const slug of slugs) {
 
     const reached = new Set<string>();
     await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
-    const before = hashState(page);
+    const before = await linkState(page);
     for (let press = 0; press < wanted.length * 2 + 20 && reached.size < wanted.length; press++) {
       await page.keyboard.press('Tab');
       const name = await page.evaluate(
@@ -65,7 +65,7 @@ for (const slug of slugs) {
     ).toEqual([]);
     // Walking changes nothing.
     await settled(page);
-    expect(hashState(page)).toEqual(before);
+    expect(await linkState(page)).toEqual(before);
 
     // A point, reached by Tab, moves by its arrow keys (its label says where it is).
     const point = page.locator('.handle-proxy').first();
@@ -78,24 +78,24 @@ for (const slug of slugs) {
     await page.keyboard.press('ArrowRight');
     await settled(page);
     expect(await point.getAttribute('aria-label'), `${slug}: the point moved`).not.toBe(label);
-    expect(hashState(page), `${slug}: the move is in the link`).not.toEqual(before);
+    expect(await linkState(page), `${slug}: the move is in the link`).not.toEqual(before);
     await page.keyboard.press('Control+z');
     await settled(page);
-    expect(hashState(page), `${slug}: undo takes the move back`).toEqual(before);
+    expect(await linkState(page), `${slug}: undo takes the move back`).toEqual(before);
 
     // The clicker steps from here (focus still on the point), and back.
     await page.keyboard.press('End');
     await settled(page);
-    const last = hashState(page);
+    const last = await linkState(page);
     await page.keyboard.press('Home');
     await settled(page);
-    const first = hashState(page);
+    const first = await linkState(page);
     expect(first, `${slug}: Home and End are different steps`).not.toEqual(last);
     await page.keyboard.press('PageDown');
     await settled(page);
-    expect(hashState(page), `${slug}: PageDown took a step`).not.toEqual(first);
+    expect(await linkState(page), `${slug}: PageDown took a step`).not.toEqual(first);
     await page.keyboard.press('PageUp');
     await settled(page);
-    expect(hashState(page), `${slug}: PageUp took it back`).toEqual(first);
+    expect(await linkState(page), `${slug}: PageUp took it back`).toEqual(first);
   });
 }

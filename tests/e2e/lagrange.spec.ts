@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, hashState, snapshot, test, linkState } from './fixtures';
 
 const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
 const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');
@@ -41,9 +41,7 @@ test('chord-length spacing gives t_k by the lengths of the polygon', async ({ pa
   const before = await pixels(page);
   await page.getByLabel(/^Chord length/).check();
   await expectHash(page, 'spacing', (v) => v === 'chord');
-  const p = hashState(page)
-    .p.split(';')
-    .map((q) => q.split(',').map(Number));
+  const p = (await linkState(page)).p.split(';').map((q) => q.split(',').map(Number));
   const gaps = p.slice(1).map((q, i) => Math.hypot(q[0] - p[i][0], q[1] - p[i][1]));
   const total = gaps.reduce((a, b) => a + b, 0);
   const t2 = (gaps[0] + gaps[1]) / total;

@@ -6,7 +6,7 @@
  * from the link and the DOM, never from the app's own verdicts.
  */
 import type { Locator, Page } from '@playwright/test';
-import { expect, hashState, lessonFolders, settled, snapshot, test } from './fixtures';
+import { expect, hashState, lessonFolders, settled, snapshot, test, linkState } from './fixtures';
 
 const slugs = lessonFolders();
 
@@ -167,15 +167,15 @@ test('undo is for edits: it restores the point and keeps the step', async ({ pag
   await point.focus();
   await page.keyboard.press('ArrowRight');
   await settled(page);
-  const moved = hashState(page).p;
+  const moved = (await linkState(page)).p;
   expect(moved).not.toBe('0,0;1,2;3,2;4,0');
   await page.keyboard.press('PageDown');
   await settled(page);
-  expect(hashState(page).step).toBe('2');
+  expect((await linkState(page)).step).toBe('2');
   await page.keyboard.press('Control+z');
   await settled(page);
-  expect(hashState(page).p).toBe('0,0;1,2;3,2;4,0');
-  expect(hashState(page).step).toBe('2');
+  expect((await linkState(page)).p).toBe('0,0;1,2;3,2;4,0');
+  expect((await linkState(page)).step).toBe('2');
 });
 
 test('past the last step the clicker opens the next scene at its first step, and the link says which', async ({
@@ -185,12 +185,12 @@ test('past the last step the clicker opens the next scene at its first step, and
   await page.locator('button[data-scene]').first().click();
   await page.keyboard.press('End');
   await settled(page);
-  const first = hashState(page).scene;
+  const first = (await linkState(page)).scene;
   await page.keyboard.press('PageDown');
   await settled(page);
-  const second = hashState(page).scene;
+  const second = (await linkState(page)).scene;
   expect(second).not.toBe(first);
-  expect(hashState(page).step).toBe('0');
+  expect((await linkState(page)).step).toBe('0');
   await expect(page.locator(`button[data-scene="${second}"]`)).toHaveAttribute(
     'aria-pressed',
     'true',
@@ -198,10 +198,10 @@ test('past the last step the clicker opens the next scene at its first step, and
   // Back again: the first scene at its last step, as it was left.
   await page.keyboard.press('PageUp');
   await settled(page);
-  expect(hashState(page).scene).toBe(first);
+  expect((await linkState(page)).scene).toBe(first);
   await page.reload();
   await settled(page);
-  expect(hashState(page).scene).toBe(first);
+  expect((await linkState(page)).scene).toBe(first);
 });
 
 test.describe('on a phone', () => {

@@ -1,14 +1,12 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="quadratic"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
 
 /** The points of the link, as numbers. */
-const points = (page: Page) =>
-  hashState(page)
-    .p.split(';')
-    .map((q) => q.split(',').map(Number));
+const points = async (page: Page) =>
+  (await linkState(page)).p.split(';').map((q) => q.split(',').map(Number));
 
 /** a0, a1, a2 as the page prints them in the "all digits" table. */
 async function coefficients(page: Page): Promise<number[][]> {
@@ -29,7 +27,7 @@ async function expectThroughP1(page: Page, mu: number) {
   const slider = page.getByRole('slider', { name: 'μ₁' });
   await slider.fill(String(mu));
   await expectHash(page, 'mu', (v) => v === String(mu));
-  const p1 = points(page)[1];
+  const p1 = (await points(page))[1];
   // The table is redrawn on the next frame: its last row names the new μ1.
   const table = page.getByRole('table', { name: 'Coefficients, all digits' });
   await expect(table.getByRole('row', { name: new RegExp(`^P\\(${mu}\\) `) })).toBeVisible();
@@ -58,8 +56,8 @@ test('the μ1 slider and a moved point change the curve, and P(μ1) stays P1', a
   const second = await expectThroughP1(page, 0.72);
   expect(second[2]).not.toEqual(first[2]);
   // a0 = P0 whatever μ1 is; a1 + a2 = P2 − P0.
-  expect(second[0]).toEqual(points(page)[0]);
-  const [p0, , p2] = points(page);
+  expect(second[0]).toEqual((await points(page))[0]);
+  const [p0, , p2] = await points(page);
   for (const d of [0, 1]) expect(second[1][d] + second[2][d]).toBeCloseTo(p2[d] - p0[d], 9);
   expect(await pixels(page)).not.toBe(before);
   await expect(page.getByText(/Check:/).first()).toBeVisible();

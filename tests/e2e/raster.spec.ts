@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { chordDeviation, flatteningTree, type Point } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page, id: string) => page.locator(`canvas[data-figure="${id}"]`);
 const pixels = (page: Page, id: string) =>
@@ -37,7 +37,7 @@ test('adaptive flattening stays below the tolerance with fewer segments than uni
     expect(await numberOf(page, 'same', 'gap')).toBeLessThanOrEqual(gap);
     expect(adaptive).toBeLessThan(await numberOf(page, 'same', 'segments'));
     // The page's numbers are the maths' own, for the curve in the link (zoom 1: units are pixels).
-    const p = pointsOf(hashState(page).p);
+    const p = pointsOf((await linkState(page)).p);
     const leaves = flatteningTree(p, tol).filter((node) => !node.split);
     expect(adaptive).toBe(leaves.length);
     const own = chordDeviation(p, [0, ...leaves.map((node) => node.t1)]).distance;
@@ -136,7 +136,7 @@ test('moving a control point redraws both figures and keeps the numbers in step 
   await expectHash(page, 'p', (v) => pointsOf(v)[5][0] < 31);
   await expect.poll(() => pixels(page, 'side')).not.toBe(before[1]);
   expect(await pixels(page, 'curve')).not.toBe(before[0]);
-  const p = pointsOf(hashState(page).p);
+  const p = pointsOf((await linkState(page)).p);
   const leaves = flatteningTree(p, 0.5).filter((node) => !node.split);
   await expect.poll(() => numberOf(page, 'adaptive', 'segments')).toBe(leaves.length);
   // A link with the state opens the same picture and numbers.

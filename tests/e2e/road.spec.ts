@@ -1,13 +1,11 @@
 import type { Page } from '@playwright/test';
 import { naturalCubicDerivatives } from '../../src/math';
-import { expect, expectHash, hashState, snapshot, test } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const map = (page: Page) => page.locator('canvas[data-figure="map"]');
 const pixels = (page: Page) => map(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
-const villages = (page: Page) =>
-  hashState(page)
-    .v.split(';')
-    .map((p) => p.split(',').map(Number));
+const villages = async (page: Page) =>
+  (await linkState(page)).v.split(';').map((p) => p.split(',').map(Number));
 const swept = (page: Page) =>
   page.locator('table[aria-label="Tridiagonal system"] tr[data-swept="1"]');
 const fixed = (page: Page) =>
@@ -96,10 +94,10 @@ test('the overlay draws every answer with a legend, and each curve can be left o
 
 test('dragging a village changes the road and the link; undo puts it back', async ({ page }) => {
   const before = await pixels(page);
-  const start = hashState(page).v;
+  const start = (await linkState(page)).v;
   await drag(page, /^P2 at/, 30, -50);
   await expectHash(page, 'v', (v) => v !== start);
-  const p2 = villages(page)[2];
+  const p2 = (await villages(page))[2];
   expect(p2[0]).toBeGreaterThan(42);
   expect(p2[1]).toBeGreaterThan(10);
   expect(await pixels(page)).not.toBe(before);
@@ -113,20 +111,22 @@ test('the gradient handles move with Tab and the arrow keys', async ({ page }) =
   await q.focus();
   await page.keyboard.press('ArrowUp');
   await expectHash(page, 'q', (v) => v !== '30,0');
-  expect(Number(hashState(page).q.split(',')[1])).toBeGreaterThan(0);
+  expect(Number((await linkState(page)).q.split(',')[1])).toBeGreaterThan(0);
 
   await page.getByRole('radio', { name: 'Clamped ends: joining other roads' }).check();
-  const before = hashState(page).a;
+  const before = (await linkState(page)).a;
   await page.getByRole('button', { name: /^D0 at/ }).focus();
   await page.keyboard.press('Shift+ArrowDown');
   await expectHash(page, 'a', (v) => v !== before);
-  expect(Number(hashState(page).a.split(',')[1])).toBeLessThan(Number(before.split(',')[1]));
+  expect(Number((await linkState(page)).a.split(',')[1])).toBeLessThan(
+    Number(before.split(',')[1]),
+  );
 });
 
 test('the script: the villages, the system, one row swept per step, one D fixed per step, ending at naturalCubicDerivatives', async ({
   page,
 }) => {
-  const n = villages(page).length;
+  const n = (await villages(page)).length;
   const status = page.locator('.step-status');
   await expect(status).toHaveText(
     `Step 0/${2 * n + 1}: The ${n} villages P0 … P${n - 1}, in the order the road visits them`,
@@ -167,7 +167,7 @@ test('the script: the villages, the system, one row swept per step, one D fixed 
       await page.keyboard.press('p');
     }
   }
-  const v = villages(page);
+  const v = await villages(page);
   const expected = [0, 1].map((d) => naturalCubicDerivatives(v.map((p) => p[d])));
   for (let i = 0; i < n; i++) {
     const gradients = page.getByRole('table', { name: 'Gradients found' });
@@ -190,7 +190,7 @@ test('the ring road closes smoothly: the last segment meets the first with equal
   // The cyclic system, then the seven segments one a step: the whole ring at step 8.
   await page.keyboard.press('End');
   await expectHash(page, 'step', (v) => v === '8');
-  const n = villages(page).length;
+  const n = (await villages(page)).length;
   const slider = page.getByRole('slider', { name: 'p̄ along the road' });
   await slider.fill(String(n - 0.5));
   await expect(page.getByText(`Segment ${n - 1}: from P${n - 1} to P0`)).toBeVisible();
@@ -225,7 +225,7 @@ test('500 villages load from a short enough link and a drag completes', async ({
   await expect(
     page.getByRole('table', { name: 'Tridiagonal system' }).getByText(/494 more rows/),
   ).toBeVisible();
-  const before = hashState(page).v.split(';')[250];
+  const before = (await linkState(page)).v.split(';')[250];
   await drag(page, /^P250 at/, 25, 25);
   await expectHash(page, 'v', (v) => v.split(';')[250] !== before);
   // Reloading the link gives the same villages (the preset is seeded, not random).

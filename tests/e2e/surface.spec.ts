@@ -1,17 +1,16 @@
 import type { Page } from '@playwright/test';
 import { bezierSurfacePoint } from '../../src/math';
-import { expect, expectHash, hashState, settled, snapshot, test } from './fixtures';
+import { expect, expectHash, settled, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page) => page.locator('canvas[data-figure="patch"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
 
 /** The control net from the link: `x=` holds 16 points "x,y,z" row by row. */
-function netFromLink(page: Page): number[][][] {
-  const flat = hashState(page)
-    .x.split(';')
-    .map((p) => p.split(',').map(Number));
+function netOf(x: string): number[][][] {
+  const flat = x.split(';').map((p) => p.split(',').map(Number));
   return [0, 1, 2, 3].map((m) => flat.slice(4 * m, 4 * m + 4));
 }
+const netFromLink = async (page: Page) => netOf((await linkState(page)).x);
 
 /** A row of the "three ways" table, read from the page: [x, y, z]. */
 async function readPoint(page: Page, row: RegExp): Promise<number[]> {
@@ -27,8 +26,12 @@ async function readPoint(page: Page, row: RegExp): Promise<number[]> {
 async function expectPointMatches(page: Page): Promise<void> {
   await expect
     .poll(async () => {
-      const state = hashState(page);
-      const expected = bezierSurfacePoint(netFromLink(page), Number(state.u), Number(state.v));
+      const state = await linkState(page);
+      const expected = bezierSurfacePoint(
+        await netFromLink(page),
+        Number(state.u),
+        Number(state.v),
+      );
       const rows = [/^Σ/, /^u, then v/, /^v, then u/];
       const shown = await Promise.all(rows.map((row) => readPoint(page, row)));
       return shown.every((p) => p.every((value, d) => Math.abs(value - expected[d]) <= 1e-9));
@@ -77,7 +80,7 @@ test('Shift-dragging a control point moves it along one axis only', async ({ pag
   const box = (await handle.boundingBox())!;
   const x = box.x + box.width / 2;
   const y = box.y + box.height / 2;
-  const before = netFromLink(page)[1][1];
+  const before = (await netFromLink(page))[1][1];
   await page.mouse.move(x, y);
   await page.keyboard.down('Shift');
   await page.mouse.down();
@@ -85,8 +88,8 @@ test('Shift-dragging a control point moves it along one axis only', async ({ pag
   await page.mouse.move(x + 4, y - 70, { steps: 4 });
   await page.mouse.up();
   await page.keyboard.up('Shift');
-  await expectHash(page, 'x', () => netFromLink(page)[1][1][2] !== before[2]);
-  const after = netFromLink(page)[1][1];
+  await expectHash(page, 'x', (v) => netOf(v)[1][1][2] !== before[2]);
+  const after = (await netFromLink(page))[1][1];
   // Straight up the screen is the z axis: x and y keep their values exactly.
   expect(after[0]).toBe(before[0]);
   expect(after[1]).toBe(before[1]);
@@ -103,7 +106,7 @@ test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => 
   const cell = page.getByRole('textbox', { name: 'x2,1 (x, y, z)' });
   await cell.fill('2, 1, -1.25');
   await cell.press('Enter');
-  await expectHash(page, 'x', () => netFromLink(page)[2][1].join(',') === '2,1,-1.25');
+  await expectHash(page, 'x', (v) => netOf(v)[2][1].join(',') === '2,1,-1.25');
   await expect(
     page.getByRole('button', { name: /^x2,1 at \(2\.00, 1\.00, -1\.25\)/ }),
   ).toBeAttached();
