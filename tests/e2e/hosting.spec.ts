@@ -3,6 +3,9 @@ import { readFile } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import { expect, test } from './fixtures';
 
+// These tests are about the service worker (off for the other tests).
+test.use({ serviceWorkers: 'allow' });
+
 // dist/ must work from any static host, also below a sub-path.
 const PREFIX = '/courses/graphics/spline-lab/';
 const TYPES: Record<string, string> = {
