@@ -30,8 +30,14 @@ export const test = base.extend<{ watch: { errors: string[]; foreign: string[] }
 
 export { expect };
 
-/** Saves a screenshot as a test artifact under artifacts/screenshots/. */
+/**
+ * Saves a screenshot to look at, under artifacts/screenshots/, when the run
+ * asks for them (`npm run screenshots`). `npm test` compares each scene with
+ * its reviewed reference instead (pictures.spec.ts); writing these too cost
+ * about 0.3 s of CPU each, some 150 of them.
+ */
 export async function snapshot(page: Page, name: string): Promise<void> {
+  if (!process.env.SCREENSHOTS) return;
   mkdirSync('artifacts/screenshots', { recursive: true });
   await page.screenshot({ path: `artifacts/screenshots/${name}.png` });
 }
