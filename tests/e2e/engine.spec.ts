@@ -1,4 +1,4 @@
-import { expect, lessonSlugs, settled, test, linkState } from './fixtures';
+import { expect, settled, test, linkState } from './fixtures';
 
 test('a moved view is part of the link and opens exactly as shared', async ({ page }) => {
   await page.goto('./#/de-casteljau');
@@ -11,7 +11,9 @@ test('a moved view is part of the link and opens exactly as shared', async ({ pa
   await page.mouse.up();
   await page.mouse.move(box.x + 300, box.y + 200);
   await page.mouse.wheel(0, -240);
-  await expect.poll(() => new URL(page.url()).hash).toMatch(/view\.construction=/);
+  // The pan and the zoom both in the link (the pan alone may be written first).
+  await settled(page);
+  expect(new URL(page.url()).hash).toMatch(/view\.construction=/);
   const shared = await p1.boundingBox();
   const link = page.url();
   await page.goto('./#/');
@@ -76,26 +78,4 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
   expect(at('P0')((await linkState(page)).p)).toBe(false);
   expect(at('P1')((await linkState(page)).p)).toBe(true);
   await expect(p1).toHaveAccessibleName('P1 at (0.00, 0.00)');
-});
-
-test('live formulas show their numbers to screen readers too, on every lesson', async ({
-  page,
-}) => {
-  test.setTimeout(120_000);
-  for (const slug of await lessonSlugs(page)) {
-    await page.goto(`./#/${slug}`);
-    await settled(page);
-    // (A lesson's first formula may sit in a folded section: count, not look.)
-    expect(await page.locator('.katex').count(), `${slug}: typeset formulas`).toBeGreaterThan(0);
-    // Every preset, so formulas of every shape are typeset and filled in.
-    const presets = page.locator('[data-scene]');
-    for (let i = 0; i < (await presets.count()); i++) {
-      await presets.nth(i).click();
-      await settled(page);
-      const markers = await page
-        .locator('.katex')
-        .evaluateAll((all) => all.filter((k) => k.textContent?.includes('§')).length);
-      expect(markers, `${slug}, preset ${i + 1}: unfilled number slots`).toBe(0);
-    }
-  }
 });

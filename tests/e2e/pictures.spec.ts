@@ -4,6 +4,7 @@
  *
  * - no label covers another or leaves its figure, from the painter's own
  *   placement data (what each frame recorded), not from pixels;
+ * - every live formula has its numbers filled in (what a screen reader reads);
  * - the drawing matches its reviewed reference image (Playwright's
  *   toHaveScreenshot, with a small tolerance). The comparison is of the
  *   figures with their labels hidden (presenter key A): what is compared is
@@ -49,7 +50,7 @@ async function labelProblems(page: Page): Promise<string[]> {
 
 for (const slug of slugs) {
   for (const mode of ['normal', 'presenter'] as const) {
-    test(`${slug}, ${mode} view: every scene's labels stand clear and its drawing matches the reference`, async ({
+    test(`${slug}, ${mode} view: every scene's labels stand clear, its formulas are filled in and its drawing matches the reference`, async ({
       page,
     }) => {
       test.setTimeout(90_000);
@@ -70,6 +71,12 @@ for (const slug of slugs) {
         await page.mouse.move(0, 0);
         await settled(page);
         for (const problem of await labelProblems(page)) problems.push(`${id}: ${problem}`);
+        // Live formulas are filled in, for screen readers too: no number slot
+        // left as its marker (engine issue), whatever the shape of the scene's formulas.
+        const unfilled = await page
+          .locator('.katex')
+          .evaluateAll((all) => all.filter((k) => k.textContent?.includes('§')).length);
+        if (unfilled > 0) problems.push(`${id}: ${unfilled} formulas with unfilled number slots`);
         // The drawing, without the labels whose glyphs depend on the machine's fonts.
         await page.keyboard.press('a');
         await settled(page);
@@ -80,7 +87,9 @@ for (const slug of slugs) {
         });
         await page.keyboard.press('a');
       }
-      expect(problems, `${slug}, ${mode} view: labels`).toEqual([]);
+      // (A lesson's first formula may sit in a folded section: count, not look.)
+      expect(await page.locator('.katex').count(), `${slug}: typeset formulas`).toBeGreaterThan(0);
+      expect(problems, `${slug}, ${mode} view: labels and formulas`).toEqual([]);
     });
   }
 }
