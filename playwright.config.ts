@@ -39,10 +39,10 @@ export default defineConfig({
   // Frame-time tests run last and alone, so that they time the app and not a
   // second test sharing the two cores.
   projects: [
-    { name: 'browser', testIgnore: /(timing|monkey)\.spec\.ts$/ },
+    { name: 'browser', testIgnore: /monkey\.spec\.ts$/ },
     {
       name: 'timing',
-      testMatch: /(timing|monkey)\.spec\.ts$/,
+      testMatch: /monkey\.spec\.ts$/,
       dependencies: ['browser'],
       // One at a time: what they time is the app, not a second test.
       workers: 1,

@@ -1,9 +1,13 @@
 /**
- * A monkey on every lesson: a seeded random run of drags, wheel zooms far in
- * and out, keys and control clicks. Afterwards: no error (the fixture), no
- * frame over 50 ms, no NaN, Infinity or undefined in any text, and the state
- * round-trips through its link (the same state and, fitted, the same picture).
- * It runs in the "timing" project: alone, after the other browser tests.
+ * A monkey on every lesson, and the frame budget under the heaviest input.
+ * First the lesson's busiest preset is zoomed 40 notches in and out; then a
+ * seeded random run of drags, wheel zooms far in and out, keys and control
+ * clicks; last a link that sends a point a million units away. Throughout: no
+ * error (the fixture) and no frame over 50 ms; afterwards no NaN, Infinity or
+ * undefined in any text, and the state round-trips through its link (the same
+ * state and, fitted, the same picture). It runs in the "timing" project:
+ * alone, after the other browser tests, so that it times the app and not a
+ * second test sharing the two cores.
  */
 import type { Page } from '@playwright/test';
 import { seededRandom } from '../../src/math/seededRandom';
@@ -54,8 +58,82 @@ async function picture(page: Page): Promise<string[]> {
 const fields = (page: Page) =>
   Object.fromEntries(Object.entries(hashState(page)).filter(([k]) => !k.startsWith('view.')));
 
+/** Two frames drawn. */
+const nextFrame = (page: Page) =>
+  page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+/**
+ * Collects each frame over 50 ms with its parts (measured just before it, each
+ * figure's too), to say where its time went.
+ */
+async function watchLongFrames(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const store = window as unknown as { longFrames: string[]; frames: number };
+    store.longFrames = [];
+    store.frames = 0;
+    let parts: [string, number][] = [];
+    new PerformanceObserver((list) => {
+      // In the order they ended: a frame's parts end before the frame does.
+      const entries = list
+        .getEntries()
+        .sort((a, b) => a.startTime + a.duration - (b.startTime + b.duration));
+      for (const entry of entries) {
+        const part = /^spline-lab:frame:(.+)$/.exec(entry.name);
+        if (part) parts.push([part[1], Math.round(entry.duration)]);
+        if (entry.name !== 'spline-lab:frame') continue;
+        store.frames++;
+        if (entry.duration > 50)
+          store.longFrames.push(
+            `${Math.round(entry.duration)} ms (${parts.map(([k, v]) => `${k} ${v}`).join(', ')})`,
+          );
+        parts = [];
+      }
+    }).observe({ type: 'measure' });
+  });
+}
+
+/** The long frames seen since the last look (after checking that frames were measured at all). */
+async function longFrames(page: Page): Promise<string[]> {
+  const { frames, long } = await page.evaluate(() => {
+    const store = window as unknown as { longFrames: string[]; frames: number };
+    const seen = { frames: store.frames, long: store.longFrames };
+    store.longFrames = [];
+    return seen;
+  });
+  expect(frames, 'frames measured').toBeGreaterThan(0);
+  return long;
+}
+
+/** Opens the preset with the most movable points (the busiest figure). */
+async function openBusiestPreset(page: Page): Promise<void> {
+  const presets = page.locator('[data-scene]');
+  let best = -1;
+  let most = -1;
+  for (let i = 0; i < (await presets.count()); i++) {
+    await presets.nth(i).click();
+    await nextFrame(page);
+    const handles = await page.locator('.handle-proxy').count();
+    if (handles > most) [best, most] = [i, handles];
+  }
+  if (best >= 0) await presets.nth(best).click();
+  await settled(page);
+}
+
+/** The link with the last point of its first list of 2D points a million units away (or null). */
+function farLink(hash: string): string | null {
+  const far = hash.replace(
+    /=(-?[\d.]+,-?[\d.]+(?:;-?[\d.]+,-?[\d.]+)+)(?=&|$)/,
+    (_, list: string) => {
+      const points = list.split(';');
+      points[points.length - 1] = '1000000,-1000000';
+      return `=${points.join(';')}`;
+    },
+  );
+  return far === hash ? null : far;
+}
+
 for (const [index, slug] of slugs.entries()) {
-  test(`${slug}: ${EVENTS} random events leave no error, no long frame, no broken number, and a faithful link`, async ({
+  test(`${slug}: zooming, ${EVENTS} random events and a point a million away leave no error, no long frame, no broken number, and a faithful link`, async ({
     page,
     context,
   }) => {
@@ -64,26 +142,23 @@ for (const [index, slug] of slugs.entries()) {
     const pick = <T>(list: readonly T[]): T => list[Math.floor(rand() * list.length)];
     await page.goto(`./#/${slug}`);
     await settled(page);
-    await page.evaluate(() => {
-      // Each long frame with its parts (measured just before it), to say where it went.
-      const store = window as unknown as { longFrames: string[] };
-      store.longFrames = [];
-      const parts: Record<string, number> = {};
-      new PerformanceObserver((list) => {
-        // In the order they ended: a frame's parts end before the frame does.
-        const entries = list
-          .getEntries()
-          .sort((a, b) => a.startTime + a.duration - (b.startTime + b.duration));
-        for (const entry of entries) {
-          const part = /^spline-lab:frame:(\w+)$/.exec(entry.name);
-          if (part) parts[part[1]] = Math.round(entry.duration);
-          else if (entry.name === 'spline-lab:frame' && entry.duration > 50)
-            store.longFrames.push(
-              `${Math.round(entry.duration)} ms (fit ${parts.fit}, typeset ${parts.typeset}, model ${parts.derive}, figures ${parts.figures}, panel ${parts.panel})`,
-            );
+    await openBusiestPreset(page);
+    await watchLongFrames(page);
+
+    // 40 notches in and out on the busiest figure, five to a wheel event (a
+    // fast flick), a frame drawn after each.
+    const figure = page.locator('.figure-geometry canvas, .figure-space canvas').first();
+    const area = (await figure.count()) ? await figure.boundingBox() : null;
+    if (area) {
+      await page.mouse.move(area.x + area.width / 2, area.y + area.height / 2);
+      for (const direction of [-1, 1])
+        for (let flick = 0; flick < 8; flick++) {
+          await page.mouse.wheel(0, direction * 600);
+          await nextFrame(page);
         }
-      }).observe({ type: 'measure' });
-    });
+      expect(await longFrames(page), `${slug}: frames over 50 ms while zooming`).toEqual([]);
+    }
+
     const canvases = page.locator('canvas[data-figure]');
     const controls = page.locator(
       '.lesson-page .panel button:visible, .lesson-page .panel input:visible, .lesson-page .controls button:visible, .lesson-page .controls input:visible',
@@ -136,10 +211,7 @@ for (const [index, slug] of slugs.entries()) {
     if (await pause.isVisible()) await pause.click();
     await settled(page);
 
-    const longFrames = await page.evaluate(
-      () => (window as unknown as { longFrames: string[] }).longFrames,
-    );
-    expect(longFrames, `${slug}: frames over 50 ms`).toEqual([]);
+    expect(await longFrames(page), `${slug}: frames over 50 ms`).toEqual([]);
     const text = await page.locator('.lesson-page').innerText();
     expect(text, `${slug}: no broken numbers`).not.toMatch(BROKEN);
 
@@ -154,5 +226,25 @@ for (const [index, slug] of slugs.entries()) {
     expect(fields(other)).toEqual(state);
     expect(await picture(other), `${slug}: the link shows the same picture`).toEqual(before);
     await other.close();
+
+    // A point a million units away, by a link, on a figure zoomed far in: the
+    // kept view must not make the far point expensive to draw.
+    const far = farLink(new URL(page.url()).hash);
+    if (far !== null) {
+      if (area) {
+        await page.mouse.move(area.x + area.width / 2, area.y + area.height / 2);
+        for (let flick = 0; flick < 6; flick++) await page.mouse.wheel(0, -600);
+      }
+      await settled(page);
+      await longFrames(page);
+      await page.evaluate((h) => (location.hash = h), far);
+      await expect.poll(() => new URL(page.url()).hash).toContain('1000000');
+      await settled(page);
+      await nextFrame(page);
+      expect(
+        await longFrames(page),
+        `${slug}: frames over 50 ms with a point a million away`,
+      ).toEqual([]);
+    }
   });
 }
