@@ -1,6 +1,6 @@
 // `npm test`: every check, in order, stopping at the first that fails; then one
 // closing line that counts every test run ("Total: N passed, M failed").
-import { spawnSync } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 
 const REPORTS = 'reports';
@@ -45,10 +45,37 @@ function summary(status) {
 }
 
 const npx = 'npx';
-const steps = [
+
+/**
+ * The static checks run side by side: each is one thread of work (14 s, 12 s
+ * and 14 s alone), and the machine has two cores. Each one's output is printed
+ * whole when it ends, under its own heading.
+ */
+function runTogether(checks) {
+  return Promise.all(
+    checks.map(
+      ([label, command, args]) =>
+        new Promise((resolve) => {
+          const child = spawn(command, args, { stdio: ['ignore', 'pipe', 'pipe'] });
+          let output = '';
+          child.stdout.on('data', (chunk) => (output += chunk));
+          child.stderr.on('data', (chunk) => (output += chunk));
+          child.on('close', (code) => {
+            console.log(`\n▶ ${label}`);
+            process.stdout.write(output);
+            resolve([label, code ?? 1]);
+          });
+        }),
+    ),
+  );
+}
+
+const checks = [
   ['Type check (tsc)', npx, ['tsc', '--noEmit']],
   ['Lint (eslint)', npx, ['eslint', '.']],
   ['Format check (prettier)', npx, ['prettier', '--check', '.']],
+];
+const steps = [
   [
     'Unit and property tests (vitest)',
     npx,
@@ -62,6 +89,12 @@ const steps = [
   ],
   ['Browser tests (playwright, production build)', 'node', ['scripts/e2e.mjs']],
 ];
+for (const [label, status] of await runTogether(checks)) {
+  if (status !== 0) {
+    console.error(`\n✗ ${label} failed.`);
+    summary(status);
+  }
+}
 for (const [label, command, args, env] of steps) {
   const status = run(label, command, args, env);
   if (status !== 0) {
