@@ -2,8 +2,10 @@
  * A keyboard-only walk on every lesson (issue #11, item 7): Tab alone reaches
  * every control and every point the page shows, a point moves by its arrow
  * keys, and the clicker keys step the construction from wherever Tab left the
- * focus. No pointer is used after the page opens.
+ * focus. No pointer is used after the page opens. Then, on the same page, the
+ * clicker keys with the focus on each kind of control (clicker.ts).
  */
+import { clickerStepsWhateverHasFocus } from './clicker';
 import { expect, lessonFolders, settled, test, linkState } from './fixtures';
 
 const slugs = lessonFolders();
@@ -12,7 +14,7 @@ const slugs = lessonFolders();
 const TARGETS = `button, input, select, textarea, a[href], summary, [tabindex], [role]`;
 
 for (const slug of slugs) {
-  test(`${slug}: Tab alone reaches every control and point, a point moves by its keys, and the clicker steps`, async ({
+  test(`${slug}: Tab alone reaches every control and point, a point moves by its keys, and PageDown/PageUp step once whatever has focus`, async ({
     page,
   }) => {
     await page.goto(`./#/${slug}`);
@@ -97,5 +99,8 @@ for (const slug of slugs) {
     await page.keyboard.press('PageUp');
     await settled(page);
     expect(await linkState(page), `${slug}: PageUp took it back`).toEqual(first);
+
+    // With the focus on each kind of control: one step, the control untouched.
+    await clickerStepsWhateverHasFocus(page, slug);
   });
 }

@@ -15,6 +15,7 @@
  *   node scripts/e2e.mjs tests/e2e/pictures.spec.ts --update-snapshots
  */
 import type { Page } from '@playwright/test';
+import { legibleFromTheBackRow } from './clicker';
 import { expect, lessonFolders, settled, test } from './fixtures';
 
 const slugs = lessonFolders();
@@ -57,7 +58,11 @@ for (const slug of slugs) {
       if (mode === 'presenter') await page.setViewportSize({ width: 1920, height: 1080 });
       await page.goto(`./#/${slug}`);
       await settled(page);
-      if (mode === 'presenter') await page.keyboard.press('p');
+      if (mode === 'presenter') {
+        await page.keyboard.press('p');
+        // Legible from the back row, and B blanks it (the presenter-view rules).
+        await legibleFromTheBackRow(page, slug);
+      }
       const scenes = page.locator('button[data-scene]');
       const ids = await scenes.evaluateAll((buttons) =>
         buttons.map((b) => b.getAttribute('data-scene')!),
