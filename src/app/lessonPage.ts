@@ -62,6 +62,11 @@ export class LessonPage<S, M> {
   // What the next frame must do.
   private drawnState: S | null = null;
   private panelState: S | null = null;
+  /**
+   * The panel has not been updated yet: it is kept out of sight (and out of the
+   * accessibility tree) so its first frame shows no control of another scene.
+   */
+  private panelPending = true;
   /** The panel's update was put off to this frame: it is not put off again. */
   private panelDeferred = false;
   private hoverChanged = false;
@@ -199,6 +204,7 @@ export class LessonPage<S, M> {
       }
     });
     this.panelResize.observe(aside);
+    this.panel.element.classList.add('panel-pending');
     // Formula fonts arriving late change widths measured before them: fit again.
     document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
@@ -476,6 +482,10 @@ export class LessonPage<S, M> {
     if (panelDue) {
       this.panelState = state;
       this.panel.update(model, state);
+      if (this.panelPending) {
+        this.panelPending = false;
+        this.panel.element.classList.remove('panel-pending');
+      }
       this.updateCaption(state, model);
       this.parameter?.update(state);
       this.updateSteps(state);

@@ -79,3 +79,38 @@ test('points stacked on one spot are pulled apart by the direction of the drag',
   expect(at('P1')((await linkState(page)).p)).toBe(true);
   await expect(p1).toHaveAccessibleName('P1 at (0.00, 0.00)');
 });
+
+test('before its first update the panel shows no control, so none of another scene', async ({
+  page,
+}) => {
+  // Frames after the first are held: the figure is drawn, the panel not yet
+  // updated (it follows one frame later). Stop 18's CI clicked a knot button
+  // that b-splines' first scene hides, in exactly that frame.
+  await page.addInitScript(() => {
+    const held: FrameRequestCallback[] = [];
+    const request = window.requestAnimationFrame.bind(window);
+    let frames = 0;
+    Object.assign(window, {
+      releaseFrames: () => {
+        frames = -Infinity;
+        for (const f of held.splice(0)) request(f);
+      },
+    });
+    window.requestAnimationFrame = (f) => {
+      if (frames++ < 1) return request(f);
+      held.push(f);
+      return 0;
+    };
+  });
+  await page.goto('./#/b-splines');
+  await expect(page.locator('canvas[data-figure="curve"]')).toBeVisible();
+  const clamped = page.getByRole('button', { name: 'Clamped ends', exact: true });
+  // Only the scene button: the panel's knot tools belong to later scenes.
+  await expect(clamped).toHaveCount(1);
+  await expect(page.locator('aside.panel .lesson-text')).toBeHidden();
+  await page.evaluate(() => (window as unknown as { releaseFrames(): void }).releaseFrames());
+  await settled(page);
+  await expect(page.locator('aside.panel .lesson-text')).toBeVisible();
+  await expect(page.getByRole('heading', { name: /uniform cubic/i }).first()).toBeVisible();
+  await expect(clamped).toHaveCount(1);
+});
