@@ -1,6 +1,7 @@
 // What every benchmark page shares: the browser, the screen it runs at, and a
 // watcher that notes when the first figure is on screen.
 import { chromium, type Browser, type BrowserContext, type Page } from '@playwright/test';
+import { chromiumArgs } from '../../tests/chromium';
 
 /** 1920×1080 CSS pixels at device scale 2: every canvas has 4× the pixels of scale 1. */
 const SCREEN = { viewport: { width: 1920, height: 1080 }, deviceScaleFactor: 2 };
@@ -36,7 +37,7 @@ globalThis.__benchFigure = new Promise((resolve) => {
 export function launchBrowser(): Promise<Browser> {
   return chromium.launch({
     executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-gpu'],
+    args: chromiumArgs,
   });
 }
 
