@@ -26,13 +26,13 @@ export function markForFit(el: HTMLElement): HTMLElement {
 export function fitToWidth(root: ParentNode): void {
   const pending = [...root.querySelectorAll<HTMLElement>('[data-fit="pending"]')];
   if (!pending.length) return;
-  // The content's own width: a formula's typeset line, or the first child (a table).
-  const sizes = pending.map((el) => {
-    const content = el.querySelector('.katex-html') ?? el.firstElementChild;
-    return [el.clientWidth, el.scrollWidth, content?.getBoundingClientRect().width ?? 0];
-  });
+  const sizes = pending.map((el) => ({
+    box: el.clientWidth,
+    scroll: el.scrollWidth,
+    width: contentWidth(el),
+  }));
   pending.forEach((el, i) => {
-    const [box, scroll, width] = sizes[i];
+    const { box, scroll, width } = sizes[i];
     // Not laid out yet (hidden, or not in the page): try again next time.
     if (box <= 0) return;
     el.dataset.fit = 'done';
@@ -49,6 +49,25 @@ export function fitToWidth(root: ParentNode): void {
     el.dataset.scale = fitted.toFixed(3);
     el.style.fontSize = fitted === 1 ? '' : `${fitted.toFixed(3)}em`;
   });
+}
+
+/**
+ * The content's own width: a formula's typeset pieces from the first one's
+ * left to the last one's right (its line box is as wide as its container, so
+ * measuring that would keep a shrunk formula shrunk), or the first child (a table).
+ */
+function contentWidth(el: HTMLElement): number {
+  const html = el.querySelector('.katex-html');
+  if (!html) return el.firstElementChild?.getBoundingClientRect().width ?? 0;
+  let left = Infinity;
+  let right = -Infinity;
+  for (const piece of html.children) {
+    const box = piece.getBoundingClientRect();
+    if (box.width === 0) continue;
+    left = Math.min(left, box.left);
+    right = Math.max(right, box.right);
+  }
+  return right > left ? right - left : 0;
 }
 
 /** Marks everything under `root` that was ever fitted (the panel or the type size changed). */

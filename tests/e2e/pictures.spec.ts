@@ -5,6 +5,7 @@
  * - no label covers another or leaves its figure, from the painter's own
  *   placement data (what each frame recorded), not from pixels;
  * - every live formula has its numbers filled in (what a screen reader reads);
+ * - in presenter view, the caption's formula is seen whole, not cut at its foot;
  * - the drawing matches its reviewed reference image (Playwright's
  *   toHaveScreenshot, with a small tolerance). The comparison is of the
  *   figures with their labels hidden (presenter key A): what is compared is
@@ -82,6 +83,16 @@ for (const slug of slugs) {
           .locator('.katex')
           .evaluateAll((all) => all.filter((k) => k.textContent?.includes('§')).length);
         if (unfilled > 0) problems.push(`${id}: ${unfilled} formulas with unfilled number slots`);
+        // The caption's formula is seen whole: not cut off at the caption's bottom edge.
+        if (mode === 'presenter') {
+          const cut = await page.evaluate(() => {
+            const caption = document.querySelector('[data-caption]');
+            const formula = caption?.querySelector('.caption-formula .katex-html');
+            if (!caption || !formula || !formula.getClientRects().length) return 0;
+            return formula.getBoundingClientRect().bottom - caption.getBoundingClientRect().bottom;
+          });
+          if (cut > 1) problems.push(`${id}: the caption's formula is cut ${Math.round(cut)} px short`);
+        }
         // The drawing, without the labels whose glyphs depend on the machine's fonts.
         await page.keyboard.press('a');
         await settled(page);

@@ -36,12 +36,14 @@ export function basisLine(i: number, mu: number, weights: readonly number[], poi
   return tex`\begin{aligned}P(${live(texNumber(mu, 3))}) &= H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2 D_{${i}} + H_3 D_{${i + 1}}\\ &= ${joined(terms, '')}\\ &= ${livePoint(point, 3)}\end{aligned}`;
 }
 
-/** B0 … B3 of the patch as a Bézier curve. */
-export const bezierPoints = (bezier: readonly Point[]) =>
-  tex`\begin{aligned}${joined(
-    bezier.map((q, k) => tex`B_${k} &= ${livePoint(q, 2)}`),
-    '\\\\ ',
-  )}\end{aligned}`;
+/** B0 … B3 of the patch as a Bézier curve: a column in the panel, one line in the presenter's caption. */
+export function bezierPoints(bezier: readonly Point[], oneLine = false): FormulaParts {
+  const eq = oneLine ? '=' : '&=';
+  const points = bezier.map((q, k) => tex`B_${k} ${eq} ${livePoint(q, 2)}`);
+  return oneLine
+    ? joined(points, ',\\quad ')
+    : tex`\begin{aligned}${joined(points, '\\\\ ')}\end{aligned}`;
+}
 
 /** The patch matrix at work, in one line for the presenter's caption: a0 … a3 = M · data = numbers. */
 export const patchMatrixLine = (

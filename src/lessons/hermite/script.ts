@@ -40,5 +40,5 @@ export function stepFormula(model: HermiteModel, state: HermiteState): string | 
   if (shown.building !== null)
     return filled(patchMatrixLine([patch.p0, patch.p1, patch.d0, patch.d1], patch.coefficients));
   if (!shown.bezier) return filled(basisOneLine(i, state.mu, patch.weights, patch.point));
-  return filled(bezierPoints(patch.bezier));
+  return filled(bezierPoints(patch.bezier, true));
 }

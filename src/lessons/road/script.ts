@@ -1,3 +1,4 @@
+import { type FormulaParts, livePoint, tex } from '../../render/formulaParts';
 import { filled } from '../blending/scriptKit';
 import { methodFormula } from './methodFormula';
 import type { RoadModel } from './model';
@@ -62,7 +63,22 @@ export function roadFormula(model: RoadModel, state: RoadState): string | null {
   const { solve, progress, stage: at } = model;
   // The solve's step for x (y is worked out the same way, in the panel).
   if (solve && progress && at.solveStep !== null)
-    return filled(stepFormula(solve, 0, at.solveStep, progress.row));
+    return filled(stepFormula(solve, 0, at.solveStep, progress.row, true));
   if (state.overlay) return null;
+  if (state.road === 'quadratic') return filled(quadraticStepFormula(model, state));
   return filled(methodFormula(model));
+}
+
+/**
+ * The caption's formula while the quadratic road is built: the control point
+ * the step added, on one line (the panel lists them all; the caption has room
+ * for one line from the back of the hall).
+ */
+function quadraticStepFormula(model: RoadModel, state: RoadState): FormulaParts {
+  const road = model.road;
+  const controls = road.kind === 'pieces' ? road.pieces.map((piece) => piece[1]) : [];
+  const last = Math.min(model.stage.pieces, controls.length) - 1;
+  if (last < 1)
+    return tex`D_0 = ${livePoint(state.q)},\quad B_0 = P_0 + \tfrac12 D_0 = ${livePoint(model.quadraticControl)}`;
+  return tex`B_{${last}} = 2P_{${last}} - B_{${last - 1}} = ${livePoint(controls[last])}`;
 }

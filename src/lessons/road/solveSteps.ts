@@ -46,6 +46,8 @@ export function stepFormula(
   k: number,
   step: number,
   row: number | null,
+  /** On one line, for the presenter's caption (the panel stacks it in lines). */
+  oneLine = false,
 ): FormulaParts {
   const n = solve.n;
   const axis = k === 0 ? 'x' : 'y';
@@ -69,18 +71,26 @@ export function stepFormula(
       i === 0
         ? number(diag[0])
         : tex`${number(diag[i])} - ${number(sub[i])}\cdot${term(trace.gamma[i - 1])}`;
+    // Lines aligned at "=" in the panel; one line, side by side, in the caption.
+    const eq = oneLine ? '=' : '&=';
     const gamma =
       k === 0 && i < n - 1
-        ? tex`\gamma_{${i}} &= \frac{${number(sup[i])}}{${pivotTex}} = ${number(trace.gamma[i])}\\ `
-        : tex``;
+        ? tex`\gamma_{${i}} ${eq} \frac{${number(sup[i])}}{${pivotTex}} = ${number(trace.gamma[i])}`
+        : null;
     const numerator =
       i === 0
         ? number(solve.rhs[k][0])
         : tex`${number(solve.rhs[k][i])} - ${number(sub[i])}\cdot${term(trace.Gamma[i - 1])}`;
-    return tex`\begin{aligned}${gamma}\Gamma^{${axis}}_{${i}} &= \frac{${numerator}}{${number(pivot)}} = ${number(trace.Gamma[i])}\end{aligned}`;
+    const Gamma = tex`\Gamma^{${axis}}_{${i}} ${eq} \frac{${numerator}}{${number(pivot)}} = ${number(trace.Gamma[i])}`;
+    const lines = gamma ? [gamma, Gamma] : [Gamma];
+    return oneLine
+      ? joined(lines, ',\\qquad ')
+      : tex`\begin{aligned}${joined(lines, '\\\\ ')}\end{aligned}`;
   }
   // Back substitution: D(n−1) = Γ(n−1), Di = Γi − γi D(i+1).
   if (i === n - 1)
     return tex`D^{${axis}}_{${i}} = \Gamma^{${axis}}_{${i}} = ${number(trace.solution[i])}`;
-  return tex`\begin{aligned}D^{${axis}}_{${i}} &= \Gamma^{${axis}}_{${i}} - \gamma_{${i}} D^{${axis}}_{${i + 1}}\\ &= ${number(trace.Gamma[i])} - ${number(trace.gamma[i])}\cdot${term(trace.solution[i + 1])} = ${number(trace.solution[i])}\end{aligned}`;
+  const [eq, br] = oneLine ? ['=', ''] : ['&=', '\\\\ &'];
+  const back = tex`D^{${axis}}_{${i}} ${eq} \Gamma^{${axis}}_{${i}} - \gamma_{${i}} D^{${axis}}_{${i + 1}} ${br}= ${number(trace.Gamma[i])} - ${number(trace.gamma[i])}\cdot${term(trace.solution[i + 1])} = ${number(trace.solution[i])}`;
+  return oneLine ? back : tex`\begin{aligned}${back}\end{aligned}`;
 }
