@@ -171,3 +171,4 @@ export type { PixelBox } from './rasterizeLine';
 export { rasterizeLineInBox } from './rasterizeLine';
 export { onOneSpot } from './oneSpot';
 export { bezierChainSegments, bezierInflections } from './bezierChain';
+export { type PointsShape, pointsShape } from './pointsShape';

@@ -1,6 +1,7 @@
 import { dataTable, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
+import { type Point, pointsShape } from '../../math';
 import { LiveFormula, formula } from '../../render/formula';
 import { curvatureLink } from '../curvature/link';
 import { facts } from './facts';
@@ -19,12 +20,26 @@ const MATRIX =
 const RECURSION =
   'N_{i,r}(u) = \\frac{u - u_i}{u_{i+r} - u_i}\\,N_{i,r-1}(u) + \\frac{u_{i+r+1} - u}{u_{i+r+1} - u_{i+1}}\\,N_{i+1,r-1}(u)';
 
+/** What a B-spline makes of control points on one spot or on one line, or null. */
+export function shapeSentence(p: readonly Point[]): string | null {
+  switch (pointsShape(p).kind) {
+    case 'one spot':
+      return 'All control points are on one spot: every segment blends four copies of it, so the curve is that single point.';
+    case 'one line':
+      return 'The control points lie on one line: every segment blends four points of it, so the curve stays on that line.';
+    default:
+      return null;
+  }
+}
+
 export function bsplinePanel(
   api: LessonApi<BSplineState, BSplineModel>,
 ): LessonPanel<BSplineState, BSplineModel> {
   const title = h('h2', {});
   const text = h('p', {});
   const stepLine = h('p', { class: 'note' });
+  // Degenerate control points, said in words (the figure alone shows a dot or a line).
+  const shapeNote = h('p', { class: 'note' });
   // The step's formula: its shape typeset once, its numbers (u, N, C(u)) written as text.
   const stepFormula = new LiveFormula(true);
   const stepBox = h('div', { class: 'step-formulas' }, stepFormula.element);
@@ -53,6 +68,7 @@ export function bsplinePanel(
       'The slider t moves the cursor along the whole curve, from its start (0) to its end (1).',
     ),
     stepLine,
+    shapeNote,
     stepBox,
     matrix,
     recursion,
@@ -80,6 +96,9 @@ export function bsplinePanel(
         setHidden(knots.element, isUniformPart(state.x));
         setHidden(weights.element, !isRationalPart(state.x));
       }
+      const note = shapeSentence(state.p);
+      setHidden(shapeNote, note === null);
+      if (note !== null) setText(shapeNote, note);
       setText(stepLine, `Step ${state.k} of ${stepCount(state)}: ${describeStep(state, state.k)}`);
       const tex = steps.formula?.(m, state) ?? null;
       setHidden(stepBox, tex === null);
