@@ -91,7 +91,8 @@ for (const slug of slugs) {
             if (!caption || !formula || !formula.getClientRects().length) return 0;
             return formula.getBoundingClientRect().bottom - caption.getBoundingClientRect().bottom;
           });
-          if (cut > 1) problems.push(`${id}: the caption's formula is cut ${Math.round(cut)} px short`);
+          if (cut > 1)
+            problems.push(`${id}: the caption's formula is cut ${Math.round(cut)} px short`);
         }
         // The drawing, without the labels whose glyphs depend on the machine's fonts.
         await page.keyboard.press('a');

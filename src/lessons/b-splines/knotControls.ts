@@ -49,8 +49,8 @@ export function knotControls(api: LessonApi<BSplineState, BSplineModel>) {
     h(
       'div',
       { class: 'lesson-tools' },
-      button('Uniform knots', (s) => ({ ...s, u: uniformKnotVector(s.p.length, s.d) })),
-      button('Clamped ends', (s) => ({ ...s, u: clampedUniformKnots(s.p.length, s.d) })),
+      button('Make the knots uniform', (s) => ({ ...s, u: uniformKnotVector(s.p.length, s.d) })),
+      button('Clamp the ends', (s) => ({ ...s, u: clampedUniformKnots(s.p.length, s.d) })),
       button('Repeat a knot p times', (s) => ({ ...s, u: repeatedKnots(s.p.length, s.d) })),
     ),
   );
