@@ -82,6 +82,8 @@ export function bsplinePanel(
     dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody),
   );
   let shownPart = '';
+  /** The points the shape note was written for: t and the step leave them alone. */
+  let shownPoints: readonly Point[] | null = null;
 
   return {
     element,
@@ -96,9 +98,12 @@ export function bsplinePanel(
         setHidden(knots.element, isUniformPart(state.x));
         setHidden(weights.element, !isRationalPart(state.x));
       }
-      const note = shapeSentence(state.p);
-      setHidden(shapeNote, note === null);
-      if (note !== null) setText(shapeNote, note);
+      if (state.p !== shownPoints) {
+        shownPoints = state.p;
+        const note = shapeSentence(state.p);
+        setHidden(shapeNote, note === null);
+        if (note !== null) setText(shapeNote, note);
+      }
       setText(stepLine, `Step ${state.k} of ${stepCount(state)}: ${describeStep(state, state.k)}`);
       const tex = steps.formula?.(m, state) ?? null;
       setHidden(stepBox, tex === null);
