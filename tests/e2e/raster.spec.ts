@@ -56,16 +56,24 @@ test('a rasterised segment is an 8-connected path from end pixel to end pixel, o
   await expectHash(page, 'x', (v) => v === 'pixels');
   const table = page.getByRole('table', { name: 'Pixels of the segment' });
   const title = page.getByText(/^Segment \d+ runs from/);
+  const first = Number(/^Segment (\d+)/.exec(await title.innerText())![1]);
   for (let round = 0; round < 3; round++) {
+    // The panel writes the title and the table in one update, a frame after
+    // the click: wait for this round's segment, then read both at once, so
+    // the rows and the ends are of the same segment.
+    await expect(title).toHaveText(new RegExp(`^Segment ${first + round} runs from`));
     await expect(table.locator('tbody tr').first()).toBeVisible();
-    const rows = await table
-      .locator('tbody tr')
-      .evaluateAll((trs) =>
-        trs.map((tr) => [...tr.querySelectorAll('td')].map((td) => Number(td.textContent))),
-      );
+    const { rows, from, to } = await table.evaluate((element) => {
+      const ends = document.querySelector<HTMLElement>('[data-from][data-to]')!.dataset;
+      return {
+        rows: [...element.querySelectorAll('tbody tr')].map((tr) =>
+          [...tr.querySelectorAll('td')].map((td) => Number(td.textContent)),
+        ),
+        from: ends.from!.split(',').map(Number),
+        to: ends.to!.split(',').map(Number),
+      };
+    });
     const path = rows.map((cells) => [cells[1], cells[2]]);
-    const from = (await title.getAttribute('data-from'))!.split(',').map(Number);
-    const to = (await title.getAttribute('data-to'))!.split(',').map(Number);
     expect(path[0]).toEqual(from.map(Math.round));
     expect(path[path.length - 1]).toEqual(to.map(Math.round));
     const run = to.map(Math.round).map((v, d) => Math.abs(v - path[0][d]));
