@@ -5,6 +5,7 @@
  */
 import { fmt, h } from './dom';
 import type { ParameterSpec } from './lesson';
+import { nextPlayedValue } from './play';
 import { prefersReducedMotion } from './settings';
 
 type Record_ = Record<string, number>;
@@ -134,12 +135,8 @@ export class ParameterControl<S> {
     this.play.textContent = '❚❚';
     this.play.setAttribute('aria-label', 'Pause');
     const advance = (amount: number) => {
-      let v = this.value(this.host.get()) + amount;
-      if (v > spec.max + 1e-12) v = spec.min;
-      this.host.set(
-        { ...this.host.get(), [spec.key]: Math.min(spec.max, Number(v.toPrecision(12))) },
-        { record: false },
-      );
+      const v = nextPlayedValue(this.value(this.host.get()), amount, spec.min, spec.max);
+      this.host.set({ ...this.host.get(), [spec.key]: v }, { record: false });
     };
     if (prefersReducedMotion()) {
       // No continuous motion: one calm jump a second.
