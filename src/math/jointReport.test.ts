@@ -71,7 +71,11 @@ describe('bezierJointReport', () => {
     expect(report.degenerate).toBe(true);
     expect(report.leftVelocity).toEqual([0, 0]);
     expect(report.continuity).toBe('C0');
-    expect(Number.isNaN(report.leftCurvature)).toBe(true);
+    // A zero velocity has no direction and no length: no angle, no ratio, no curvature.
+    expect(report.angle).toBeNaN();
+    expect(report.lengthRatio).toBeNaN();
+    expect(report.leftCurvature).toBeNaN();
+    expect(report.rightCurvature).toBeNaN();
   });
 });
 

@@ -12,9 +12,12 @@ export interface JointReport {
   continuity: Continuity;
   leftVelocity: number[];
   rightVelocity: number[];
-  /** Angle between the geometric tangents in degrees (0 when they agree). */
+  /**
+   * Angle between the two velocities in degrees (0 when they point the same
+   * way); NaN where either velocity is zero, since a zero vector has no direction.
+   */
   angle: number;
-  /** |right velocity| / |left velocity| (1 for C¹; NaN when the left one is zero). */
+  /** |right velocity| / |left velocity| (1 for C¹); NaN where either velocity is zero. */
   lengthRatio: number;
   leftSecond: number[];
   rightSecond: number[];
@@ -27,10 +30,13 @@ export interface JointReport {
 
 const length = (v: readonly number[]) => Math.hypot(...v);
 
-/** Signed 2D curvature from P′ and P″ (NaN where P′ = 0). */
+/** Below this speed a velocity counts as zero: the parameterisation stops. */
+const STOPPED = 1e-12;
+
+/** Signed 2D curvature from P′ and P″ (NaN where P′ = 0: no tangent, no curvature). */
 function curvature(first: readonly number[], second: readonly number[]): number {
   const speed = length(first);
-  if (!(speed > 0)) return NaN;
+  if (!(speed > STOPPED)) return NaN;
   return (first[0] * second[1] - first[1] * second[0]) / speed ** 3;
 }
 
@@ -62,22 +68,24 @@ export function bezierJointReport(
   const joint = end.point;
   const back = direction(joint, [...left].reverse().slice(1));
   const ahead = direction(joint, right.slice(1));
-  let angle = NaN;
+  // The turn between the geometric tangents (towards the nearest distinct
+  // control points): for a moving joint these are the velocities' directions.
+  let turn = NaN;
   if (back && ahead) {
     // atan2 of cross and dot keeps digits near 0° (acos would lose half of them).
     const cross = back[0] * ahead[1] - back[1] * ahead[0];
     const along = -(back[0] * ahead[0] + back[1] * ahead[1]);
-    angle = (Math.abs(Math.atan2(cross, along)) * 180) / Math.PI;
+    turn = (Math.abs(Math.atan2(cross, along)) * 180) / Math.PI;
   }
-  const degenerate = !(length(end.first) > 1e-12) || !(length(start.first) > 1e-12);
+  const degenerate = !(length(end.first) > STOPPED) || !(length(start.first) > STOPPED);
   let continuity = bezierJointContinuity(left, right, tolerance);
-  if (degenerate && continuity !== 'none') continuity = angle <= 1e-6 ? 'G1' : 'C0';
+  if (degenerate && continuity !== 'none') continuity = turn <= 1e-6 ? 'G1' : 'C0';
   return {
     continuity,
     leftVelocity: end.first,
     rightVelocity: start.first,
-    angle,
-    lengthRatio: length(start.first) / length(end.first),
+    angle: degenerate ? NaN : turn,
+    lengthRatio: degenerate ? NaN : length(start.first) / length(end.first),
     leftSecond: end.second,
     rightSecond: start.second,
     leftCurvature: curvature(end.first, end.second),

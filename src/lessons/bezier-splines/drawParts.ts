@@ -139,9 +139,13 @@ const inspector: Draw = (painter, m, info) => {
       });
     }
     const lines = [`joint ${k + 1}: ${verdict(joint.continuity)}`];
-    if (step === 3) lines.push(`${joint.angle.toFixed(1)}°, ratio ${joint.lengthRatio.toFixed(2)}`);
-    if (step >= 4)
-      lines.push(`κ ${joint.leftCurvature.toFixed(2)} | ${joint.rightCurvature.toFixed(2)}`);
+    if (step === 3)
+      lines.push(
+        joint.degenerate
+          ? 'P′ = 0: no angle, no ratio'
+          : `${joint.angle.toFixed(1)}°, ratio ${joint.lengthRatio.toFixed(2)}`,
+      );
+    if (step >= 4) lines.push(curvatureText(joint.leftCurvature, joint.rightCurvature));
     // One line, on the side of the joint away from its two neighbours, far enough to clear the handles.
     const k3 = 3 * (k + 1);
     const [dx, dy] = awayFrom(at, m.state.q[k3 - 1], m.state.q[k3 + 1]);
@@ -156,6 +160,13 @@ const inspector: Draw = (painter, m, info) => {
     });
   });
 };
+
+/** κ on both sides of a joint; a side whose velocity is zero has none. */
+function curvatureText(left: number, right: number): string {
+  if (Number.isNaN(left) && Number.isNaN(right)) return 'κ undefined (P′ = 0)';
+  const side = (k: number) => (Number.isNaN(k) ? 'undefined' : k.toFixed(2));
+  return `κ ${side(left)} | ${side(right)}`;
+}
 
 /** The unit direction pointing away from both neighbours of a joint (the normal where they are in line). */
 function awayFrom(at: Point, before: Point, after: Point): Point {

@@ -1,5 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
+import { Painter } from '../../render/painter';
+import { SvgContext } from '../../render/svgContext';
+import { makeTheme } from '../../render/theme';
+import { Viewport } from '../../render/viewport';
 import { mainFigure } from './figure';
 import { gridFigures } from './gridFigures';
 import { derive } from './model';
@@ -88,5 +92,48 @@ describe('the script', () => {
         expect(steps.formula!(derive(state), state) ?? '').not.toMatch(/NaN|undefined|Infinity/);
       }
     }
+  });
+});
+
+describe('a sharp corner (control points on the joint)', () => {
+  // The link: the inspector's "Sharp corner at joint 1", whose velocities are both zero.
+  const q = [
+    [0, 0],
+    [1, 2],
+    [3, 2],
+    [3, 2],
+    [3, 2],
+    [5, 0],
+    [6, 1],
+    [6.5, 1.5],
+    [8, 3],
+    [9, 2],
+  ];
+  const corner = (step: number) => ({ ...at('inspector'), q, step });
+  const drawnTexts = (step: number) => {
+    const state = corner(step);
+    const model = derive(state);
+    const view = new Viewport(900, 600);
+    view.resize(900, 600);
+    view.fit(mainFigure.bounds(model), 18, true);
+    const svg = new SvgContext();
+    mainFigure.draw(new Painter(svg, view, makeTheme(false, false)), model, {
+      hover: null,
+      thumbnail: false,
+    });
+    return { texts: svg.texts.join(' | '), formula: steps.formula!(model, state) ?? '' };
+  };
+
+  it('says the angle, the ratio and κ are undefined there, and shows no NaN', () => {
+    const velocities = drawnTexts(3);
+    // Joint 1 is the corner; joint 2 (a G¹ joint) keeps its angle and ratio.
+    expect(velocities.texts).toContain('joint 1: C⁰ · P′ = 0: no angle, no ratio |');
+    expect(velocities.texts).not.toMatch(/NaN/);
+    expect(velocities.formula).toMatch(/\\text\{undefined\}/);
+    expect(velocities.formula).not.toMatch(/NaN|circ/);
+    const curvature = drawnTexts(4);
+    expect(curvature.texts).toContain('κ undefined (P′ = 0)');
+    expect(curvature.texts).not.toMatch(/NaN/);
+    expect(curvature.formula).toMatch(/\\kappa = \\text\{undefined\} \\mid \\text\{undefined\}/);
   });
 });

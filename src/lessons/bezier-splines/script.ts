@@ -196,10 +196,18 @@ const formulas: Record<Part, (m: BezierSplinesModel, s: BezierSplinesState) => s
   inspector(m, s) {
     const j = m.joints[0];
     if (!j) return null;
-    if (s.step === 3)
-      return `P_0'(1) = ${pt(j.leftVelocity)},\\ P_1'(0) = ${pt(j.rightVelocity)},\\ \\angle = ${num(j.angle, 1)}^\\circ,\\ \\tfrac{|P_1'|}{|P_0'|} = ${num(j.lengthRatio, 3)}`;
-    if (s.step === 4)
-      return `P_0''(1) = ${pt(j.leftSecond)},\\ P_1''(0) = ${pt(j.rightSecond)},\\ \\kappa = ${num(j.leftCurvature, 3)} \\mid ${num(j.rightCurvature, 3)}`;
+    // A zero velocity has no direction and no length: say so instead of NaN.
+    const undefinedHere = `\\text{undefined}`;
+    if (s.step === 3) {
+      const velocities = `P_0'(1) = ${pt(j.leftVelocity)},\\ P_1'(0) = ${pt(j.rightVelocity)}`;
+      if (j.degenerate)
+        return `${velocities}:\\ \\angle,\\ \\tfrac{|P_1'|}{|P_0'|}\\ ${undefinedHere}`;
+      return `${velocities},\\ \\angle = ${num(j.angle, 1)}^\\circ,\\ \\tfrac{|P_1'|}{|P_0'|} = ${num(j.lengthRatio, 3)}`;
+    }
+    if (s.step === 4) {
+      const kappa = (k: number) => (Number.isNaN(k) ? undefinedHere : num(k, 3));
+      return `P_0''(1) = ${pt(j.leftSecond)},\\ P_1''(0) = ${pt(j.rightSecond)},\\ \\kappa = ${kappa(j.leftCurvature)} \\mid ${kappa(j.rightCurvature)}`;
+    }
     if (s.step === 2)
       return m.joints
         .map((r, i) => `\\text{joint ${i + 1}: ${r.continuity.replace(/(\d)/, '^$1')}}`)
