@@ -48,7 +48,13 @@ const run = (cmd, args, env = process.env) => {
 };
 
 run('npx', ['vite', 'build', '--logLevel', 'warn']);
-run('npx', ['playwright', 'test', ...process.argv.slice(2)], {
-  ...process.env,
-  CHROMIUM_PATH: browser,
-});
+const args = process.argv.slice(2);
+const env = { ...process.env, CHROMIUM_PATH: browser };
+// Playwright repeats only the projects a run names or reaches last: the
+// 'browser' project, which 'timing' depends on, ran once under --repeat-each.
+// So a repeated run without --project runs each project on its own, in order.
+const repeated = args.some((a) => a.startsWith('--repeat-each'));
+if (repeated && !args.some((a) => a.startsWith('--project'))) {
+  for (const project of ['browser', 'timing'])
+    run('npx', ['playwright', 'test', '--project', project, '--no-deps', ...args], env);
+} else run('npx', ['playwright', 'test', ...args], env);
