@@ -1,10 +1,12 @@
 // Checks the per-frame measurement before trusting it: the same traced drag
 // over a page that does nothing should cost about nothing a frame, and over a
-// page whose pointermove listener spins BUSY_MS, about BUSY_MS a frame.
+// page whose pointermove listener spins BUSY_MS, about BUSY_MS a frame. A
+// third page is the reference every drag is compared with: a canvas of the
+// same size stroking one long path per move.
 import type { Browser } from '@playwright/test';
 import { circlePath, tracedDrag, type DragLimits, type DragResult } from './drag';
 import { freshContext, nextFrames } from './page';
-import { BUSY_MS } from './server';
+import { BUSY_MS, REFERENCE_SEGMENTS } from './server';
 
 export interface MethodCheck {
   readonly page: string;
@@ -23,6 +25,11 @@ export async function checkMethod(
       file: 'busy.html',
       page: `busy page (pointermove spins ${BUSY_MS} ms)`,
       expected: `idle + ${BUSY_MS}`,
+    },
+    {
+      file: 'reference.html',
+      page: `reference page (strokes ${REFERENCE_SEGMENTS} segments a move)`,
+      expected: 'the ratios below divide by its p95',
     },
   ];
   const checks: MethodCheck[] = [];

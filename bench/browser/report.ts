@@ -4,7 +4,7 @@ import { type DragLimits, type DragResult, FRAME_MEASURE } from './drag';
 import type { DragRow } from './lessonDrags';
 import type { LoadTimes, ScriptFile } from './load';
 import { FALLBACK_METHOD, FIRST_DRAW_MARK } from './page';
-import { BUSY_MS } from './server';
+import { BUSY_MS, REFERENCE_SEGMENTS } from './server';
 import { quantile } from './trace';
 
 export const BUDGET = { frameP95Ms: 4, galleryKb: 60, loadMs: 500 };
@@ -61,12 +61,14 @@ export function printChecks(checks: readonly MethodCheck[]): void {
   );
 }
 
-export function printDrags(rows: readonly DragRow[]): void {
+/** The drags, each with its p95 as a multiple of the reference page's p95 (target ≤ 1.0×). */
+export function printDrags(rows: readonly DragRow[], referenceP95: number): void {
   printTable(
     [
       'lesson',
       'preset / control',
       ...frameColumns(`p95 (ms), budget ≤ ${BUDGET.frameP95Ms}`),
+      'p95 ÷ reference, target ≤ 1.0×',
       'state changed (moves)',
     ],
     rows.map((row) =>
@@ -75,9 +77,10 @@ export function printDrags(rows: readonly DragRow[]): void {
             row.lesson,
             row.control,
             ...frameFigures(row.result),
+            `${(quantile(row.result.perFrame, 0.95) / referenceP95).toFixed(2)}×`,
             `${row.result.changed}/${row.result.moves}`,
           ]
-        : [row.lesson, row.control, '—', '—', '—', '0', row.note ?? ''],
+        : [row.lesson, row.control, '—', '—', '—', '0', '—', row.note ?? ''],
     ),
   );
 }
@@ -162,6 +165,7 @@ export function printReport(report: Report): void {
   console.log('Method check (same harness, pages of our own):');
   printChecks(report.checks);
   const [idle, busy] = report.checks.map((c) => quantile(c.result.perFrame, 0.5));
+  const reference = quantile(report.checks[2].result.perFrame, 0.95);
   console.log(
     `busy − idle at the median: ${ms(busy - idle)} ms (expected ${BUSY_MS}). The idle page's figure ` +
       `is the harness's own main-thread cost (routing the mouse move, the frame it waits for, the ` +
@@ -169,8 +173,11 @@ export function printReport(report: Report): void {
       `other processes on the machine do not stretch. app = the page's own work in each frame it ` +
       `drew (derive + draw + panel, its "${FRAME_MEASURE}" measures), without the harness.`,
   );
-  console.log('\nDrag: main-thread time per frame');
-  printDrags(report.drags);
+  console.log(
+    `\nDrag: main-thread time per frame; the ratio is to the reference page's p95 (${ms(reference)} ms), ` +
+      `a canvas of the same size stroking one ${REFERENCE_SEGMENTS}-segment path per move`,
+  );
+  printDrags(report.drags, reference);
   console.log('');
   printGallery(report.gallery, report.unfetched);
   console.log(

@@ -20,8 +20,49 @@ const TYPES: Record<string, string> = {
 /** The busy page's pointermove listener spins this long, so its frames have a known cost. */
 export const BUSY_MS = 5;
 
-/** Pages served at /__bench/<name>: an idle one and one with a known cost per move. */
+/** How many segments the reference page strokes each frame. */
+export const REFERENCE_SEGMENTS = 2000;
+
+/**
+ * The reference a drag frame is compared with: a full-window canvas at the
+ * device's pixel ratio that, on every pointer move, clears itself and strokes
+ * one path of REFERENCE_SEGMENTS segments (a curve that follows the pointer),
+ * in the next animation frame, as the app draws.
+ */
+const REFERENCE_PAGE = `<!doctype html><title>reference</title>
+<body style="margin:0;height:100vh;overflow:hidden"><canvas style="display:block;width:100vw;height:100vh"></canvas><script>
+const canvas = document.querySelector('canvas');
+const dpr = devicePixelRatio || 1;
+canvas.width = Math.round(innerWidth * dpr);
+canvas.height = Math.round(innerHeight * dpr);
+const ctx = canvas.getContext('2d');
+let at = [innerWidth / 2, innerHeight / 2];
+let pending = false;
+function draw() {
+  pending = false;
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.clearRect(0, 0, innerWidth, innerHeight);
+  ctx.beginPath();
+  for (let i = 0; i <= ${REFERENCE_SEGMENTS}; i++) {
+    const s = i / ${REFERENCE_SEGMENTS};
+    const x = innerWidth * (0.05 + 0.9 * s);
+    const y = at[1] + 0.3 * innerHeight * Math.sin(12 * s + at[0] / 100) * (1 - s);
+    if (i === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+  }
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = '#0050a0';
+  ctx.stroke();
+}
+addEventListener('pointermove', (e) => {
+  at = [e.clientX, e.clientY];
+  if (!pending) { pending = true; requestAnimationFrame(draw); }
+});
+draw();
+</script></body>`;
+
+/** Pages served at /__bench/<name>: an idle one, one with a known cost per move, the reference. */
 const CHECK_PAGES: Record<string, string> = {
+  'reference.html': REFERENCE_PAGE,
   'idle.html': '<!doctype html><title>idle</title><body style="margin:0;height:100vh"></body>',
   'busy.html': `<!doctype html><title>busy</title><body style="margin:0;height:100vh"><script>
 addEventListener('pointermove', () => { const end = performance.now() + ${BUSY_MS}; while (performance.now() < end); });
