@@ -15,6 +15,21 @@ export interface Field<V> {
   readonly default: V;
   encode(value: V): string;
   decode(raw: string): FieldResult<V>;
+  /**
+   * The field's short key in the link, when it is not the field's name in code
+   * (`points` in code, `p` in the link). Without it the name is the key.
+   */
+  readonly key?: string;
+  /** Earlier keys of the field: links that use them keep opening the same picture. */
+  readonly aliases?: readonly string[];
+}
+
+/**
+ * The field under a short link key (and any earlier keys), so that code can
+ * name it in whole words: `points: linkKey(points({ … }), 'p')`.
+ */
+export function linkKey<V>(field: Field<V>, key: string, ...aliases: string[]): Field<V> {
+  return { ...field, key, aliases };
 }
 
 /** Characters a legitimate value can contain; anything else is rejected outright. */

@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { bool, choice, formatNumber, int, number, numbers, points } from './fields';
+import { bool, choice, formatNumber, int, linkKey, number, numbers, points } from './fields';
 import { MAX_QUERY_LENGTH, type Schema, decodeState, defaultsOf, encodeState } from './urlState';
 
 type Point2 = readonly number[];
@@ -174,5 +174,35 @@ describe('figure views in the link', () => {
     const query = encodeState(schema, defaultsOf(schema), { map: '1,2,80' });
     expect(query.endsWith('&view.map=1,2,80')).toBe(true);
     expect(decodeState(schema, query, ['map']).views).toEqual({ map: '1,2,80' });
+  });
+});
+
+describe('link keys apart from field names', () => {
+  const schema: Schema<{ points: Point2[]; parameter: number }> = {
+    points: linkKey(points({ default: [[0, 0]], min: 1, max: 4 }), 'p'),
+    parameter: linkKey(number({ default: 0.5, min: 0, max: 1 }), 't', 'mu'),
+  };
+  it('writes the short key and reads it back into the named field', () => {
+    const query = encodeState(schema, {
+      points: [
+        [1, 2],
+        [3, 4],
+      ],
+      parameter: 0.25,
+    });
+    expect(query).toBe('p=1,2;3,4&t=0.25');
+    expect(decodeState(schema, query).state).toEqual({
+      points: [
+        [1, 2],
+        [3, 4],
+      ],
+      parameter: 0.25,
+    });
+  });
+  it('reads an earlier key as an alias, and a field given under two keys once', () => {
+    expect(decodeState(schema, 'mu=0.75').state.parameter).toBe(0.75);
+    const twice = decodeState(schema, 't=0.1&mu=0.9');
+    expect(twice.state.parameter).toBe(0.1);
+    expect(twice.issues).toEqual(['"mu" given twice; the first was kept']);
   });
 });

@@ -47,6 +47,22 @@ export function defaultsOf<S>(schema: Schema<S>): S {
   return state as S;
 }
 
+/** The field's key in the link: its own short key, else its name. */
+export const keyOf = <S>(schema: Schema<S>, name: keyof S & string): string =>
+  schema[name].key ?? name;
+
+/** Every key the link may use for each field (its key, its name, its earlier keys) → the field's name. */
+function fieldsByKey<S>(schema: Schema<S>): Map<string, keyof S & string> {
+  const names = Object.keys(schema) as (keyof S & string)[];
+  const byKey = new Map<string, keyof S & string>();
+  // Current keys first, so an old alias never shadows another field's key.
+  for (const name of names) byKey.set(keyOf(schema, name), name);
+  for (const name of names)
+    for (const alias of [name, ...(schema[name].aliases ?? [])])
+      if (!byKey.has(alias)) byKey.set(alias, name);
+  return byKey;
+}
+
 /**
  * The state as a query string: the scene (if the lesson has scenes), the
  * fields in schema order, then the views in figure order.
@@ -59,8 +75,8 @@ export function encodeState<S>(
 ): string {
   const parts: string[] = [];
   if (scene !== undefined) parts.push(`${SCENE_KEY}=${scene}`);
-  for (const key of Object.keys(schema) as (keyof S & string)[]) {
-    parts.push(`${key}=${schema[key].encode(state[key])}`);
+  for (const name of Object.keys(schema) as (keyof S & string)[]) {
+    parts.push(`${keyOf(schema, name)}=${schema[name].encode(state[name])}`);
   }
   for (const [figure, view] of Object.entries(views)) parts.push(`${VIEW_PREFIX}${figure}=${view}`);
   return parts.join('&');
@@ -87,6 +103,8 @@ export function decodeState<S>(
     return { state: state as S, issues, views, scene };
   }
   const seen = new Set<string>();
+  const byKey = fieldsByKey(schema);
+  const given = new Set<string>();
   for (const part of query.split('&')) {
     if (part === '') continue;
     const eq = part.indexOf('=');
@@ -121,17 +139,24 @@ export function decodeState<S>(
         );
       continue;
     }
-    if (!Object.prototype.hasOwnProperty.call(schema, key)) {
+    const name = byKey.get(key);
+    if (name === undefined) {
       issues.push(`unknown setting ${quote(key)}`);
       continue;
     }
+    // A field given under two of its keys (its key and an old alias): the first is kept.
+    if (given.has(name)) {
+      issues.push(`${quote(key)} given twice; the first was kept`);
+      continue;
+    }
     seen.add(key);
+    given.add(name);
     if (!SAFE_VALUE.test(raw)) {
       issues.push(`${key}: ${quote(raw)} has characters that do not belong; the default was used`);
       continue;
     }
-    const result = schema[key as keyof S].decode(raw);
-    if (result.ok) state[key] = result.value;
+    const result = schema[name].decode(raw);
+    if (result.ok) state[name] = result.value;
     else issues.push(`${key}: ${result.why}; the default was used`);
   }
   return { state: state as S, issues, views, scene };
