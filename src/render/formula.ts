@@ -86,6 +86,13 @@ export function formula(tex: string, display = false): HTMLElement {
 export const SLOT = '\\val';
 
 /**
+ * A live formula's TeX with its numbers filled in: for the MathML's copy of
+ * the TeX, and for a step's formula in presenter view.
+ */
+export const filled = (parts: { shape: string; values: readonly string[] }): string =>
+  parts.shape.split(SLOT).reduce((tex, part, i) => tex + (parts.values[i - 1] ?? '') + part);
+
+/**
  * A formula whose shape is typeset once and whose numbers change as text: the
  * TeX has `\val` wherever a number goes, and `set` fills them in. Only a new
  * shape (another number of terms, say) typesets again; a drag that changes
@@ -141,9 +148,7 @@ export class LiveFormula {
     if (changed && this.display) markForFit(this.element);
     // The MathML keeps the TeX as typeset, numbers filled in (copy as TeX, assistive tools).
     if (changed && this.annotation) {
-      this.annotation.textContent = parts.shape
-        .split(SLOT)
-        .reduce((filled, part, i) => filled + (parts.values[i - 1] ?? '') + part);
+      this.annotation.textContent = filled(parts);
     }
   }
 
@@ -183,6 +188,7 @@ export function texNumber(value: number, digits = 2): string {
   return /^-0\.?0*$/.test(text) ? text.slice(1) : text;
 }
 
+/** A point as TeX, `(1.00,\ 2.00)`: each coordinate by texNumber. */
 export function texPoint(p: readonly number[], digits = 2): string {
   return `(${p.map((v) => texNumber(v, digits)).join(',\\ ')})`;
 }

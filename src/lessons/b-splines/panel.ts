@@ -3,7 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { type Point, pointsShape } from '../../math';
 import { LiveFormula, formula } from '../../render/formula';
-import { curvatureLink } from '../curvature/link';
+import { curvatureLink } from '../../kit/lessonLinks';
 import { facts } from './facts';
 import { knotControls } from './knotControls';
 import { slotNumbers } from '../../render/formulaParts';

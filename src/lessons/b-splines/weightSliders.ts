@@ -1,5 +1,6 @@
 import { h, setChildren } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
+import { trimmed } from '../../kit/format';
 import { WEIGHT_MAX, WEIGHT_MIN } from './halo';
 import type { BSplineModel } from './model';
 import type { BSplineState } from './state';
@@ -44,7 +45,7 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
       }
       state.w.forEach((w, i) => {
         if (Number(inputs[i].value) !== w) inputs[i].value = String(w);
-        outputs[i].textContent = String(Number(w.toFixed(4)));
+        outputs[i].textContent = trimmed(w, 4);
       });
     },
   };

@@ -23,9 +23,6 @@ export interface ExperimentPanel<M> {
   build(api: PanelApi): Details<M>;
 }
 
-/** t as typed: up to four decimals, trailing zeros dropped. */
-export const texT = (t: number) => String(Number(t.toFixed(4)));
-
 /**
  * The TeX shape of a point with live coordinates, `(\val,\ {}\val)`. The
  * empty group keeps KaTeX's MathML from merging the space into the text of

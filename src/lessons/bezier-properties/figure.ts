@@ -1,6 +1,6 @@
 import type { DrawInfo, FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
-import { stackedLabels } from '../de-casteljau/labels';
+import { stackedLabels } from '../../kit/labels';
 import { movingPoint } from './script';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';

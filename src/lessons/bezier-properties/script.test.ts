@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import { checkScript, drawState, sceneStates } from '../de-casteljau/scriptChecks';
+import { checkScript, drawState, sceneStates } from '../../kit/scriptChecks';
 import { propertiesFigure } from './figure';
 import lesson from './lesson';
 import { type ModelOf, derive } from './model';

@@ -1,6 +1,5 @@
 import { type Point, distance } from '../../math';
-import { texNumber } from '../../render/formula';
-import { sub } from '../de-casteljau/script';
+import { sub, texExponent, texNumber, texPoint, texT, words } from '../../kit/format';
 import type { ModelOf, PropertiesModel } from './model';
 import { type ExperimentId, type MapKind, type PropertiesState, STAGES, amount } from './state';
 
@@ -8,15 +7,6 @@ import { type ExperimentId, type MapKind, type PropertiesState, STAGES, amount }
 // the step's formula with its numbers. The parameter is t throughout.
 
 /** A number in a caption: up to three decimals, trailing zeros dropped, a true minus. */
-const words = (v: number) => String(Number(v.toFixed(3))).replace('-', '−');
-const texPoint = (p: readonly number[]) => `(${p.map((v) => texNumber(v, 3)).join(',\\ ')})`;
-const texT = (t: number) => String(Number(t.toFixed(4)));
-/** A tiny number in TeX: 0, or 3.6 × 10⁻¹⁵. */
-const texSmall = (v: number) => {
-  if (v === 0) return '0';
-  const [mantissa, exponent] = v.toExponential(1).split('e');
-  return `${mantissa}\\times 10^{${Number(exponent)}}`;
-};
 const plural = (count: number, one: string, many = `${one}s`) =>
   `${count} ${count === 1 ? one : many}`;
 
@@ -143,11 +133,11 @@ const FORMULAS: Formulas = {
     const n = m.n;
     const [start, end, at] = m.tangents;
     if (k === STAGES.ends.ends)
-      return `P(0) = P_0 = ${texPoint(m.controls[0])},\\quad P(1) = P_{${n}} = ${texPoint(m.controls[n])}`;
+      return `P(0) = P_0 = ${texPoint(m.controls[0], 3)},\\quad P(1) = P_{${n}} = ${texPoint(m.controls[n], 3)}`;
     if (k === STAGES.ends.tangents)
-      return `P'(0) = ${n}(P_1 - P_0) = ${texPoint(start.vector)},\\quad P'(1) = ${n}(P_{${n}} - P_{${n - 1}}) = ${texPoint(end.vector)}`;
+      return `P'(0) = ${n}(P_1 - P_0) = ${texPoint(start.vector, 3)},\\quad P'(1) = ${n}(P_{${n}} - P_{${n - 1}}) = ${texPoint(end.vector, 3)}`;
     if (k === STAGES.ends.point)
-      return `P(${texT(m.state.t)}) = ${texPoint(m.point)},\\quad P'(${texT(m.state.t)}) = ${texPoint(at.vector)}`;
+      return `P(${texT(m.state.t)}) = ${texPoint(m.point, 3)},\\quad P'(${texT(m.state.t)}) = ${texPoint(at.vector, 3)}`;
     return null;
   },
   hull(m, k) {
@@ -194,7 +184,7 @@ const FORMULAS: Formulas = {
   affine(m, k) {
     const images = m.images;
     if (!images.ok || k < STAGES.affine.mappedCurve) return null;
-    return `\\max_t |\\text{map of } P(t) - \\text{curve of mapped points}| = ${images.distance < 1e-9 ? texSmall(images.distance) : texNumber(images.distance, 4)}`;
+    return `\\max_t |\\text{map of } P(t) - \\text{curve of mapped points}| = ${images.distance < 1e-9 ? texExponent(images.distance) : texNumber(images.distance, 4)}`;
   },
   cubic(m, k) {
     if (k !== STAGES.cubic.marks) return null;
@@ -207,10 +197,10 @@ const FORMULAS: Formulas = {
   },
   hermite(m, k) {
     if (k === STAGES.hermite.tangents)
-      return `x_0' = 3(P_1 - P_0) = ${texPoint(m.d0)},\\quad x_1' = 3(P_3 - P_2) = ${texPoint(m.d1)}`;
+      return `x_0' = 3(P_1 - P_0) = ${texPoint(m.d0, 3)},\\quad x_1' = 3(P_3 - P_2) = ${texPoint(m.d1, 3)}`;
     if (k === STAGES.hermite.hermite)
-      return `\\max_t |\\text{Bézier} - \\text{Hermite}| = ${texSmall(m.deviation)}`;
-    if (k === STAGES.hermite.point) return `P(${texT(m.state.t)}) = ${texPoint(m.point)}`;
+      return `\\max_t |\\text{Bézier} - \\text{Hermite}| = ${texExponent(m.deviation)}`;
+    if (k === STAGES.hermite.point) return `P(${texT(m.state.t)}) = ${texPoint(m.point, 3)}`;
     return null;
   },
 };

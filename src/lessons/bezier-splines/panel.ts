@@ -3,7 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { type Point, snapJoint } from '../../math';
 import { renderFormula } from '../../render/formula';
-import { type CurvatureOf, curvatureLink } from '../curvature/link';
+import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
 import { verdict } from './drawParts';
 import { asCubic, type BezierSplinesModel } from './model';
 import { introductions } from './sections';

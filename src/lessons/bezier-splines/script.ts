@@ -1,5 +1,6 @@
 import type { Scene, StepsSpec } from '../../app/lesson';
 import { defaultsOf } from '../../app/urlState';
+import { sub, texExponent } from '../../kit/format';
 import { controlPointName, type Point } from '../../math';
 import { texNumber, texPoint } from '../../render/formula';
 import type { BezierSplinesModel } from './model';
@@ -16,15 +17,6 @@ import {
   stepCount,
 } from './state';
 
-const SUB = '₀₁₂₃₄₅₆₇₈₉';
-/** A subscript in Unicode: 12 → ₁₂. */
-export const sub = (n: number) => [...String(n)].map((d) => SUB[Number(d)]).join('');
-/** 8.9e-16 as 8.9 × 10⁻¹⁶ in TeX (0 as 0). */
-export const texExponent = (v: number) => {
-  if (v === 0) return '0';
-  const [mantissa, exponent] = v.toExponential(1).split('e');
-  return `${mantissa}\\times 10^{${Number(exponent)}}`;
-};
 const pt = (p: Point) => texPoint(p, 2);
 const num = (v: number, digits = 2) => texNumber(v, digits);
 

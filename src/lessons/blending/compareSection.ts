@@ -2,11 +2,12 @@ import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
+import { texT } from '../../kit/format';
 import { formula } from '../../render/formula';
 import { comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
-import { keepLastStep } from './scriptKit';
-import { type BlendingState, type Comparison, stepCount, texMu } from './state';
+import { keepLastStep } from '../../kit/keepLastStep';
+import { type BlendingState, type Comparison, stepCount } from './state';
 
 const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'none', label: 'Bernstein only' },
@@ -103,7 +104,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
 
       const lowest = compared.samples.lowest;
       const sentences = [
-        `At μ = ${texMu(state.mu)} these values sum to ${fmt(compared.sum, 6)}.`,
+        `At μ = ${texT(state.mu)} these values sum to ${fmt(compared.sum, 6)}.`,
         lowest.value < -1e-12
           ? `Not non-negative: the lowest value on [0, 1] is ${fmt(lowest.value, 4)}, reached by ${plain(compared.labels[lowest.index])} at μ = ${fmt(lowest.mu, 3)}.`
           : 'No value on [0, 1] is negative.',

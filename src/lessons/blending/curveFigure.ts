@@ -2,7 +2,8 @@ import type { FigureSpec, Point } from '../../app/lesson';
 import { insertPoint } from '../../interact/editPoints';
 import type { Painter } from '../../render/painter';
 import { highlightedIndex } from './hover';
-import { keepLastStep, seriesDash } from './scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
+import { seriesDash } from '../../kit/seriesColours';
 import type { BlendingModel, Compared } from './model';
 import { type BlendingState, MAX_POINTS, stepCount } from './state';
 

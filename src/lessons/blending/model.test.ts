@@ -4,7 +4,7 @@ import { comparedIndex, curveNear, highlightedIndex } from './hover';
 import { derive } from './model';
 import type { AnyLesson } from '../../app/lesson';
 import { describeStep, stepFormula } from './script';
-import { checkScript } from './scriptCheck';
+import { checkScript } from '../../kit/scriptChecks';
 import { type BlendingState, revealed, schema, stepCount } from './state';
 
 // Values worked out by hand for the lecture's cubic P0 = (0, 0), P1 = (1, 2),

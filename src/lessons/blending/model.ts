@@ -11,7 +11,7 @@ import {
   uniformBSplinePoint,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { degenerate, repeatsText } from './scriptKit';
+import { degenerate, repeatsText } from '../../kit/degenerate';
 import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
 import { type BlendingState, type Comparison, type Revealed, degree, revealed } from './state';
 

@@ -6,7 +6,7 @@ import { formula } from '../../render/formula';
 import { compareSection } from './compareSection';
 import { formsSection } from './formsSection';
 import type { BlendingModel } from './model';
-import { keepLastStep } from './scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
 import { type BlendingState, MAX_POINTS, stepCount } from './state';
 import { weightsSection } from './weightsSection';
 

@@ -3,7 +3,8 @@ import type { Painter } from '../../render/painter';
 import { niceStep } from '../../render/projection';
 import type { Family } from './families';
 import { comparedIndex, curveNear, highlightedIndex } from './hover';
-import { plotYName, seriesDash } from './scriptKit';
+import { plotYName } from '../../kit/plotMarks';
+import { seriesDash } from '../../kit/seriesColours';
 import type { BlendingModel } from './model';
 import type { BlendingState } from './state';
 

@@ -1,6 +1,6 @@
 import { bernstein } from '../../math';
 import type { BlendingModel } from './model';
-import { filled } from './scriptKit';
+import { filled } from '../../kit/format';
 import { type BlendingState, type Comparison, degree, revealed } from './state';
 import { expansionTex, pointFormula, weightFormula } from './tex';
 

@@ -64,6 +64,3 @@ export function revealed(state: BlendingState): Revealed {
     compared: k >= n + 4,
   };
 }
-
-/** μ as typed: up to four decimals, trailing zeros dropped. */
-export const texMu = (mu: number) => String(Number(mu.toFixed(4)));

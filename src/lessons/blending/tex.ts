@@ -1,7 +1,7 @@
+import { texT } from '../../kit/format';
 import { type Point, binomial } from '../../math';
 import { texNumber } from '../../render/formula';
 import { type FormulaParts, joined, live, livePoint, tex } from '../../render/formulaParts';
-import { texMu } from './state';
 
 // TeX for the blending lesson's formulas. A formula with live numbers is
 // FormulaParts: a shape typeset once per N, and the numbers written into it.
@@ -28,7 +28,7 @@ export function expansionTex(n: number, termsPerLine = Infinity): string {
 
 /** μ and 1 − μ as typed into a power: four decimals at most, no trailing zeros. */
 const power = (v: number) => live(texNumber(v, 4).replace(/\.?0+$/, '') || '0');
-const liveMu = (mu: number) => live(texMu(mu));
+const liveMu = (mu: number) => live(texT(mu));
 
 /** `W(3,1,0.3) = 3\cdot 0.3\cdot 0.7^{2}`: a weight with the numbers of μ in. */
 export function weightFormula(n: number, i: number, mu: number): FormulaParts {

@@ -1,10 +1,11 @@
 import { dataTable, fmt, h, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
+import { texT } from '../../kit/format';
 import { LiveFormula } from '../../render/formula';
 import { highlightedIndex } from './hover';
 import type { BlendingModel } from './model';
-import { type BlendingState, texMu } from './state';
+import { type BlendingState } from './state';
 import { pointFormula, weightFormula } from './tex';
 
 /**
@@ -58,7 +59,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
       const { mu, p } = m.state;
       const palette = api.theme().palette;
       const color = (i: number) => palette[i % palette.length];
-      setText(title, `Weights at μ = ${texMu(mu)} (N = ${n})`);
+      setText(title, `Weights at μ = ${texT(mu)} (N = ${n})`);
       rows.set(
         weights.map((w, i) => ({
           cells: [{ text: `P${i}`, swatch: color(i) }, '', fmt(w, 6)],

@@ -4,7 +4,8 @@ import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
 import { formula } from '../../render/formula';
 import type { CurvatureModel } from './model';
-import { SOURCES, SOURCE_NAMES, type Source } from './sources';
+import { CURVE_SOURCES, type CurveSource } from '../../kit/lessonLinks';
+import { SOURCE_NAMES } from './sources';
 import { type CurvatureState, type Part, type SpaceCurve, STEPS, schema, stepCount } from './state';
 import { arcRows, valueRows } from './values';
 
@@ -73,9 +74,9 @@ export function curvaturePanel(
   const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
   const n = numberInput('Equal steps n', 'n', 2, 24, 1);
   const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
-  const sourceChoice = radioGroup<CurvatureState, Source>(api, {
+  const sourceChoice = radioGroup<CurvatureState, CurveSource>(api, {
     name: 'plane-curve',
-    choices: SOURCES.map((value) => ({ value, label: SOURCE_NAMES[value] })),
+    choices: CURVE_SOURCES.map((value) => ({ value, label: SOURCE_NAMES[value] })),
     get: (s) => s.src,
     set: (s, src) => ({ ...s, src }),
   });

@@ -11,20 +11,10 @@ import {
   onOneSpot,
   uniformBSplineSegments,
 } from '../../math';
-
-/** Where the plane curve comes from: one Bézier curve, or the spline of another lesson. */
-export type Source = 'bezier' | 'chain' | 'natural' | 'hermite' | 'catmull-rom' | 'b-spline';
-export const SOURCES: readonly Source[] = [
-  'bezier',
-  'chain',
-  'natural',
-  'hermite',
-  'catmull-rom',
-  'b-spline',
-];
+import type { CurveSource } from '../../kit/lessonLinks';
 
 /** The curve in words (panel, notes). */
-export const SOURCE_NAMES: Record<Source, string> = {
+export const SOURCE_NAMES: Record<CurveSource, string> = {
   bezier: 'One Bézier curve (control points P0 … Pn)',
   chain: 'Cubic Bézier pieces (joints at every third point)',
   natural: 'Natural cubic spline through the points (C²)',
@@ -34,7 +24,7 @@ export const SOURCE_NAMES: Record<Source, string> = {
 };
 
 /** Does the curve pass through its points (so the dashed control polygon is not drawn)? */
-export const THROUGH_POINTS: Record<Source, boolean> = {
+export const THROUGH_POINTS: Record<CurveSource, boolean> = {
   bezier: false,
   chain: false,
   natural: true,
@@ -77,7 +67,7 @@ const same = (a: Point, b: Point) => a[0] === b[0] && a[1] === b[1];
  * repeated points of a spline through points are taken once.
  */
 export function piecewiseCurve(
-  source: Source,
+  source: CurveSource,
   p: readonly Point[],
   d: readonly Point[],
 ): PiecewiseCurve {
@@ -97,7 +87,7 @@ export function piecewiseCurve(
 }
 
 function build(
-  source: Source,
+  source: CurveSource,
   p: readonly Point[],
   d: readonly Point[],
 ): { segments: Point[][]; notice: string | null } {

@@ -1,7 +1,7 @@
 import { choice, int, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
-import { SOURCES, type Source } from './sources';
+import { CURVE_SOURCES, type CurveSource, MAX_LINKED_POINTS } from '../../kit/lessonLinks';
 
 /** The three parts of the lesson, in teaching order. */
 export type Part = 'plane' | 'space' | 'arc';
@@ -12,7 +12,7 @@ export type SpaceCurve = 'helix' | 'bezier';
 export interface CurvatureState {
   part: Part;
   /** Where the plane curve comes from: one Bézier curve, or another lesson's spline. */
-  src: Source;
+  src: CurveSource;
   /** The plane curve's points: control points of a Bézier curve or a B-spline, or the points a spline passes through. */
   p: Point[];
   /** The gradients D0 … Dm of a Hermite spline (src=hermite). */
@@ -28,9 +28,6 @@ export interface CurvatureState {
   /** Arc length part: the number of equal steps (of t, and of arc length). */
   n: number;
 }
-
-/** The most points of the plane curve a link carries (another lesson's spline included). */
-export const MAX_POINTS = 40;
 
 /** The helix is drawn for θ = 2π·turns·t, t ∈ [0, 1]. */
 export const HELIX_TURNS = 2;
@@ -56,9 +53,9 @@ export const TWISTED_CUBIC: Point[] = [
 
 export const schema: Schema<CurvatureState> = {
   part: choice<Part>({ default: 'plane', values: ['plane', 'space', 'arc'] }),
-  src: choice<Source>({ default: 'bezier', values: SOURCES }),
-  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
-  d: points({ default: [], min: 0, max: MAX_POINTS }),
+  src: choice<CurveSource>({ default: 'bezier', values: CURVE_SOURCES }),
+  p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_LINKED_POINTS }),
+  d: points({ default: [], min: 0, max: MAX_LINKED_POINTS }),
   q: points({ default: TWISTED_CUBIC, min: 4, max: 4, dimension: 3 }),
   curve: choice<SpaceCurve>({ default: 'helix', values: ['helix', 'bezier'] }),
   a: number({ default: 1, min: 0.1, max: 5 }),

@@ -1,17 +1,17 @@
-import type { FigureSpec } from '../../app/lesson';
-import { insertPoint } from '../../interact/editPoints';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
-import { HALF_DASH, halfColour, levelColour, levelDash } from './colours';
-import { handleLabelBoxes, placeLabel, stackedLabels } from './labels';
+import { HALF_DASH, halfColour, levelColour, levelDash } from '../../kit/seriesColours';
+import { handleLabelBoxes, placeLabel } from '../../kit/labels';
 import type { DeCasteljauModel } from './model';
-import { type DeCasteljauState, MAX_POINTS, lastStep } from './state';
+import { controlPoints } from './points';
+import type { DeCasteljauState } from './state';
 
 /** Labels for every constructed point stay readable up to this degree (3 on a narrow screen). */
 const LABEL_ALL_UP_TO = 5;
 const NARROW = 600;
 
-export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> = {
+export const constructionFigure: KitFigure<DeCasteljauState, DeCasteljauModel> = {
   id: 'construction',
   title: 'Bézier curve with the de Casteljau construction at t',
   kind: 'geometry',
@@ -21,7 +21,7 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
     const { state, n, levels, shown } = m;
 
     // The last step: the whole curve faintly, the part traced so far (0 … t) strongly.
-    if (shown.curve && !state.split) {
+    if (shown.has('curve') && !state.split) {
       painter.polylineFlat(m.curve, {
         color: theme.curveFaint,
         width: theme.sizes.curve * 0.8,
@@ -29,13 +29,13 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
       });
       if (state.t > 0) painter.polylineFlat(m.leftCurve, { color: theme.curve, role: 'curve' });
     }
-    if (state.split) drawHalves(painter, m, shown.curve);
+    if (state.split) drawHalves(painter, m, shown.has('curve'));
 
     // Level 0 is the control polygon.
-    if (shown.polygon) {
+    if (shown.has('polygon')) {
       painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
     }
-    for (let r = 1; r <= shown.levels; r++) {
+    for (let r = 1; r <= shown.count('level'); r++) {
       const color = levelColour(theme.palette, r);
       painter.polyline(levels[r], { color, width: theme.sizes.line, dash: levelDash(r) });
       levels[r].forEach((point) => {
@@ -50,38 +50,20 @@ export const constructionFigure: FigureSpec<DeCasteljauState, DeCasteljauModel> 
     if (!info.thumbnail) drawLabels(painter, m);
     if (m.note && !info.thumbnail) painter.note(m.note);
   },
-  handles: (m) => {
-    const labels = stackedLabels(m.state.p, (i) => `P_{${i}}`);
-    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
-  },
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
-  },
-  addPoint(state, at) {
-    if (state.p.length >= MAX_POINTS) return null;
-    const p = insertPoint(state.p, at);
-    // A construction shown to its end stays shown to its end.
-    return { ...state, p, step: state.step === lastStep(state) ? p.length + 1 : state.step };
-  },
-  removeHandle(state, id) {
-    if (state.p.length <= 2) return null;
-    const i = Number(id.slice(1));
-    const p = state.p.filter((_, k) => k !== i);
-    return { ...state, p, step: state.step === lastStep(state) ? p.length + 1 : state.step };
-  },
-  trail: (m) => (m.shown.levels === m.n ? m.levels[m.n][0] : null),
+  points: [controlPoints],
+  addTo: controlPoints,
+  trail: (m) => (m.shown.has('level', m.n) ? m.levels[m.n][0] : null),
 };
 
 /** The labels of the levels shown, each where it covers no other label and no point. */
 function drawLabels(painter: Painter, m: DeCasteljauModel): void {
   const theme = painter.theme;
   const { n, levels, shown } = m;
-  const points = levels.slice(0, shown.levels + 1).flat();
+  const points = levels.slice(0, shown.count('level') + 1).flat();
   const taken = handleLabelBoxes(painter, m.state.p);
   const labelAll = n <= (painter.view.width < NARROW ? 3 : LABEL_ALL_UP_TO);
   // The point on the curve first: it matters most, and gets the best spot.
-  for (let r = shown.levels; r >= 1; r--) {
+  for (let r = shown.count('level'); r >= 1; r--) {
     const last = r === n;
     if (!labelAll && !last) continue;
     levels[r].forEach((point, i) =>

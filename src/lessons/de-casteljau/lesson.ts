@@ -1,30 +1,29 @@
-import { defineLesson, type Point } from '../../app/lesson';
+import type { Point } from '../../math';
+import { defineLesson } from '../../kit/lesson';
 import { constructionFigure } from './figure';
-import { type DeCasteljauModel, derive } from './model';
+import { derive } from './model';
 import { deCasteljauPanel } from './panel';
-import { describeStep, stepFormula } from './script';
-import { type DeCasteljauState, LECTURE_CUBIC, lastStep, schema } from './state';
+import { construction } from './script';
+import { type DeCasteljauState, LECTURE_CUBIC, schema } from './state';
 
 /** A scene: its control points and t, shown to the end (the clicker opens it at step 0). */
 const scene = (id: string, label: string, p: Point[], t = 0.4) => ({
   id,
   label,
-  apply: (s: DeCasteljauState): DeCasteljauState => ({
-    ...s,
-    p,
-    t,
-    split: false,
-    step: lastStep({ ...s, p }),
-  }),
+  setup: (s: DeCasteljauState): DeCasteljauState => {
+    const next = { ...s, p, t, split: false };
+    return { ...next, step: construction.lastStep(next) };
+  },
 });
 
-export default defineLesson<DeCasteljauState, DeCasteljauModel>({
+export default defineLesson({
   slug: 'de-casteljau',
   schema,
+  step: 'step',
+  script: construction,
   derive,
   figures: [constructionFigure],
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
-  steps: { key: 'step', count: lastStep, describe: describeStep, formula: stepFormula },
   scenes: [
     scene('cubic', 'Lecture cubic', LECTURE_CUBIC),
     scene(

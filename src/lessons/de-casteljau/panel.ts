@@ -1,14 +1,15 @@
 import { dataTable, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { checkbox, pointButtons } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
+import { checkbox } from '../../app/panelControls';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
-import { curvatureLink } from '../curvature/link';
-import { halfColour, levelColour } from './colours';
+import { texT, words } from '../../kit/format';
+import { curvatureLink } from '../../kit/lessonLinks';
+import { halfColour, levelColour } from '../../kit/seriesColours';
 import type { DeCasteljauModel } from './model';
-import { describeStep, texT, words } from './script';
-import { type DeCasteljauState, MAX_POINTS, lastStep } from './state';
+import { controlPoints } from './points';
+import { construction } from './script';
+import type { DeCasteljauState } from './state';
 
 const coords = (p: readonly number[]) => p.map((v) => texNumber(v, 3));
 
@@ -43,24 +44,7 @@ export function deCasteljauPanel(
   );
   const tableBody = h('tbody', {});
   const table = new LiveRows(tableBody);
-  const pointCount = pointButtons(api, {
-    addLabel: 'Add a control point',
-    removeLabel: 'Remove the last control point',
-    count: (s) => s.p.length,
-    min: 2,
-    max: MAX_POINTS,
-    // A construction shown to its end stays shown to its end.
-    add: (s) => ({
-      ...s,
-      p: [...s.p, extendPolygon(s.p)],
-      step: s.step === lastStep(s) ? s.p.length + 2 : s.step,
-    }),
-    remove: (s) => ({
-      ...s,
-      p: s.p.slice(0, -1),
-      step: s.step === lastStep(s) ? s.p.length : s.step,
-    }),
-  });
+  const pointCount = controlPoints.buttons(api);
 
   const curvature = curvatureLink();
   const element = h(
@@ -99,13 +83,13 @@ export function deCasteljauPanel(
       const { n, levels, shown } = m;
       const t = state.t;
       const palette = api.theme().palette;
-      const r = shown.levels;
+      const r = shown.count('level');
       split.update(state);
       pointCount.update(state);
       curvature.update({ src: 'bezier', p: state.p, t: state.t });
 
-      stepTitle.textContent = `Step ${state.step} of ${lastStep(state)}`;
-      stepText.textContent = `${describeStep(state, state.step)}.`;
+      stepTitle.textContent = `Step ${state.step} of ${shown.lastStep}`;
+      stepText.textContent = `${construction.caption(state, m, state.step)}.`;
       note.textContent = m.note ?? '';
       note.hidden = m.note === null;
       if (r > 0) {

@@ -6,12 +6,22 @@ import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
 import { Viewport } from '../../render/viewport';
 import { constructionFigure } from './figure';
-import { handleLabelBoxes } from './labels';
+import { handleLabelBoxes } from '../../kit/labels';
 import lesson from './lesson';
-import { derive } from './model';
-import { checkScript, drawState } from './scriptChecks';
-import { describeStep, stepFormula } from './script';
+import type { DeCasteljauModel } from './model';
+import { checkScript, drawState } from '../../kit/scriptChecks';
 import { type DeCasteljauState, schema } from './state';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: DeCasteljauState) => lesson.derive(s) as DeCasteljauModel;
+const describeStep = (s: DeCasteljauState, k: number) => lesson.steps!.describe(s, k);
+const stepFormula = (m: DeCasteljauModel, s: DeCasteljauState) => lesson.steps!.formula!(m, s);
+/** What a step shows, in the words of the lecture's construction. */
+const revealed = (m: DeCasteljauModel) => ({
+  polygon: m.shown.has('polygon'),
+  levels: m.shown.count('level'),
+  curve: m.shown.has('curve'),
+});
 
 const state = (changes: Partial<DeCasteljauState>): DeCasteljauState => ({
   ...defaultsOf(schema),
@@ -32,13 +42,13 @@ describe('the script of the de Casteljau construction', () => {
 
   it('step 0 shows only the control points: no polygon, no level, no curve', () => {
     const m = derive(state({ step: 0 }));
-    expect(m.shown).toEqual({ polygon: false, levels: 0, curve: false });
+    expect(revealed(m)).toEqual({ polygon: false, levels: 0, curve: false });
     expect(drawState(lesson, m.state).elements).toBe(0);
     expect(describeStep(m.state, 0)).toBe('The 4 control points P₀ … P₃, and nothing else yet');
   });
 
   it('each step adds one thing', () => {
-    const shown = [0, 1, 2, 3, 4, 5].map((step) => derive(state({ step })).shown);
+    const shown = [0, 1, 2, 3, 4, 5].map((step) => revealed(derive(state({ step }))));
     expect(shown).toEqual([
       { polygon: false, levels: 0, curve: false },
       { polygon: true, levels: 0, curve: false },
@@ -107,7 +117,7 @@ describe('the script of the de Casteljau construction', () => {
       ]),
     ).toBeNull();
     // Points on one spot are named once, not with labels on top of each other.
-    const stacked = constructionFigure.handles!(
+    const stacked = lesson.figures[0].handles!(
       derive(
         state({
           p: [

@@ -7,10 +7,7 @@ export interface DeCasteljauState {
   /** Control points P0 … Pn. */
   p: Point[];
   t: number;
-  /**
-   * The step of the construction shown: 0 the control points, 1 the polygon,
-   * 1 + r level r (r = 1 … n, level n is P(t)), n + 2 the curve traced.
-   */
+  /** The step of the construction shown (see `construction` in script.ts for what each reveals). */
   step: number;
   /** Show the two control polygons that subdivision at t produces. */
   split: boolean;
@@ -36,12 +33,3 @@ export const schema: Schema<DeCasteljauState> = {
 
 /** Degree of the curve. */
 export const degree = (state: DeCasteljauState) => state.p.length - 1;
-
-/** The last step: the curve traced, after the polygon and the n levels. */
-export const lastStep = (state: DeCasteljauState) => degree(state) + 2;
-
-/** What step k shows: the polygon, how many levels, the traced curve. */
-export function stage(state: DeCasteljauState, k = state.step) {
-  const n = degree(state);
-  return { polygon: k >= 1, levels: Math.max(0, Math.min(n, k - 1)), curve: k >= n + 2 };
-}

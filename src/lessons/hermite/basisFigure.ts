@@ -2,7 +2,7 @@ import type { FigureSpec } from '../../app/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import type { Bounds } from '../../render/projection';
-import { plotYName, valueColumn } from '../blending/scriptKit';
+import { plotYName, valueColumn } from '../../kit/plotMarks';
 import type { HermiteModel } from './model';
 import type { HermiteState } from './state';
 

@@ -1,6 +1,6 @@
 import type { FigureSpec, Handle, Point } from '../../app/lesson';
 import { ARROW_SCALE, type HermiteModel } from './model';
-import { keepLastStep } from '../blending/scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
 import { type HermiteState, MAX_POINTS, patchCount, stepCount } from './state';
 
 export const curveFigure: FigureSpec<HermiteState, HermiteModel> = {

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { derive } from './model';
 import type { AnyLesson } from '../../app/lesson';
-import { checkScript } from '../blending/scriptCheck';
+import { checkScript } from '../../kit/scriptChecks';
 import { stepFormula } from './script';
 import { type HermiteState, normalize, revealed, schema, stepCount } from './state';
 

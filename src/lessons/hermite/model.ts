@@ -15,7 +15,7 @@ import {
   scale,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { degenerate, repeatsText } from '../blending/scriptKit';
+import { degenerate, repeatsText } from '../../kit/degenerate';
 import { type HermiteState, type Revealed, patchCount, revealed } from './state';
 
 /** The arrow for a gradient D is drawn D/3 long: its tip is where the Bézier control point sits. */

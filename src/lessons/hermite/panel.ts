@@ -4,12 +4,12 @@ import { LiveRows } from '../../app/liveTable';
 import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, formula } from '../../render/formula';
-import { curvatureLink } from '../curvature/link';
+import { curvatureLink } from '../../kit/lessonLinks';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
 import type { Point } from '../../app/lesson';
-import { keepLastStep } from '../blending/scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
 import { type GradientMode, type HermiteState, MAX_POINTS, stepCount } from './state';
 
 const MODES: [GradientMode, string][] = [

@@ -1,4 +1,4 @@
-import { filled } from '../blending/scriptKit';
+import { filled } from '../../kit/format';
 import { basisOneLine, bezierPoints, patchMatrixLine } from './formulas';
 import type { HermiteModel } from './model';
 import { type HermiteState, patchCount, revealed } from './state';

@@ -2,7 +2,8 @@ import type { FigureSpec } from '../../app/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import { niceStep } from '../../render/projection';
-import { plotYName, seriesDash, valueColumn } from '../blending/scriptKit';
+import { plotYName, valueColumn } from '../../kit/plotMarks';
+import { seriesDash } from '../../kit/seriesColours';
 import { CLIP, type LagrangeModel } from './model';
 import type { LagrangeState } from './state';
 

@@ -1,6 +1,7 @@
 import type { FigureSpec } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
-import { keepLastStep, seriesDash } from '../blending/scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
+import { seriesDash } from '../../kit/seriesColours';
 import type { LagrangeModel } from './model';
 import { type LagrangeState, MAX_POINTS, stepCount } from './state';
 

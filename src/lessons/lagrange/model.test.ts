@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { SAMPLES, derive } from './model';
 import type { AnyLesson } from '../../app/lesson';
 import { lagrangeBasis } from '../../math';
-import { checkScript } from '../blending/scriptCheck';
+import { checkScript } from '../../kit/scriptChecks';
 import { describeStep } from './script';
 import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, revealed, stepCount } from './state';
 

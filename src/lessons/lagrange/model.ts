@@ -10,7 +10,7 @@ import {
   sampleBasis,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { degenerate, repeatsText } from '../blending/scriptKit';
+import { degenerate, repeatsText } from '../../kit/degenerate';
 import { type LagrangeState, type Revealed, degree, revealed } from './state';
 
 /**

@@ -5,7 +5,7 @@ import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
 import type { LagrangeModel } from './model';
-import { keepLastStep } from '../blending/scriptKit';
+import { keepLastStep } from '../../kit/keepLastStep';
 import { type LagrangeState, MAX_POINTS, type Spacing, stepCount } from './state';
 
 const SPACINGS: [Spacing, string][] = [

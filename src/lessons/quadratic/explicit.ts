@@ -1,10 +1,11 @@
+import { trimmed } from '../../kit/format';
 import { lagrangePoint, parabolaThrough, type Point } from '../../math';
 
 // Step 0: the parabola y = a2x² + a1x + a0 through the three points, or why
 // there is none that makes sense.
 
 /** A coordinate as a person would write it: up to three decimals. */
-const fmtNumber = (v: number) => String(Number(v.toFixed(3)));
+const fmtNumber = (v: number) => trimmed(v, 3);
 
 /** The non-parametric parabola y(x), or why there is none that makes sense. */
 export type Parabola =

@@ -3,8 +3,8 @@ import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import { placeMemberLabels } from './labels';
 import type { Member, QuadraticModel } from './model';
-import { seriesColour } from '../de-casteljau/colours';
-import { stackedLabels } from '../de-casteljau/labels';
+import { seriesColour } from '../../kit/seriesColours';
+import { stackedLabels } from '../../kit/labels';
 import { type QuadraticState, STEP } from './state';
 
 export const quadraticFigure: FigureSpec<QuadraticState, QuadraticModel> = {

@@ -1,4 +1,5 @@
 import { distanceToSegment } from '../../interact/editPoints';
+import { trimmed } from '../../kit/format';
 import {
   centripetalMu,
   chordLengthMu,
@@ -52,7 +53,7 @@ export function muRules(p: readonly Point[]): MuRule[] {
   return rules.map((rule) => ({ ...rule, usable: rule.mu > 0 && rule.mu < 1 }));
 }
 
-const fmtMu = (mu: number) => String(Number(mu.toFixed(2)));
+const fmtMu = (mu: number) => trimmed(mu, 2);
 
 function member(p: readonly Point[], mu: number, colour: number | null, text: string): Member {
   const curve = Array.from({ length: SEGMENTS + 1 }, (_, k) =>

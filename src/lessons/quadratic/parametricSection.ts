@@ -1,11 +1,11 @@
 import { dataTable, h } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
+import { texT } from '../../kit/format';
 import { LiveFormula, SLOT, slotPoint, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
 
 /** Every digit a reader may want to check by hand (12 significant). */
 const allDigits = (v: number) => String(Number(v.toPrecision(12)));
-const texMu = (mu: number) => String(Number(mu.toFixed(4)));
 const coords = (p: readonly number[], digits: number) => p.map((v) => texNumber(v, digits));
 
 // Equation 2 of the notes: the three conditions.
@@ -36,7 +36,7 @@ export function parametricSection() {
     ),
     update(m: QuadraticModel) {
       const [p0, p1, p2] = m.state.p;
-      const mu = texMu(m.state.mu);
+      const mu = texT(m.state.mu);
       const { coefficients, atMu } = m.parametric;
       const [a0, a1, a2] = coefficients;
       conditions.set(CONDITIONS, [

@@ -2,7 +2,7 @@ import { dataTable, fmt, h } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
-import { seriesColour } from '../de-casteljau/colours';
+import { seriesColour } from '../../kit/seriesColours';
 import { type QuadraticState, STEP, clampMu } from './state';
 
 const RULES = `\\begin{aligned}d_0 &= |P_1 - P_0| = ${SLOT},\\quad d_1 = |P_2 - P_1| = ${SLOT}\\\\ \\text{uniform: } \\mu_1 &= \\tfrac12\\\\ \\text{chord length: } \\mu_1 &= \\frac{d_0}{d_0 + d_1} = ${SLOT}\\\\ \\text{centripetal: } \\mu_1 &= \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${SLOT}\\end{aligned}`;

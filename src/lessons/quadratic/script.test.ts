@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import { checkScript, drawState } from '../de-casteljau/scriptChecks';
+import { checkScript, drawState } from '../../kit/scriptChecks';
 import { quadraticFigure } from './figure';
 import lesson from './lesson';
 import { derive } from './model';

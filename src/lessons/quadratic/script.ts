@@ -1,13 +1,11 @@
 import { type Point, parametricQuadraticPoint } from '../../math';
-import { texNumber } from '../../render/formula';
+import { texNumber, texPoint, trimmed } from '../../kit/format';
 import { explicitParabola, sameXWords } from './explicit';
 import type { QuadraticModel } from './model';
 import { FAMILY, type QuadraticState, STEP } from './state';
 
 /** A number in a caption: up to two decimals, trailing zeros dropped. */
-const words = (v: number) => String(Number(v.toFixed(2)));
-const texPoint = (p: readonly number[], digits = 3) =>
-  `(${p.map((v) => texNumber(v, digits)).join(',\\ ')})`;
+const words = (v: number) => trimmed(v, 2);
 /** A term after the first, ± |v| then its power: never "+ −", and nothing for a zero. */
 const term = (v: number, power: string, digits: number) => {
   const size = texNumber(Math.abs(v), digits);
@@ -44,7 +42,7 @@ export function stepFormula(m: QuadraticModel, state: QuadraticState): string | 
   const { p, mu } = state;
   switch (state.step) {
     case STEP.points:
-      return p.map((q: Point, i) => `P_${i} = ${texPoint(q)}`).join(',\\quad ');
+      return p.map((q: Point, i) => `P_${i} = ${texPoint(q, 3)}`).join(',\\quad ');
     case STEP.parabola: {
       const parabola = m.explicit.parabola;
       if (parabola.kind === 'same-x') return null;
@@ -53,11 +51,11 @@ export function stepFormula(m: QuadraticModel, state: QuadraticState): string | 
     }
     case STEP.parametric: {
       const [a0, a1, a2] = m.parametric.coefficients;
-      return `P(\\mu) = ${texPoint(a2)}\\,\\mu^2 + ${texPoint(a1)}\\,\\mu + ${texPoint(a0)}`;
+      return `P(\\mu) = ${texPoint(a2, 3)}\\,\\mu^2 + ${texPoint(a1, 3)}\\,\\mu + ${texPoint(a0, 3)}`;
     }
     case STEP.ticks: {
       const at = (u: number) => parametricQuadraticPoint(p[0], p[1], p[2], mu, u);
-      return `P(0.1) = ${texPoint(at(0.1))},\\quad P(0.5) = ${texPoint(at(0.5))},\\quad P(0.9) = ${texPoint(at(0.9))}`;
+      return `P(0.1) = ${texPoint(at(0.1), 3)},\\quad P(0.5) = ${texPoint(at(0.5), 3)},\\quad P(0.9) = ${texPoint(at(0.9), 3)}`;
     }
     case STEP.family:
       return `\\mu_1 = ${FAMILY.map((v) => String(v)).join(',\\ ')}\\quad\\text{(and the slider's } \\mu_1 = ${words(mu)}\\text{)}`;

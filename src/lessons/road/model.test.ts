@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { Point } from '../../math';
 import { derive } from './model';
 import type { AnyLesson } from '../../app/lesson';
-import { checkScript } from '../blending/scriptCheck';
+import { checkScript } from '../../kit/scriptChecks';
 import { roadHandles } from './handles';
 import { valleyVillages } from './presets';
 import { describeStep } from './script';

@@ -2,7 +2,7 @@ import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox, pointButtons } from '../../app/panelControls';
 import { extendPolygon } from '../../interact/editPoints';
-import { type CurvatureOf, curvatureLink } from '../curvature/link';
+import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
 import { setText } from '../../app/dom';
 import { methodSection } from './methodPanel';
 import type { RoadModel } from './model';

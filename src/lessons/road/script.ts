@@ -1,5 +1,5 @@
 import { type FormulaParts, livePoint, tex } from '../../render/formulaParts';
-import { filled } from '../blending/scriptKit';
+import { filled } from '../../kit/format';
 import { methodFormula } from './methodFormula';
 import type { RoadModel } from './model';
 import { CURVES } from './roads';

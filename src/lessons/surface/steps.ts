@@ -1,4 +1,5 @@
 import type { StepsSpec } from '../../app/lesson';
+import { trimmed } from '../../kit/format';
 import type { Continuity } from '../../math';
 import { texNumber } from '../../render/formula';
 import { type JoinReport, type SurfaceModel, joinReport } from './model';
@@ -18,10 +19,9 @@ export const STEP_COUNT: Record<SurfaceMode, number> = {
   join: 3,
 };
 
-const num = (value: number) => String(Number(value.toFixed(2)));
+const num = (value: number) => trimmed(value, 2);
 /** A point with up to three decimals, trailing zeros dropped: (0.9, 1.8, 0.895). */
-const point = (p: readonly number[]) =>
-  `(${p.map((value) => String(Number(value.toFixed(3)))).join(',\\ ')})`;
+const point = (p: readonly number[]) => `(${p.map((value) => trimmed(value, 3)).join(',\\ ')})`;
 const list = (values: readonly number[], digits = 4) =>
   values.map((value) => texNumber(value, digits)).join(' & ');
 const matrix = (rows: readonly (readonly number[])[], digits = 4) =>

@@ -1,6 +1,7 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT, formula } from '../../../render/formula';
-import { type ExperimentPanel, arrangements, coords, slotPoint, texT } from '../experimentPanel';
+import { texT } from '../../../kit/format';
+import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
 import type { ModelOf } from '../model';
 
 const CROSSING = `P(${SLOT}) = P(${SLOT}) = ${slotPoint()}`;

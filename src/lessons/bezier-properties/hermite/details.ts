@@ -1,6 +1,7 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT } from '../../../render/formula';
-import { type ExperimentPanel, coords, slotPoint, smallNumber, texT } from '../experimentPanel';
+import { texT } from '../../../kit/format';
+import { type ExperimentPanel, coords, slotPoint, smallNumber } from '../experimentPanel';
 import type { ModelOf } from '../model';
 import { SAMPLES } from './model';
 

@@ -1,6 +1,7 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
-import { type ExperimentPanel, texT } from '../experimentPanel';
+import { texT } from '../../../kit/format';
+import { type ExperimentPanel } from '../experimentPanel';
 import type { ModelOf } from '../model';
 
 /** The weight of P_r: the sum of the Bernstein weights of its copies, r … r + copies − 1. */

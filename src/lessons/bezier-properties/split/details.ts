@@ -1,8 +1,8 @@
 import { dataTable, h } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula } from '../../../render/formula';
-import { sub } from '../../de-casteljau/script';
-import { type ExperimentPanel, arrangements, coords, slotPoint, texT } from '../experimentPanel';
+import { sub, texT } from '../../../kit/format';
+import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
 import type { ModelOf } from '../model';
 
 /** `\text{left: } (x, y), (x, y), …` with one point slot per control point. */

@@ -1,4 +1,9 @@
-import type { Theme } from '../../render/theme';
+import type { Painter } from '../render/painter';
+import type { Theme } from '../render/theme';
+
+// Colours and dashes for series of curves, so a family of curves (the
+// levels of a construction, the functions of a basis) stays told apart in
+// every theme, for colour-blind viewers and in print.
 
 /**
  * Palette slots for series drawn beside the accent: every theme's accent
@@ -25,7 +30,20 @@ export const levelDash = (r: number): number[] | undefined =>
 /** The left (0) and right (1) half of the subdivision: a colour of its own and a dash of its own. */
 export const halfColour = (palette: Theme['palette'], k: 0 | 1) =>
   seriesColour(palette, LEVEL_COLOURS + k);
+/** The dash of the left (0) and right (1) half, with `halfColour`. */
 export const HALF_DASH: [number[], number[]] = [
   [16, 6],
   [4, 6],
 ];
+
+/**
+ * Series i beyond the palette repeats a colour: it is told apart by a dash
+ * (one pattern per round of the palette), so N = 10 or 11 curves stay distinct
+ * for colour-blind viewers and in print. Undefined within the palette.
+ */
+export function seriesDash(painter: Painter, i: number): number[] | undefined {
+  const round = Math.floor(i / painter.theme.palette.length);
+  if (round === 0) return undefined;
+  const unit = painter.theme.sizes.line * 1.6;
+  return round === 1 ? [unit * 3, unit * 1.6] : [unit, unit * 1.4];
+}

@@ -1,6 +1,6 @@
-import type { Point } from '../../math';
-import type { Painter } from '../../render/painter';
-import type { LabelBox, LabelStyle } from '../../render/labels';
+import type { Point } from '../math';
+import type { Painter } from '../render/painter';
+import type { LabelBox, LabelStyle } from '../render/labels';
 
 /** Offsets tried around a point, as multiples of the label's size: right, left, above, below, corners. */
 const SPOTS: [number, number][] = [

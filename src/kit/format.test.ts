@@ -1,0 +1,30 @@
+import { describe, expect, it } from 'vitest';
+import { filled, sub, texExponent, texPoint, texT, trimmed, words } from './format';
+
+// Exact texts: captions and formulas are compared with reviewed screenshots.
+describe('format', () => {
+  it('writes indices as Unicode subscripts', () => {
+    expect([0, 3, 12, 109].map(sub)).toEqual(['₀', '₃', '₁₂', '₁₀₉']);
+  });
+
+  it('trims numbers to their digits, never "-0"', () => {
+    expect([0.5, 0.125, 0.1236, -0.0001, 2].map((v) => trimmed(v, 3))).toEqual([
+      '0.5',
+      '0.125',
+      '0.124',
+      '0',
+      '2',
+    ]);
+    expect([-2.3456, -0.0004, 1 / 3].map(words)).toEqual(['−2.346', '0', '0.333']);
+    expect([0.3, 1 / 3, 1 - 0.7].map(texT)).toEqual(['0.3', '0.3333', '0.3']);
+  });
+
+  it('writes TeX points, tiny numbers and filled live formulas', () => {
+    expect(texPoint([1, -0.0001], 3)).toBe('(1.000,\\ 0.000)');
+    expect(texExponent(8.9e-16)).toBe('8.9\\times 10^{-16}');
+    expect(texExponent(0)).toBe('0');
+    expect(filled({ shape: 'x = \\val + \\val', values: ['1.00', '2.50'] })).toBe(
+      'x = 1.00 + 2.50',
+    );
+  });
+});

@@ -1,0 +1,33 @@
+/**
+ * Numbers and formulas as the lessons write them: in captions (plain words
+ * and Unicode, read aloud by a lecturer) and in TeX (the step's formula).
+ * Every lesson formats through here, so one number reads the same everywhere.
+ */
+
+// The TeX number and point live with the formula renderer, which fills them
+// into live formulas; they are offered here so a lesson has one place to look.
+export { filled, texNumber, texPoint } from '../render/formula';
+
+const SUBSCRIPTS = '₀₁₂₃₄₅₆₇₈₉';
+
+/** 12 → "₁₂": an index as Unicode subscripts, for captions that are plain text. */
+export const sub = (i: number) => [...String(i)].map((d) => SUBSCRIPTS[Number(d)]).join('');
+
+/**
+ * A number to at most `digits` decimals, trailing zeros dropped: 0.5, not
+ * 0.500. Tiny negatives come out as "0" (String(-0) is "0").
+ */
+export const trimmed = (value: number, digits: number) => String(Number(value.toFixed(digits)));
+
+/** A number in a caption: up to three decimals, trailing zeros dropped, a true minus sign. */
+export const words = (v: number) => trimmed(v, 3).replace('-', '−');
+
+/** A parameter (t, μ) as typed: up to four decimals, trailing zeros dropped. */
+export const texT = (t: number) => trimmed(t, 4);
+
+/** A tiny number in TeX, 8.9e-16 as 8.9 × 10⁻¹⁶ (0 as 0): a residual or a rounding error. */
+export const texExponent = (v: number) => {
+  if (v === 0) return '0';
+  const [mantissa, exponent] = v.toExponential(1).split('e');
+  return `${mantissa}\\times 10^{${Number(exponent)}}`;
+};
