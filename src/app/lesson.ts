@@ -196,6 +196,11 @@ export interface LessonDefinition<S, M = S> {
   scenes?: Scene<S>[];
   /** Cross-field checks after decoding a link or an edit; returns what it changed, in words. */
   normalize?(state: S): { state: S; issues: string[] };
+  /**
+   * The ids of the figures this state's scene shows (the others are hidden
+   * and not drawn); null or absent: all of them.
+   */
+  figuresShown?(state: S): readonly string[] | null;
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
 }
 

@@ -89,6 +89,9 @@ export class LessonPage<S, M> {
   private readonly trails = new Map<string, Point[]>();
   /** The step the caption and ink were last shown for. */
   private shownStep = '';
+  /** The figures' box, and which figures the scene shows now (ids joined; '' for all). */
+  private figureBox!: HTMLElement;
+  private figuresShownKey = '';
 
   constructor(
     readonly meta: LessonMeta,
@@ -149,6 +152,7 @@ export class LessonPage<S, M> {
       { class: 'stage-figures' },
       buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
     );
+    this.figureBox = figures;
     this.presenter = new Presenter(
       figures,
       (tool) => this.toolChanged(tool),
@@ -462,8 +466,10 @@ export class LessonPage<S, M> {
     const drawing = performance.now();
     const stateChanged = state !== this.drawnState || this.refreshAll;
     if (state !== this.drawnState && this.presenter.tools.trail) this.extendTrails(model);
+    if (stateChanged) this.showFigures(state);
     const all = stateChanged || this.hoverChanged;
     for (const figure of this.figures) {
+      if (figure.element.hidden) continue;
       if (!all && !this.dirtyFigures.has(figure)) continue;
       const from = performance.now();
       figure.draw(model);
@@ -519,6 +525,32 @@ export class LessonPage<S, M> {
     performance.measure(`${FRAME}:figures`, { start: drawing, end: panelStart });
     performance.measure(`${FRAME}:panel`, { start: panelStart });
     performance.measure(FRAME, { start });
+  }
+
+  /** The figures on screen: what an export saves. */
+  private shownFigures(): FigureView<S, M>[] {
+    return this.figures.filter((figure) => !figure.element.hidden);
+  }
+
+  /**
+   * Shows the figures this state's scene declares and hides the others, with
+   * any row, column or grid of the layout left with no figure to show.
+   */
+  private showFigures(state: S): void {
+    const ids = this.lesson.figuresShown?.(state) ?? null;
+    const key = ids === null ? '' : ids.join(',');
+    if (key === this.figuresShownKey) return;
+    this.figuresShownKey = key;
+    for (const figure of this.figures)
+      figure.element.hidden = ids !== null && !ids.includes(figure.spec.id);
+    const boxes = [...this.figureBox.querySelectorAll<HTMLElement>('.figures')].reverse();
+    for (const box of boxes)
+      box.hidden = ![...box.children].some(
+        (child) =>
+          child instanceof HTMLElement &&
+          !child.hidden &&
+          !child.matches('.grid-heading, .grid-corner'),
+      );
   }
 
   /**
@@ -651,12 +683,12 @@ export class LessonPage<S, M> {
   async exportPng(): Promise<void> {
     this.refreshAll = true;
     this.drawNow();
-    const blob = await figuresToPng(this.figures, this.shell.theme().background);
+    const blob = await figuresToPng(this.shownFigures(), this.shell.theme().background);
     download(blob, `spline-lab-${this.lesson.slug}.png`);
   }
 
   exportSvg(): void {
-    const svg = figuresToSvg(this.figures, this.current(), this.shell.theme(), this.info());
+    const svg = figuresToSvg(this.shownFigures(), this.current(), this.shell.theme(), this.info());
     download(new Blob([svg], { type: 'image/svg+xml' }), `spline-lab-${this.lesson.slug}.svg`);
   }
 
