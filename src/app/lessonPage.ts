@@ -9,17 +9,19 @@ import { fitToWidth, refitAll } from '../render/fit';
 import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
 import type { LabelBox } from '../render/labels';
 import type { Theme } from '../render/theme';
-import { ParameterControl, StepControl } from './controls';
+import { ParameterControl } from './controls';
 import { memoize } from './derive';
 import { h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
 import type { PresenterTool } from './keymap';
 import { buildLayout } from './layout';
-import type { AnyLesson, DrawInfo, LessonPanel, Point } from './lesson';
+import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
 import { LessonStore, type Loaded } from './lessonState';
 import type { LessonMeta } from './meta';
 import { Presenter } from './presenter';
+import { ScriptWalker } from './scriptWalker';
+import { Trails } from './trails';
 import { UrlSync } from './urlSync';
 
 /** What the app shell offers a lesson page. */
@@ -43,9 +45,6 @@ const PANEL_BUDGET_MS = 12;
 /** Milliseconds of a frame in which new formulas are typeset; the rest wait for the next frame. */
 const TYPESET_BUDGET_MS = 20;
 
-/** Points of a trail kept per figure (a long play is thinned to this many). */
-const TRAIL_MAX = 4000;
-
 export class LessonPage<S, M> {
   readonly element: HTMLElement;
   readonly store: LessonStore<S>;
@@ -54,7 +53,8 @@ export class LessonPage<S, M> {
   private readonly panel: LessonPanel<S, M>;
   private readonly url: UrlSync;
   private readonly parameter?: ParameterControl<S>;
-  private readonly steps?: StepControl;
+  /** The clicker's walk through the script: steps, scenes, their buttons and status. */
+  readonly walker: ScriptWalker<S>;
   private readonly undoButton: HTMLButtonElement;
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
@@ -79,14 +79,10 @@ export class LessonPage<S, M> {
   /** The panel changed: fit its wide content at the start of the next frame. */
   private fitPending = false;
   readonly presenter: Presenter;
-  /** The scene buttons, to mark the current one. */
-  private sceneButtons: HTMLButtonElement[] = [];
-  /** The state each scene was left in, so the clicker going back finds it as it was. */
-  private readonly sceneMemory = new Map<number, S>();
   /** The model kept as a faint ghost (presenter tool), or null. */
   private ghostModel: M | null = null;
   /** The trail of each figure's moving point (presenter tool). */
-  private readonly trails = new Map<string, Point[]>();
+  private readonly trails = new Trails();
   /** The step the caption and ink were last shown for. */
   private shownStep = '';
   /** The figures' box, and which figures the scene shows now (ids joined; '' for all). */
@@ -119,7 +115,7 @@ export class LessonPage<S, M> {
           settle: () => this.url.write(),
           shown: () => this.presenter.shown(),
           ghost: () => this.ghostModel,
-          trail: (figure) => this.trails.get(figure) ?? null,
+          trail: (figure) => this.trails.of(figure),
         }),
     );
     this.panel = lesson.panel({
@@ -134,8 +130,10 @@ export class LessonPage<S, M> {
 
     const host = { get: () => this.store.state, set, settle: () => this.url.write() };
     if (lesson.parameter) this.parameter = new ParameterControl<S>(lesson.parameter, host);
-    if (lesson.steps || lesson.scenes?.length)
-      this.steps = new StepControl((delta) => this.advance(delta));
+    this.walker = new ScriptWalker<S>(lesson, this.store, {
+      fit: () => this.fit(),
+      announce: (text) => shell.announce(text),
+    });
     this.undoButton = h(
       'button',
       { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.undo() },
@@ -167,14 +165,14 @@ export class LessonPage<S, M> {
         'div',
         { class: 'controls' },
         this.parameter?.element,
-        this.steps?.element,
+        this.walker.steps?.element,
         this.presenter.toolbar,
       ),
     );
     const aside = h(
       'aside',
       { class: 'panel', 'aria-label': 'Explanation' },
-      this.sceneButtonGroup(),
+      this.walker.sceneGroup,
       this.panel.element,
     );
     this.element = h(
@@ -244,94 +242,12 @@ export class LessonPage<S, M> {
     this.requestFrame();
   };
 
-  private sceneButtonGroup(): HTMLElement | null {
-    const scenes = this.lesson.scenes;
-    if (!scenes?.length) return null;
-    this.sceneButtons = scenes.map((scene, i) =>
-      h(
-        'button',
-        {
-          type: 'button',
-          'data-scene': scene.id,
-          'aria-pressed': String(i === this.store.scene),
-          title: `Scene ${i + 1} of ${scenes.length}: opens at its first step`,
-          onclick: () => this.openScene(i, 'first', true),
-        },
-        scene.label,
-      ),
-    );
-    return h(
-      'div',
-      { class: 'presets', role: 'group', 'aria-label': 'Scenes' },
-      h('span', { class: 'presets-title' }, 'Scenes'),
-      ...this.sceneButtons,
-    );
-  }
-
-  private stepOf(state: S): { k: number; count: number } {
-    const steps = this.lesson.steps;
-    if (!steps) return { k: 0, count: 0 };
-    return { k: (state as Record<string, number>)[steps.key], count: steps.count(state) };
-  }
-
-  private withStep(state: S, k: number): S {
-    const key = this.lesson.steps?.key;
-    return key === undefined ? state : { ...state, [key]: k };
-  }
-
-  /**
-   * Opens scene `index` at its first or last step. A click on its button is an
-   * edit (undoable) and sets the scene up afresh; the clicker is not an edit,
-   * and finds a scene it left as it was left.
-   */
-  openScene(index: number, at: 'first' | 'last', fresh: boolean): void {
-    const scenes = this.lesson.scenes ?? [];
-    const scene = scenes[index];
-    if (!scene) return;
-    this.sceneMemory.set(this.store.scene, this.store.state);
-    const kept = fresh ? undefined : this.sceneMemory.get(index);
-    const base = kept ?? scene.apply(this.store.state);
-    const k = at === 'first' ? 0 : this.stepOf(base).count;
-    this.store.scene = index;
-    this.store.set(this.withStep(base, k), { record: fresh });
-    this.sceneButtons.forEach((b, i) => b.setAttribute('aria-pressed', String(i === index)));
-    this.fit();
-    this.shell.announce(`Scene ${index + 1} of ${scenes.length}: ${scene.label}`);
-  }
-
-  /** The clicker: the next (or previous) step, and past the last (first) one the next (previous) scene. */
   advance(delta: 1 | -1): void {
-    const { k, count } = this.stepOf(this.store.state);
-    const next = k + delta;
-    if (next >= 0 && next <= count) {
-      this.store.set(this.withStep(this.store.state, next), { record: false });
-      return;
-    }
-    const scene = this.store.scene + delta;
-    if (scene >= 0 && scene < (this.lesson.scenes?.length ?? 0))
-      this.openScene(scene, delta > 0 ? 'first' : 'last', false);
-    else this.shell.announce(delta > 0 ? 'The end of the lesson' : 'The start of the lesson');
+    this.walker.advance(delta);
   }
 
-  private updateSteps(state: S): void {
-    if (!this.steps) return;
-    const { k, count } = this.stepOf(state);
-    const scenes = this.lesson.scenes?.length ?? 0;
-    const text = this.lesson.steps
-      ? `${count > 0 ? `Step ${k}/${count}: ` : ''}${this.lesson.steps.describe(state, k)}`
-      : `Scene ${this.store.scene + 1} of ${scenes}`;
-    this.steps.update(
-      text,
-      k === 0 && this.store.scene === 0,
-      k === count && this.store.scene >= scenes - 1,
-    );
-  }
-
-  /** Home / End: the first or last step of this scene. */
   stepTo(end: 'first' | 'last'): void {
-    const { k, count } = this.stepOf(this.store.state);
-    const target = end === 'first' ? 0 : count;
-    if (target !== k) this.store.set(this.withStep(this.store.state, target), { record: false });
+    this.walker.stepTo(end);
   }
 
   /** A presenter tool was switched: redraw what it changes. */
@@ -348,24 +264,11 @@ export class LessonPage<S, M> {
     return this.presenter.blanked;
   }
 
-  /** The moving points of this state, added to the trails (presenter tool). */
-  private extendTrails(model: M): void {
-    for (const figure of this.figures) {
-      const point = figure.spec.trail?.(model);
-      if (!point) continue;
-      const trail = this.trails.get(figure.spec.id) ?? [];
-      const last = trail[trail.length - 1];
-      if (!last || last.some((v, i) => v !== point[i])) trail.push(point);
-      if (trail.length > TRAIL_MAX) trail.splice(0, trail.length - TRAIL_MAX / 2);
-      this.trails.set(figure.spec.id, trail);
-    }
-  }
-
   /** The caption of the current step, for presenter view; ink is cleared when the step changes. */
   private updateCaption(state: S, model: M): void {
     const steps = this.lesson.steps;
     const scenes = this.lesson.scenes ?? [];
-    const { k, count } = this.stepOf(state);
+    const { k, count } = this.walker.stepOf(state);
     const key = `${this.store.scene}/${k}`;
     if (key !== this.shownStep) {
       if (this.shownStep !== '') this.presenter.clearInk();
@@ -465,7 +368,8 @@ export class LessonPage<S, M> {
     const model = this.model(state);
     const drawing = performance.now();
     const stateChanged = state !== this.drawnState || this.refreshAll;
-    if (state !== this.drawnState && this.presenter.tools.trail) this.extendTrails(model);
+    if (state !== this.drawnState && this.presenter.tools.trail)
+      this.trails.extend(this.figures, model);
     if (stateChanged) this.showFigures(state);
     const all = stateChanged || this.hoverChanged;
     for (const figure of this.figures) {
@@ -494,7 +398,7 @@ export class LessonPage<S, M> {
       }
       this.updateCaption(state, model);
       this.parameter?.update(state);
-      this.updateSteps(state);
+      this.walker.update(state);
       this.undoButton.disabled = !this.store.canUndo;
       this.redoButton.disabled = !this.store.canRedo;
     }
@@ -603,10 +507,7 @@ export class LessonPage<S, M> {
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();
-    // A link is a new starting point of the script: its scene, and no memory of others.
-    this.sceneMemory.clear();
-    this.store.scene = loaded.scene;
-    this.sceneButtons.forEach((b, i) => b.setAttribute('aria-pressed', String(i === loaded.scene)));
+    this.walker.restart(loaded.scene);
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     const same = this.store.query() === new LessonStore<S>(this.lesson, loaded.state).query();
