@@ -150,10 +150,13 @@ function shellFigure<S, M extends { state: S }>(figure: KitFigure<S, M>): Figure
       if (found) return found.list.move(state, found.index, to);
       return figure.moveHandle?.(state, id, to, model) ?? state;
     },
-    addPoint: addTo ? (state: S, at: Point) => addTo.add(state, at) : undefined,
-    removeHandle(state: S, id: string): S | null {
-      const found = owner(points, id);
-      return found ? found.list.remove(state, found.index) : null;
-    },
+    addPoint: addTo?.resizable ? (state: S, at: Point) => addTo.add(state, at) : undefined,
+    // Delete and right-click only where a list can lose a point (three points of a parabola cannot).
+    removeHandle: points.some((list) => list.resizable)
+      ? (state: S, id: string): S | null => {
+          const found = owner(points, id);
+          return found ? found.list.remove(state, found.index) : null;
+        }
+      : undefined,
   };
 }

@@ -51,6 +51,8 @@ export interface PointListSpec<S> {
 /** What one declaration gives a figure and a panel. */
 export interface PointList<S> {
   readonly id: string;
+  /** Points can be added or removed (fewer allowed than most): a fixed list offers neither. */
+  readonly resizable: boolean;
   /** The handles the shell draws, drags and moves by keyboard. */
   handles(state: S): Handle[];
   /** The handle with this id is one of this list's: which point it is, else null. */
@@ -74,6 +76,7 @@ export function pointList<S>(spec: PointListSpec<S>): PointList<S> {
   };
   return {
     id: spec.id,
+    resizable: spec.min < spec.max,
     handles(state) {
       const points = spec.get(state);
       // Points on one spot share one label (`P_0 = P_1`); each keeps its own spoken name.
