@@ -2,13 +2,8 @@ import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/ha
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
 import { OrbitCamera } from '../render/orbitCamera';
-import {
-  type HandleState,
-  Painter,
-  type Shown,
-  SHOW_ALL,
-  splitSubscripts,
-} from '../render/painter';
+import { Painter, type Shown, SHOW_ALL } from '../render/painter';
+import { drawHandles, plainLabel } from '../render/handles';
 import type { LabelBox } from '../render/labels';
 import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
@@ -16,6 +11,9 @@ import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { fmtPoint } from './dom';
 import type { DrawInfo, FigureSpec, Handle, Point } from './lesson';
+import { SpokenNames } from './spokenNames';
+
+export { drawHandles, plainLabel } from '../render/handles';
 
 /** What a figure needs from the page that hosts it. */
 export interface FigureHost<S, M> {
@@ -42,41 +40,7 @@ export interface FigureHost<S, M> {
   trail(figure: string): readonly Point[] | null;
 }
 
-/** Plain-text name of a lecture label: `P_{1,2}` → `P1,2`. */
-export const plainLabel = (label: string) =>
-  splitSubscripts(label)
-    .map((r) => r.text)
-    .join('');
-
 let dragSerial = 0;
-
-/** Draws a figure's handles with their labels (the screen, exports and tests use this one routine). */
-export function drawHandles(
-  painter: Painter,
-  handles: readonly Handle[],
-  stateOf: (handle: Handle) => HandleState = () => 'idle',
-): void {
-  const theme = painter.theme;
-  for (const handle of handles) {
-    const state = stateOf(handle);
-    painter.handle(handle.position, {
-      color: handle.color,
-      shape: handle.shape,
-      state,
-      // A small handle grows to full size while it is held, hovered or focused.
-      radius: handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : undefined,
-    });
-    if (handle.showLabel !== false && painter.show.labels) {
-      painter.label(handle.label, handle.position, {
-        dx: theme.sizes.handle + 4,
-        dy: -(theme.sizes.handle + theme.sizes.label * 0.45),
-        color: handle.color ?? theme.ink,
-        halo: true,
-        bold: true,
-      });
-    }
-  }
-}
 
 /** One canvas of a lesson, sharp at any devicePixelRatio, with its handles. */
 export class FigureView<S, M> {
@@ -90,8 +54,7 @@ export class FigureView<S, M> {
   private handles: Handle[] = [];
   private handlesOf: M | null = null;
   private names: string[] = [];
-  /** Names by label and position, to reuse for handles that did not move. */
-  private named = new Map<string, string>();
+  private readonly spokenNames = new SpokenNames();
   private dragging: { drag: HandleDrag; key: string } | null = null;
   private focused: string | null = null;
   private fitted = false;
@@ -303,17 +266,7 @@ export class FigureView<S, M> {
     if (this.handlesOf !== model) {
       this.handles = this.spec.handles?.(model) ?? [];
       this.handlesOf = model;
-      // Spoken names change with the model only, not with a pan or a zoom; and
-      // of 500 villages one is dragged: the others keep the name they had.
-      const before = this.named;
-      this.named = new Map();
-      this.names = this.handles.map((handle) => {
-        const key = `${handle.label}@${handle.position.join(',')}`;
-        const name =
-          before.get(key) ?? `${plainLabel(handle.label)} at ${fmtPoint(handle.position)}`;
-        this.named.set(key, name);
-        return name;
-      });
+      this.names = this.spokenNames.of(this.handles);
     }
     return this.handles;
   }
