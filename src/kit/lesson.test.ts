@@ -122,4 +122,44 @@ describe('a lesson made of the kit', () => {
     expect(fixed.removeHandle).toBeUndefined();
     expect(fixed.handles!({ state: a } as M).map((h) => h.id)).toEqual(['p0', 'p1', 'p2']);
   });
+
+  it('interleaves two lists by index when asked: D0, P0, D1, P1', () => {
+    const tips = pointList<S>({
+      id: 'd',
+      get: (s) => s.p.map(([x, y]) => [x, y + 1]),
+      set: (s) => s,
+      label: (i) => `D_{${i}}`,
+      min: 0,
+      max: 0,
+    });
+    const lesson = make(2, 5);
+    const kit = defineLesson<S, M, string>({
+      slug: 'demo2',
+      schema,
+      step: 'step',
+      script: script(step('one', 'One')),
+      derive: (state, shown) => ({ state, shown }),
+      scenes: [{ id: 'a', label: 'A', setup: (s) => s }],
+      figures: [
+        {
+          id: 'plane',
+          title: 'Plane',
+          kind: 'geometry',
+          bounds: () => ({ minX: 0, maxX: 1, minY: 0, maxY: 1 }),
+          draw: () => {},
+          points: [tips, list(2, 5)],
+          interleave: true,
+        },
+      ],
+      panel: lesson.panel,
+    });
+    expect(kit.figures[0].handles!({ state: a } as M).map((h) => h.id)).toEqual([
+      'd0',
+      'p0',
+      'd1',
+      'p1',
+      'd2',
+      'p2',
+    ]);
+  });
 });

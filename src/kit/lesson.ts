@@ -51,6 +51,12 @@ export interface KitFigure<S, M extends { state: S }> extends Omit<
   points?: readonly PointList<S>[];
   /** The list a double-click or long-press on empty space adds to. */
   addTo?: PointList<S>;
+  /**
+   * Handles in index order across the lists (D₀, P₀, D₁, P₁, …: Tab visits
+   * each point with its own gradient, and each point is drawn over its own
+   * tip), instead of one list after the other.
+   */
+  interleave?: boolean;
 }
 
 export interface KitLessonSpec<S, M extends { state: S }, N extends string> {
@@ -137,14 +143,19 @@ function owner<S>(lists: readonly PointList<S>[], id: string) {
 }
 
 function shellFigure<S, M extends { state: S }>(figure: KitFigure<S, M>): FigureSpec<S, M> {
-  const { points = [], addTo, ...rest } = figure;
+  const { points = [], addTo, interleave = false, ...rest } = figure;
+  const listed = (state: S): Handle[] => {
+    const lists = points.map((list) => list.handles(state));
+    if (!interleave) return lists.flat();
+    const longest = Math.max(0, ...lists.map((handles) => handles.length));
+    return Array.from({ length: longest }, (_, i) =>
+      lists.flatMap((handles) => (i < handles.length ? [handles[i]] : [])),
+    ).flat();
+  };
   if (points.length === 0 && !addTo) return rest;
   return {
     ...rest,
-    handles: (model: M): Handle[] => [
-      ...points.flatMap((list) => list.handles(model.state)),
-      ...(figure.handles?.(model) ?? []),
-    ],
+    handles: (model: M): Handle[] => [...listed(model.state), ...(figure.handles?.(model) ?? [])],
     moveHandle(state: S, id: string, to: Point, model: M): S {
       const found = owner(points, id);
       if (found) return found.list.move(state, found.index, to);
