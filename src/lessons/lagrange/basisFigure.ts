@@ -1,16 +1,16 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import { niceStep } from '../../render/projection';
 import { plotYName, valueColumn } from '../../kit/plotMarks';
 import { seriesDash } from '../../kit/seriesColours';
-import { CLIP, type LagrangeModel } from './model';
+import { CLIP, type LagrangeModel, basisId } from './model';
 import type { LagrangeState } from './state';
 
 /** Label each weight on the plot up to this many points (then only the table). */
 const LABEL_UP_TO = 6;
 
-export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
+export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
   id: 'basis',
   title: 'The Lagrange basis polynomials L_k(t), with the cursor at t',
   kind: 'plot',
@@ -19,12 +19,14 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
     const theme = painter.theme;
     const { ts, weights, plotBounds: bounds, shown } = m;
     const t = m.state.t;
+    // L_k is drawn once its step is reached.
+    const drawn = (k: number) => shown.has('basis', k + 1);
     const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
     painter.plotAxes(bounds, 0.1, yStep, 't', '');
     const top = info.thumbnail ? 0 : plotYName(painter, bounds.minX, bounds.maxY, 'L_k(t)');
     m.basisPieces.forEach((pieces, k) => {
-      if (k >= shown.basis) return;
-      const strong = info.hover === `L${k}`;
+      if (!drawn(k)) return;
+      const strong = info.hover === basisId(k);
       for (const piece of pieces) {
         painter.polylineFlat(piece, {
           color: painter.color(k),
@@ -35,7 +37,7 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
     });
     // L_k(t_k) = 1 and L_k(t_j) = 0: a dot where each is 1.
     ts.forEach((tk, k) => {
-      if (k < shown.basis) painter.dot([tk, 1], painter.color(k), theme.sizes.point * 0.8);
+      if (drawn(k)) painter.dot([tk, 1], painter.color(k), theme.sizes.point * 0.8);
     });
     // The cursor in ink: no basis polynomial has its colour.
     painter.segment([t, bounds.minY], [t, bounds.maxY], {
@@ -45,20 +47,20 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
     });
     const inView = weights
       .map((w, k) => ({ w, k }))
-      .filter(({ w, k }) => k < shown.basis && w >= bounds.minY && w <= bounds.maxY);
+      .filter(({ w, k }) => drawn(k) && w >= bounds.minY && w <= bounds.maxY);
     for (const { w, k } of inView) painter.dot([t, w], painter.color(k), theme.sizes.point);
-    if (!info.thumbnail && shown.basis > 0 && ts.length <= LABEL_UP_TO)
+    if (!info.thumbnail && shown.has('basis') && ts.length <= LABEL_UP_TO)
       valueColumn(
         painter,
         t,
         bounds,
         top,
-        weights.slice(0, shown.basis).map((w, k) => ({
+        weights.slice(0, shown.count('basis')).map((w, k) => ({
           text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
           color: painter.color(k),
         })),
       );
-    if (!info.thumbnail && m.basisCut && shown.basis > 0) {
+    if (!info.thumbnail && m.basisCut && shown.has('basis')) {
       const [x, y] = painter.view.toScreen([1, bounds.minY]);
       painter.screenLabel(`cut at ±${CLIP}`, x, y - theme.sizes.small * 1.2, {
         align: 'right',
@@ -88,7 +90,7 @@ export const basisFigure: FigureSpec<LagrangeState, LagrangeModel> = {
     basisValuesAt(m.basis, at[0]).forEach((value, k) => {
       if (Math.abs(value - at[1]) < distance) {
         distance = Math.abs(value - at[1]);
-        best = `L${k}`;
+        best = basisId(k);
       }
     });
     return best;

@@ -1,46 +1,42 @@
-import { defineLesson, type Point } from '../../app/lesson';
+import type { Point } from '../../math';
+import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
-import { type LagrangeModel, derive } from './model';
+import { derive } from './model';
 import { lagrangePanel } from './panel';
-import { describeStep, stepFormula } from './script';
-import {
-  DEFAULT_POINTS,
-  type LagrangeState,
-  RUNGE_POINTS,
-  type Spacing,
-  schema,
-  stepCount,
-} from './state';
+import { interpolation } from './script';
+import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, type Spacing, schema } from './state';
 
-const preset = (
+/** A scene: its points, spacing, spline and t (the clicker opens it at step 0). */
+const scene = (
   id: string,
   label: string,
-  p: Point[],
+  points: Point[],
   options: { spacing?: Spacing; spline?: boolean; t?: number } = {},
 ) => ({
   id,
   label,
-  apply: (s: LagrangeState): LagrangeState => ({
+  setup: (s: LagrangeState): LagrangeState => ({
     ...s,
-    p,
+    points,
     spacing: options.spacing ?? 'uniform',
     spline: options.spline ?? false,
     t: options.t ?? 0.4,
   }),
 });
 
-export default defineLesson<LagrangeState, LagrangeModel>({
+export default defineLesson({
   slug: 'lagrange',
   schema,
+  step: 'step',
+  script: interpolation,
   derive,
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
-  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
-    preset('five', 'Five points', DEFAULT_POINTS),
-    preset(
+    scene('five', 'Five points', DEFAULT_POINTS),
+    scene(
       'uneven',
       'Uneven spacing',
       [
@@ -52,9 +48,9 @@ export default defineLesson<LagrangeState, LagrangeModel>({
       ],
       { spacing: 'uniform' },
     ),
-    preset('runge', 'Runge: 11 equally spaced points on a bump', RUNGE_POINTS, { t: 0.05 }),
-    preset('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
-    preset(
+    scene('runge', 'Runge: 11 equally spaced points on a bump', RUNGE_POINTS, { t: 0.05 }),
+    scene('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
+    scene(
       'line',
       'Two points: a line',
       [

@@ -1,19 +1,28 @@
 import { describe, expect, it } from 'vitest';
-import { SAMPLES, derive } from './model';
-import type { AnyLesson } from '../../app/lesson';
+import { type LagrangeModel, SAMPLES } from './model';
 import { lagrangeBasis } from '../../math';
 import { checkScript } from '../../kit/scriptChecks';
-import { describeStep } from './script';
-import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, revealed, stepCount } from './state';
+import lesson from './lesson';
+import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS } from './state';
 
 const state = (over: Partial<LagrangeState> = {}): LagrangeState => ({
-  p: DEFAULT_POINTS,
+  points: DEFAULT_POINTS,
   t: 0.4,
   spacing: 'uniform',
   spline: false,
   step: 0,
   ...over,
 });
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: LagrangeState) => lesson.derive(s) as LagrangeModel;
+const stepCount = (s: LagrangeState) => lesson.steps!.count(s);
+const describeStep = (s: LagrangeState, k: number) => lesson.steps!.describe(s, k);
+/** What a step shows: how many Lₖ, the polynomial, the spline. */
+const revealed = (s: LagrangeState) => {
+  const { shown } = derive(s);
+  return { basis: shown.count('basis'), curve: shown.has('curve'), spline: shown.has('spline') };
+};
 
 describe('Lagrange model', () => {
   it('weighs five equally spaced points at t = 2/5 by the product formula', () => {
@@ -30,7 +39,7 @@ describe('Lagrange model', () => {
   it('puts P(1/2) of two points at their midpoint, each weighing one half', () => {
     const m = derive(
       state({
-        p: [
+        points: [
           [0, 0],
           [3, 2],
         ],
@@ -49,7 +58,7 @@ describe('Lagrange model', () => {
     // Gaps 5, 5 and 10 (3-4-5 triangles): t = 0, 1/4, 1/2, 1.
     const m = derive(
       state({
-        p: [
+        points: [
           [0, 0],
           [3, 4],
           [6, 8],
@@ -65,7 +74,7 @@ describe('Lagrange model', () => {
   it('falls back to equal spacing when two neighbours coincide, and says why', () => {
     const m = derive(
       state({
-        p: [
+        points: [
           [0, 0],
           [1, 2],
           [1, 2],
@@ -98,7 +107,7 @@ describe('Lagrange model', () => {
 
   it('cuts the basis plot at ±3 when the weights swing wider (Runge)', () => {
     const ts = Array.from({ length: 12 }, (_, k) => [k, (k % 2) * 0.1]);
-    const m = derive(state({ p: ts }));
+    const m = derive(state({ points: ts }));
     expect(m.plotBounds.minY).toBe(-3);
     expect(m.plotBounds.maxY).toBe(3);
     expect(m.basisCut).toBe(true);
@@ -109,8 +118,8 @@ describe('Lagrange model', () => {
 });
 
 describe('the script (Lagrange)', () => {
-  it('steps from the points through each Lₖ to the polynomial and the spline, drawing more at the end', async () => {
-    checkScript((await import('./lesson')).default as AnyLesson);
+  it('steps from the points through each Lₖ to the polynomial and the spline, drawing more at the end', () => {
+    checkScript(lesson);
   });
 
   it('reveals L0 … Ln one by one, then the polynomial, then the spline', () => {
@@ -130,7 +139,7 @@ describe('the script (Lagrange)', () => {
     expect(describeStep(state(), 2)).toBe('L1(t): 1 at its own t1, 0 at every other tₖ');
     // Sixteen points and the spline: still at most 20 presses.
     const many = Array.from({ length: 16 }, (_, k) => [k, k % 3]);
-    expect(stepCount(state({ p: many, spline: true }))).toBe(18);
+    expect(stepCount(state({ points: many, spline: true }))).toBe(18);
   });
 
   it('Runge: eleven points equally spaced on y = 4/(1 + x²); the polynomial wiggles past 7 near the ends', () => {
@@ -141,7 +150,7 @@ describe('the script (Lagrange)', () => {
     const ts = RUNGE_POINTS.map((_, k) => k / 10);
     const y = lagrangeBasis(ts, 0.05).reduce((sum, w, k) => sum + w * RUNGE_POINTS[k][1], 0);
     expect(y).toBeGreaterThan(6);
-    const m = derive(state({ p: RUNGE_POINTS, t: 0.05 }));
+    const m = derive(state({ points: RUNGE_POINTS, t: 0.05 }));
     expect(m.at[1]).toBeCloseTo(y, 10);
     expect(m.at[0]).toBeCloseTo(-4.5, 10);
   });
@@ -150,7 +159,7 @@ describe('the script (Lagrange)', () => {
     expect(
       derive(
         state({
-          p: [
+          points: [
             [0, 0],
             [1, 1],
             [3, 3],
@@ -161,7 +170,7 @@ describe('the script (Lagrange)', () => {
     expect(
       derive(
         state({
-          p: [
+          points: [
             [0, 0],
             [1, 2],
             [1, 2],
@@ -173,7 +182,7 @@ describe('the script (Lagrange)', () => {
     expect(
       derive(
         state({
-          p: [
+          points: [
             [2, 2],
             [2, 2],
           ],

@@ -11,7 +11,10 @@ import {
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
 import { degenerate, repeatsText } from '../../kit/degenerate';
-import { type LagrangeState, type Revealed, degree, revealed } from './state';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
+import type { Reveal } from './script';
+import type { LagrangeState } from './state';
 
 /**
  * The basis is sampled at t = i / SAMPLES, once: the plot, the curve
@@ -27,8 +30,8 @@ export interface LagrangeModel {
   state: LagrangeState;
   /** Degree n = number of points − 1. */
   n: number;
-  /** What the step shows. */
-  shown: Revealed;
+  /** What the steps so far reveal: how many Lₖ, the polynomial, the spline. */
+  shown: Revealed<Reveal>;
   /** Points on one spot or one line, and what the polynomial does then; or null. */
   note: string | null;
   /** The parameter values t_k actually used. */
@@ -59,51 +62,84 @@ export interface LagrangeModel {
   basisCut: boolean;
 }
 
+/** What depends on the points and the spacing only. */
+type Polynomial = Omit<
+  LagrangeModel,
+  'state' | 'shown' | 'weights' | 'weightSum' | 'at' | 'spline'
+>;
+
+/** The id under the pointer when it is over L_k's curve (the panel marks L_k's row). */
+export const basisId = (k: number) => `L${k}`;
+
+type Nodes = Pick<LagrangeState, 'points' | 'spacing'>;
+
 /** t_k by the chosen spacing; chord length with two equal neighbours falls back to uniform. */
-export function parameters(state: LagrangeState): Pick<LagrangeModel, 'ts' | 'collapsed'> {
-  if (state.spacing === 'chord') {
-    const ts = parameterValues(state.p, 1);
+export function parameters({ points, spacing }: Nodes): Pick<LagrangeModel, 'ts' | 'collapsed'> {
+  if (spacing === 'chord') {
+    const ts = parameterValues(points, 1);
     for (let k = 1; k < ts.length; k++) {
       // Equal values: no polynomial can be at two places at one t.
-      if (ts[k] === ts[k - 1]) return { ts: parameterValues(state.p, 0), collapsed: [k - 1, k] };
+      if (ts[k] === ts[k - 1]) return { ts: parameterValues(points, 0), collapsed: [k - 1, k] };
     }
     return { ts, collapsed: null };
   }
-  return { ts: parameterValues(state.p, 0), collapsed: null };
+  return { ts: parameterValues(points, 0), collapsed: null };
 }
 
-export function derive(state: LagrangeState): LagrangeModel {
-  const { p, t } = state;
-  const { ts, collapsed } = parameters(state);
-  const basis = sampleBasis((at) => lagrangeBasis(ts, at), SAMPLES);
-  const curves = basis.curves;
-  const weights = lagrangeBasis(ts, t);
-  const curve = combine(curves, p);
-  const plotBounds = basisBounds(basis);
+/**
+ * The basis and the polynomial: they read only the points and the spacing, so
+ * a step, a moved t or the spline switched costs no new sampling.
+ */
+const polynomial = memoOn<LagrangeState, 'points' | 'spacing', Polynomial>(
+  ['points', 'spacing'],
+  (fields) => {
+    const { points } = fields;
+    const { ts, collapsed } = parameters(fields);
+    const basis = sampleBasis((at) => lagrangeBasis(ts, at), SAMPLES);
+    const curves = basis.curves;
+    const curve = combine(curves, points);
+    const plotBounds = basisBounds(basis);
+    return {
+      n: points.length - 1,
+      note: noteFor(points, collapsed !== null),
+      ts,
+      collapsed,
+      collapsedNote: collapsed
+        ? `P${collapsed[0]} and P${collapsed[1]} coincide, so chord length gives them the same t, and no polynomial is at two places at one t: equally spaced values are used instead.`
+        : null,
+      collapsedWarning: collapsed
+        ? `P${collapsed[0]} and P${collapsed[1]} are the same point, so chord length gives them the same parameter value and no polynomial can pass both "at once". The curve uses equally spaced values until you move one of them.`
+        : null,
+      basis,
+      curve,
+      lebesgue: lebesgueConstant(curves),
+      curveBounds: curveBounds(points, curve, collapsed !== null),
+      plotBounds,
+      basisPieces: curves.map((c) => clipToBand(c, plotBounds.minY, plotBounds.maxY)),
+      basisCut: basis.lowest.value < -CLIP || basis.highest.value > CLIP,
+    };
+  },
+);
+
+/** The natural cubic spline through the same points, when it is compared. */
+const splineThrough = memoOn<LagrangeState, 'points' | 'spline', Point[][] | null>(
+  ['points', 'spline'],
+  ({ points, spline }) =>
+    spline ? cubicSplineSegments(points, naturalCubicTangents(points)) : null,
+);
+
+export function derive(state: LagrangeState, shown: Revealed<Reveal>): LagrangeModel {
+  const { points, t } = state;
+  const geometry = polynomial(state);
+  const weights = lagrangeBasis(geometry.ts, t);
   return {
+    ...geometry,
     state,
-    n: degree(state),
-    shown: revealed(state),
-    note: noteFor(state, collapsed !== null),
-    ts,
-    collapsed,
-    collapsedNote: collapsed
-      ? `P${collapsed[0]} and P${collapsed[1]} coincide, so chord length gives them the same t, and no polynomial is at two places at one t: equally spaced values are used instead.`
-      : null,
-    collapsedWarning: collapsed
-      ? `P${collapsed[0]} and P${collapsed[1]} are the same point, so chord length gives them the same parameter value and no polynomial can pass both "at once". The curve uses equally spaced values until you move one of them.`
-      : null,
-    basis,
-    curve,
+    shown,
     weights,
     weightSum: weights.reduce((a, b) => a + b, 0),
-    at: [0, 1].map((d) => weights.reduce((sum, w, k) => sum + w * p[k][d], 0)),
-    spline: state.spline ? cubicSplineSegments(p, naturalCubicTangents(p)) : null,
-    lebesgue: lebesgueConstant(curves),
-    curveBounds: curveBounds(p, curve, collapsed !== null),
-    plotBounds,
-    basisPieces: curves.map((c) => clipToBand(c, plotBounds.minY, plotBounds.maxY)),
-    basisCut: basis.lowest.value < -CLIP || basis.highest.value > CLIP,
+    at: [0, 1].map((d) => weights.reduce((sum, w, k) => sum + w * points[k][d], 0)),
+    spline: splineThrough(state),
   };
 }
 
@@ -149,8 +185,8 @@ function basisBounds({ lowest, highest }: BasisSamples): Bounds {
 }
 
 /** Coincident or collinear points, in words: what the polynomial does through them. */
-function noteFor(state: LagrangeState, collapsed: boolean): string | null {
-  const { allSame, collinear, repeats } = degenerate(state.p);
+function noteFor(points: readonly Point[], collapsed: boolean): string | null {
+  const { allSame, collinear, repeats } = degenerate(points);
   if (allSame) return 'All points are on one spot: the polynomial through them is that one point.';
   const notes: string[] = [];
   if (collinear)

@@ -1,12 +1,12 @@
 import { dataTable, fmt, h } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
+import { checkbox, radioGroup } from '../../app/panelControls';
 import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/formula';
-import type { LagrangeModel } from './model';
-import { keepLastStep } from '../../kit/keepLastStep';
-import { type LagrangeState, MAX_POINTS, type Spacing, stepCount } from './state';
+import { type LagrangeModel, basisId } from './model';
+import { interpolatedPoints } from './points';
+import { keepShownToEnd } from './script';
+import type { LagrangeState, Spacing } from './state';
 
 const SPACINGS: [Spacing, string][] = [
   ['uniform', 'Equally spaced: tₖ = k / n'],
@@ -30,17 +30,9 @@ export function lagrangePanel(
     id: 'lagrange-spline',
     label: 'Compare with a natural cubic spline through the same points',
     get: (s) => s.spline,
-    set: (s, on) => keepLastStep(s, { ...s, spline: on }, stepCount),
+    set: (s, on) => keepShownToEnd(s, { ...s, spline: on }),
   });
-  const pointCount = pointButtons(api, {
-    addLabel: 'Add a point',
-    removeLabel: 'Remove the last point',
-    count: (s) => s.p.length,
-    min: 2,
-    max: MAX_POINTS,
-    add: (s) => keepLastStep(s, { ...s, p: [...s.p, extendPolygon(s.p)] }, stepCount),
-    remove: (s) => keepLastStep(s, { ...s, p: s.p.slice(0, -1) }, stepCount),
-  });
+  const pointCount = interpolatedPoints.buttons(api);
   const heading = h('h2', {});
   const warning = h('p', { class: 'warning', role: 'note' });
   const pointFormula = new LiveFormula(true);
@@ -81,7 +73,9 @@ export function lagrangePanel(
 
   /** The row of the basis curve under the pointer is marked, in whichever figure. */
   const markHovered = () => {
-    [...tableBody.rows].forEach((row, k) => row.classList.toggle('current', hovered === `L${k}`));
+    [...tableBody.rows].forEach((row, k) =>
+      row.classList.toggle('current', hovered === basisId(k)),
+    );
   };
 
   return {
@@ -98,7 +92,7 @@ export function lagrangePanel(
       const t = texNumber(state.t, 3);
       pointFormula.set(pointShape(n), [t, t, ...at.map((v) => texNumber(v, 3))]);
       table.set(
-        state.p.map((point, k) => ({
+        state.points.map((point, k) => ({
           cells: [
             { text: `L${k}`, swatch: palette[k % palette.length] },
             fmt(ts[k], 4),
