@@ -1,35 +1,29 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import { placeMemberLabels } from './labels';
 import type { Member, QuadraticModel } from './model';
 import { seriesColour } from '../../kit/seriesColours';
-import { stackedLabels } from '../../kit/labels';
-import { type QuadraticState, STEP } from './state';
+import { threePoints } from './points';
+import type { QuadraticState } from './state';
 
-export const quadraticFigure: FigureSpec<QuadraticState, QuadraticModel> = {
+export const quadraticFigure: KitFigure<QuadraticState, QuadraticModel> = {
   id: 'quadratic',
   title: 'Three points with the parabola y(x) and parametric quadratics through them',
   kind: 'geometry',
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
-    const step = m.state.step;
-    if (step >= STEP.parabola && step <= STEP.ticks) {
-      drawExplicit(painter, m, info.thumbnail, step === STEP.parabola);
+    const { shown } = m;
+    // y(x) from its step until the family: strong at its own step, faint under P(μ) after.
+    if (shown.has('parabola') && !shown.has('family')) {
+      drawExplicit(painter, m, info.thumbnail, shown.is('parabola'));
     }
-    if (step >= STEP.parametric) drawParametric(painter, m, info.thumbnail, step >= STEP.ticks);
+    if (shown.has('parametric')) drawParametric(painter, m, info.thumbnail, shown.has('ticks'));
   },
-  handles: (m) => {
-    const labels = stackedLabels(m.state.p, (i) => `P_${i}`);
-    return m.state.p.map((point, i) => ({ id: `p${i}`, ...labels[i], position: point }));
-  },
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
-  },
+  points: [threePoints],
 };
 
-/** Step 1: y = a2x² + a1x + a0, or a plain sentence on why there is none (faint under steps 2–3). */
+/** y = a2x² + a1x + a0, or a plain sentence on why there is none (faint under P(μ) and its dots). */
 function drawExplicit(painter: Painter, m: QuadraticModel, thumbnail: boolean, main: boolean) {
   const theme = painter.theme;
   const { parabola, curve, column, labelAt, figureNote } = m.explicit;
@@ -67,7 +61,7 @@ function drawExplicit(painter: Painter, m: QuadraticModel, thumbnail: boolean, m
   }
 }
 
-/** From step 2: the quadratic on the slider, strong, over the members of the step; dots from step 3. */
+/** The quadratic on the slider, strong, over the members of the step; its dots once they are shown. */
 function drawParametric(painter: Painter, m: QuadraticModel, thumbnail: boolean, dots: boolean) {
   const theme = painter.theme;
   const { current, members } = m.parametric;

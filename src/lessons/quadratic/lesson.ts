@@ -1,29 +1,29 @@
-import { defineLesson, type Point } from '../../app/lesson';
+import type { Point } from '../../math';
+import { defineLesson } from '../../kit/lesson';
 import { quadraticFigure } from './figure';
-import { type QuadraticModel, derive } from './model';
+import { derive } from './model';
 import { quadraticPanel } from './panel';
-import { describeStep, stepFormula } from './script';
-import { DEFAULT_POINTS, LAST_STEP, MU_MAX, MU_MIN, type QuadraticState, schema } from './state';
+import { construction } from './script';
+import { DEFAULT_POINTS, MU_MAX, MU_MIN, type QuadraticState, schema } from './state';
 
-/** A scene: its three points, shown to the end (the clicker opens it at step 0). */
-const scene = (id: string, label: string, p: Point[], mu = 0.5) => ({
+/** A scene: its three points and μ1, shown to the end (the clicker opens it at step 0). */
+const scene = (id: string, label: string, points: Point[], mu = 0.5) => ({
   id,
   label,
-  apply: (s: QuadraticState): QuadraticState => ({ ...s, p, step: LAST_STEP, mu }),
+  setup: (s: QuadraticState): QuadraticState => {
+    const next = { ...s, points, mu };
+    return { ...next, step: construction.lastStep(next) };
+  },
 });
 
-export default defineLesson<QuadraticState, QuadraticModel>({
+export default defineLesson({
   slug: 'quadratic',
   schema,
+  step: 'step',
+  script: construction,
   derive,
   figures: [quadraticFigure],
   parameter: { key: 'mu', label: 'μ₁', min: MU_MIN, max: MU_MAX, step: 0.01 },
-  steps: {
-    key: 'step',
-    count: () => LAST_STEP,
-    describe: describeStep,
-    formula: stepFormula,
-  },
   // In the lecture's order: a parabola, two ways it fails, the family, the rules.
   scenes: [
     scene('figure-1', 'Figure 1: a parabola', DEFAULT_POINTS),

@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { derive } from './model';
+import lesson from './lesson';
 import type { QuadraticState } from './state';
 
-const state = (p: number[][], step = 0, mu = 0.5): QuadraticState => ({ p, step, mu });
+const state = (points: number[][], step = 0, mu = 0.5): QuadraticState => ({ points, step, mu });
+const derive = (s: QuadraticState) => lesson.derive(s);
 const LECTURE = [
   [0, 0],
   [1, 2],

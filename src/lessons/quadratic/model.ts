@@ -1,7 +1,15 @@
 import type { Point } from '../../math';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
 import { type Bounds, boundsOf } from '../../render/projection';
 import { type Explicit, deriveExplicit } from './explicit';
-import { type Parametric, deriveParametric } from './parametric';
+import {
+  type Parametric,
+  type ParametricCurves,
+  parametricCurves,
+  shownCurves,
+} from './parametric';
+import type { Reveal } from './script';
 import type { QuadraticState } from './state';
 
 export type { Parabola } from './explicit';
@@ -10,26 +18,44 @@ export type { Member, MuRule } from './parametric';
 /** Everything the figure and the panel show, computed once per state. */
 export interface QuadraticModel {
   state: QuadraticState;
-  /** The parabola y(x) (step 0, and faintly under step 1). */
+  /** What the steps so far reveal: the parabola, the parametric curve, its dots, the family, the rules. */
+  shown: Revealed<Reveal>;
+  /** The parabola y(x). */
   explicit: Explicit;
   /** The parametric quadratic, its coefficients and the curves of the step. */
   parametric: Parametric;
-  /** What "fit view" shows: the points and the step's main curves, apex included. */
+  /** What "fit view" shows: the points and every step's curves, apex included. */
   bounds: Bounds;
 }
 
-export function derive(state: QuadraticState): QuadraticModel {
-  const explicit = deriveExplicit(state.p);
-  const parametric = deriveParametric(state);
-  return { state, explicit, parametric, bounds: fitBounds(state, explicit, parametric) };
+/** y(x) reads only the points: moving the μ1 slider does not solve it again. */
+const explicitOf = memoOn<Pick<QuadraticState, 'points'>, 'points', Explicit>(
+  ['points'],
+  ({ points }) => deriveExplicit(points),
+);
+
+/** Every curve of the construction reads only the points and μ1, so a step costs no new work. */
+const curvesOf = memoOn<
+  QuadraticState,
+  'points' | 'mu',
+  { curves: ParametricCurves; bounds: Bounds }
+>(['points', 'mu'], ({ points, mu }) => {
+  const curves = parametricCurves(points, mu);
+  return { curves, bounds: fitBounds(points, explicitOf({ points }), curves) };
+});
+
+export function derive(state: QuadraticState, shown: Revealed<Reveal>): QuadraticModel {
+  const explicit = explicitOf(state);
+  const { curves, bounds } = curvesOf(state);
+  return { state, shown, explicit, parametric: shownCurves(curves, shown), bounds };
 }
 
 /**
  * What "fit view" shows: the points and every curve of every step (apex
  * included), so that stepping through the construction never needs a new view.
  */
-function fitBounds(state: QuadraticState, explicit: Explicit, parametric: Parametric): Bounds {
-  const shown: Point[] = [...state.p, ...parametric.all];
+function fitBounds(points: readonly Point[], explicit: Explicit, curves: ParametricCurves): Bounds {
+  const shown: Point[] = [...points, ...curves.all];
   if (explicit.apex) shown.push(explicit.apex);
   const bounds = boundsOf(shown);
   if (explicit.parabola.kind === 'ok') return bounds;

@@ -4,17 +4,24 @@ import type { QuadraticModel } from './model';
 import { parabolaSection } from './parabolaSection';
 import { parametricSection } from './parametricSection';
 import { rulesSection } from './rulesSection';
-import { describeStep } from './script';
-import { LAST_STEP, type QuadraticState } from './state';
+import { type Reveal, construction } from './script';
+import type { QuadraticState } from './state';
 
-const STEP_TEXT = [
-  'Three points, and we want a smooth curve through them. Drag them, or step on to see the first idea.',
-  'The first idea: a function y = a₂x² + a₁x + a₀, three unknowns for three points. Drag the points; put two of them above one another, or make them go backwards in x, and watch this idea fail. The μ₁ slider belongs to the next step.',
-  'Make both coordinates functions of a parameter μ instead: P(μ) = a₂μ² + a₁μ + a₀ starts at P₀ (μ = 0) and ends at P₂ (μ = 1). Nothing says at which μ it should pass P₁: we choose that value, μ₁, with the slider.',
-  'The dots sit at μ = 0, 0.1, …, 1, equal steps of the parameter: where they spread out, the point P(μ) moves fast, where they bunch up it moves slowly.',
-  'The same three points give a different curve for every μ₁. With μ₁ small the curve hurries to P1 and then swings wide towards P2; with μ₁ near 1 it is the other way round. One set of points, many curves: the parameter values are part of the data.',
-  'So choose μ₁ from the points themselves. Uniform ignores the geometry; chord length gives each span its share of μ by its length; centripetal uses square roots of the lengths. Move P1 close to P0 and compare: chord length and centripetal give the natural curve, uniform overshoots.',
-];
+/** What the lecturer says at each step, at more length than the caption. */
+const STEP_TEXT: Record<Reveal, string> = {
+  points:
+    'Three points, and we want a smooth curve through them. Drag them, or step on to see the first idea.',
+  parabola:
+    'The first idea: a function y = a₂x² + a₁x + a₀, three unknowns for three points. Drag the points; put two of them above one another, or make them go backwards in x, and watch this idea fail. The μ₁ slider belongs to the next step.',
+  parametric:
+    'Make both coordinates functions of a parameter μ instead: P(μ) = a₂μ² + a₁μ + a₀ starts at P₀ (μ = 0) and ends at P₂ (μ = 1). Nothing says at which μ it should pass P₁: we choose that value, μ₁, with the slider.',
+  ticks:
+    'The dots sit at μ = 0, 0.1, …, 1, equal steps of the parameter: where they spread out, the point P(μ) moves fast, where they bunch up it moves slowly.',
+  family:
+    'The same three points give a different curve for every μ₁. With μ₁ small the curve hurries to P1 and then swings wide towards P2; with μ₁ near 1 it is the other way round. One set of points, many curves: the parameter values are part of the data.',
+  rules:
+    'So choose μ₁ from the points themselves. Uniform ignores the geometry; chord length gives each span its share of μ by its length; centripetal uses square roots of the lengths. Move P1 close to P0 and compare: chord length and centripetal give the natural curve, uniform overshoots.',
+};
 
 export function quadraticPanel(
   api: LessonApi<QuadraticState, QuadraticModel>,
@@ -46,21 +53,31 @@ export function quadraticPanel(
     'The curve’s parameter is μ, from 0 at P₀ to 1 at P₂; the slider sets μ₁, the value of μ at which the curve passes P₁.',
   );
   const element = h('div', { class: 'lesson-text' });
-  let shownStep = -1;
+  // The section each step is about comes first, under the step's text.
+  const leading: Record<Reveal, HTMLElement> = {
+    points: parabola.element,
+    parabola: parabola.element,
+    parametric: parametric.element,
+    ticks: parametric.element,
+    family: parametric.element,
+    rules: rules.element,
+  };
+  let shownStep: Reveal | null = null;
 
   return {
     element,
     update(m, state) {
-      if (state.step !== shownStep) {
-        shownStep = state.step;
-        stepText.textContent = STEP_TEXT[state.step];
-        // The section the step is about comes first, under the step's text.
-        const sections = [parabola.element, parametric.element, rules.element];
-        const first = sections[[0, 0, 1, 1, 1, 2][state.step]];
-        const rest = sections.filter((section) => section !== first);
+      const { shown } = m;
+      if (shown.name !== shownStep) {
+        shownStep = shown.name;
+        stepText.textContent = STEP_TEXT[shown.name];
+        const first = leading[shown.name];
+        const rest = [parabola.element, parametric.element, rules.element].filter(
+          (section) => section !== first,
+        );
         setChildren(element, parameterNote, stepTitle, stepText, first, ...rest, higher);
       }
-      stepTitle.textContent = `Step ${state.step} of ${LAST_STEP}: ${describeStep(state, state.step)}`;
+      stepTitle.textContent = `Step ${shown.k} of ${shown.lastStep}: ${construction.caption(state, m, shown.k)}`;
       parabola.update(m);
       parametric.update(m);
       rules.update(m);

@@ -24,7 +24,7 @@ export function parabolaSection() {
     element: h('section', {}, h('h2', {}, 'The parabola y(x)'), box),
     update(m: QuadraticModel) {
       const { parabola, panelWarning } = m.explicit;
-      const p = m.state.p;
+      const p = m.state.points;
       if (parabola.kind !== shownKind) {
         shownKind = parabola.kind;
         setChildren(

@@ -8,13 +8,17 @@ import {
   parametricQuadraticPoint,
   type Point,
 } from '../../math';
-import { FAMILY, type QuadraticState, STEP } from './state';
+import type { Revealed } from '../../kit/script';
+import type { Reveal } from './script';
 
-// Steps 1–3: the parametric quadratic P(μ) = a2μ² + a1μ + a0 through P0
+// The parametric quadratic P(μ) = a2μ² + a1μ + a0 through P0
 // (μ = 0), P1 (μ = μ1) and P2 (μ = 1), its family, and the rules for μ1.
 
 /** Segments each drawn curve is sampled with: a multiple of 10, so the tenths of μ are samples. */
 const SEGMENTS = 100;
+
+/** The members of the family drawn in Figure 2 of the notes. */
+export const FAMILY = [0.2, 0.35, 0.5, 0.65, 0.8] as const;
 
 export interface MuRule {
   id: 'uniform' | 'chord' | 'centripetal';
@@ -71,19 +75,20 @@ function member(p: readonly Point[], mu: number, colour: number | null, text: st
 }
 
 /** Figure 2's family, without the slider's own curve (drawn on top anyway). */
-const family = (state: QuadraticState): Member[] =>
-  FAMILY.map((mu, k) => ({ mu, k }))
-    .filter(({ mu }) => Math.abs(mu - state.mu) > 1e-9)
-    .map(({ mu, k }) => member(state.p, mu, k, `μ_1 = ${fmtMu(mu)}`));
+const family = (p: readonly Point[], mu: number): Member[] =>
+  FAMILY.map((value, k) => ({ value, k }))
+    .filter(({ value }) => Math.abs(value - mu) > 1e-9)
+    .map(({ value, k }) => member(p, value, k, `μ_1 = ${fmtMu(value)}`));
 
 /** The curves of the rules' choices of μ1 (those that exist). */
-const ruleMembers = (state: QuadraticState, rules: readonly MuRule[]): Member[] =>
+const ruleMembers = (p: readonly Point[], rules: readonly MuRule[]): Member[] =>
   rules
     .map((rule, k) => ({ rule, k }))
     .filter(({ rule }) => rule.usable)
-    .map(({ rule, k }) => member(state.p, rule.mu, k, `${rule.name}: μ_1 = ${fmtMu(rule.mu)}`));
+    .map(({ rule, k }) => member(p, rule.mu, k, `${rule.name}: μ_1 = ${fmtMu(rule.mu)}`));
 
-export interface Parametric {
+/** Every curve of the construction, from the points and μ1 alone: no step changes them. */
+export interface ParametricCurves {
   /** a0, a1, a2 of equation 3. */
   coefficients: [Point, Point, Point];
   /** P(μ1) from the coefficients' curve, as a check that it is P1. */
@@ -92,34 +97,47 @@ export interface Parametric {
   /** |P1 − P0| and |P2 − P1|, the lengths the rules use. */
   d0: number;
   d1: number;
-  /** The slider's curve (from step 2; null before, where it is not drawn). */
-  current: Member | null;
-  /** The curves drawn beneath it (the family at step 4, the rules' at step 5). */
-  members: Member[];
+  /** The slider's curve. */
+  slider: Member;
+  /** Figure 2's family (without the slider's μ1), and the rules' curves. */
+  family: Member[];
+  chosen: Member[];
   /** Every curve some step of the construction draws: the view is fitted to them all at once. */
   all: Point[];
 }
 
-export function deriveParametric(state: QuadraticState): Parametric {
-  const { p, mu } = state;
+export function parametricCurves(p: readonly Point[], mu: number): ParametricCurves {
   const rules = muRules(p);
-  const families = family(state);
-  const chosen = ruleMembers(state, rules);
-  const members = state.step === STEP.family ? families : state.step === STEP.rules ? chosen : [];
-  const slider = member(
-    p,
-    mu,
-    null,
-    members.length ? `slider: μ_1 = ${fmtMu(mu)}` : `μ_1 = ${fmtMu(mu)}`,
-  );
+  const slider = member(p, mu, null, `μ_1 = ${fmtMu(mu)}`);
+  const families = family(p, mu);
+  const chosen = ruleMembers(p, rules);
   return {
     coefficients: parametricQuadratic(p[0], p[1], p[2], mu),
     atMu: parametricQuadraticPoint(p[0], p[1], p[2], mu, mu),
     rules,
     d0: distance(p[0], p[1]),
     d1: distance(p[1], p[2]),
-    current: state.step >= STEP.parametric ? slider : null,
-    members,
+    slider,
+    family: families,
+    chosen,
     all: [slider, ...families, ...chosen].flatMap((m) => m.curve),
   };
+}
+
+export interface Parametric extends Omit<ParametricCurves, 'slider' | 'family' | 'chosen'> {
+  /** The slider's curve, once the parametric quadratic is shown (null before). */
+  current: Member | null;
+  /** The curves drawn beneath it: the family at its step, the rules' at theirs. */
+  members: Member[];
+}
+
+/** The curves the steps so far show, from the curves of the whole construction. */
+export function shownCurves(curves: ParametricCurves, shown: Revealed<Reveal>): Parametric {
+  const { slider, family: families, chosen, ...rest } = curves;
+  const members = shown.is('family') ? families : shown.is('rules') ? chosen : [];
+  // Among other curves, the slider's says whose it is.
+  const current = members.length
+    ? { ...slider, text: `slider: μ_1 = ${fmtMu(slider.mu)}` }
+    : slider;
+  return { ...rest, current: shown.has('parametric') ? current : null, members };
 }

@@ -35,7 +35,7 @@ export function parametricSection() {
       ),
     ),
     update(m: QuadraticModel) {
-      const [p0, p1, p2] = m.state.p;
+      const [p0, p1, p2] = m.state.points;
       const mu = texT(m.state.mu);
       const { coefficients, atMu } = m.parametric;
       const [a0, a1, a2] = coefficients;

@@ -3,7 +3,7 @@ import type { LessonApi } from '../../app/lesson';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
 import { seriesColour } from '../../kit/seriesColours';
-import { type QuadraticState, STEP, clampMu } from './state';
+import { type QuadraticState, clampMu } from './state';
 
 const RULES = `\\begin{aligned}d_0 &= |P_1 - P_0| = ${SLOT},\\quad d_1 = |P_2 - P_1| = ${SLOT}\\\\ \\text{uniform: } \\mu_1 &= \\tfrac12\\\\ \\text{chord length: } \\mu_1 &= \\frac{d_0}{d_0 + d_1} = ${SLOT}\\\\ \\text{centripetal: } \\mu_1 &= \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${SLOT}\\end{aligned}`;
 
@@ -49,7 +49,7 @@ export function rulesSection(api: LessonApi<QuadraticState, QuadraticModel>) {
         const chosen = rule.usable && Math.abs(clampMu(rule.mu) - m.state.mu) < 1e-12;
         row.className = chosen ? 'current' : '';
         swatch.style.background =
-          m.state.step === STEP.rules && rule.usable ? seriesColour(palette, k) : 'transparent';
+          m.shown.is('rules') && rule.usable ? seriesColour(palette, k) : 'transparent';
         value.textContent = rule.usable
           ? fmt(rule.mu, 4)
           : `${fmt(rule.mu, 0)}: P1 is an end point, no curve`;

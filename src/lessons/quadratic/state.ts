@@ -1,18 +1,14 @@
-import { int, number, points } from '../../app/fields';
+import { int, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
 /** Everything the quadratic lesson shows, and all of it goes in the link. */
 export interface QuadraticState {
-  /** The three points P0, P1, P2. */
-  p: Point[];
+  /** The three points P0, P1, P2 (`p` in the link). */
+  points: Point[];
   /** μ1, the parameter at which the parametric quadratic passes P1 (open interval). */
   mu: number;
-  /**
-   * The step of the construction: 0 the points, 1 the parabola y(x), 2 one
-   * parametric quadratic, 3 its dots at equal steps of μ, 4 the family, 5 the
-   * rules for μ1.
-   */
+  /** The step of the construction shown (see `construction` in script.ts for what each reveals). */
   step: number;
 }
 
@@ -20,19 +16,8 @@ export interface QuadraticState {
 export const MU_MIN = 0.01;
 export const MU_MAX = 0.99;
 
-/** The steps of the construction, by name. */
-export const STEP = {
-  points: 0,
-  parabola: 1,
-  parametric: 2,
-  ticks: 3,
-  family: 4,
-  rules: 5,
-} as const;
-export const LAST_STEP = STEP.rules;
-
-/** The members of the family drawn in Figure 2 of the notes. */
-export const FAMILY = [0.2, 0.35, 0.5, 0.65, 0.8] as const;
+/** The script's last step: its six steps, none repeated (script.test.ts checks it). */
+export const LAST_STEP = 5;
 
 /** Figure 1 of the lecture: the first scene. */
 export const DEFAULT_POINTS: Point[] = [
@@ -42,7 +27,7 @@ export const DEFAULT_POINTS: Point[] = [
 ];
 
 export const schema: Schema<QuadraticState> = {
-  p: points({ default: DEFAULT_POINTS, min: 3, max: 3 }),
+  points: linkKey(points({ default: DEFAULT_POINTS, min: 3, max: 3 }), 'p'),
   mu: number({ default: 0.5, min: MU_MIN, max: MU_MAX }),
   // A student who opens the link sees the whole construction (the last step).
   step: int({ default: LAST_STEP, min: 0, max: LAST_STEP }),
