@@ -1,16 +1,22 @@
-import type { FigureSpec } from '../../app/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import type { Bounds } from '../../render/projection';
+import type { KitFigure } from '../../kit/lesson';
+import type { Revealed } from '../../kit/script';
 import { plotYName, valueColumn } from '../../kit/plotMarks';
 import type { HermiteModel } from './model';
+import type { Reveal } from './script';
 import type { HermiteState } from './state';
 
 const BOUNDS: Bounds = { minX: 0, maxX: 1, minY: -0.25, maxY: 1.1 };
 /** What each basis function weighs: H0 P_i, H1 P_i+1, H2 D_i, H3 D_i+1. */
 const WEIGHS = ['P_i', 'P_{i+1}', 'D_i', 'D_{i+1}'];
 
-export const basisFigure: FigureSpec<HermiteState, HermiteModel> = {
+/** How many of H0 … H3 the plot shows: those weighting the points, then those weighting the gradients. */
+export const plottedBasis = (shown: Revealed<Reveal>) =>
+  shown.has('gradientWeights') ? 4 : shown.has('pointWeights') ? 2 : 0;
+
+export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
   id: 'basis',
   title: 'The Hermite basis functions H0 to H3, with the cursor at μ',
   kind: 'plot',
@@ -18,11 +24,11 @@ export const basisFigure: FigureSpec<HermiteState, HermiteModel> = {
   draw(painter, m, info) {
     const theme = painter.theme;
     const mu = m.state.mu;
-    const shown = m.shown.basis;
+    const plotted = plottedBasis(m.shown);
     painter.plotAxes(BOUNDS, 0.1, 0.25, 'μ', '');
     const top = info.thumbnail ? 0 : plotYName(painter, BOUNDS.minX, BOUNDS.maxY, 'H_k(μ)');
     m.basis.curves.forEach((curve, k) => {
-      if (k >= shown) return;
+      if (k >= plotted) return;
       painter.polylineFlat(curve, {
         color: painter.color(k),
         width: info.hover === `H${k}` ? theme.sizes.curve * 1.6 : theme.sizes.line * 1.4,
@@ -34,9 +40,9 @@ export const basisFigure: FigureSpec<HermiteState, HermiteModel> = {
       width: theme.sizes.line,
       dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
     });
-    const weights = m.patch.weights.slice(0, shown);
+    const weights = m.patch.weights.slice(0, plotted);
     weights.forEach((w, k) => painter.dot([mu, w], painter.color(k), theme.sizes.point));
-    if (info.thumbnail || !shown) return;
+    if (info.thumbnail || !plotted) return;
     valueColumn(
       painter,
       mu,

@@ -26,15 +26,19 @@ const INVERSE = `\\begin{pmatrix}${hermiteMatrix()
 export const system = (data: readonly Point[], coefficients: readonly Point[]): FormulaParts =>
   tex`\begin{aligned}${column(data)} &= ${CONDITIONS}${UNKNOWNS}\\ ${UNKNOWNS} &= ${INVERSE}${column(data)}\\ &= ${column(coefficients)}\end{aligned}`;
 
-/** P(μ) on patch i from the basis: the names, the weights (signs in the shape, never "+ −"), the point. */
-export function basisLine(i: number, mu: number, weights: readonly number[], point: Point) {
+/** H0 Pi + H1 Pi+1 + H2 Di + H3 Di+1 with the weights' numbers: signs in the shape, never "+ −". */
+function basisTerms(i: number, weights: readonly number[]): FormulaParts {
   const names = [`P_{${i}}`, `P_{${i + 1}}`, `D_{${i}}`, `D_{${i + 1}}`];
-  const terms = weights.map((w, k) => {
-    const sign = k === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
-    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[k]}`;
+  const terms = weights.map((w, term) => {
+    const sign = term === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
+    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[term]}`;
   });
-  return tex`\begin{aligned}P(${live(texNumber(mu, 3))}) &= H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2 D_{${i}} + H_3 D_{${i + 1}}\\ &= ${joined(terms, '')}\\ &= ${livePoint(point, 3)}\end{aligned}`;
+  return joined(terms, '');
 }
+
+/** P(μ) on patch i from the basis: the names, the weights, the point. */
+export const basisLine = (i: number, mu: number, weights: readonly number[], point: Point) =>
+  tex`\begin{aligned}P(${live(texNumber(mu, 3))}) &= H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2 D_{${i}} + H_3 D_{${i + 1}}\\ &= ${basisTerms(i, weights)}\\ &= ${livePoint(point, 3)}\end{aligned}`;
 
 /** B0 … B3 of the patch as a Bézier curve: a column in the panel, one line in the presenter's caption. */
 export function bezierPoints(bezier: readonly Point[], oneLine = false): FormulaParts {
@@ -52,11 +56,5 @@ export const patchMatrixLine = (
 ): FormulaParts => tex`${UNKNOWNS} = ${INVERSE}${column(data)} = ${column(coefficients)}`;
 
 /** P(μ) from the basis in one line, signs in the shape: for the presenter's caption. */
-export function basisOneLine(i: number, mu: number, weights: readonly number[], point: Point) {
-  const names = [`P_{${i}}`, `P_{${i + 1}}`, `D_{${i}}`, `D_{${i + 1}}`];
-  const terms = weights.map((w, k) => {
-    const sign = k === 0 ? (w < 0 ? '-' : '') : w < 0 ? ' - ' : ' + ';
-    return tex`${sign}${live(texNumber(Math.abs(w), 3))}\,${names[k]}`;
-  });
-  return tex`P(${live(texNumber(mu, 3))}) = ${joined(terms, '')} = ${livePoint(point, 3)}`;
-}
+export const basisOneLine = (i: number, mu: number, weights: readonly number[], point: Point) =>
+  tex`P(${live(texNumber(mu, 3))}) = ${basisTerms(i, weights)} = ${livePoint(point, 3)}`;

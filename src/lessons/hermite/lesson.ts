@@ -1,8 +1,10 @@
-import { defineLesson, type Point } from '../../app/lesson';
+import type { Point } from '../../math';
+import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
-import { type HermiteModel, derive } from './model';
+import { derive } from './model';
 import { hermitePanel } from './panel';
+import { construction } from './script';
 import {
   type GradientMode,
   type HermiteState,
@@ -10,9 +12,7 @@ import {
   ONE_PATCH_GRADIENTS,
   normalize,
   schema,
-  stepCount,
 } from './state';
-import { describeStep, stepFormula } from './script';
 
 const SEVERAL: Point[] = [
   [0, 0],
@@ -29,19 +29,20 @@ const SEVERAL_GRADIENTS: Point[] = [
   [2, 2],
 ];
 
-const preset = (
+/** A scene: its points and gradients, at μ = 0.3 (the clicker opens it at step 0). */
+const scene = (
   id: string,
   label: string,
-  p: Point[],
-  d: Point[],
+  points: Point[],
+  handGradients: Point[],
   options: { mode?: GradientMode; bezier?: boolean; patch?: number } = {},
 ) => ({
   id,
   label,
-  apply: (s: HermiteState): HermiteState => ({
+  setup: (s: HermiteState): HermiteState => ({
     ...s,
-    p,
-    d,
+    points,
+    handGradients,
     mode: options.mode ?? 'hand',
     bezier: options.bezier ?? false,
     patch: options.patch ?? 0,
@@ -49,27 +50,28 @@ const preset = (
   }),
 });
 
-export default defineLesson<HermiteState, HermiteModel>({
+export default defineLesson({
   slug: 'hermite',
   schema,
+  step: 'step',
+  script: construction,
   derive,
   normalize,
   figures: [curveFigure, basisFigure],
   layout: 'column',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
-  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
-    preset('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),
-    preset('long', 'Long gradients: a loop', ONE_PATCH, [
+    scene('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),
+    scene('long', 'Long gradients: a loop', ONE_PATCH, [
       [15, 12],
       [15, -12],
     ]),
-    preset('several', 'Several points, by hand', SEVERAL, SEVERAL_GRADIENTS, { patch: 1 }),
-    preset('catmull-rom', 'Several points, Catmull-Rom', SEVERAL, SEVERAL_GRADIENTS, {
+    scene('several', 'Several points, by hand', SEVERAL, SEVERAL_GRADIENTS, { patch: 1 }),
+    scene('catmull-rom', 'Several points, Catmull-Rom', SEVERAL, SEVERAL_GRADIENTS, {
       mode: 'catmull-rom',
       patch: 1,
     }),
-    preset('bezier', 'As a Bézier curve', ONE_PATCH, ONE_PATCH_GRADIENTS, { bezier: true }),
+    scene('bezier', 'As a Bézier curve', ONE_PATCH, ONE_PATCH_GRADIENTS, { bezier: true }),
   ],
   panel: hermitePanel,
 });

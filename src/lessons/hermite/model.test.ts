@@ -1,10 +1,27 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import { derive } from './model';
-import type { AnyLesson } from '../../app/lesson';
 import { checkScript } from '../../kit/scriptChecks';
-import { stepFormula } from './script';
-import { type HermiteState, normalize, revealed, schema, stepCount } from './state';
+import { plottedBasis } from './basisFigure';
+import lesson from './lesson';
+import type { HermiteModel } from './model';
+import { type HermiteState, normalize, schema } from './state';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: HermiteState) => lesson.derive(s) as HermiteModel;
+const stepCount = (s: HermiteState) => lesson.steps!.count(s);
+const stepFormula = (m: HermiteModel, s: HermiteState) => lesson.steps!.formula!(m, s);
+/** What step `step` shows, in the words of the lecture's construction. */
+const revealed = (s: HermiteState) => {
+  const { shown } = derive(s);
+  return {
+    gradients: shown.has('gradients'),
+    basis: plottedBasis(shown),
+    patches: shown.count('patch'),
+    building: shown.is('patch') ? shown.index - 1 : null,
+    point: shown.has('pointAtMu'),
+    bezier: shown.has('bezier'),
+  };
+};
 
 // Values worked out by hand from the four conditions P(0) = Pi, P(1) = Pi+1, P′(0) = Di, P′(1) = Di+1:
 // a0 = Pi, a1 = Di, a2 = 3(Pi+1 − Pi) − 2Di − Di+1, a3 = 2(Pi − Pi+1) + Di + Di+1.
@@ -12,14 +29,14 @@ import { type HermiteState, normalize, revealed, schema, stepCount } from './sta
 const lecture: HermiteState = defaultsOf(schema); // P0 = (0, 0), P1 = (4, 0), D0 = (3, 4.5), D1 = (3, −4.5)
 const several: HermiteState = {
   ...lecture,
-  p: [
+  points: [
     [0, 0],
     [2, 2],
     [5, 1.5],
     [6.5, -1],
     [9, 0.5],
   ],
-  d: [
+  handGradients: [
     [2, 3],
     [3, 0],
     [2, -2],
@@ -97,11 +114,11 @@ describe('derive (Hermite)', () => {
   it('says why a patch whose points and gradients are all at one spot is a point', () => {
     const m = derive({
       ...lecture,
-      p: [
+      points: [
         [1, 1],
         [1, 1],
       ],
-      d: [
+      handGradients: [
         [0, 0],
         [0, 0],
       ],
@@ -119,7 +136,7 @@ describe('derive (Hermite)', () => {
     // the Bézier (0, 0), (5, 4), (−1, 4), (4, 0), between y = 0 and y(½) = 3.
     const m = derive({
       ...lecture,
-      d: [
+      handGradients: [
         [15, 12],
         [15, -12],
       ],
@@ -131,7 +148,12 @@ describe('derive (Hermite)', () => {
   });
 
   it('keeps a valid patch and says when it cannot', () => {
-    const fixed = normalize({ ...several, p: lecture.p, d: lecture.d, patch: 2 });
+    const fixed = normalize({
+      ...several,
+      points: lecture.points,
+      handGradients: lecture.handGradients,
+      patch: 2,
+    });
     expect(fixed.state.patch).toBe(0);
     expect(fixed.issues.join(' ')).toMatch(/^patch: there is no patch 3 among 1/);
     expect(normalize(several).issues).toEqual([]);
@@ -141,12 +163,12 @@ describe('derive (Hermite)', () => {
     expect(
       derive({
         ...lecture,
-        p: [
+        points: [
           [0, 0],
           [1, 1],
           [3, 3],
         ],
-        d: [
+        handGradients: [
           [1, 0],
           [1, 0],
           [1, 0],
@@ -156,7 +178,7 @@ describe('derive (Hermite)', () => {
     expect(
       derive({
         ...lecture,
-        p: [
+        points: [
           [0, 0],
           [0, 0],
         ],
@@ -166,8 +188,8 @@ describe('derive (Hermite)', () => {
 });
 
 describe('the script (Hermite)', () => {
-  it('every scene steps from the points to the whole construction, drawing more at the end', async () => {
-    checkScript((await import('./lesson')).default as AnyLesson);
+  it('every scene steps from the points to the whole construction, drawing more at the end', () => {
+    checkScript(lesson);
   });
 
   it('points, gradients, H0 H1, H2 H3, then each patch solved in turn, then P(μ)', () => {

@@ -15,8 +15,11 @@ import {
   scale,
 } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
-import { degenerate, repeatsText } from '../../kit/degenerate';
-import { type HermiteState, type Revealed, patchCount, revealed } from './state';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
+import { patchNote, pointsNote } from './notes';
+import type { Reveal } from './script';
+import { type HermiteState, patchCount } from './state';
 
 /** The arrow for a gradient D is drawn D/3 long: its tip is where the Bézier control point sits. */
 export const ARROW_SCALE = 1 / 3;
@@ -50,20 +53,14 @@ export interface Join {
   after: Point;
 }
 
-/** Everything the figures and the panel show, computed once per state. */
-export interface HermiteModel {
-  state: HermiteState;
-  /** Number of patches, m. */
-  m: number;
-  /** What the step shows. */
-  shown: Revealed;
+/** The spline itself: it reads only the points and the gradients, so a step or μ costs no new solve. */
+export interface Spline {
   /** The gradients in force: the hand-set ones, or Catmull-Rom's from the neighbours. */
   gradients: Point[];
   /** Where each gradient's arrow ends: Pk + Dk/3 (a handle). */
   tips: Point[];
   /** Every patch as its cubic Bézier control points [Pi, Pi + Di/3, Pi+1 − Di+1/3, Pi+1]. */
   segments: Point[][];
-  patch: Patch;
   /** Continuity at every inner point, measured on the patches (not assumed). */
   joins: Join[];
   /** How many joins are C¹ but not C². */
@@ -74,46 +71,60 @@ export interface HermiteModel {
   bounds: Bounds;
   /** Catmull-Rom with two points: both gradients are zero, the patch is a straight segment. */
   straight: boolean;
+}
+
+/** Everything the figures and the panel show, computed once per state. */
+export interface HermiteModel extends Spline {
+  state: HermiteState;
+  /** Number of patches, m. */
+  m: number;
+  /** What the steps so far reveal: the gradients, the basis, how many patches, P(μ), the Bézier view. */
+  shown: Revealed<Reveal>;
+  patch: Patch;
   /** Why the figure shows less than one might expect, or null. */
   note: string | null;
   /** H0 … H3 over [0, 1], the same for every state. */
   basis: BasisSamples;
 }
 
-export function derive(state: HermiteState): HermiteModel {
-  const gradients = state.mode === 'hand' ? state.d : catmullRomTangents(state.p);
-  const tips = state.p.map((p, k) => add(p, scale(gradients[k], ARROW_SCALE)));
-  const segments = cubicSplineSegments(state.p, gradients);
-  const joins = measureJoins(segments);
-  const straight = state.mode === 'catmull-rom' && state.p.length === 2;
-  const shown = revealed(state);
+export const spline = memoOn<HermiteState, 'points' | 'handGradients' | 'mode', Spline>(
+  ['points', 'handGradients', 'mode'],
+  ({ points, handGradients, mode }) => {
+    const gradients = mode === 'hand' ? handGradients : catmullRomTangents(points);
+    const tips = points.map((p, k) => add(p, scale(gradients[k], ARROW_SCALE)));
+    const segments = cubicSplineSegments(points, gradients);
+    const joins = measureJoins(segments);
+    return {
+      gradients,
+      tips,
+      segments,
+      joins,
+      onlyC1: joins.filter((join) => join.continuity === 'C1').length,
+      marks: points.flatMap((p, k) => [p, tips[k]]),
+      bounds: fitBounds(points, tips, segments),
+      straight: mode === 'catmull-rom' && points.length === 2,
+    };
+  },
+);
+
+export function derive(state: HermiteState, shown: Revealed<Reveal>): HermiteModel {
+  const curve = spline(state);
   // While the patches are built one by one, the matrix and P(μ) are about the newest.
-  const index = shown.building ?? state.patch;
+  const index = shown.is('patch') ? shown.index - 1 : state.patch;
   return {
+    ...curve,
     state,
     m: patchCount(state),
     shown,
-    gradients,
-    tips,
-    segments,
-    patch: patchAt(state, index, gradients, segments),
-    joins,
-    onlyC1: joins.filter((join) => join.continuity === 'C1').length,
-    marks: state.p.flatMap((p, k) => [p, tips[k]]),
-    bounds: fitBounds(state.p, tips, segments),
-    straight,
-    note: noteFor(state, index, gradients, straight),
+    patch: patchAt(state, index, curve),
+    note:
+      patchNote(state.points, index, curve.gradients) ?? pointsNote(state.points, curve.straight),
     basis: BASIS,
   };
 }
 
-function patchAt(
-  state: HermiteState,
-  i: number,
-  gradients: readonly Point[],
-  segments: readonly Point[][],
-): Patch {
-  const [p0, p1, d0, d1] = [state.p[i], state.p[i + 1], gradients[i], gradients[i + 1]];
+function patchAt(state: HermiteState, i: number, { gradients, segments }: Spline): Patch {
+  const [p0, p1, d0, d1] = [state.points[i], state.points[i + 1], gradients[i], gradients[i + 1]];
   return {
     index: i,
     p0,
@@ -137,34 +148,8 @@ function measureJoins(segments: readonly Point[][]): Join[] {
   }));
 }
 
-function noteFor(
-  state: HermiteState,
-  i: number,
-  gradients: readonly Point[],
-  straight: boolean,
-): string | null {
-  const [a, b] = [state.p[i], state.p[i + 1]];
-  const still = (d: Point) => d[0] === 0 && d[1] === 0;
-  if (a[0] === b[0] && a[1] === b[1] && still(gradients[i]) && still(gradients[i + 1])) {
-    return `P${i} and P${i + 1} are at one spot and both gradients are zero: four conditions that all say "stay here", so the patch is a single point. Drag a point or a gradient tip away.`;
-  }
-  if (straight) {
-    return 'Two points have no neighbours: Catmull-Rom gives both ends a zero gradient, so the patch is a straight segment. Add a point.';
-  }
-  const { allSame, collinear, repeats } = degenerate(state.p);
-  if (allSame)
-    return 'All points are on one spot: each patch starts and ends there, so it is a loop shaped by its gradients alone.';
-  const notes: string[] = [];
-  if (repeats.length)
-    notes.push(
-      `${repeatsText(repeats)}: that patch starts and ends on one spot, so it is a loop shaped by its two gradients (a point if both are zero).`,
-    );
-  if (collinear)
-    notes.push(
-      'The points lie on one line: the patches stay on it only where the gradients point along it too.',
-    );
-  return notes.length ? notes.join(' ') : null;
-}
+/** Points of the curve sampled per patch for "fit", besides its end points. */
+const FIT_SAMPLES = 16;
 
 /**
  * What "fit" shows: the points and the curve, with the gradient tips only as
@@ -178,7 +163,8 @@ function fitBounds(
 ): Bounds {
   const curve: Point[] = [...p];
   for (const segment of segments)
-    for (let k = 1; k < 16; k++) curve.push(bezierPoint(segment, k / 16));
+    for (let sample = 1; sample < FIT_SAMPLES; sample++)
+      curve.push(bezierPoint(segment, sample / FIT_SAMPLES));
   const box = boundsOf(curve);
   const grow = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1) / 2;
   const clamp = (v: number, low: number, high: number) => Math.min(high, Math.max(low, v));

@@ -1,16 +1,15 @@
 import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { checkbox, pointButtons, radioGroup } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
+import { checkbox, radioGroup } from '../../app/panelControls';
 import { LiveFormula, formula } from '../../render/formula';
 import { curvatureLink } from '../../kit/lessonLinks';
 import { basisLine, bezierPoints, system } from './formulas';
 import { joinsSection } from './joins';
 import type { HermiteModel } from './model';
-import type { Point } from '../../app/lesson';
-import { keepLastStep } from '../../kit/keepLastStep';
-import { type GradientMode, type HermiteState, MAX_POINTS, stepCount } from './state';
+import { controlPoints } from './points';
+import { construction } from './script';
+import type { GradientMode, HermiteState } from './state';
 
 const MODES: [GradientMode, string][] = [
   ['hand', 'By hand: drag the square tips of the arrows'],
@@ -30,38 +29,18 @@ export function hermitePanel(
     id: 'hermite-bezier',
     label: 'Show each patch as a Bézier curve: control points at P ± D/3',
     get: (s) => s.bezier,
-    set: (s, on) => keepLastStep(s, { ...s, bezier: on }, stepCount),
-  });
-  const pointCount = pointButtons(api, {
-    addLabel: 'Add a point',
-    removeLabel: 'Remove the last point',
-    count: (s) => s.p.length,
-    min: 2,
-    max: MAX_POINTS,
-    add: (s) => {
-      const last = s.p[s.p.length - 1];
-      const next = extendPolygon(s.p);
-      // The new point's gradient follows the new edge.
-      const d: Point = [next[0] - last[0], next[1] - last[1]];
-      return keepLastStep(s, { ...s, p: [...s.p, next], d: [...s.d, d] }, stepCount);
+    // The Bézier view is a step of its own: a script shown to its end stays at its end.
+    set: (s, on) => {
+      const next = { ...s, bezier: on };
+      return { ...next, step: construction.keepEnd(s, s.step, next) };
     },
-    remove: (s) =>
-      keepLastStep(
-        s,
-        {
-          ...s,
-          p: s.p.slice(0, -1),
-          d: s.d.slice(0, -1),
-          patch: Math.min(s.patch, s.p.length - 3),
-        },
-        stepCount,
-      ),
   });
+  const pointCount = controlPoints.buttons(api);
   const patchTitle = h('h2', {});
   // Which patch the matrix, the basis and P(μ) are about (the steps build them all in turn).
   const choosePatch = (delta: number) => {
     const s = api.get();
-    const patch = Math.min(s.p.length - 2, Math.max(0, s.patch + delta));
+    const patch = Math.min(s.points.length - 2, Math.max(0, s.patch + delta));
     if (patch !== s.patch) api.set({ ...s, patch });
   };
   const previousPatch = h('button', { type: 'button' }, 'Previous patch');
@@ -134,7 +113,12 @@ export function hermitePanel(
       mode.update(state);
       bezier.update(state);
       pointCount.update(state);
-      curvature.update({ src: 'hermite', p: state.p, d: m.gradients, t: (i + state.mu) / m.m });
+      curvature.update({
+        src: 'hermite',
+        p: state.points,
+        d: m.gradients,
+        t: (i + state.mu) / m.m,
+      });
       setHidden(warning, !m.straight);
       setText(patchTitle, `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`);
       previousPatch.disabled = state.patch <= 0;

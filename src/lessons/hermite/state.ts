@@ -1,4 +1,4 @@
-import { bool, choice, int, number, points } from '../../app/fields';
+import { bool, choice, int, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents } from '../../math';
@@ -7,19 +7,19 @@ export type GradientMode = 'hand' | 'catmull-rom';
 
 /** Everything the Hermite lesson shows, and all of it goes in the link. */
 export interface HermiteState {
-  /** The points P0 … Pm joined by cubic patches. */
-  p: Point[];
-  /** The gradients D0 … Dm set by hand (one per point). */
-  d: Point[];
+  /** The points P0 … Pm joined by cubic patches (link key `p`). */
+  points: Point[];
+  /** The gradients D0 … Dm set by hand, one per point (link key `d`). */
+  handGradients: Point[];
   /** Gradients by hand, or from the neighbours (Catmull-Rom). */
   mode: GradientMode;
-  /** The local parameter on the chosen patch. */
+  /** The local parameter μ on the chosen patch (the lecture's letter). */
   mu: number;
   /** Which patch the matrix, the basis and P(μ) are about: 0 … m − 1. */
   patch: number;
-  /** Draw each patch's Bézier control polygon. */
+  /** Draw each patch's Bézier control polygon (and add its step to the script). */
   bezier: boolean;
-  /** Step of the script: points, gradients, the basis, each patch solved, P(μ), the Bézier view. */
+  /** The step of the script (see `construction` in script.ts for what each reveals). */
   step: number;
 }
 
@@ -35,9 +35,10 @@ export const ONE_PATCH_GRADIENTS: Point[] = [
   [3, -4.5],
 ];
 
+// The order of the fields is the order of the link's keys.
 export const schema: Schema<HermiteState> = {
-  p: points({ default: ONE_PATCH, min: 2, max: MAX_POINTS }),
-  d: points({ default: ONE_PATCH_GRADIENTS, min: 2, max: MAX_POINTS }),
+  points: linkKey(points({ default: ONE_PATCH, min: 2, max: MAX_POINTS }), 'p'),
+  handGradients: linkKey(points({ default: ONE_PATCH_GRADIENTS, min: 2, max: MAX_POINTS }), 'd'),
   mode: choice<GradientMode>({ default: 'hand', values: ['hand', 'catmull-rom'] }),
   mu: number({ default: 0.3, min: 0, max: 1 }),
   patch: int({ default: 0, min: 0, max: MAX_POINTS - 2 }),
@@ -46,58 +47,24 @@ export const schema: Schema<HermiteState> = {
 };
 
 /** Number of patches, m. */
-export const patchCount = (state: HermiteState) => state.p.length - 1;
+export const patchCount = (state: HermiteState) => state.points.length - 1;
 
 /** One gradient per point: a link with too few gets Catmull-Rom's, too many are dropped. */
 export function normalize(state: HermiteState): { state: HermiteState; issues: string[] } {
   const issues: string[] = [];
-  let d = state.d;
-  if (d.length !== state.p.length) {
-    const fill = catmullRomTangents(state.p);
-    d = state.p.map((_, i) => d[i] ?? fill[i]);
+  const { points: p, handGradients: given } = state;
+  let handGradients = given;
+  if (given.length !== p.length) {
+    const fill = catmullRomTangents(p);
+    handGradients = p.map((_, i) => given[i] ?? fill[i]);
     issues.push(
-      `d: ${state.d.length} gradients for ${state.p.length} points; ${d.length > state.d.length ? 'the missing ones come from the neighbours' : 'the extra ones are dropped'}`,
+      `d: ${given.length} gradients for ${p.length} points; ${handGradients.length > given.length ? 'the missing ones come from the neighbours' : 'the extra ones are dropped'}`,
     );
   }
-  const patch = Math.min(state.patch, state.p.length - 2);
+  const patch = Math.min(state.patch, p.length - 2);
   if (patch !== state.patch)
     issues.push(
-      `patch: there is no patch ${state.patch + 1} among ${state.p.length - 1}, so it shows patch ${patch + 1}`,
+      `patch: there is no patch ${state.patch + 1} among ${p.length - 1}, so it shows patch ${patch + 1}`,
     );
-  return { state: { ...state, d, patch }, issues };
-}
-
-/**
- * Steps of the script: 0 the points; 1 their gradients; 2 the basis
- * functions H0, H1 that weight the points; 3 H2, H3 that weight the
- * gradients; then each patch solved and drawn in turn; then P(μ) on the
- * chosen patch; then, in the Bézier scene, its control points.
- */
-export const stepCount = (state: HermiteState) => 4 + patchCount(state) + (state.bezier ? 1 : 0);
-
-/** What step `step` shows. */
-export interface Revealed {
-  gradients: boolean;
-  /** H0 … H(basis − 1) in the plot. */
-  basis: number;
-  /** Patches 0 … patches − 1 are drawn. */
-  patches: number;
-  /** The patch solved at this step, while the patches are being built; else null. */
-  building: number | null;
-  point: boolean;
-  bezier: boolean;
-}
-
-export function revealed(state: HermiteState): Revealed {
-  const k = state.step;
-  const m = patchCount(state);
-  const patches = Math.max(0, Math.min(k - 3, m));
-  return {
-    gradients: k >= 1,
-    basis: k >= 3 ? 4 : k >= 2 ? 2 : 0,
-    patches,
-    building: k >= 4 && k < 4 + m ? k - 4 : null,
-    point: k >= 4 + m,
-    bezier: state.bezier && k >= 5 + m,
-  };
+  return { state: { ...state, handGradients, patch }, issues };
 }
