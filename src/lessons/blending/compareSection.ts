@@ -4,10 +4,10 @@ import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
 import { texT } from '../../kit/format';
 import { formula } from '../../render/formula';
-import { comparedIndex } from './hover';
+import { comparedIds, comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
-import { keepLastStep } from '../../kit/keepLastStep';
-import { type BlendingState, type Comparison, stepCount } from './state';
+import { blendingScript } from './script';
+import type { BlendingState, Comparison } from './state';
 
 const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'none', label: 'Bernstein only' },
@@ -33,8 +33,12 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
   const basisChoice = radioGroup(api, {
     name: 'compare',
     choices: CHOICES,
-    get: (s) => s.b,
-    set: (s, b) => keepLastStep(s, { ...s, b }, stepCount),
+    get: (s) => s.comparison,
+    set: (s, comparison) => {
+      const next = { ...s, comparison };
+      // A script shown to its end stays shown to its end (with or without the comparison's step).
+      return { ...next, step: blendingScript.keepEnd(s, s.step, next) };
+    },
   });
   const explain = h('p', {});
   const body = h('tbody', {});
@@ -47,7 +51,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
 
   body.addEventListener('mouseover', (e) => {
     const row = (e.target as Element).closest('tr');
-    if (row) api.setHover(`c${row.sectionRowIndex}`);
+    if (row) api.setHover(comparedIds.id(row.sectionRowIndex));
   });
   body.addEventListener('mouseleave', () => api.setHover(null));
 
@@ -73,7 +77,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     update(m: BlendingModel) {
       const { state, n, compared } = m;
       basisChoice.update(state);
-      setText(explain, EXPLAIN[state.b]);
+      setText(explain, EXPLAIN[state.comparison]);
       setHidden(table, compared === null);
       if (!compared) {
         rows.set([]);
@@ -115,9 +119,9 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
             ? `The dashed Lagrange curve leaves the convex hull of the control points (${Math.round(100 * compared.outside)}% of its samples lie outside); the Bézier curve never does.`
             : 'Here the dashed Lagrange curve happens to stay in the convex hull; drag a point (or try the Lagrange preset) to push it out.',
         );
-      if (state.b === 'hermite' && n !== 3)
+      if (state.comparison === 'hermite' && n !== 3)
         sentences.push('Set N = 3 to see the Hermite form of this very curve in the figure.');
-      if (state.b === 'bspline' && n < 3)
+      if (state.comparison === 'bspline' && n < 3)
         sentences.push(
           'A cubic B-spline needs at least four control points: add one to see its curve.',
         );

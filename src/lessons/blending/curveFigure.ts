@@ -1,16 +1,16 @@
-import type { FigureSpec, Point } from '../../app/lesson';
-import { insertPoint } from '../../interact/editPoints';
+import type { Point } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
+import { seriesDash } from '../../kit/seriesColours';
 import type { Painter } from '../../render/painter';
 import { highlightedIndex } from './hover';
-import { keepLastStep } from '../../kit/keepLastStep';
-import { seriesDash } from '../../kit/seriesColours';
 import type { BlendingModel, Compared } from './model';
-import { type BlendingState, MAX_POINTS, stepCount } from './state';
+import { controlPoints } from './points';
+import type { BlendingState } from './state';
 
 /** Weight labels beside the points stay readable up to this degree. */
 const LABEL_WEIGHTS_UP_TO = 8;
 
-export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
+export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   id: 'curve',
   title: 'Bézier curve with every control point weighted at μ',
   kind: 'geometry',
@@ -19,8 +19,9 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
     const theme = painter.theme;
     const { state, n, weights, point, compared, shown } = m;
     const highlighted = highlightedIndex(info.hover);
+    const comparing = shown.has('comparison');
 
-    if (compared && shown.compared) {
+    if (compared && comparing) {
       if (compared.curve) {
         painter.polyline(compared.curve, {
           color: theme.muted,
@@ -32,7 +33,7 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
     }
 
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    if (shown.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
+    if (shown.has('curve')) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
 
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
@@ -40,7 +41,7 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
     // Weights written so far: a point too close to one of them goes without (its row in the table has it).
     const placed: Point[] = [];
     state.p.forEach((control, i) => {
-      if (i >= shown.weights) return;
+      if (i >= shown.count('weight')) return;
       const color = painter.color(i);
       const dash = seriesDash(painter, i);
       const radius = theme.sizes.handle * 1.3 + largest * weights[i];
@@ -52,7 +53,7 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
         color,
         lit ? 0.4 : 0.22,
       );
-      if (shown.point) {
+      if (shown.has('point')) {
         painter.segment(control, point, {
           color,
           width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
@@ -77,7 +78,7 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
     const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
     const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
 
-    const other = shown.compared ? compared?.point : null;
+    const other = comparing ? compared?.point : null;
     if (other) {
       painter.ring(other.at, theme.sizes.point * 1.4, {
         color: theme.muted,
@@ -92,7 +93,7 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
       }
     }
     if (m.note && !info.thumbnail) painter.note(m.note);
-    if (!shown.point) return;
+    if (!shown.has('point')) return;
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
       painter.labelClear('P(μ)', point, other ? [...crowd, other.at] : crowd, {
@@ -102,31 +103,17 @@ export const curveFigure: FigureSpec<BlendingState, BlendingModel> = {
       });
     }
   },
-  trail: (m) => (m.shown.point ? m.point : null),
-  handles: (m) =>
-    m.state.p.map((point, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: point })),
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    const at: Point = [to[0], to[1]];
-    return { ...state, p: state.p.map((point, k) => (k === i ? at : point)) };
-  },
-  addPoint(state, at) {
-    if (state.p.length >= MAX_POINTS) return null;
-    return keepLastStep(state, { ...state, p: insertPoint(state.p, at) }, stepCount);
-  },
-  removeHandle(state, id) {
-    if (state.p.length <= 2) return null;
-    const i = Number(id.slice(1));
-    return keepLastStep(state, { ...state, p: state.p.filter((_, k) => k !== i) }, stepCount);
-  },
+  trail: (m) => (m.shown.has('point') ? m.point : null),
+  points: [controlPoints],
+  addTo: controlPoints,
 };
 
 /** The Hermite data of the same cubic, x0′ and x1′ at true length, labelled. */
 function drawHermiteData(painter: Painter, compared: Compared): void {
   const theme = painter.theme;
-  compared.arrows.forEach(([from, tip], k) => {
+  compared.arrows.forEach(([from, tip], end) => {
     painter.arrow(from, tip, { color: theme.accent, width: theme.sizes.line });
-    painter.label(k === 0 ? "x_0'" : "x_1'", tip, {
+    painter.label(`x_${end}'`, tip, {
       dx: 6,
       dy: -theme.sizes.label * 0.7,
       color: theme.accent,

@@ -1,28 +1,37 @@
-import { defineLesson, type Point } from '../../app/lesson';
+import type { Point } from '../../math';
+import { defineLesson } from '../../kit/lesson';
 import { curveFigure } from './curveFigure';
-import { type BlendingModel, derive } from './model';
+import { derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
-import { describeStep, stepFormula } from './script';
-import { type BlendingState, type Comparison, LECTURE_CUBIC, schema, stepCount } from './state';
+import { blendingScript } from './script';
+import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
 
-const preset = (id: string, label: string, p: Point[], mu: number, b: Comparison = 'none') => ({
+/** A scene: its control points, μ and the basis compared with (the clicker opens it at step 0). */
+const scene = (
+  id: string,
+  label: string,
+  p: Point[],
+  mu: number,
+  comparison: Comparison = 'none',
+) => ({
   id,
   label,
-  apply: (s: BlendingState): BlendingState => ({ ...s, p, mu, b }),
+  setup: (s: BlendingState): BlendingState => ({ ...s, p, mu, comparison }),
 });
 
-export default defineLesson<BlendingState, BlendingModel>({
+export default defineLesson({
   slug: 'blending',
   schema,
+  step: 'step',
+  script: blendingScript,
   derive,
   figures: [curveFigure, plotFigure],
   layout: 'row',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
-  steps: { key: 'step', count: stepCount, describe: describeStep, formula: stepFormula },
   scenes: [
-    preset('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
-    preset(
+    scene('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
+    scene(
       'linear',
       'N = 1: a straight line',
       [
@@ -31,7 +40,7 @@ export default defineLesson<BlendingState, BlendingModel>({
       ],
       0.25,
     ),
-    preset(
+    scene(
       'quadratic',
       'N = 2',
       [
@@ -41,7 +50,7 @@ export default defineLesson<BlendingState, BlendingModel>({
       ],
       0.3,
     ),
-    preset(
+    scene(
       'degree6',
       'N = 6',
       [
@@ -55,15 +64,15 @@ export default defineLesson<BlendingState, BlendingModel>({
       ],
       0.3,
     ),
-    preset(
+    scene(
       'degree10',
       'N = 10',
       Array.from({ length: 11 }, (_, i) => [i / 2, i % 2 === 0 ? 0 : 3]),
       0.5,
     ),
-    preset('hermite', 'Compare: Hermite', LECTURE_CUBIC, 0.3, 'hermite'),
-    preset('bspline', 'Compare: B-spline', LECTURE_CUBIC, 0.3, 'bspline'),
-    preset(
+    scene('hermite', 'Compare: Hermite', LECTURE_CUBIC, 0.3, 'hermite'),
+    scene('bspline', 'Compare: B-spline', LECTURE_CUBIC, 0.3, 'bspline'),
+    scene(
       'lagrange',
       'Compare: Lagrange',
       [

@@ -1,16 +1,30 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { comparedIndex, curveNear, highlightedIndex } from './hover';
-import { derive } from './model';
-import type { AnyLesson } from '../../app/lesson';
-import { describeStep, stepFormula } from './script';
+import lesson from './lesson';
+import type { BlendingModel } from './model';
 import { checkScript } from '../../kit/scriptChecks';
-import { type BlendingState, revealed, schema, stepCount } from './state';
+import { type BlendingState, schema } from './state';
 
 // Values worked out by hand for the lecture's cubic P0 = (0, 0), P1 = (1, 2),
 // P2 = (3, 2), P3 = (4, 0), with W(3, i, μ) = C(3, i) μⁱ (1 − μ)³⁻ⁱ.
 
 const cubic: BlendingState = defaultsOf(schema); // μ = 0.5, no comparison
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: BlendingState) => lesson.derive(s) as BlendingModel;
+const stepCount = (s: BlendingState) => lesson.steps!.count(s);
+const describeStep = (s: BlendingState, k: number) => lesson.steps!.describe(s, k);
+const stepFormula = (m: BlendingModel, s: BlendingState) => lesson.steps!.formula!(m, s);
+/** What a step shows: how many weights, P(μ), the curve, the comparison. */
+const revealed = (s: BlendingState) => {
+  const { shown } = derive(s);
+  return {
+    weights: shown.count('weight'),
+    point: shown.has('point'),
+    curve: shown.has('curve'),
+    compared: shown.has('comparison'),
+  };
+};
 const close = (actual: readonly number[], expected: readonly number[], digits = 12) =>
   expected.forEach((v, i) => expect(actual[i]).toBeCloseTo(v, digits));
 
@@ -35,7 +49,7 @@ describe('derive (blending)', () => {
   });
 
   it('compares with Hermite: H3 dips to −4/27 at μ = 2/3; the end tangents are 3(P1 − P0), 3(P3 − P2)', () => {
-    const m = derive({ ...cubic, b: 'hermite' });
+    const m = derive({ ...cubic, comparison: 'hermite' });
     const c = m.compared!;
     expect(c.labels).toEqual(['H_0', 'H_1', 'H_2', 'H_3']);
     // H0 weighs x0 = P0, H1 weighs x1 = P3: they share those points' colours.
@@ -60,7 +74,7 @@ describe('derive (blending)', () => {
   });
 
   it('compares with the uniform B-spline: B(0) = (P0 + 4P1 + P2) / 6, nothing negative', () => {
-    const c = derive({ ...cubic, mu: 0, b: 'bspline' }).compared!;
+    const c = derive({ ...cubic, mu: 0, comparison: 'bspline' }).compared!;
     close(c.point!.at, [7 / 6, 10 / 6]);
     expect(c.point!.label).toBe('B(μ)');
     expect(c.samples.lowest.value).toBeGreaterThanOrEqual(0);
@@ -79,7 +93,7 @@ describe('derive (blending)', () => {
         [6, 3],
       ],
       mu: 1 / 6,
-      b: 'lagrange',
+      comparison: 'lagrange',
       step: 0,
     };
     const c = derive(steps).compared!;
@@ -101,13 +115,13 @@ describe('derive (blending)', () => {
 });
 
 describe('the script (blending)', () => {
-  it('steps from the points through each weight, P(μ), the curve and the comparison, and draws more at the end', async () => {
-    checkScript((await import('./lesson')).default as AnyLesson);
+  it('steps from the points through each weight, P(μ), the curve and the comparison, and draws more at the end', () => {
+    checkScript(lesson);
   });
 
   it('reveals the weights one by one: N + 3 steps, one more with a comparison', () => {
     expect(stepCount(cubic)).toBe(6);
-    expect(stepCount({ ...cubic, b: 'hermite' })).toBe(7);
+    expect(stepCount({ ...cubic, comparison: 'hermite' })).toBe(7);
     expect(revealed({ ...cubic, step: 0 })).toEqual({
       weights: 0,
       point: false,

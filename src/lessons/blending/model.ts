@@ -1,43 +1,22 @@
-import {
-  type Point,
-  add,
-  bezierBasisMatrix,
-  bezierPoint,
-  bezierToHermite,
-  convexHull,
-  convexHullContains,
-  lagrangePoint,
-  sampleBezier,
-  uniformBSplinePoint,
-} from '../../math';
+import { type Point, bezierBasisMatrix, bezierPoint, sampleBezier } from '../../math';
 import { type Bounds, boundsOf } from '../../render/projection';
 import { degenerate, repeatsText } from '../../kit/degenerate';
-import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
-import { type BlendingState, type Comparison, type Revealed, degree, revealed } from './state';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
+import { type Compared, type ComparedShape, comparedAt, comparedShape } from './comparison';
+import { type Family, family } from './families';
+import type { Reveal } from './script';
+import type { BlendingState } from './state';
 
-/** Another basis beside Bernstein's, and what it makes of the same control points. */
-export interface Compared extends Family {
-  kind: Exclude<Comparison, 'none'>;
-  /** Each function's value at μ, and their sum. */
-  atMu: number[];
-  sum: number;
-  /** The dashed curve these functions give with the control points, if they weight points. */
-  curve: Point[] | null;
-  /** Its point at μ, where the functions weight these very points. */
-  point: { at: Point; label: string } | null;
-  /** Hermite data of the cubic: x0 → x0 + x0′ and x1 → x1 + x1′ (for N = 3). */
-  arrows: [Point, Point][];
-  /** Lagrange: the share of the curve's samples outside the control points' convex hull. */
-  outside: number | null;
-}
+export type { Compared } from './comparison';
 
 /** Everything the figures and the panel show, computed once per state. */
 export interface BlendingModel {
   state: BlendingState;
   /** Degree N. */
   n: number;
-  /** What the step shows. */
-  shown: Revealed;
+  /** What the steps so far reveal: how many weights, P(μ), the curve, the comparison. */
+  shown: Revealed<Reveal>;
   bernstein: Family;
   /** W(N, i, μ) for every i, and their sum (1 up to rounding). */
   weights: number[];
@@ -59,33 +38,63 @@ export interface BlendingModel {
   note: string | null;
 }
 
-export function derive(state: BlendingState): BlendingModel {
-  const n = degree(state);
-  const bernstein = family('bernstein', n)!;
-  const weights = [...bernstein.values(state.mu)];
-  const compared = compare(state, n);
+/** The curve and what depends on its points alone: dragging μ or stepping costs nothing. */
+const shape = memoOn<
+  Pick<BlendingState, 'p'>,
+  'p',
+  Pick<BlendingModel, 'n' | 'bernstein' | 'curve' | 'centre' | 'matrix' | 'note'>
+>(['p'], ({ p }) => {
+  const n = p.length - 1;
+  return {
+    n,
+    bernstein: family('bernstein', n)!,
+    curve: sampleBezier(p, Math.max(64, 24 * n)),
+    centre: bezierPoint(p, 0.5),
+    matrix: bezierBasisMatrix(n),
+    note: noteFor(p),
+  };
+});
+
+/** The basis compared with, its curve, and the ranges both figures show: μ does not move them. */
+const comparison = memoOn<
+  Pick<BlendingState, 'p' | 'comparison'>,
+  'p' | 'comparison',
+  Pick<BlendingModel, 'curveBounds' | 'plotBounds' | 'handleY'> & { shape: ComparedShape | null }
+>(['p', 'comparison'], ({ p, comparison: kind }) => {
+  const compared = comparedShape(p, kind);
   const plotBounds = plotRange(compared);
   return {
-    state,
-    n,
-    shown: revealed(state),
-    bernstein,
-    weights,
-    sum: weights.reduce((a, b) => a + b, 0),
-    point: bezierPoint(state.p, state.mu),
-    curve: sampleBezier(state.p, Math.max(64, 24 * n)),
-    compared,
-    centre: bezierPoint(state.p, 0.5),
-    matrix: bezierBasisMatrix(n),
+    shape: compared,
     curveBounds: boundsOf([
-      ...state.p,
+      ...p,
       ...(compared?.curve ?? []),
       ...(compared?.arrows.map(([, tip]) => tip) ?? []),
     ]),
     plotBounds,
     handleY: plotBounds.maxY - 0.05 * (plotBounds.maxY - plotBounds.minY),
-    note: noteFor(state.p),
   };
+});
+
+/** Everything at μ: the weights, P(μ), and the compared functions' values. */
+const atMu = memoOn<
+  Pick<BlendingState, 'p' | 'mu' | 'comparison'>,
+  'p' | 'mu' | 'comparison',
+  Pick<BlendingModel, 'weights' | 'sum' | 'point' | 'compared'>
+>(['p', 'mu', 'comparison'], (fields) => {
+  const { p, mu } = fields;
+  const weights = [...shape(fields).bernstein.values(mu)];
+  const compared = comparison(fields).shape;
+  return {
+    weights,
+    sum: weights.reduce((a, b) => a + b, 0),
+    point: bezierPoint(p, mu),
+    compared: compared && comparedAt(compared, p, mu),
+  };
+});
+
+export function derive(state: BlendingState, shown: Revealed<Reveal>): BlendingModel {
+  const { curveBounds, plotBounds, handleY } = comparison(state);
+  return { ...shape(state), ...atMu(state), curveBounds, plotBounds, handleY, state, shown };
 }
 
 /** Coincident or collinear control points, in words: what the curve does then. */
@@ -105,56 +114,8 @@ function noteFor(p: readonly Point[]): string | null {
   return notes.length ? notes.join(' ') : null;
 }
 
-function compare(state: BlendingState, n: number): Compared | null {
-  if (state.b === 'none') return null;
-  const basis = family(state.b, n)!;
-  const atMu = [...basis.values(state.mu)];
-  const nodes = equallySpacedNodes(n);
-  const lagrange = state.b === 'lagrange';
-  let curve: Point[] | null = null;
-  if (lagrange) {
-    // The same samples draw the curve and test it against the hull.
-    curve = Array.from({ length: SAMPLES + 1 }, (_, k) =>
-      lagrangePoint(nodes, state.p, k / SAMPLES),
-    );
-  } else if (state.b === 'bspline' && n >= 3) {
-    const count = Math.max(96, 24 * n);
-    curve = Array.from({ length: count + 1 }, (_, k) =>
-      uniformBSplinePoint(state.p, (k / count) * (n - 2)),
-    );
-  }
-  return {
-    ...basis,
-    kind: state.b,
-    atMu,
-    sum: atMu.reduce((a, b) => a + b, 0),
-    curve,
-    point: lagrange
-      ? { at: lagrangePoint(nodes, state.p, state.mu), label: 'L(μ)' }
-      : state.b === 'bspline' && n === 3
-        ? { at: uniformBSplinePoint(state.p, state.mu), label: 'B(μ)' }
-        : null,
-    arrows: state.b === 'hermite' && n === 3 ? hermiteArrows(state.p) : [],
-    outside: lagrange && curve ? shareOutside(state.p, curve) : null,
-  };
-}
-
-/** The end tangents x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) at true length: the H2, H3 data. */
-function hermiteArrows(p: readonly Point[]): [Point, Point][] {
-  const [x0, d0, x1, d1] = bezierToHermite(p);
-  return [
-    [x0, add(x0, d0)],
-    [x1, add(x1, d1)],
-  ];
-}
-
-function shareOutside(p: readonly Point[], curve: readonly Point[]): number {
-  const hull = convexHull(p);
-  return curve.filter((q) => !convexHullContains(hull, q, 1e-9)).length / curve.length;
-}
-
 /** μ from 0 to 1; W from its lowest to its highest value, with room for the cursor's handle. */
-function plotRange(compared: Compared | null): Bounds {
+function plotRange(compared: Family | null): Bounds {
   const low = Math.min(0, compared?.samples.lowest.value ?? 0);
   const high = Math.max(1, compared?.samples.highest.value ?? 1);
   const span = high - low;

@@ -1,27 +1,17 @@
 import { h } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { pointButtons } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
 import { formula } from '../../render/formula';
 import { compareSection } from './compareSection';
 import { formsSection } from './formsSection';
 import type { BlendingModel } from './model';
-import { keepLastStep } from '../../kit/keepLastStep';
-import { type BlendingState, MAX_POINTS, stepCount } from './state';
+import { controlPoints } from './points';
+import type { BlendingState } from './state';
 import { weightsSection } from './weightsSection';
 
 export function blendingPanel(
   api: LessonApi<BlendingState, BlendingModel>,
 ): LessonPanel<BlendingState, BlendingModel> {
-  const pointCount = pointButtons(api, {
-    addLabel: 'N + 1: add a control point',
-    removeLabel: 'N − 1: remove the last point',
-    count: (s) => s.p.length,
-    min: 2,
-    max: MAX_POINTS,
-    add: (s) => keepLastStep(s, { ...s, p: [...s.p, extendPolygon(s.p)] }, stepCount),
-    remove: (s) => keepLastStep(s, { ...s, p: s.p.slice(0, -1) }, stepCount),
-  });
+  const pointCount = controlPoints.buttons(api);
   const weights = weightsSection(api);
   const forms = formsSection();
   const compare = compareSection(api);

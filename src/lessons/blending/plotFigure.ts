@@ -1,4 +1,4 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { niceStep } from '../../render/projection';
 import type { Family } from './families';
@@ -13,7 +13,7 @@ const LABEL_CURVES_UP_TO = 7;
 
 const clampMu = (x: number) => Math.min(1, Math.max(0, Number(x.toFixed(4))));
 
-export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
+export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
   id: 'blending',
   title: 'Blending functions W(N, i, μ) with a cursor at μ',
   kind: 'plot',
@@ -23,6 +23,7 @@ export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
     const { plotBounds: bounds, n, compared } = m;
     const mu = m.state.mu;
     const highlighted = highlightedIndex(info.hover);
+    const comparing = m.shown.has('comparison');
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
       painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
@@ -31,12 +32,12 @@ export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
 
     drawFamily(painter, m.bernstein, {
       dash: undefined,
-      faded: compared !== null && m.shown.compared,
+      faded: compared !== null && comparing,
       highlighted,
-      labels: !info.thumbnail && (!compared || !m.shown.compared) && n + 1 <= LABEL_CURVES_UP_TO,
-      count: m.shown.weights,
+      labels: !info.thumbnail && (!compared || !comparing) && n + 1 <= LABEL_CURVES_UP_TO,
+      count: m.shown.count('weight'),
     });
-    if (compared && m.shown.compared) {
+    if (compared && comparing) {
       drawFamily(painter, compared, {
         dash: [9, 5],
         faded: false,
@@ -54,10 +55,10 @@ export const plotFigure: FigureSpec<BlendingState, BlendingModel> = {
       dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
     });
     m.weights.forEach((w, i) => {
-      if (i >= m.shown.weights) return;
+      if (i >= m.shown.count('weight')) return;
       painter.dot([mu, w], painter.color(i), theme.sizes.point * (highlighted === i ? 1.4 : 1));
     });
-    if (m.shown.compared) {
+    if (comparing) {
       compared?.atMu.forEach((w) => {
         painter.ring([mu, w], theme.sizes.point, { color: theme.ink, width: theme.sizes.thin });
       });

@@ -58,8 +58,8 @@ export function pointFormula(
 /** The matrix M of x(u) = U M X for degree n: it depends on n alone. */
 export function matrixFormTex(matrix: readonly (readonly number[])[]): string {
   const n = matrix.length - 1;
-  const powers = Array.from({ length: n + 1 }, (_, k) =>
-    k === 0 ? '1' : k === 1 ? 'u' : `u^{${k}}`,
+  const powers = Array.from({ length: n + 1 }, (_, power) =>
+    power === 0 ? '1' : power === 1 ? 'u' : `u^{${power}}`,
   );
   const names = Array.from({ length: n + 1 }, (_, i) => `x_{${i}}`);
   const rows = matrix.map((row) => row.join(' & ')).join('\\\\');

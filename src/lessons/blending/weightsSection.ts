@@ -3,9 +3,9 @@ import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { texT } from '../../kit/format';
 import { LiveFormula } from '../../render/formula';
-import { highlightedIndex } from './hover';
+import { highlightedIndex, weightIds } from './hover';
 import type { BlendingModel } from './model';
-import { type BlendingState } from './state';
+import type { BlendingState } from './state';
 import { pointFormula, weightFormula } from './tex';
 
 /**
@@ -32,7 +32,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
   // Hovering a row highlights its control point in both figures.
   body.addEventListener('mouseover', (e) => {
     const row = (e.target as Element).closest('tr');
-    if (row) api.setHover(`w${row.sectionRowIndex}`);
+    if (row) api.setHover(weightIds.id(row.sectionRowIndex));
   });
   body.addEventListener('mouseleave', () => api.setHover(null));
 

@@ -1,0 +1,89 @@
+import {
+  type Point,
+  add,
+  bezierToHermite,
+  convexHull,
+  convexHullContains,
+  lagrangePoint,
+  uniformBSplinePoint,
+} from '../../math';
+import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
+import type { Comparison } from './state';
+
+type Kind = Exclude<Comparison, 'none'>;
+
+/** Another basis beside Bernstein's, drawn for the control points alone (not yet at μ). */
+export interface ComparedShape extends Family {
+  kind: Kind;
+  /** The dashed curve these functions give with the control points, if they weight points. */
+  curve: Point[] | null;
+  /** Hermite data of the cubic: x0 → x0 + x0′ and x1 → x1 + x1′ (for N = 3). */
+  arrows: [Point, Point][];
+  /** Lagrange: the share of the curve's samples outside the control points' convex hull. */
+  outside: number | null;
+}
+
+/** Another basis beside Bernstein's, and what it makes of the same control points at μ. */
+export interface Compared extends ComparedShape {
+  /** Each function's value at μ, and their sum. */
+  atMu: number[];
+  sum: number;
+  /** Its point at μ, where the functions weight these very points. */
+  point: { at: Point; label: string } | null;
+}
+
+/** The compared basis and its curve for these control points: it does not depend on μ. */
+export function comparedShape(p: readonly Point[], kind: Comparison): ComparedShape | null {
+  if (kind === 'none') return null;
+  const n = p.length - 1;
+  const basis = family(kind, n)!;
+  let curve: Point[] | null = null;
+  if (kind === 'lagrange') {
+    // The same samples draw the curve and test it against the hull.
+    const nodes = equallySpacedNodes(n);
+    curve = Array.from({ length: SAMPLES + 1 }, (_, k) => lagrangePoint(nodes, p, k / SAMPLES));
+  } else if (kind === 'bspline' && n >= 3) {
+    const count = Math.max(96, 24 * n);
+    curve = Array.from({ length: count + 1 }, (_, k) =>
+      uniformBSplinePoint(p, (k / count) * (n - 2)),
+    );
+  }
+  return {
+    ...basis,
+    kind,
+    curve,
+    arrows: kind === 'hermite' && n === 3 ? hermiteArrows(p) : [],
+    outside: kind === 'lagrange' && curve ? shareOutside(p, curve) : null,
+  };
+}
+
+/** The compared basis at μ: each function's value, and the point it makes, if any. */
+export function comparedAt(shape: ComparedShape, p: readonly Point[], mu: number): Compared {
+  const n = p.length - 1;
+  const atMu = [...shape.values(mu)];
+  return {
+    ...shape,
+    atMu,
+    sum: atMu.reduce((a, b) => a + b, 0),
+    point:
+      shape.kind === 'lagrange'
+        ? { at: lagrangePoint(equallySpacedNodes(n), p, mu), label: 'L(μ)' }
+        : shape.kind === 'bspline' && n === 3
+          ? { at: uniformBSplinePoint(p, mu), label: 'B(μ)' }
+          : null,
+  };
+}
+
+/** The end tangents x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) at true length: the H2, H3 data. */
+function hermiteArrows(p: readonly Point[]): [Point, Point][] {
+  const [x0, d0, x1, d1] = bezierToHermite(p);
+  return [
+    [x0, add(x0, d0)],
+    [x1, add(x1, d1)],
+  ];
+}
+
+function shareOutside(p: readonly Point[], curve: readonly Point[]): number {
+  const hull = convexHull(p);
+  return curve.filter((q) => !convexHullContains(hull, q, 1e-9)).length / curve.length;
+}

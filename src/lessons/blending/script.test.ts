@@ -1,0 +1,92 @@
+import { describe, expect, it } from 'vitest';
+import { decodeState, defaultsOf, encodeState } from '../../app/urlState';
+import lesson from './lesson';
+import type { BlendingModel } from './model';
+import { controlPoints } from './points';
+import { blendingScript } from './script';
+import { type BlendingState, schema } from './state';
+
+// The lecture's cubic P0 = (0, 0), P1 = (1, 2), P2 = (3, 2), P3 = (4, 0) at μ = ½,
+// where W(3, i, ½) = C(3, i) / 8 = 1/8, 3/8, 3/8, 1/8 and P(½) = (2, 1.5).
+
+const cubic: BlendingState = defaultsOf(schema);
+const derive = (s: BlendingState) => lesson.derive(s) as BlendingModel;
+/** Caption and formula of every step, as the shell shows them. */
+const walk = (s: BlendingState) =>
+  Array.from({ length: blendingScript.lastStep(s) + 1 }, (_, step) => {
+    const at = { ...s, step };
+    return [lesson.steps!.describe(at, step), lesson.steps!.formula!(derive(at), at)];
+  });
+
+describe('the blending script, step by named step', () => {
+  it('walks the cubic: the points, W(3, 0 … 3, ½), P(½), the curve', () => {
+    expect(walk(cubic)).toEqual([
+      [
+        'The control points P0 … P3 and their polygon',
+        'P(\\mu) = \\sum_{i=0}^{3} W(3,i,\\mu)\\,P_i',
+      ],
+      // W(3, 0, ½) = 1 · ½³ = 0.125
+      ['The weight of P0: W(3, 0, μ), largest at μ = 0', 'W(3,0,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
+      // W(3, 1, ½) = 3 · ½ · ½² = 0.375
+      [
+        'The weight of P1: W(3, 1, μ), largest at μ = 1/3',
+        'W(3,1,0.5) = 3\\cdot 0.5\\cdot 0.5^{2} = 0.3750',
+      ],
+      [
+        'The weight of P2: W(3, 2, μ), largest at μ = 2/3',
+        'W(3,2,0.5) = 3\\cdot 0.5^{2}\\cdot 0.5 = 0.3750',
+      ],
+      ['The weight of P3: W(3, 3, μ), largest at μ = 1', 'W(3,3,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
+      // (0·1 + 1·3 + 3·3 + 4·1) / 8 = 2, (0 + 2·3 + 2·3 + 0) / 8 = 1.5
+      [
+        'P(μ): the control points averaged with these weights',
+        '\\begin{aligned}P(0.5) &= 0.1250\\,(0.00,\\ 0.00)\\\\ &\\quad + 0.3750\\,(1.00,\\ 2.00)\\\\ &\\quad + 0.3750\\,(3.00,\\ 2.00)\\\\ &\\quad + 0.1250\\,(4.00,\\ 0.00)\\\\ &= (2.0000,\\ 1.5000)\\end{aligned}',
+      ],
+      [
+        'As μ runs from 0 to 1, P(μ) traces the Bézier curve',
+        'P(\\mu) = (1-\\mu)^{3}\\,P_{0} + 3\\mu(1-\\mu)^{2}\\,P_{1} + 3\\mu^{2}(1-\\mu)\\,P_{2} + \\mu^{3}\\,P_{3}',
+      ],
+    ]);
+  });
+
+  it('has a comparison step only when a basis is chosen: N + 3 presses, or N + 4', () => {
+    expect(blendingScript.stepOf(cubic, 'point')).toBe(5);
+    expect(blendingScript.stepOf(cubic, 'curve')).toBe(6);
+    expect(blendingScript.stepOf(cubic, 'comparison')).toBe(-1);
+    const hermite = { ...cubic, comparison: 'hermite' as const };
+    expect(blendingScript.stepOf(hermite, 'comparison')).toBe(7);
+    expect(walk(hermite)[7]).toEqual([
+      'Compared, dashed: the Hermite functions H0 … H3; only H3 goes below zero, and they weight tangents too',
+      "x(\\mu) = H_0\\,x_0 + H_1\\,x_1 + H_2\\,x_0' + H_3\\,x_1'",
+    ]);
+    // N = 1: P0's weight peaks at μ = 0, P1's at μ = 1.
+    const line = { ...cubic, p: cubic.p.slice(0, 2) };
+    expect(blendingScript.lastStep(line)).toBe(4);
+    expect(walk(line)[2][0]).toBe('The weight of P1: W(1, 1, μ), largest at μ = 1');
+  });
+
+  it('reveals by name: the weights count up, P(μ) and the curve follow', () => {
+    const shown = (step: number) => derive({ ...cubic, step }).shown;
+    expect(shown(0).count('weight')).toBe(0);
+    expect(shown(3).count('weight')).toBe(3);
+    expect(shown(3).is('weight')).toBe(true);
+    expect(shown(5).has('point')).toBe(true);
+    expect(shown(5).has('curve')).toBe(false);
+    expect(shown(6).last).toBe(true);
+  });
+
+  it('keeps a script shown to its end at its end after an edit', () => {
+    const end = { ...cubic, step: 6 };
+    // A point added at the end: N = 4, 7 presses.
+    expect(controlPoints.add(end, [2, 0.5])!.step).toBe(7);
+    expect(controlPoints.remove(end, 1)!.step).toBe(5);
+    // In the middle of the script, the step stays.
+    expect(controlPoints.add({ ...cubic, step: 2 }, [2, 0.5])!.step).toBe(2);
+  });
+
+  it('keeps the link: the comparison is still `b`, in the same place', () => {
+    const state = { ...cubic, comparison: 'lagrange' as const, step: 3 };
+    expect(encodeState(schema, state)).toBe('p=0,0;1,2;3,2;4,0&mu=0.5&b=lagrange&step=3');
+    expect(decodeState(schema, 'b=bspline').state.comparison).toBe('bspline');
+  });
+});
