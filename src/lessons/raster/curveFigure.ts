@@ -1,5 +1,4 @@
-import type { FigureSpec } from '../../app/lesson';
-import { insertPoint } from '../../interact/editPoints';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { boundsOf, unionBounds } from '../../render/projection';
 import {
@@ -12,8 +11,9 @@ import {
   pixelSquare,
 } from './draw';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
-import { piecesShown, pixelsShown, stepCount } from './script';
-import { MAX_POINTS, RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
+import { controlPoints } from './points';
+import { windowOf } from './raster';
+import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
 
 const RASTER_BOX = boundsOf([
   [0, 0],
@@ -21,7 +21,7 @@ const RASTER_BOX = boundsOf([
 ]);
 
 function controlPolygon(painter: Painter, m: RasterModel): void {
-  painter.polyline(m.state.p, {
+  painter.polyline(m.state.points, {
     color: painter.theme.polygon,
     width: painter.theme.sizes.thin,
     dash: [6, 5],
@@ -29,44 +29,45 @@ function controlPolygon(painter: Painter, m: RasterModel): void {
 }
 
 function drawPlot(painter: Painter, m: RasterModel, labels: boolean): void {
-  const k = m.state.step;
+  const { shown } = m;
   const color = painter.color(0);
   controlPolygon(painter, m);
-  if (k >= 3) drawCurve(painter, m.curve);
-  if (k >= 2) drawPolyline(painter, m.uniform.points, color);
-  else if (k >= 1)
+  if (shown.has('curve')) drawCurve(painter, m.curve);
+  if (shown.has('polyline')) drawPolyline(painter, m.uniform.points, color);
+  else if (shown.has('samples'))
     for (const p of m.uniform.points) painter.dot(p, color, painter.theme.sizes.point);
-  if (k >= 4) drawGap(painter, m.uniform, m.state.z, labels);
+  if (shown.has('gap')) drawGap(painter, m.uniform, m.state.zoom, labels);
 }
 
 function drawCompare(painter: Painter, m: RasterModel, labels: boolean): void {
-  const k = m.state.step;
+  const sameGap = m.shown.has('sameGap');
+  const uniform = m.shown.has('uniform');
   controlPolygon(painter, m);
   drawCurve(painter, m.curve);
-  if (k >= 3 && m.sameErrorBeyond) {
+  if (sameGap && m.sameErrorBeyond) {
     // Not computed, so not drawn: the count is past the search's end.
     painter.note(`Uniform sampling needs more than ${SAME_ERROR_MAX} segments for the same gap.`);
     if (labels) heading(painter, `Uniform: more than ${SAME_ERROR_MAX} segments`);
     return;
   }
-  const shown = k >= 3 && m.sameError ? m.sameError : m.uniform;
-  if (k >= 1) {
-    drawPolyline(painter, shown.points, painter.color(k >= 3 ? 2 : 0));
-    drawGap(painter, shown, m.state.z, labels);
+  const shown = sameGap && m.sameError ? m.sameError : m.uniform;
+  if (uniform) {
+    drawPolyline(painter, shown.points, painter.color(sameGap ? 2 : 0));
+    drawGap(painter, shown, m.state.zoom, labels);
   }
-  if (labels) heading(painter, `Uniform: ${k >= 1 ? `${shown.points.length - 1} segments` : '?'}`);
+  if (labels) heading(painter, `Uniform: ${uniform ? `${shown.points.length - 1} segments` : '?'}`);
 }
 
 function drawSubdivide(painter: Painter, m: RasterModel): void {
-  const shown = piecesShown(m, m.state.step);
   const theme = painter.theme;
-  drawCurve(painter, m.curve, shown > 0);
-  if (shown === 0) controlPolygon(painter, m);
-  for (const node of m.tree.slice(0, shown)) {
+  const asking = m.shown.is('question');
+  drawCurve(painter, m.curve, !asking);
+  if (asking) controlPolygon(painter, m);
+  for (const node of m.tree.slice(0, m.piecesShown)) {
     if (node.split) continue;
     drawPolyline(painter, [node.points[0], node.points[node.points.length - 1]], painter.color(0));
   }
-  const current = shown > 0 && shown < m.tree.length ? m.tree[shown - 1] : null;
+  const current = m.shown.is('pieces') ? m.tree[m.piecesShown - 1] : null;
   if (current) {
     const color = current.split ? theme.accent : painter.color(2);
     painter.polyline(current.points, { color, width: theme.sizes.line * 1.2 });
@@ -77,14 +78,13 @@ function drawSubdivide(painter: Painter, m: RasterModel): void {
 function drawPixels(painter: Painter, m: RasterModel): void {
   const { size, line } = m;
   const theme = painter.theme;
-  const k = m.state.step;
-  const all = k >= stepCount(m.state);
   pixelGrid(painter, size);
-  if (all) fillPixels(painter, m.pixels.values(), size.zoom, theme.ink, 0.75);
+  if (m.shown.has('everySegment'))
+    fillPixels(painter, m.pixels.values(), size.zoom, theme.ink, 0.75);
   else {
-    const lit = line.pixels.slice(0, pixelsShown(m, k)).map(([i, j]) => ({ i, j, value: 1 }));
+    const lit = line.pixels.slice(0, m.pixelsShown).map(([i, j]) => ({ i, j, value: 1 }));
     fillPixels(painter, lit, size.zoom, theme.accent, 0.8);
-    if (k >= 1) {
+    if (m.shown.has('ends')) {
       for (const [i, j] of [line.pixels[0], line.pixels[line.pixels.length - 1]])
         painter.polyline(
           pixelSquare(i, j, size.zoom),
@@ -101,7 +101,7 @@ function drawCoverage(painter: Painter, m: RasterModel): void {
   const { size } = m;
   const theme = painter.theme;
   pixelGrid(painter, size);
-  if (m.state.step >= 2 && m.coverage)
+  if (m.shown.has('shades') && m.coverage)
     fillPixels(painter, m.coverage.values(), size.zoom, theme.ink);
   else fillPixels(painter, m.pixels.values(), size.zoom, theme.ink, 0.35);
   const a = m.adaptive.points[m.segment];
@@ -119,8 +119,7 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
   drawPolyline(painter, m.uniform.points, painter.color(0));
   // Where adaptive flattening would put its vertices at this zoom.
   for (const p of zoom.adaptive) painter.dot(p, painter.color(1), theme.sizes.point * 0.6);
-  const [x0, y0] = [size.left / size.zoom, size.bottom / size.zoom];
-  const [x1, y1] = [(size.left + size.width) / size.zoom, (size.bottom + size.height) / size.zoom];
+  const { minX: x0, minY: y0, maxX: x1, maxY: y1 } = windowOf(size);
   painter.polyline(
     [
       [x0, y0],
@@ -134,51 +133,33 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
   if (labels) heading(painter, `The screen's 32 × 24 pixels at zoom ×${size.zoom}: the box`);
 }
 
-export const curveFigure: FigureSpec<RasterState, RasterModel> = {
+/** What the curve figure draws in each scene. */
+const DRAW: Record<
+  RasterState['view'],
+  (painter: Painter, m: RasterModel, labels: boolean) => void
+> = {
+  plot: drawPlot,
+  compare: drawCompare,
+  subdivide: drawSubdivide,
+  pixels: drawPixels,
+  coverage: drawCoverage,
+  zoom: drawZoom,
+};
+
+export const curveFigure: KitFigure<RasterState, RasterModel> = {
   id: 'curve',
   title: 'The curve, the segments drawn for it, and the pixels they light',
   kind: 'geometry',
   weight: 1.25,
-  bounds: (m) => unionBounds(boundsOf(m.state.p), RASTER_BOX),
+  bounds: (m) => unionBounds(boundsOf(m.state.points), RASTER_BOX),
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     if (m.oneSpot)
       painter.note(
         'All control points are on one spot: the curve is that single point, so every segment has length 0 and covers at most one pixel.',
       );
-    switch (m.state.x) {
-      case 'plot':
-        return drawPlot(painter, m, labels);
-      case 'compare':
-        return drawCompare(painter, m, labels);
-      case 'subdivide':
-        return drawSubdivide(painter, m);
-      case 'pixels':
-        return drawPixels(painter, m);
-      case 'coverage':
-        return drawCoverage(painter, m);
-      case 'zoom':
-        return drawZoom(painter, m, labels);
-    }
+    DRAW[m.state.view](painter, m, labels);
   },
-  handles: (m) =>
-    m.state.p.map((point, i) => ({
-      id: `p${i}`,
-      label: `P_{${i}}`,
-      position: point,
-      small: m.state.x !== 'plot',
-    })),
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    return { ...state, p: state.p.map((point, k) => (k === i ? [to[0], to[1]] : point)) };
-  },
-  addPoint(state, at) {
-    if (state.p.length >= MAX_POINTS) return null;
-    return { ...state, p: insertPoint(state.p, at) };
-  },
-  removeHandle(state, id) {
-    if (state.p.length <= 2) return null;
-    const i = Number(id.slice(1));
-    return { ...state, p: state.p.filter((_, k) => k !== i) };
-  },
+  points: [controlPoints],
+  addTo: controlPoints,
 };

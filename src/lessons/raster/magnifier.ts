@@ -1,7 +1,6 @@
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { RasterModel } from './model';
-import { pixelsShown, stepCount } from './script';
 
 // One segment magnified, in pixel coordinates: pixel (i, j) is the square
 // [i − ½, i + ½] × [j − ½, j + ½], so pixel centres are whole numbers.
@@ -56,11 +55,11 @@ function grid(painter: Painter, m: RasterModel, labels: boolean): void {
 
 export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean): void {
   const theme = painter.theme;
-  const { line } = m;
-  const k = m.state.step;
+  const { line, shown } = m;
   const pixels = m.segmentCoverage;
   if (pixels) {
-    if (k >= 1)
+    const shares = shown.has('shares');
+    if (shares)
       for (const { i, j, value } of pixels) painter.polygon(square(i, j), theme.ink, value * 0.85);
     grid(painter, m, labels);
     // The strip one pixel wide around the segment.
@@ -76,10 +75,10 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
         [u0 - nx, v0 - ny],
       ],
       painter.color(0),
-      k >= 1 ? 0.12 : 0.3,
+      shares ? 0.12 : 0.3,
       { color: painter.color(0), width: theme.sizes.line },
     );
-    if (k >= 1 && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 1.9) {
+    if (shares && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 1.9) {
       for (const { i, j, value } of pixels.filter((pixel) => pixel.value >= 0.005))
         painter.label(value.toFixed(2), [i, j], {
           size: theme.sizes.small * 0.8,
@@ -91,14 +90,14 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
     }
     return;
   }
-  const all = k >= stepCount(m.state);
-  const lit = all ? line.pixels.length : pixelsShown(m, k);
+  const all = shown.has('everySegment');
+  const lit = m.pixelsShown;
   for (const [i, j] of line.pixels.slice(0, lit)) painter.polygon(square(i, j), theme.accent, 0.75);
   grid(painter, m, labels);
   const [u0, v0] = line.from;
   const [u1, v1] = line.to;
   painter.segment([u0, v0], [u1, v1], { color: painter.color(0), width: theme.sizes.line * 1.3 });
-  if (k < 1) return;
+  if (!shown.has('ends')) return;
   const { first, last } = line;
   painter.segment(first, last, { color: theme.ink, width: theme.sizes.thin, dash: [6, 5] });
   for (const [i, j] of [first, last])

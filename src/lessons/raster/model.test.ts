@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { chordDeviation, flattenBezier, rasterizeLine, uniformParameters } from '../../math';
-import { type RasterModel, SAME_ERROR_MAX, derive, instructiveSegment, zoomAtStep } from './model';
+import lesson from './lesson';
+import { type RasterModel, SAME_ERROR_MAX, instructiveSegment } from './model';
 import {
   LINE_LIMIT,
   coveragePolyline,
@@ -10,9 +11,14 @@ import {
   lineSteps,
   rasterizePolyline,
 } from './raster';
-import { scenes, stepCount, steps } from './script';
 import { type RasterState, schema } from './state';
+import { zoomAt } from './zoomView';
 
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: RasterState) => lesson.derive(s) as RasterModel;
+const scenes = lesson.scenes!;
+const steps = lesson.steps!;
+const stepCount = (s: RasterState) => steps.count(s);
 const defaults = defaultsOf(schema);
 const at = (change: Partial<RasterState>): RasterModel => derive({ ...defaults, ...change });
 const raster = { zoom: 1, left: 0, bottom: 0, width: 32, height: 24 };
@@ -33,8 +39,8 @@ describe('raster lesson model', () => {
 
   it('adaptive flattening stays within τ with fewer segments than uniform sampling needs for the same gap', () => {
     for (const z of [0.5, 1, 2, 4]) {
-      const m = at({ x: 'compare', z });
-      expect(m.adaptive.points).toEqual(flattenBezier(defaults.p, 0.5 / z));
+      const m = at({ view: 'compare', zoom: z });
+      expect(m.adaptive.points).toEqual(flattenBezier(defaults.points, 0.5 / z));
       expect(m.adaptive.deviation.distance * z).toBeLessThanOrEqual(0.5);
       const same = m.sameError!;
       expect(same.deviation.distance).toBeLessThanOrEqual(m.adaptive.deviation.distance);
@@ -42,14 +48,14 @@ describe('raster lesson model', () => {
       // One segment fewer is not enough for uniform sampling.
       const fewer = same.points.length - 2;
       const parameters = Array.from({ length: fewer + 1 }, (_, k) => k / fewer);
-      expect(chordDeviation(defaults.p, parameters).distance).toBeGreaterThan(
+      expect(chordDeviation(defaults.points, parameters).distance).toBeGreaterThan(
         m.adaptive.deviation.distance,
       );
     }
   });
 
   it('the hairpin at zoom 1: 6 uniform segments stray more than τ, the bound plans for more than adaptive uses', () => {
-    const m = at({ x: 'compare' });
+    const m = at({ view: 'compare' });
     expect(m.uniform.points).toHaveLength(7);
     expect(m.uniform.deviation.distance).toBeGreaterThan(0.5);
     // The bound is the root piece's flatness: 6·5/8 · max‖Δ²P‖ = 30/8 · ‖P6 − 2P5 + P4‖ = 30/8 · ‖(−14, −18)‖.
@@ -129,8 +135,11 @@ describe('raster lesson model', () => {
   });
 
   it('zoom steps ½ to 8: the screen is 32 × 24 pixels of 1/z units, the error grows with z, adaptive adds segments', () => {
-    expect([0, 1, 2, 3, 4].map(zoomAtStep)).toEqual([0.5, 1, 2, 4, 8]);
-    const views = [0, 1, 2, 3, 4].map((step) => at({ x: 'zoom', n: 4, step }).zoom!);
+    // Steps 0 … 4 are the zoom scene's presses 1 … 5.
+    expect([1, 2, 3, 4, 5].map(zoomAt)).toEqual([0.5, 1, 2, 4, 8]);
+    const views = [0, 1, 2, 3, 4].map(
+      (step) => at({ view: 'zoom', uniformSegments: 4, step }).zoom!,
+    );
     expect(views.map((v) => [v.full.width, v.full.height])).toEqual([
       [16, 12],
       [32, 24],
@@ -149,7 +158,7 @@ describe('raster lesson model', () => {
   it('steps: the pixel scene lights the chosen segment in at most 12 clicks; every caption is one sentence with numbers', () => {
     const pixels = scenes[3].apply(defaults);
     const m = derive(pixels);
-    expect(pixels.seg).toBe(instructiveSegment(m.adaptive.points, 1));
+    expect(pixels.steppedSegment).toBe(instructiveSegment(m.adaptive.points, 1));
     expect(stepCount(pixels)).toBe(2 + Math.min(12, m.line.pixels.length));
     for (const scene of scenes) {
       const state = scene.apply(defaults);
@@ -162,13 +171,17 @@ describe('raster lesson model', () => {
   });
 
   it('at zoom 16 and τ = 0.05 px the same-gap count reaches the adaptive gap and one fewer does not', () => {
-    const m = at({ x: 'compare', z: 16, tol: 0.05 });
+    const m = at({ view: 'compare', zoom: 16, tolerance: 0.05 });
     const gap = m.adaptive.deviation.distance;
     const count = m.sameError!.points.length - 1;
     expect(count).toBeLessThanOrEqual(SAME_ERROR_MAX);
     expect(m.sameErrorBeyond).toBe(false);
-    expect(chordDeviation(defaults.p, uniformParameters(count)).distance).toBeLessThanOrEqual(gap);
-    expect(chordDeviation(defaults.p, uniformParameters(count - 1)).distance).toBeGreaterThan(gap);
+    expect(chordDeviation(defaults.points, uniformParameters(count)).distance).toBeLessThanOrEqual(
+      gap,
+    );
+    expect(chordDeviation(defaults.points, uniformParameters(count - 1)).distance).toBeGreaterThan(
+      gap,
+    );
   });
 
   it('past 512 uniform segments the compare scene says "more than 512" instead of searching on', () => {
@@ -179,7 +192,7 @@ describe('raster lesson model', () => {
       [1000, 2000],
       [2000, 0],
     ];
-    const m = at({ x: 'compare', p, z: 16, tol: 0.05 });
+    const m = at({ view: 'compare', points: p, zoom: 16, tolerance: 0.05 });
     const gap = m.adaptive.deviation.distance;
     expect(m.sameErrorBeyond).toBe(true);
     expect(m.sameError).toBeNull();
@@ -235,6 +248,6 @@ describe('raster lesson model', () => {
       expect(value).toBeGreaterThan(0);
       expect(value).toBeLessThanOrEqual(m.coverage!.get(`${i},${j}`)!.value);
     }
-    expect(at({ x: 'pixels' }).segmentCoverage).toBeNull();
+    expect(at({ view: 'pixels' }).segmentCoverage).toBeNull();
   });
 });

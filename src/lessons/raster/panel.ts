@@ -1,11 +1,10 @@
 import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { pointButtons } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
 import { formula } from '../../render/formula';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
-import { HAIRPIN, MAX_POINTS, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './state';
+import { controlPoints } from './points';
+import { HAIRPIN, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './state';
 
 const INTRO =
   'A screen cannot draw a curve. It draws straight segments between points computed on the curve, and each segment as a row of pixels. How many segments, and where? The control points are given in pixels of a coarse 32 × 24 raster (zoom 1); drag them, Tab to one and use the arrow keys, double-click to add one, right-click or Delete to remove one.';
@@ -29,32 +28,30 @@ export function rasterPanel(
   });
   tolerance.addEventListener('input', () =>
     api.set(
-      { ...api.get(), tol: Number(tolerance.value) },
+      { ...api.get(), tolerance: Number(tolerance.value) },
       { coalesce: 'raster-tol', windowMs: 1500 },
     ),
   );
   const toleranceText = h('span', {});
   const zoomText = h('span', {});
-  const zoomOut = button('Zoom out ÷2', () => change((s) => ({ z: Math.max(ZOOM_MIN, s.z / 2) })));
-  const zoomIn = button('Zoom in ×2', () => change((s) => ({ z: Math.min(ZOOM_MAX, s.z * 2) })));
+  const zoomOut = button('Zoom out ÷2', () =>
+    change((s) => ({ zoom: Math.max(ZOOM_MIN, s.zoom / 2) })),
+  );
+  const zoomIn = button('Zoom in ×2', () =>
+    change((s) => ({ zoom: Math.min(ZOOM_MAX, s.zoom * 2) })),
+  );
   const zoomBox = h('div', { class: 'lesson-tools' }, zoomOut, zoomText, zoomIn);
   const previous = button('◀ Previous segment', () =>
-    change((s) => ({ seg: Math.max(0, s.seg - 1), step: 0 })),
+    change((s) => ({ steppedSegment: Math.max(0, s.steppedSegment - 1), step: 0 })),
   );
-  const next = button('Next segment ▶', () => change((s) => ({ seg: s.seg + 1, step: 0 })));
+  const next = button('Next segment ▶', () =>
+    change((s) => ({ steppedSegment: s.steppedSegment + 1, step: 0 })),
+  );
   const segmentText = h('span', {});
   const segmentBox = h('div', { class: 'lesson-tools' }, previous, segmentText, next);
-  const pointCount = pointButtons(api, {
-    addLabel: 'Add a control point',
-    removeLabel: 'Remove the last control point',
-    count: (s) => s.p.length,
-    min: 2,
-    max: MAX_POINTS,
-    add: (s) => ({ ...s, p: [...s.p, extendPolygon(s.p)] }),
-    remove: (s) => ({ ...s, p: s.p.slice(0, -1) }),
-  });
+  const pointCount = controlPoints.buttons(api);
   const reset = button('The hairpin again', () =>
-    change(() => ({ p: HAIRPIN.map((p) => [...p]) })),
+    change(() => ({ points: HAIRPIN.map((p) => [...p]) })),
   );
 
   const compareBody = h('tbody', {});
@@ -110,17 +107,17 @@ export function rasterPanel(
     element,
     update(m, state) {
       pointCount.update(state);
-      if (Number(tolerance.value) !== state.tol) tolerance.value = String(state.tol);
-      setText(toleranceText, `= ${fmt(state.tol, 2)} px`);
-      setText(zoomText, `zoom ×${state.z} (${m.size.width} × ${m.size.height} pixels)`);
-      zoomOut.disabled = state.z <= ZOOM_MIN;
-      zoomIn.disabled = state.z >= ZOOM_MAX;
+      if (Number(tolerance.value) !== state.tolerance) tolerance.value = String(state.tolerance);
+      setText(toleranceText, `= ${fmt(state.tolerance, 2)} px`);
+      setText(zoomText, `zoom ×${state.zoom} (${m.size.width} × ${m.size.height} pixels)`);
+      zoomOut.disabled = state.zoom <= ZOOM_MIN;
+      zoomIn.disabled = state.zoom >= ZOOM_MAX;
       const segments = m.adaptive.points.length - 1;
       setText(segmentText, `segment ${m.segment + 1} of ${segments}`);
       previous.disabled = m.segment <= 0;
       next.disabled = m.segment >= segments - 1;
 
-      const zoom = state.z;
+      const { zoom } = state;
       const row = (name: string, line: RasterModel['uniform'], key: string) => ({
         data: {
           polyline: key,
@@ -136,7 +133,7 @@ export function rasterPanel(
       });
       compareRows.set([
         row(`Uniform, n = ${segmentsOf(state)}`, m.uniform, 'uniform'),
-        row(`Adaptive, τ = ${fmt(state.tol, 2)} px`, m.adaptive, 'adaptive'),
+        row(`Adaptive, τ = ${fmt(state.tolerance, 2)} px`, m.adaptive, 'adaptive'),
         ...(m.sameError ? [row('Uniform, same gap as adaptive', m.sameError, 'same')] : []),
         ...(m.sameErrorBeyond
           ? [
@@ -153,11 +150,16 @@ export function rasterPanel(
           : []),
         {
           data: { polyline: 'bound', segments: String(m.boundCount), gap: '' },
-          cells: ['Uniform, planned for τ', String(m.boundCount), `≤ ${fmt(state.tol, 2)}`, '—'],
+          cells: [
+            'Uniform, planned for τ',
+            String(m.boundCount),
+            `≤ ${fmt(state.tolerance, 2)}`,
+            '—',
+          ],
         },
       ]);
 
-      const pixelScene = state.x === 'pixels' || state.x === 'coverage';
+      const pixelScene = state.view === 'pixels' || state.view === 'coverage';
       setHidden(segmentBox, !pixelScene);
       setHidden(pixelSection, !pixelScene);
       if (pixelScene) {

@@ -8,6 +8,7 @@ import {
   segmentCoverage,
   splitBezier,
 } from '../../math';
+import { RASTER_HEIGHT, RASTER_WIDTH } from './state';
 
 // From segments to pixels. Pixel (i, j) of a raster with `zoom` pixels per
 // unit covers [i, i + 1] × [j, j + 1] / zoom; its centre is at pixel
@@ -28,6 +29,23 @@ export interface RasterSize {
   width: number;
   height: number;
 }
+
+/** The whole raster at `zoom`: 32z × 24z pixels from pixel (0, 0). */
+export const rasterSize = (zoom: number): RasterSize => ({
+  zoom,
+  left: 0,
+  bottom: 0,
+  width: Math.ceil(RASTER_WIDTH * zoom),
+  height: Math.ceil(RASTER_HEIGHT * zoom),
+});
+
+/** The rectangle a raster covers, in units of the control points. */
+export const windowOf = (size: RasterSize): Box => ({
+  minX: size.left / size.zoom,
+  minY: size.bottom / size.zoom,
+  maxX: (size.left + size.width) / size.zoom,
+  maxY: (size.bottom + size.height) / size.zoom,
+});
 
 /** A point in pixel coordinates (pixel centres at whole numbers). */
 export const toPixel = (p: Point, zoom: number): [number, number] => [

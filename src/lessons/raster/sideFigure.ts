@@ -1,10 +1,10 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
 import { drawCurve, drawGap, drawPolyline, fillPixels, heading, pixelGrid } from './draw';
 import { drawMagnifier, magnifierBounds } from './magnifier';
 import type { RasterModel } from './model';
-import type { RasterSize } from './raster';
+import { windowOf } from './raster';
 import { drawTree, treeBounds } from './tree';
 import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
 
@@ -18,25 +18,18 @@ const GAP_HEIGHT = 14;
 
 const curveBounds = (m: RasterModel) =>
   unionBounds(
-    boundsOf(m.state.p),
+    boundsOf(m.state.points),
     boundsOf([
       [0, 0],
       [RASTER_WIDTH, RASTER_HEIGHT],
     ]),
   );
 
-const windowBounds = (size: RasterSize): Bounds => ({
-  minX: size.left / size.zoom,
-  minY: size.bottom / size.zoom,
-  maxX: (size.left + size.width) / size.zoom,
-  maxY: (size.bottom + size.height) / size.zoom,
-});
-
 const gapScale = (m: RasterModel) => GAP_HEIGHT / Math.max(1e-9, m.uniform.deviation.distance);
 
 function drawGapPlot(painter: Painter, m: RasterModel, labels: boolean): void {
   const theme = painter.theme;
-  const k = m.state.step;
+  const { shown } = m;
   const scale = gapScale(m);
   painter.segment([0, 0], [T_WIDTH, 0], { color: theme.axis, width: theme.sizes.thin * 1.5 });
   const small = {
@@ -50,19 +43,20 @@ function drawGapPlot(painter: Painter, m: RasterModel, labels: boolean): void {
     if (labels)
       painter.label(String(t), [T_WIDTH * t, -0.6], { ...small, dy: theme.sizes.small * 1.1 });
   }
-  if (labels) heading(painter, k >= 3 ? 'The gap to the curve over t' : 'The parameter t');
-  if (k >= 1) {
+  if (labels)
+    heading(painter, shown.has('curve') ? 'The gap to the curve over t' : 'The parameter t');
+  if (shown.has('samples')) {
     for (const t of m.uniform.parameters)
       painter.dot([T_WIDTH * t, 0], painter.color(0), theme.sizes.point);
   }
-  if (k < 3 || !m.gaps) return;
+  if (!shown.has('curve') || !m.gaps) return;
   const arches = new Float64Array(m.gaps.length);
   for (let i = 0; i < m.gaps.length; i += 2) {
     arches[i] = T_WIDTH * m.gaps[i];
     arches[i + 1] = scale * m.gaps[i + 1];
   }
   painter.polylineFlat(arches, { color: theme.accent, width: theme.sizes.line * 1.3 });
-  if (k < 4) return;
+  if (!shown.has('gap')) return;
   const { t, distance } = m.uniform.deviation;
   const top = [T_WIDTH * t, scale * distance];
   painter.segment([T_WIDTH * t, 0], top, {
@@ -72,7 +66,7 @@ function drawGapPlot(painter: Painter, m: RasterModel, labels: boolean): void {
   });
   painter.ring(top, theme.sizes.point * 1.8, { color: theme.accent, width: theme.sizes.line });
   if (labels)
-    painter.label(`${(distance * m.state.z).toFixed(2)} px at t = ${t.toFixed(3)}`, top, {
+    painter.label(`${(distance * m.state.zoom).toFixed(2)} px at t = ${t.toFixed(3)}`, top, {
       dy: -theme.sizes.label,
       align: 'center',
       color: theme.accent,
@@ -83,18 +77,19 @@ function drawGapPlot(painter: Painter, m: RasterModel, labels: boolean): void {
 
 function drawAdaptive(painter: Painter, m: RasterModel, labels: boolean): void {
   const theme = painter.theme;
-  const k = m.state.step;
-  painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
-  for (const p of m.state.p) painter.dot(p, theme.polygon, theme.sizes.point * 0.6);
+  const { points, tolerance, zoom } = m.state;
+  const adaptive = m.shown.has('adaptive');
+  painter.polyline(points, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+  for (const p of points) painter.dot(p, theme.polygon, theme.sizes.point * 0.6);
   drawCurve(painter, m.curve);
-  if (k >= 2) {
+  if (adaptive) {
     drawPolyline(painter, m.adaptive.points, painter.color(1));
-    drawGap(painter, m.adaptive, m.state.z, labels);
+    drawGap(painter, m.adaptive, zoom, labels);
   }
   if (labels)
     heading(
       painter,
-      `Adaptive, τ = ${m.state.tol} px: ${k >= 2 ? `${m.adaptive.points.length - 1} segments` : '?'}`,
+      `Adaptive, τ = ${tolerance} px: ${adaptive ? `${m.adaptive.points.length - 1} segments` : '?'}`,
     );
 }
 
@@ -117,7 +112,7 @@ function drawZoomWindow(painter: Painter, m: RasterModel, labels: boolean): void
 }
 
 function sideBounds(m: RasterModel): Bounds {
-  switch (m.state.x) {
+  switch (m.state.view) {
     case 'plot':
       return { minX: -1.5, maxX: T_WIDTH + 1.5, minY: -3, maxY: GAP_HEIGHT + 4 };
     case 'subdivide':
@@ -126,13 +121,13 @@ function sideBounds(m: RasterModel): Bounds {
     case 'coverage':
       return magnifierBounds(m);
     case 'zoom':
-      return m.zoom ? windowBounds(m.zoom.size) : curveBounds(m);
+      return m.zoom ? windowOf(m.zoom.size) : curveBounds(m);
     default:
       return curveBounds(m);
   }
 }
 
-export const sideFigure: FigureSpec<RasterState, RasterModel> = {
+export const sideFigure: KitFigure<RasterState, RasterModel> = {
   id: 'side',
   title:
     'Beside the curve: the gap over t, adaptive flattening, its recursion tree, one segment magnified',
@@ -140,7 +135,7 @@ export const sideFigure: FigureSpec<RasterState, RasterModel> = {
   bounds: sideBounds,
   draw(painter, m, info) {
     const labels = !info.thumbnail;
-    switch (m.state.x) {
+    switch (m.state.view) {
       case 'plot':
         return drawGapPlot(painter, m, labels);
       case 'compare':

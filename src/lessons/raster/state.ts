@@ -1,4 +1,4 @@
-import { choice, int, number, points } from '../../app/fields';
+import { choice, int, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -14,19 +14,20 @@ export const VIEWS: readonly View[] = [
   'zoom',
 ];
 
-/** Everything the raster lesson shows, and all of it goes in the link. */
+/** Everything the raster lesson shows, and all of it goes in the link (its key beside each). */
 export interface RasterState {
-  x: View;
-  /** Control points, in pixels of the coarse raster (zoom 1: 32 × 24 pixels). */
-  p: Point[];
-  /** Segments of uniform sampling (the slider; rounded to a whole number). */
-  n: number;
-  /** Tolerance of adaptive flattening, in pixels. */
-  tol: number;
-  /** Zoom: raster pixels per unit of the control points (1: 32 × 24 pixels). */
-  z: number;
-  /** The segment of the polyline rasterised pixel by pixel (0 is the first). */
-  seg: number;
+  /** The scene the figures show (`x`). */
+  view: View;
+  /** Control points, in pixels of the coarse raster (zoom 1: 32 × 24 pixels) (`p`). */
+  points: Point[];
+  /** Segments of uniform sampling (the slider n; rounded to a whole number) (`n`). */
+  uniformSegments: number;
+  /** Tolerance τ of adaptive flattening, in pixels (`tol`). */
+  tolerance: number;
+  /** Zoom: raster pixels per unit of the control points (1: 32 × 24 pixels) (`z`). */
+  zoom: number;
+  /** The segment of the polyline rasterised pixel by pixel (0 is the first) (`seg`). */
+  steppedSegment: number;
   /** The step of the current scene. */
   step: number;
 }
@@ -54,16 +55,17 @@ export const HAIRPIN: Point[] = [
   [18, 21],
 ];
 
+// The link's keys and their order are the lesson's first ones: every link opens the same picture.
 export const schema: Schema<RasterState> = {
-  x: choice({ default: 'plot', values: VIEWS }),
-  p: points({ default: HAIRPIN, min: 2, max: MAX_POINTS }),
-  n: number({ default: 6, min: 1, max: MAX_SEGMENTS }),
-  tol: number({ default: 0.5, min: 0.05, max: 4 }),
-  z: number({ default: 1, min: ZOOM_MIN, max: ZOOM_MAX }),
-  seg: int({ default: 0, min: 0, max: 4096 }),
+  view: linkKey(choice({ default: 'plot', values: VIEWS }), 'x'),
+  points: linkKey(points({ default: HAIRPIN, min: 2, max: MAX_POINTS }), 'p'),
+  uniformSegments: linkKey(number({ default: 6, min: 1, max: MAX_SEGMENTS }), 'n'),
+  tolerance: linkKey(number({ default: 0.5, min: 0.05, max: 4 }), 'tol'),
+  zoom: linkKey(number({ default: 1, min: ZOOM_MIN, max: ZOOM_MAX }), 'z'),
+  steppedSegment: linkKey(int({ default: 0, min: 0, max: 4096 }), 'seg'),
   step: int({ default: 0, min: 0, max: 64 }),
 };
 
 /** The number of uniform segments the slider's value stands for. */
-export const segmentsOf = (state: RasterState) =>
-  Math.min(MAX_SEGMENTS, Math.max(1, Math.round(state.n)));
+export const segmentsOf = (state: Pick<RasterState, 'uniformSegments'>) =>
+  Math.min(MAX_SEGMENTS, Math.max(1, Math.round(state.uniformSegments)));

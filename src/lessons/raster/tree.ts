@@ -1,7 +1,6 @@
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { RasterModel } from './model';
-import { piecesShown } from './script';
 
 // The recursion tree of adaptive flattening beside the curve: a piece of
 // parameter range [t0, t1] at depth d sits at x = 32·(t0 + t1)/2, y = −LEVEL·d;
@@ -22,7 +21,6 @@ export const treeBounds = (m: RasterModel): Bounds => ({
 
 export function drawTree(painter: Painter, m: RasterModel, labels: boolean): void {
   const theme = painter.theme;
-  const shown = piecesShown(m, m.state.step);
   const at = (index: number) => {
     const node = m.tree[index];
     return [(WIDTH * (node.t0 + node.t1)) / 2, -LEVEL * node.depth];
@@ -40,7 +38,7 @@ export function drawTree(painter: Painter, m: RasterModel, labels: boolean): voi
         halo: true,
       });
   }
-  const visited = m.tree.slice(0, shown);
+  const visited = m.tree.slice(0, m.piecesShown);
   for (const node of visited) {
     if (node.parent >= 0)
       painter.segment(at(node.parent), at(node.index), {
@@ -68,25 +66,29 @@ export function drawTree(painter: Painter, m: RasterModel, labels: boolean): voi
     const color = node.split ? theme.ink : node.cut ? theme.accent : painter.color(0);
     painter.dot(at(node.index), color, theme.sizes.point * (node.split ? 0.9 : 1.1));
   }
-  if (shown === 0) {
+  if (m.shown.is('question')) {
     painter.ring(at(0), theme.sizes.point * 1.6, { color: theme.accent, width: theme.sizes.line });
     return;
   }
-  if (shown < m.tree.length) {
-    const current = m.tree[shown - 1];
+  if (m.shown.is('pieces')) {
+    const current = m.tree[m.piecesShown - 1];
     painter.ring(at(current.index), theme.sizes.point * 2, {
       color: theme.accent,
       width: theme.sizes.line,
     });
     if (labels) {
       const sign = current.split ? '>' : '≤';
-      painter.label(`${(current.flatness * m.state.z).toFixed(2)} ${sign} τ`, at(current.index), {
-        dx: theme.sizes.point * 2.6,
-        dy: -theme.sizes.point * 1.5,
-        color: theme.accent,
-        halo: true,
-        bold: true,
-      });
+      painter.label(
+        `${(current.flatness * m.state.zoom).toFixed(2)} ${sign} τ`,
+        at(current.index),
+        {
+          dx: theme.sizes.point * 2.6,
+          dy: -theme.sizes.point * 1.5,
+          color: theme.accent,
+          halo: true,
+          bold: true,
+        },
+      );
     }
   }
 }

@@ -1,0 +1,130 @@
+/**
+ * The first three scenes: a curve plotted as segments, uniform sampling
+ * against adaptive flattening, and the flattening's subdivision stepped.
+ */
+import { count } from '../../app/fields';
+import { texNumber } from '../../kit/format';
+import { type StepAt, repeat, script, step } from '../../kit/script';
+import { type RasterModel, SAME_ERROR_MAX } from './model';
+import { type Reveal, piecePresses, piecesAt } from './reveals';
+import { type RasterState, segmentsOf } from './state';
+
+type At = StepAt<RasterState, RasterModel>;
+
+const num = (v: number, digits = 2) => texNumber(v, digits);
+/** A length in units of the control points, in pixels of the raster. */
+const px = (m: RasterModel, units: number) => units * m.state.zoom;
+
+/** Plot the curve: compute points on it, join them, see how far the segments stray. */
+export const plotScript = script<RasterState, RasterModel, Reveal>(
+  step(
+    'points',
+    ({ model: m }) =>
+      `Given: the ${m.state.points.length} control points of a curve of degree ${m.degree}. Task: plot the curve.`,
+  ),
+  step(
+    'samples',
+    ({ state }) => {
+      const n = segmentsOf(state);
+      return `Compute ${n + 1} points P(k/${n}) on the curve, k = 0 … ${n}: the only exact points we will have.`;
+    },
+    ({ state }) => {
+      const n = segmentsOf(state);
+      return `P\\!\\left(\\tfrac{k}{${n}}\\right),\\quad k = 0,1,\\dots,${n}`;
+    },
+  ),
+  step(
+    'polyline',
+    ({ state }) =>
+      `Join them by ${count(segmentsOf(state), 'straight segment')}: this polyline is what the screen draws.`,
+  ),
+  step('curve', 'The true curve: between the computed points it bends away from the segments.'),
+  step(
+    'gap',
+    ({ state, model: m }) => {
+      const d = m.uniform.deviation;
+      return `Largest gap ${num(px(m, d.distance))} px, at t = ${num(d.t, 3)} in segment ${d.piece + 1} of ${segmentsOf(state)}.`;
+    },
+    ({ model: m }) =>
+      `\\max_t \\operatorname{dist}\\big(P(t),\\ \\text{segment}\\big) = ${num(px(m, m.uniform.deviation.distance))}\\ \\text{px at } t = ${num(m.uniform.deviation.t, 3)}`,
+  ),
+);
+
+/** Both polylines' gaps against τ: the formula of the compare scene's middle steps. */
+const gaps = ({ state, model: m }: At) =>
+  `\\text{uniform } ${segmentsOf(state)}: ${num(px(m, m.uniform.deviation.distance))}\\ \\text{px} \\qquad \\text{adaptive } ${m.adaptive.points.length - 1}: ${num(px(m, m.adaptive.deviation.distance))}\\ \\text{px} \\le \\tau = ${num(state.tolerance)}`;
+
+/** Uniform or adaptive: the same curve, the segments spent where they are needed or evenly. */
+export const compareScript = script<RasterState, RasterModel, Reveal>(
+  step(
+    'twice',
+    ({ state }) =>
+      `The same curve twice: uniform sampling on the left, adaptive flattening to τ = ${num(state.tolerance)} px on the right.`,
+  ),
+  step(
+    'uniform',
+    ({ state, model: m }) =>
+      `Uniform, ${count(segmentsOf(state), 'segment')}: largest gap ${num(px(m, m.uniform.deviation.distance))} px (τ = ${num(state.tolerance)} px).`,
+  ),
+  step(
+    'adaptive',
+    ({ state, model: m }) =>
+      `Adaptive to τ = ${num(state.tolerance)} px: ${count(m.adaptive.points.length - 1, 'segment')}, largest gap ${num(px(m, m.adaptive.deviation.distance))} px, short ones only in the bend.`,
+    gaps,
+  ),
+  step(
+    'sameGap',
+    ({ model: m }) =>
+      `For the same gap of ${num(px(m, m.adaptive.deviation.distance))} px, uniform sampling needs ${m.sameError ? count(m.sameError.points.length - 1, 'segment') : `more than ${SAME_ERROR_MAX} segments`}.`,
+    gaps,
+  ),
+  step(
+    'bound',
+    ({ model: m }) =>
+      `Without measuring, uniform sampling must plan for the sharpest bend: ${count(m.boundCount, 'segment')} to be sure of τ.`,
+    ({ model: m }) =>
+      `N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = ${m.boundCount}`,
+  ),
+);
+
+/** The flatness test of the whole curve, the question the subdivision asks and answers. */
+const flatness = ({ state }: At) =>
+  `\\tfrac{n(n-1)}{8}\\max_i \\|P_{i+2} - 2P_{i+1} + P_i\\| \\le \\tau = ${num(state.tolerance)}`;
+
+/** The piece the `index`-th press visits last (of `times` presses before "done"). */
+const visited = ({ model: m, index, times }: At) =>
+  m.tree[piecesAt(m.tree.length, index, times + 1) - 1];
+
+/** Flatten by subdivision: each piece flat enough is a segment, the others are halved. */
+export const subdivideScript = script<RasterState, RasterModel, Reveal>(
+  step(
+    'question',
+    ({ state }) =>
+      `Is the control polygon within τ = ${num(state.tolerance)} px of a straight line? If not, split at t = ½.`,
+    flatness,
+  ),
+  repeat(
+    'pieces',
+    piecePresses,
+    (at) => {
+      const { model: m } = at;
+      const node = visited(at);
+      const range = `t ∈ [${num(node.t0, 3)}, ${num(node.t1, 3)}]`;
+      const flatness = num(px(m, node.flatness));
+      return node.split
+        ? `Piece ${range}: flatness ${flatness} px > τ, so split it at its middle.`
+        : `Piece ${range}: flatness ${flatness} px ≤ τ, so draw it as one segment.`;
+    },
+    (at) => {
+      const { state, model: m } = at;
+      const node = visited(at);
+      return `\\tfrac{${m.degree}\\cdot${m.degree - 1}}{8}\\max\\|\\Delta^2 P\\| = ${num(px(m, node.flatness))}\\ ${node.split ? '>' : '\\le'}\\ ${num(state.tolerance)}`;
+    },
+  ),
+  step(
+    'done',
+    ({ model: m }) =>
+      `Done: ${count(m.adaptive.points.length - 1, 'segment')} from ${count(m.tree.length, 'piece')} looked at; the tree is ${Math.max(...m.tree.map((node) => node.depth))} levels deep.`,
+    flatness,
+  ),
+);
