@@ -1,29 +1,34 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import { boundsOf } from '../../render/projection';
 import { DATASETS, type Dataset } from './model';
 import type { BezierSplinesModel } from './model';
+import { datasetPoints } from './points';
+import type { GridReveal } from './script';
 import type { BezierSplinesState } from './state';
 
 // The practical's 3 × 3 figure: one small figure per dataset and continuity.
 // Every cell of a row draws the same points, so dragging one in any cell
 // moves it in the whole row.
 
+/** Each dataset's row heading, and its cells' id (its key in the link). */
 export const DATASET_TITLES: Record<Dataset, string> = {
-  inf: 'infinity',
-  spi: 'spiral',
-  semi: 'semi',
+  infinity: 'infinity',
+  spiral: 'spiral',
+  semicircle: 'semi',
 };
-export const ORDERS = ['c0', 'c1', 'c2'] as const;
+const DATASET_IDS: Record<Dataset, string> = { infinity: 'inf', spiral: 'spi', semicircle: 'semi' };
+/** The columns, each revealed by the step of its name. */
+export const ORDERS = ['c0', 'c1', 'c2'] as const satisfies readonly GridReveal[];
 type Order = (typeof ORDERS)[number];
 const ORDER_TITLES: Record<Order, string> = { c0: 'C⁰', c1: 'C¹', c2: 'C²' };
 
-export const cellId = (dataset: Dataset, order: Order) => `${dataset}-${order}`;
+export const cellId = (dataset: Dataset, order: Order) => `${DATASET_IDS[dataset]}-${order}`;
 
 function cell(
   dataset: Dataset,
   order: Order,
   column: number,
-): FigureSpec<BezierSplinesState, BezierSplinesModel> {
+): KitFigure<BezierSplinesState, BezierSplinesModel> {
   return {
     id: cellId(dataset, order),
     title: `${DATASET_TITLES[dataset]} as a ${ORDER_TITLES[order]} spline`,
@@ -31,29 +36,20 @@ function cell(
     bounds: (m) => boundsOf(m.grid[dataset].points),
     draw(painter, m) {
       const row = m.grid[dataset];
-      // Step k shows the first k columns' splines.
       for (const q of row.points) painter.dot(q, painter.theme.ink);
-      if (m.state.step > column)
+      if (m.shown.has(order))
         painter.cubicSegments(row[order], { role: 'curve', color: painter.color(column) });
     },
-    handles: (m) =>
-      m.grid[dataset].points.map((position, i) => ({
-        id: `p${i}`,
-        label: `p_{${i}}`,
-        position,
-        small: true,
-        showLabel: false,
-      })),
-    moveHandle(state, id, to) {
-      const i = Number(id.slice(1));
-      return { ...state, [dataset]: state[dataset].map((q, k) => (k === i ? [to[0], to[1]] : q)) };
-    },
+    points: [datasetPoints[dataset]],
   };
 }
 
 export const gridFigures = DATASETS.flatMap((dataset) =>
   ORDERS.map((order, c) => cell(dataset, order, c)),
 );
+
+/** The ids of the grid's nine cells: what the grid scene shows. */
+export const gridFigureIds = gridFigures.map((f) => f.id);
 
 export const gridLayout = {
   grid: {

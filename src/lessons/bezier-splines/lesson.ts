@@ -1,19 +1,21 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson } from '../../kit/lesson';
 import { mainFigure } from './figure';
 import { gridFigures, gridLayout } from './gridFigures';
-import { type BezierSplinesModel, derive } from './model';
+import { derive } from './model';
 import { bezierSplinesPanel } from './panel';
-import { scenes, steps } from './script';
-import { type BezierSplinesState, normalize, schema } from './state';
+import { scenes } from './scenes';
+import { normalize, schema } from './state';
 
-export default defineLesson<BezierSplinesState, BezierSplinesModel>({
+export default defineLesson({
   slug: 'bezier-splines',
   schema,
+  step: 'step',
+  // Each part is a scene with its own steps and figures: the state's part says which.
+  sceneOf: (state) => state.part,
   derive,
+  scenes,
   figures: [mainFigure, ...gridFigures],
   layout: { column: ['main', gridLayout] },
-  steps,
-  scenes,
   normalize,
   panel: bezierSplinesPanel,
 });

@@ -4,11 +4,17 @@ import { Painter } from '../../render/painter';
 import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
 import { Viewport } from '../../render/viewport';
-import { mainFigure } from './figure';
-import { gridFigures } from './gridFigures';
-import { derive } from './model';
-import { scenes, steps } from './script';
-import { PARTS, schema, stepCount } from './state';
+import lesson from './lesson';
+import type { BezierSplinesModel } from './model';
+import { type BezierSplinesState, PARTS, schema } from './state';
+
+/** The lesson as the shell hosts it: its scenes, steps and figures, the model derived once per state. */
+const derive = (s: BezierSplinesState) => lesson.derive(s) as BezierSplinesModel;
+const scenes = lesson.scenes!;
+const steps = lesson.steps!;
+const stepCount = steps.count;
+const figure = (id: string) => lesson.figures.find((f) => f.id === id)!;
+const mainFigure = figure('main');
 
 const defaults = defaultsOf(schema);
 const at = (part: (typeof PARTS)[number]) => scenes.find((s) => s.id === part)!.apply(defaults);
@@ -55,25 +61,25 @@ describe('the hand-built spline', () => {
   it('moves a joint with its two neighbours', () => {
     const s = at('inspector');
     const next = mainFigure.moveHandle!(s, 'q3', [3, 3], derive(s));
-    expect(next.q.slice(2, 5)).toEqual([
+    expect(next.handBuilt.slice(2, 5)).toEqual([
       [2, 3.5],
       [3, 3],
       [4, 2.5],
     ]);
-    expect(next.q[1]).toEqual(s.q[1]);
+    expect(next.handBuilt[1]).toEqual(s.handBuilt[1]);
   });
 });
 
 describe('the grid', () => {
   it('moves a point of a row in all three of its cells, and no other row', () => {
     const s = at('grid');
-    const cell = gridFigures.find((f) => f.id === 'spi-c1')!;
+    const cell = figure('spi-c1');
     const next = cell.moveHandle!(s, 'p2', [9, 9], derive(s));
     const m = derive(next);
-    expect(m.grid.spi.c0[1][3]).toEqual([9, 9]);
-    expect(m.grid.spi.c2[2][0]).toEqual([9, 9]);
-    expect(m.grid.spi.c1[1][3]).toEqual([9, 9]);
-    expect(next.inf).toBe(s.inf);
+    expect(m.grid.spiral.c0[1][3]).toEqual([9, 9]);
+    expect(m.grid.spiral.c2[2][0]).toEqual([9, 9]);
+    expect(m.grid.spiral.c1[1][3]).toEqual([9, 9]);
+    expect(next.infinity).toBe(s.infinity);
   });
 });
 
@@ -109,7 +115,7 @@ describe('a sharp corner (control points on the joint)', () => {
     [8, 3],
     [9, 2],
   ];
-  const corner = (step: number) => ({ ...at('inspector'), q, step });
+  const corner = (step: number) => ({ ...at('inspector'), handBuilt: q, step });
   const drawnTexts = (step: number) => {
     const state = corner(step);
     const model = derive(state);

@@ -1,14 +1,11 @@
 import {
   bezierChainSelfIntersections,
-  bezierDerivative,
   bezierJointReport,
-  bezierPoint,
   catmullRomSegments,
   catmullRomTangents,
   controlPointName,
   cubicSplineC2,
   cubicSplineSegments,
-  elevateDegree,
   onOneSpot,
   sampleBezier,
   type JointReport,
@@ -17,10 +14,17 @@ import {
   solveCubicSplineC2System,
   type SplineSystemSolution,
 } from '../../math';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
+import { asCubic, comb, piecesOf, type Tooth } from './pieces';
+import type { Reveal } from './script';
 import { type BezierSplinesState, handTangents, midpoint } from './state';
 
-export type Dataset = 'inf' | 'spi' | 'semi';
-export const DATASETS: readonly Dataset[] = ['inf', 'spi', 'semi'];
+export { asCubic, piecesOf, type Tooth } from './pieces';
+
+/** The practical's three datasets, by their field in the state. */
+export type Dataset = 'infinity' | 'spiral' | 'semicircle';
+export const DATASETS: readonly Dataset[] = ['infinity', 'spiral', 'semicircle'];
 
 /** One row of the 3 × 3 figure: a dataset drawn as C⁰, C¹ and C² splines. */
 export interface GridRow {
@@ -32,11 +36,10 @@ export interface GridRow {
   c2: Point[][];
 }
 
-/** A tooth of the curvature comb: from the curve, along the normal, as long as the curvature. */
-export type Tooth = [Point, Point];
-
 export interface BezierSplinesModel {
   state: BezierSplinesState;
+  /** What the current part's steps so far reveal. */
+  shown: Revealed<Reveal>;
   /** Part 1: the one Bézier curve with the points as control points, and with one point moved. */
   moved: number;
   movedPoints: Point[];
@@ -72,12 +75,51 @@ export interface BezierSplinesModel {
 
 export const SWING = 0.5;
 
-export function derive(state: BezierSplinesState): BezierSplinesModel {
-  const { p } = state;
+type State = BezierSplinesState;
+
+// Each part's geometry is kept while the fields it reads are the same: a
+// clicker press (a new step) solves no spline again.
+
+/** Part 1: one Bézier curve through all the points against the C² pieces, and p_m moved up by 1. */
+const whyPieces = memoOn<
+  State,
+  'points',
+  Pick<BezierSplinesModel, 'moved' | 'movedPoints' | 'single' | 'singleMoved' | 'movedSpline'>
+>(['points'], ({ points: p }) => {
   const moved = Math.floor(p.length / 2);
   const movedPoints = p.map((q, i) => (i === moved ? [q[0], q[1] + 1] : q));
-  const quadratic = quadraticSplineC1(p, state.b[0]);
-  const b0 = state.b[0];
+  return {
+    moved,
+    movedPoints,
+    single: sampleBezier(p, 200),
+    singleMoved: sampleBezier(movedPoints, 200),
+    movedSpline: cubicSplineC2(movedPoints),
+  };
+});
+
+/** Part 2: the C¹ quadratic spline from b0, and from b0 ± δ. */
+const quadraticPieces = memoOn<
+  State,
+  'points' | 'firstControl',
+  Pick<BezierSplinesModel, 'quadratic' | 'quadraticControls' | 'swing'>
+>(['points', 'firstControl'], ({ points: p, firstControl: [b0] }) => {
+  const quadratic = quadraticSplineC1(p, b0);
+  return {
+    quadratic: quadratic.map(asCubic),
+    quadraticControls: quadratic.map((segment) => segment[1]),
+    swing: [
+      quadraticSplineC1(p, [b0[0], b0[1] + SWING]).map(asCubic),
+      quadraticSplineC1(p, [b0[0], b0[1] - SWING]).map(asCubic),
+    ],
+  };
+});
+
+/** Part 3: the (3n+1) system solved, against the natural cubic spline (also part 1's C² pieces). */
+const systemPieces = memoOn<
+  State,
+  'points',
+  Pick<BezierSplinesModel, 'system' | 'names' | 'natural' | 'difference'>
+>(['points'], ({ points: p }) => {
   const system = solveCubicSplineC2System(p);
   const natural = cubicSplineC2(p);
   let difference = 0;
@@ -88,73 +130,89 @@ export function derive(state: BezierSplinesState): BezierSplinesModel {
       }),
     ),
   );
-  const pieces = piecesOf(state.q);
+  const names = system.controls.map((_, j) => controlPointName(j, system.controls.length));
+  return { system, names, natural, difference };
+});
+
+/** Part 4: one memo per dataset, so dragging in one row leaves the others alone. */
+const gridRows = Object.fromEntries(
+  DATASETS.map((dataset) => [
+    dataset,
+    memoOn<State, Dataset, GridRow>([dataset], (fields) => gridRow(fields[dataset])),
+  ]),
+) as Record<Dataset, (state: State) => GridRow>;
+
+/** Part 5: the hand-built pieces, the report at each inner joint, the comb. */
+const inspectorPieces = memoOn<
+  State,
+  'handBuilt',
+  Pick<BezierSplinesModel, 'pieces' | 'joints' | 'comb'>
+>(['handBuilt'], ({ handBuilt }) => {
+  const pieces = piecesOf(handBuilt);
+  return {
+    pieces,
+    joints: pieces.slice(1).map((piece, k) => bezierJointReport(pieces[k], piece)),
+    comb: comb(pieces),
+  };
+});
+
+/** Part 6: Hermite with hand tangents, Catmull-Rom's tangents, the three α splines. */
+const catmullPieces = memoOn<
+  State,
+  'points' | 'tangents' | 'part',
+  Pick<BezierSplinesModel, 'hermite' | 'crTangents' | 'oneSided' | 'oneSidedTangents' | 'alphas'>
+>(['points', 'tangents', 'part'], ({ points: p, tangents, part }) => {
   const crTangents = catmullRomTangents(p);
   const oneSidedTangents = crTangents.map((t, i) =>
     i === 0 ? sub(p[1], p[0]) : i === p.length - 1 ? sub(p[i], p[i - 1]) : t,
   );
-  const catmull = state.part === 'catmull';
   return {
-    state,
-    oneSpot: onOneSpot(state.part === 'inspector' ? state.q : p),
-    moved,
-    movedPoints,
-    single: sampleBezier(p, 200),
-    singleMoved: sampleBezier(movedPoints, 200),
-    spline: natural,
-    movedSpline: cubicSplineC2(movedPoints),
-    quadratic: quadratic.map(asCubic),
-    quadraticControls: quadratic.map((segment) => segment[1]),
-    swing: [
-      quadraticSplineC1(p, [b0[0], b0[1] + SWING]).map(asCubic),
-      quadraticSplineC1(p, [b0[0], b0[1] - SWING]).map(asCubic),
-    ],
-    system,
-    names: system.controls.map((_, j) => controlPointName(j, system.controls.length)),
-    natural,
-    difference,
-    grid: {
-      inf: gridRow(state.inf),
-      spi: gridRow(state.spi),
-      semi: gridRow(state.semi),
-    },
-    pieces,
-    joints: pieces.slice(1).map((piece, k) => bezierJointReport(pieces[k], piece)),
-    comb: comb(pieces),
     // A state straight from a scene may not have one tangent per point yet (normalize adds them).
-    hermite: cubicSplineSegments(p, state.tg.length === p.length ? state.tg : handTangents(p)),
+    hermite: cubicSplineSegments(p, tangents.length === p.length ? tangents : handTangents(p)),
     crTangents,
     oneSided: cubicSplineSegments(p, oneSidedTangents),
     oneSidedTangents,
-    alphas: [
-      [0, 'uniform'],
-      [0.5, 'centripetal'],
-      [1, 'chordal'],
-    ].map(([alpha, name]) => {
-      const segments = catmullRomSegments(p, alpha as number);
+    alphas: (
+      [
+        [0, 'uniform'],
+        [0.5, 'centripetal'],
+        [1, 'chordal'],
+      ] as const
+    ).map(([alpha, name]) => {
+      const segments = catmullRomSegments(p, alpha);
       // Crossings are only looked for where they are shown.
       return {
-        alpha: alpha as number,
-        name: name as string,
+        alpha,
+        name,
         segments,
-        crossings: catmull ? bezierChainSelfIntersections(segments) : [],
+        crossings: part === 'catmull' ? bezierChainSelfIntersections(segments) : [],
       };
     }),
+  };
+});
+
+/** Everything the figures and the panel show, with what the current step reveals. */
+export function derive(state: State, shown: Revealed<Reveal>): BezierSplinesModel {
+  const system = systemPieces(state);
+  return {
+    state,
+    shown,
+    oneSpot: onOneSpot(state.part === 'inspector' ? state.handBuilt : state.points),
+    ...whyPieces(state),
+    spline: system.natural,
+    ...quadraticPieces(state),
+    ...system,
+    grid: {
+      infinity: gridRows.infinity(state),
+      spiral: gridRows.spiral(state),
+      semicircle: gridRows.semicircle(state),
+    },
+    ...inspectorPieces(state),
+    ...catmullPieces(state),
   };
 }
 
 const sub = (a: Point, b: Point): Point => [a[0] - b[0], a[1] - b[1]];
-
-/** A line or quadratic piece as the same curve of degree 3 (to draw all pieces alike). */
-export function asCubic(segment: Point[]): Point[] {
-  let result = segment;
-  while (result.length < 4) result = elevateDegree(result);
-  return result;
-}
-
-/** Control points c0 … c3k as k cubic pieces. */
-export const piecesOf = (q: readonly Point[]): Point[][] =>
-  Array.from({ length: Math.floor((q.length - 1) / 3) }, (_, k) => q.slice(3 * k, 3 * k + 4));
 
 function gridRow(points: Point[]): GridRow {
   return {
@@ -163,32 +221,4 @@ function gridRow(points: Point[]): GridRow {
     c1: quadraticSplineC1(points, midpoint(points[0], points[1])).map(asCubic),
     c2: cubicSplineC2(points),
   };
-}
-
-/** Teeth along every piece, scaled so the longest is an eighth of the spline's size. */
-function comb(pieces: readonly Point[][]): Tooth[] {
-  const raw: { at: Point; normal: Point; kappa: number }[] = [];
-  for (const piece of pieces) {
-    const first = bezierDerivative(piece);
-    const second = bezierDerivative(first);
-    for (let k = 0; k <= 16; k++) {
-      const t = k / 16;
-      const [dx, dy] = bezierPoint(first, t);
-      const [ex, ey] = bezierPoint(second, t);
-      const speed = Math.hypot(dx, dy);
-      if (!(speed > 1e-9)) continue;
-      const kappa = (dx * ey - dy * ex) / speed ** 3;
-      raw.push({ at: bezierPoint(piece, t), normal: [-dy / speed, dx / speed], kappa });
-    }
-  }
-  const xs = pieces.flat().map((q) => q[0]);
-  const ys = pieces.flat().map((q) => q[1]);
-  const size = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys), 1e-9);
-  const largest = Math.max(...raw.map((r) => Math.abs(r.kappa)), 1e-9);
-  const factor = (0.125 * size) / largest;
-  // The comb points away from the centre of curvature, as CAD systems draw it.
-  return raw.map(({ at, normal, kappa }) => [
-    at,
-    [at[0] - normal[0] * kappa * factor, at[1] - normal[1] * kappa * factor],
-  ]);
 }

@@ -1,4 +1,4 @@
-import { choice, int, points } from '../../app/fields';
+import { choice, int, linkKey, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents, cubicSplineC2 } from '../../math';
@@ -14,23 +14,26 @@ export const PARTS: readonly Part[] = [
   'catmull',
 ];
 
-/** Everything the lesson shows; all of it goes in the link. */
+/**
+ * Everything the lesson shows; all of it goes in the link. Each field keeps
+ * its short link key (`p`, `b`, `q`, `inf`, `spi`, `semi`, `tg`).
+ */
 export interface BezierSplinesState {
   part: Part;
   /** Step of the current part's construction (0 = only the given points). */
   step: number;
   /** The points p0 … pn the spline passes through (parts 1, 2, 3 and 6). */
-  p: Point[];
+  points: Point[];
   /** The chosen first inner control point b0 of the C¹ quadratic spline. */
-  b: Point[];
+  firstControl: Point[];
   /** The hand-built piecewise cubic: 3k + 1 control points, joints at every third. */
-  q: Point[];
+  handBuilt: Point[];
   /** The three datasets of the practical's figure. */
-  inf: Point[];
-  spi: Point[];
-  semi: Point[];
+  infinity: Point[];
+  spiral: Point[];
+  semicircle: Point[];
   /** Hand-set tangents T_i at p_i for the Hermite spline (part 6). */
-  tg: Point[];
+  tangents: Point[];
 }
 
 export const MAX_POINTS = 12;
@@ -104,35 +107,24 @@ export const handTangents = (p: readonly Point[]): Point[] =>
     i === 0 || i === p.length - 1 ? [1.5, 1.5] : round([1.6 * x - 0.6 * y, 0.6 * x + 1.6 * y]),
   );
 
+// In schema order: the link writes its fields in this order.
 export const schema: Schema<BezierSplinesState> = {
   part: choice({ default: 'why', values: PARTS }),
   step: int({ default: 0, min: 0, max: 99 }),
-  p: points({ default: LECTURE_POINTS, min: 2, max: MAX_POINTS }),
-  b: points({ default: [midpoint(LECTURE_POINTS[0], LECTURE_POINTS[1])], min: 1, max: 1 }),
-  q: points({ default: HAND_BUILT, min: 4, max: 3 * 6 + 1 }),
-  inf: points({ default: INFINITY, min: 2, max: 16 }),
-  spi: points({ default: SPIRAL, min: 2, max: 16 }),
-  semi: points({ default: SEMI, min: 2, max: 16 }),
-  tg: points({ default: handTangents(LECTURE_POINTS), min: 2, max: MAX_POINTS }),
+  points: linkKey(points({ default: LECTURE_POINTS, min: 2, max: MAX_POINTS }), 'p'),
+  firstControl: linkKey(
+    points({ default: [midpoint(LECTURE_POINTS[0], LECTURE_POINTS[1])], min: 1, max: 1 }),
+    'b',
+  ),
+  handBuilt: linkKey(points({ default: HAND_BUILT, min: 4, max: 3 * 6 + 1 }), 'q'),
+  infinity: linkKey(points({ default: INFINITY, min: 2, max: 16 }), 'inf'),
+  spiral: linkKey(points({ default: SPIRAL, min: 2, max: 16 }), 'spi'),
+  semicircle: linkKey(points({ default: SEMI, min: 2, max: 16 }), 'semi'),
+  tangents: linkKey(
+    points({ default: handTangents(LECTURE_POINTS), min: 2, max: MAX_POINTS }),
+    'tg',
+  ),
 };
-
-/** How many steps each part has after step 0. */
-export function stepCount(state: BezierSplinesState): number {
-  switch (state.part) {
-    case 'why':
-      return 4;
-    case 'quadratic':
-      return state.p.length; // b0, then one b_i per further piece, then the sensitivity
-    case 'system':
-      return 8;
-    case 'grid':
-      return 3;
-    case 'inspector':
-      return 5;
-    case 'catmull':
-      return 6;
-  }
-}
 
 /** The hand-built spline needs 3k + 1 points and one tangent per point. */
 export function normalize(state: BezierSplinesState): {
@@ -141,14 +133,14 @@ export function normalize(state: BezierSplinesState): {
 } {
   const issues: string[] = [];
   let next = state;
-  const extra = (state.q.length - 1) % 3;
+  const extra = (state.handBuilt.length - 1) % 3;
   if (extra !== 0) {
     issues.push('q: a piecewise cubic has 3k + 1 control points; the last ones were dropped');
-    next = { ...next, q: state.q.slice(0, state.q.length - extra) };
+    next = { ...next, handBuilt: state.handBuilt.slice(0, state.handBuilt.length - extra) };
   }
-  if (next.tg.length !== next.p.length) {
-    const fallback = handTangents(next.p);
-    next = { ...next, tg: next.p.map((_, i) => next.tg[i] ?? fallback[i]) };
+  if (next.tangents.length !== next.points.length) {
+    const fallback = handTangents(next.points);
+    next = { ...next, tangents: next.points.map((_, i) => next.tangents[i] ?? fallback[i]) };
   }
   return { state: next, issues };
 }
