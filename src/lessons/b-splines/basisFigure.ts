@@ -1,27 +1,32 @@
-import type { DrawInfo, FigureSpec } from '../../app/lesson';
+import type { DrawInfo } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
+import { hoveredPoint } from './drawParts';
+import { segmentIds } from './ids';
 import type { BSplineModel } from './model';
 import { basisBounds, tFor, uStep } from './plotRange';
 import { type BSplineState, isUniformPart } from './state';
 
 /** Which row of the Cox–de Boor triangle the plot shows now, or null for none yet. */
-export function shownRow(s: BSplineState, degree: number): number | null {
-  const k = s.k;
-  switch (s.x) {
+export function shownRow(m: BSplineModel): number | null {
+  const { degree } = m;
+  switch (m.kind) {
     case 'uniform':
-    case 'closed':
-      return k >= 3 ? degree : null;
+      return m.shown.has('segments') ? degree : null;
     case 'local':
-      return k >= 3 ? degree : null;
+      return m.shown.has('basis') ? degree : null;
     case 'knots':
-    case 'clamped':
-    case 'repeated':
-      return k >= 2 ? Math.min(k - 2, degree) : null;
+      // One row per press, then the last row stays.
+      return m.shown.has('row') ? m.shown.count('row') - 1 : null;
     case 'circle':
+      return m.shown.has('arcs') ? degree : null;
     case 'projective':
-      return k >= 2 ? degree : null;
-    default:
-      return k >= 1 ? degree : null;
+      return m.shown.has('map') ? degree : null;
+    case 'convert':
+    case 'properties':
+      return m.shown.has('curve') ? degree : null;
+    case 'nurbs':
+      return m.shown.has('plain') ? degree : null;
   }
 }
 
@@ -57,12 +62,12 @@ function shadeOutside(painter: Painter, m: BSplineModel, bounds = basisBounds(m)
 function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   const theme = painter.theme;
   const bounds = basisBounds(m);
-  const r = shownRow(m.state, m.degree);
-  painter.plotAxes(bounds, uStep(m), 0.25, isUniformPart(m.state.x) ? 's' : 'u', '');
+  const r = shownRow(m);
+  painter.plotAxes(bounds, uStep(m), 0.25, isUniformPart(m.state.part) ? 's' : 'u', '');
   shadeOutside(painter, m, bounds);
-  const seg = /^seg(\d+)$/.exec(info.hover ?? '');
-  if (seg && m.segments[Number(seg[1])]) {
-    const { from, to } = m.segments[Number(seg[1])];
+  const seg = segmentIds.index(info.hover);
+  if (seg !== null && m.segments[seg]) {
+    const { from, to } = m.segments[seg];
     painter.polygon(
       [
         [from, 0],
@@ -70,7 +75,7 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
         [to, 1],
         [from, 1],
       ],
-      painter.color(Number(seg[1])),
+      painter.color(seg),
       0.15,
     );
   }
@@ -78,10 +83,11 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
     if (!info.thumbnail) painter.note('The basis functions appear as the steps go on');
     return;
   }
-  const hovered = /^p(\d+)$/.exec(info.hover ?? '');
+  // A hovered control point (not its halo): its basis function drawn bold.
+  const hovered = hoveredPoint(info.hover, false);
   const owner = (i: number) => (r === m.degree ? (m.owner[i] ?? i) : i);
   m.rows[r].forEach((samples, i) => {
-    const strong = hovered !== null && Number(hovered[1]) === owner(i);
+    const strong = hovered !== null && hovered === owner(i);
     painter.polylineFlat(samples, {
       color: painter.color(owner(i)),
       width: strong ? theme.sizes.curve * 1.5 : theme.sizes.line * 1.3,
@@ -102,7 +108,7 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   if (!info.thumbnail) painter.cursorLabels(u, entries);
 }
 
-export const basisFigure: FigureSpec<BSplineState, BSplineModel> = {
+export const basisFigure: KitFigure<BSplineState, BSplineModel> = {
   id: 'basis',
   title: 'The B-spline basis functions, with the cursor at the parameter',
   kind: 'plot',
@@ -121,7 +127,7 @@ export const basisFigure: FigureSpec<BSplineState, BSplineModel> = {
   moveHandle: (state, _id, to, m) => ({ ...state, t: tFor(m, to[0]) }),
   pickAt: (m, at, tolerance) => (Math.abs(at[0] - m.u) <= tolerance ? 'cursor' : null),
   hoverAt(m, at, tolerance) {
-    const r = shownRow(m.state, m.degree);
+    const r = shownRow(m);
     if (r !== m.degree) return null;
     let best: string | null = null;
     let distance = tolerance * 2;
@@ -131,6 +137,7 @@ export const basisFigure: FigureSpec<BSplineState, BSplineModel> = {
         const d = Math.abs(samples[k + 1] - at[1]);
         if (d < distance && samples[k + 1] > 1e-6) {
           distance = d;
+          // The control point's handle: hovering its basis function is hovering it.
           best = `p${m.owner[i] ?? i}`;
         }
       }

@@ -1,20 +1,48 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { Point } from '../../math';
 import type { Painter, StrokeStyle } from '../../render/painter';
+import { haloIds, segmentIds } from './ids';
 import type { BSplineModel } from './model';
+import { controlPoints } from './points';
+
+/** A hint in the figure (not in the gallery's thumbnail). */
+export const hint = (painter: Painter, info: DrawInfo, text: string) => {
+  if (!info.thumbnail) painter.note(text);
+};
+
+/** The control point hovered: its handle, or (with `halos`) its weight's halo; else null. */
+export function hoveredPoint(hover: string | null, halos = true): number | null {
+  const handle = hover === null ? null : controlPoints.ref(hover);
+  if (handle) return handle.index;
+  return halos ? haloIds.index(hover) : null;
+}
 
 /** Which segments to draw strongly: the hovered one, or those a hovered point moves. */
 export function emphasis(m: BSplineModel, info: DrawInfo): (i: number) => 'strong' | 'weak' | '' {
-  const hover = info.hover ?? '';
-  const seg = /^seg(\d+)$/.exec(hover);
+  const segment = segmentIds.index(info.hover);
   // A point, or its weight's halo: the segments it acts on.
-  const point = /^[pw](\d+)$/.exec(hover);
-  if (seg) return (i) => (i === Number(seg[1]) ? 'strong' : 'weak');
-  if (point) {
-    const j = Number(point[1]);
-    return (i) => (m.segments[i]?.points.includes(j) ? 'strong' : 'weak');
-  }
+  const point = hoveredPoint(info.hover);
+  if (segment !== null) return (i) => (i === segment ? 'strong' : 'weak');
+  if (point !== null) return (i) => (m.segments[i]?.points.includes(point) ? 'strong' : 'weak');
   return () => '';
+}
+
+/** The segment under the pointer, if any. */
+export function segmentAt(
+  m: BSplineModel,
+  at: readonly number[],
+  tolerance: number,
+): string | null {
+  let best: string | null = null;
+  let distance = tolerance;
+  m.segments.forEach((segment, i) => {
+    const d = distanceToPath(segment.samples, at);
+    if (d <= distance) {
+      distance = d;
+      best = segmentIds.id(i);
+    }
+  });
+  return best;
 }
 
 /** The curve's segments, each in its own colour (the lesson's main result). */
@@ -42,13 +70,11 @@ export function drawSegments(
 
 /** Rings around the control points of the hovered segment. */
 export function ringHovered(painter: Painter, m: BSplineModel, info: DrawInfo): void {
-  const seg = /^seg(\d+)$/.exec(info.hover ?? '');
-  if (!seg) return;
-  const i = Number(seg[1]);
-  const segment = m.segments[i];
-  if (!segment) return;
+  const i = segmentIds.index(info.hover);
+  const segment = i === null ? undefined : m.segments[i];
+  if (i === null || !segment) return;
   for (const j of segment.points) {
-    painter.ring(m.state.p[j], painter.theme.sizes.handle * 2.2, {
+    painter.ring(m.state.points[j], painter.theme.sizes.handle * 2.2, {
       color: painter.color(i),
       width: painter.theme.sizes.line * 1.5,
     });
@@ -94,7 +120,7 @@ export function drawMarks(
 }
 
 /** Distance from `at` to a sampled path (interleaved x, y). */
-export function distanceToPath(samples: Float64Array, at: Point): number {
+export function distanceToPath(samples: Float64Array, at: readonly number[]): number {
   let best = Infinity;
   for (let k = 0; k + 3 < samples.length; k += 2) {
     const ax = samples[k];

@@ -13,21 +13,21 @@ const row = (name: string, value: string, className = ''): RowSpec => ({
 /** The numbers a student can check against the figure, for the part shown. */
 export function facts(m: BSplineModel): RowSpec[] {
   const s = m.state;
-  const n = s.p.length;
+  const n = s.points.length;
   const rows: RowSpec[] = [];
-  const uniform = isUniformPart(s.x);
+  const uniform = isUniformPart(s.part);
   rows.push(row(uniform ? 'parameter s' : 'parameter u', num(m.u)));
   rows.push(row(uniform ? 'P(s)' : 'C(u)', point(m.point)));
   if (!uniform) {
     rows.push(row('curve start C(u_p)', point(m.start)));
-    rows.push(row('x0', point(s.p[0])));
+    rows.push(row('x0', point(s.points[0])));
     rows.push(row('curve end C(u_n)', point(m.end)));
-    rows.push(row(`x${n - 1}`, point(s.p[n - 1])));
+    rows.push(row(`x${n - 1}`, point(s.points[n - 1])));
     for (const join of m.joins) {
       const through =
         join.through === null
           ? ''
-          : `, through x${join.through}: distance ${Math.hypot(join.at[0] - s.p[join.through][0], join.at[1] - s.p[join.through][1]).toExponential(1)}`;
+          : `, through x${join.through}: distance ${Math.hypot(join.at[0] - s.points[join.through][0], join.at[1] - s.points[join.through][1]).toExponential(1)}`;
       rows.push(
         row(
           `knot ${texNumber(join.u, 3)} ×${join.multiplicity}`,
@@ -36,28 +36,42 @@ export function facts(m: BSplineModel): RowSpec[] {
         ),
       );
     }
-  } else if (s.x !== 'closed') {
+  } else if (s.part !== 'closed') {
     rows.push(row('curve start', point(m.start)));
     rows.push(row('curve end', point(m.end)));
   }
   const sum = m.basis.reduce((a, b) => a + b, 0);
   rows.push(row('Σ basis at the cursor', num(sum)));
-  if (m.localControl) {
-    const changed = m.localControl.changed.filter(Boolean).length;
-    rows.push(row('segments changed', `${changed} of ${m.segments.length}`));
-  }
-  if (m.properties) {
-    rows.push(row('line × polygon', String(m.properties.crossings.polygon)));
-    rows.push(row('line × curve', String(m.properties.crossings.curve)));
-    rows.push(row('affine: largest gap', m.properties.deviation.toExponential(1)));
-  }
-  if (m.circle) {
-    rows.push(row('circle: largest |‖C − c‖ − r|', m.circle.deviation.toExponential(1)));
-    rows.push(row('all weights 1: largest gap', num(m.circle.plainDeviation)));
-  }
-  if (m.projective && !m.projective.error) {
-    rows.push(row('H(C) vs NURBS of H(x), w′', m.projective.deviation.toExponential(1)));
-    rows.push(row('H(C) vs old weights', num(m.projective.plainDeviation)));
-  }
+  rows.push(...sceneFacts(m));
   return rows;
+}
+
+/** The numbers only one scene has. */
+function sceneFacts(m: BSplineModel): RowSpec[] {
+  switch (m.kind) {
+    case 'local': {
+      const changed = m.localControl.changed.filter(Boolean).length;
+      return [row('segments changed', `${changed} of ${m.segments.length}`)];
+    }
+    case 'properties':
+      return [
+        row('line × polygon', String(m.properties.crossings.polygon)),
+        row('line × curve', String(m.properties.crossings.curve)),
+        row('affine: largest gap', m.properties.deviation.toExponential(1)),
+      ];
+    case 'circle':
+      return [
+        row('circle: largest |‖C − c‖ − r|', m.circle.deviation.toExponential(1)),
+        row('all weights 1: largest gap', num(m.circle.plainDeviation)),
+      ];
+    case 'projective':
+      return m.projective.error
+        ? []
+        : [
+            row('H(C) vs NURBS of H(x), w′', m.projective.deviation.toExponential(1)),
+            row('H(C) vs old weights', num(m.projective.plainDeviation)),
+          ];
+    default:
+      return [];
+  }
 }

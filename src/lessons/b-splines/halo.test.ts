@@ -2,17 +2,20 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { curveFigure } from './curveFigure';
 import { WEIGHT_MAX, WEIGHT_MIN, haloAt, haloRadius, haloUnit, weightForRadius } from './halo';
-import { derive } from './model';
+import lesson from './lesson';
+import type { NurbsModel } from './model';
 import { SCENES } from './scenes';
-import { normalize, schema } from './state';
+import { type BSplineState, normalize, schema } from './state';
 
+/** The NURBS scene's model as the shell gets it from the kit. */
+const derive = (s: BSplineState) => lesson.derive(s) as NurbsModel;
 const defaults = normalize(defaultsOf(schema)).state;
-const nurbs = (k: number) =>
-  normalize({ ...SCENES.find((s) => s.id === 'nurbs')!.apply(defaults), k }).state;
+const nurbs = (step: number) =>
+  normalize({ ...SCENES.find((s) => s.id === 'nurbs')!.setup(defaults), step }).state;
 
 describe('the weight halo', () => {
   it('one unit is 6% of the diagonal of the points’ box: the lecture’s 10 × 4 gives 0.06·√116', () => {
-    expect(haloUnit(nurbs(2).p)).toBeCloseTo(0.06 * Math.sqrt(116), 14);
+    expect(haloUnit(nurbs(2).points)).toBeCloseTo(0.06 * Math.sqrt(116), 14);
     // All points on one spot: a unit of 0.06, not 0.
     expect(haloUnit([[2, 2]])).toBe(0.06);
   });
@@ -47,13 +50,13 @@ describe('the weight halo', () => {
     const before = derive(nurbs(1));
     const state = nurbs(2);
     const m = derive(state);
-    const unit = m.rational!.haloUnit;
-    const [x, y] = state.p[3];
-    const ring: number[] = [x + haloRadius(state.w[3], unit), y];
+    const unit = m.rational.haloUnit;
+    const [x, y] = state.points[3];
+    const ring: number[] = [x + haloRadius(state.weights[3], unit), y];
     expect(curveFigure.pickAt!(before, ring, unit * 0.1)).toBeNull();
     expect(curveFigure.pickAt!(m, ring, unit * 0.1)).toBe('w3');
     const next = curveFigure.moveHandle!(state, 'w3', [x + 1.8 * unit, y], m);
-    expect(next.w).toEqual(state.w.map((w, i) => (i === 3 ? 4.59 : w)));
-    expect(next.p).toBe(state.p);
+    expect(next.weights).toEqual(state.weights.map((w, i) => (i === 3 ? 4.59 : w)));
+    expect(next.points).toBe(state.points);
   });
 });

@@ -1,4 +1,6 @@
 import type { Point } from '../../math';
+import { haloIds } from './ids';
+import type { BSplineModel, CircleModel, NurbsModel } from './model';
 import type { BSplineState } from './state';
 
 /** The weights a slider or a halo can set: the slider's range, inside the link's (above 0). */
@@ -11,9 +13,9 @@ const UNIT_SHARE = 0.06;
 const BASE = 0.3;
 const SLOPE = 1 - BASE;
 
-/** The halo steps: from the curve with weights (NURBS) or from the first step (circle). */
-export const showsHalos = (s: BSplineState) =>
-  (s.x === 'nurbs' && s.k >= 2) || (s.x === 'circle' && s.k >= 1);
+/** The scenes with weight halos (NURBS and the circle), once their step shows the weights. */
+export const showsHalos = (m: BSplineModel): m is NurbsModel | CircleModel =>
+  (m.kind === 'nurbs' || m.kind === 'circle') && m.shown.has('weights');
 
 /**
  * The world length of one halo unit for these control points: a halo is drawn
@@ -64,7 +66,7 @@ export function haloAt(
     );
     if (off <= distance) {
       distance = off;
-      best = `w${i}`;
+      best = haloIds.id(i);
     }
   });
   return best;
@@ -72,9 +74,9 @@ export function haloAt(
 
 /** The state with weight i set by a halo dragged to `to`: its radius is the distance to x_i. */
 export function dragHalo(state: BSplineState, i: number, to: Point, unit: number): BSplineState {
-  const point = state.p[i];
+  const point = state.points[i];
   if (!point) return state;
   const w = weightForRadius(Math.hypot(to[0] - point[0], to[1] - point[1]), unit);
-  if (w === state.w[i]) return state;
-  return { ...state, w: state.w.map((v, k) => (k === i ? w : v)) };
+  if (w === state.weights[i]) return state;
+  return { ...state, weights: state.weights.map((v, k) => (k === i ? w : v)) };
 }

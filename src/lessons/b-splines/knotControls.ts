@@ -2,6 +2,7 @@ import { h } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { clampedUniformKnots } from '../../math';
 import type { BSplineModel } from './model';
+import { scriptOf } from './scripts';
 import { type BSplineState, MAX_DEGREE, isClamped } from './state';
 
 /**
@@ -32,15 +33,18 @@ export function knotControls(api: LessonApi<BSplineState, BSplineModel>) {
     return b;
   };
   const degree = h('span', { 'aria-live': 'polite' });
-  const withDegree = (s: BSplineState, d: number) => {
-    if (d < 1 || d > MAX_DEGREE || d > s.p.length - 1) return null;
-    const u = isClamped(s.u, s.d)
-      ? clampedUniformKnots(s.p.length, d)
-      : uniformKnotVector(s.p.length, d);
-    return { ...s, d, u, k: Math.min(s.k, d + 3) };
+  const withDegree = (s: BSplineState, degree: number) => {
+    if (degree < 1 || degree > MAX_DEGREE || degree > s.points.length - 1) return null;
+    const n = s.points.length;
+    const knots = isClamped(s.knots, s.degree)
+      ? clampedUniformKnots(n, degree)
+      : uniformKnotVector(n, degree);
+    const next = { ...s, degree, knots };
+    // A row fewer to step through: the step stays within the scene's script.
+    return { ...next, step: Math.min(s.step, scriptOf(next).lastStep(next)) };
   };
-  const lower = button('Degree − 1', (s) => withDegree(s, s.d - 1));
-  const raise = button('Degree + 1', (s) => withDegree(s, s.d + 1));
+  const lower = button('Degree − 1', (s) => withDegree(s, s.degree - 1));
+  const raise = button('Degree + 1', (s) => withDegree(s, s.degree + 1));
   const element = h(
     'div',
     {},
@@ -49,17 +53,26 @@ export function knotControls(api: LessonApi<BSplineState, BSplineModel>) {
     h(
       'div',
       { class: 'lesson-tools' },
-      button('Make the knots uniform', (s) => ({ ...s, u: uniformKnotVector(s.p.length, s.d) })),
-      button('Clamp the ends', (s) => ({ ...s, u: clampedUniformKnots(s.p.length, s.d) })),
-      button('Repeat a knot p times', (s) => ({ ...s, u: repeatedKnots(s.p.length, s.d) })),
+      button('Make the knots uniform', (s) => ({
+        ...s,
+        knots: uniformKnotVector(s.points.length, s.degree),
+      })),
+      button('Clamp the ends', (s) => ({
+        ...s,
+        knots: clampedUniformKnots(s.points.length, s.degree),
+      })),
+      button('Repeat a knot p times', (s) => ({
+        ...s,
+        knots: repeatedKnots(s.points.length, s.degree),
+      })),
     ),
   );
   return {
     element,
     update(state: BSplineState) {
-      degree.textContent = `degree p = ${state.d}`;
-      lower.disabled = state.d <= 1;
-      raise.disabled = state.d >= Math.min(MAX_DEGREE, state.p.length - 1);
+      degree.textContent = `degree p = ${state.degree}`;
+      lower.disabled = state.degree <= 1;
+      raise.disabled = state.degree >= Math.min(MAX_DEGREE, state.points.length - 1);
     },
   };
 }

@@ -1,11 +1,16 @@
-import type { FigureSpec, Handle } from '../../app/lesson';
+import type { Handle } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Bounds } from '../../render/projection';
+import { knotIds } from './ids';
 import type { BSplineModel } from './model';
 import { plotRange, uStep } from './plotRange';
 import { type BSplineState, isUniformPart } from './state';
 
-/** Knots are editable where the lesson is about them (not the lecture's fixed uniform cubic). */
-const editable = (s: BSplineState) => !isUniformPart(s.x) && s.k >= 1;
+/**
+ * Knots are editable where the lesson is about them (not the lecture's fixed
+ * uniform cubic), once the step shows more than the points.
+ */
+const editable = (m: BSplineModel) => !isUniformPart(m.state.part) && !m.shown.is('points');
 /** A knot dropped this close to a neighbour (a share of the range) lands on it: a repeated knot. */
 const SNAP = 0.015;
 
@@ -24,7 +29,7 @@ export function knotRuns(knots: readonly number[]): [number, number][] {
   return runs;
 }
 
-export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
+export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
   id: 'knots',
   title: 'The knot vector: drag a knot, stack knots to repeat one',
   kind: 'plot',
@@ -37,12 +42,13 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
     painter.segment([minX, 0], [maxX, 0], { color: theme.muted, width: theme.sizes.line });
     painter.segment([a, 0], [b, 0], { color: theme.ink, width: theme.sizes.line * 2.5 });
     painter.segment([m.u, -1], [m.u, 1], { color: theme.accent, width: theme.sizes.line });
-    if (m.state.k < 1 && !isUniformPart(m.state.x)) return;
+    const uniform = isUniformPart(m.state.part);
+    if (m.shown.is('points') && !uniform) return;
     const size = theme.sizes.label * 0.75;
     let lastX = -Infinity;
     for (const [j, count] of knotRuns(m.knots)) {
       const u = m.knots[j];
-      if (isUniformPart(m.state.x)) painter.dot([u, 0], theme.ink, theme.sizes.point);
+      if (uniform) painter.dot([u, 0], theme.ink, theme.sizes.point);
       // A label per run of knots, where there is room: stacked ones say how many.
       const x = painter.view.toScreen([u, 0])[0];
       if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;
@@ -56,7 +62,7 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
         size,
       });
     }
-    if (!info.thumbnail && uStep(m) > 0 && isUniformPart(m.state.x)) {
+    if (!info.thumbnail && uStep(m) > 0 && uniform) {
       painter.screenLabel('uniform knots (the lecture’s matrix form)', 8, 14, {
         color: theme.muted,
         size: theme.sizes.label * 0.75,
@@ -64,14 +70,14 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
     }
   },
   handles(m) {
-    if (!editable(m.state)) return [];
+    if (!editable(m)) return [];
     const handles: Handle[] = [];
     for (const [first, count] of knotRuns(m.knots)) {
       for (let j = first; j < first + count; j++) {
         const pull: [number, number] =
           count === 1 ? [0, 1] : j === first ? [-1, 0] : j === first + count - 1 ? [1, 0] : [0, 1];
         handles.push({
-          id: `u${j}`,
+          id: knotIds.id(j),
           label: `u_{${j}}`,
           position: [m.knots[j], 0],
           shape: 'diamond',
@@ -82,9 +88,11 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
     }
     return handles;
   },
+  // A knot moves along its line, between its neighbours; dropped near one, it lands on it.
   moveHandle(state, id, to, m) {
-    const j = Number(id.slice(1));
-    const u = state.u;
+    const j = knotIds.index(id);
+    if (j === null) return state;
+    const u = state.knots;
     const [minX, maxX] = plotRange(m);
     const low = j > 0 ? u[j - 1] : minX - (maxX - minX);
     const high = j < u.length - 1 ? u[j + 1] : maxX + (maxX - minX);
@@ -95,7 +103,7 @@ export const knotFigure: FigureSpec<BSplineState, BSplineModel> = {
     v = Math.min(high, Math.max(low, v));
     const next = u.map((knot, k) => (k === j ? v : knot));
     // The curve lives on [u_p, u_n]: that interval must not close up.
-    if (!(next[state.d] < next[state.p.length])) return state;
-    return { ...state, u: next };
+    if (!(next[state.degree] < next[state.points.length])) return state;
+    return { ...state, knots: next };
   },
 };

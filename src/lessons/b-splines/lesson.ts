@@ -1,16 +1,18 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './curveFigure';
 import { knotFigure } from './knotFigure';
-import { type BSplineModel, derive } from './model';
+import { derive } from './model';
 import { bsplinePanel } from './panel';
 import { SCENES } from './scenes';
-import { type BSplineState, normalize, schema } from './state';
-import { steps } from './steps';
+import { normalize, schema } from './state';
 
-export default defineLesson<BSplineState, BSplineModel>({
+export default defineLesson({
   slug: 'b-splines',
   schema,
+  step: 'step',
+  // Each scene has its family's steps; the state's part says which scene it is in.
+  sceneOf: (state) => state.part,
   derive,
   normalize,
   figures: [curveFigure, basisFigure, knotFigure],
@@ -18,7 +20,6 @@ export default defineLesson<BSplineState, BSplineModel>({
   // the presenter's large type no room to plot in.
   layout: { row: ['curve', { column: ['basis', 'knots'] }], weights: [1.8, 1] },
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.005 },
-  steps,
   scenes: SCENES,
   panel: bsplinePanel,
 });

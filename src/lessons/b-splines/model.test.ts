@@ -3,15 +3,27 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { bsplineBasis } from '../../math';
 import { knotFigure } from './knotFigure';
-import { derive } from './model';
+import lesson from './lesson';
+import type { BSplineModel } from './model';
 import { SCENES } from './scenes';
 import { type BSplineState, LECTURE_POINTS, normalize, schema } from './state';
-import { describeStep, stepCount, steps } from './steps';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: BSplineState) => lesson.derive(s) as BSplineModel;
+/** The model of a scene family, by its kind. */
+function modelOf<K extends BSplineModel['kind']>(kind: K, s: BSplineState) {
+  const m = derive(s);
+  if (m.kind !== kind) throw new Error(`a ${m.kind} model, not ${kind}`);
+  return m as Extract<BSplineModel, { kind: K }>;
+}
+const steps = lesson.steps!;
+const describeStep = (s: BSplineState, k: number) => steps.describe(s, k);
+const stepCount = (s: BSplineState) => steps.count(s);
 
 const defaults = normalize(defaultsOf(schema)).state;
 const sceneState = (id: string, changes: Partial<BSplineState> = {}): BSplineState => {
   const scene = SCENES.find((s) => s.id === id)!;
-  return normalize({ ...scene.apply(defaults), ...changes }).state;
+  return normalize({ ...scene.setup(defaults), ...changes }).state;
 };
 const gap = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 
@@ -43,13 +55,15 @@ describe('the uniform cubic B-spline of the lecture', () => {
     const ten = sceneState('local');
     fc.assert(
       fc.property(
-        fc.integer({ min: 0, max: ten.p.length - 1 }),
+        fc.integer({ min: 0, max: ten.points.length - 1 }),
         fc.double({ min: -5, max: 5, noNaN: true }),
         fc.double({ min: -5, max: 5, noNaN: true }),
         (j, dx, dy) => {
-          const before = derive({ ...ten, x: 'uniform', p: ten.q });
-          const p = ten.q.map((point, i) => (i === j ? [point[0] + dx, point[1] + dy] : point));
-          const after = derive({ ...ten, x: 'uniform', p });
+          const before = derive({ ...ten, part: 'uniform', points: ten.before });
+          const points = ten.before.map((point, i) =>
+            i === j ? [point[0] + dx, point[1] + dy] : point,
+          );
+          const after = derive({ ...ten, part: 'uniform', points });
           return before.segments.every((segment, i) => {
             const acts = i <= j && j <= i + 3;
             let largest = 0;
@@ -67,9 +81,9 @@ describe('the uniform cubic B-spline of the lecture', () => {
   });
 
   it('the local-control scene says which segments changed: x4 moved, Q4 … Q7 of Q3 … Q9', () => {
-    const m = derive(sceneState('local'));
-    expect(m.localControl!.moved).toEqual([4]);
-    expect(m.localControl!.changed).toEqual([false, true, true, true, true, false, false]);
+    const m = modelOf('local', sceneState('local'));
+    expect(m.localControl.moved).toEqual([4]);
+    expect(m.localControl.changed).toEqual([false, true, true, true, true, false, false]);
   });
 });
 
@@ -107,7 +121,7 @@ describe('knots and Cox–de Boor', () => {
     expect(join).toMatchObject({ u: 1, multiplicity: 3, continuity: 0, through: 3 });
     expect(gap(join.at, LECTURE_POINTS[3])).toBeLessThan(1e-12);
     // Multiplicity 2 instead: C¹ there, and no longer through x3.
-    const double = derive(sceneState('repeated', { u: [0, 0, 0, 0, 1, 1, 1.5, 2, 2, 2, 2] }));
+    const double = derive(sceneState('repeated', { knots: [0, 0, 0, 0, 1, 1, 1.5, 2, 2, 2, 2] }));
     expect(double.joins[0]).toMatchObject({ multiplicity: 2, continuity: 1, through: null });
   });
 
@@ -115,53 +129,56 @@ describe('knots and Cox–de Boor', () => {
     const state = sceneState('knots');
     const m = derive(state);
     const stacked = knotFigure.moveHandle!(state, 'u5', [4.05, 0], m);
-    expect(stacked.u[5]).toBe(4);
+    expect(stacked.knots[5]).toBe(4);
     // u3 up to u7 would leave [u_p, u_n] = [u3, u7] empty: refused.
-    const tight = { ...state, u: [0, 1, 2, 3, 7, 7, 7, 7, 8, 9, 10] };
-    expect(knotFigure.moveHandle!(tight, 'u3', [7, 0], derive(tight)).u[3]).toBe(3);
+    const tight = { ...state, knots: [0, 1, 2, 3, 7, 7, 7, 7, 8, 9, 10] };
+    expect(knotFigure.moveHandle!(tight, 'u3', [7, 0], derive(tight)).knots[3]).toBe(3);
   });
 });
 
 describe('properties', () => {
   it('variation diminishing: the line y = 1.5 crosses the lecture polygon 3 times and the curve twice', () => {
     // Polygon heights 0, 3, 4, 1, 0, 3, 3.5: three sign changes. Joints 8/3, 10/3, 4/3, 2/3, 31/12: two.
-    const m = derive(
+    const m = modelOf(
+      'properties',
       sceneState('properties', {
-        l: [
+        line: [
           [0, 1.5],
           [10, 1.5],
         ],
       }),
     );
-    expect(m.properties!.crossings.polygon).toBe(3);
-    expect(m.properties!.crossings.curve).toBe(2);
+    expect(m.properties.crossings.polygon).toBe(3);
+    expect(m.properties.crossings.curve).toBe(2);
   });
 
   it('affine invariance: the curve of the mapped points is the mapped curve', () => {
-    expect(derive(sceneState('properties')).properties!.deviation).toBeLessThan(1e-12);
+    expect(modelOf('properties', sceneState('properties')).properties.deviation).toBeLessThan(
+      1e-12,
+    );
   });
 });
 
 describe('NURBS', () => {
   it('the circle’s sampled points lie on the circle within 1e-9; with weights 1 they do not', () => {
-    const m = derive(sceneState('circle'));
-    expect(m.circle!.deviation).toBeLessThan(1e-9);
-    for (const point of m.circle!.samples)
+    const m = modelOf('circle', sceneState('circle'));
+    expect(m.circle.deviation).toBeLessThan(1e-9);
+    for (const point of m.circle.samples)
       expect(Math.abs(Math.hypot(point[0], point[1]) - 3)).toBeLessThan(1e-9);
-    expect(m.circle!.plainDeviation).toBeGreaterThan(0.1);
+    expect(m.circle.plainDeviation).toBeGreaterThan(0.1);
   });
 
   it('raising a weight pulls the curve towards its point', () => {
-    const plain = derive(sceneState('nurbs', { w: LECTURE_POINTS.map(() => 1), t: 0.3 }));
+    const plain = derive(sceneState('nurbs', { weights: LECTURE_POINTS.map(() => 1), t: 0.3 }));
     const heavy = derive(sceneState('nurbs', { t: 0.3 }));
     expect(gap(heavy.point, LECTURE_POINTS[2])).toBeLessThan(gap(plain.point, LECTURE_POINTS[2]));
   });
 
   it('a projective map of the points with their weights keeps the curve; the old weights do not', () => {
-    const m = derive(sceneState('projective'));
-    expect(m.projective!.error).toBeNull();
-    expect(m.projective!.deviation).toBeLessThan(1e-9);
-    expect(m.projective!.plainDeviation).toBeGreaterThan(0.05);
+    const m = modelOf('projective', sceneState('projective'));
+    expect(m.projective.error).toBeNull();
+    expect(m.projective.deviation).toBeLessThan(1e-9);
+    expect(m.projective.plainDeviation).toBeGreaterThan(0.05);
   });
 });
 
@@ -169,9 +186,9 @@ describe('the script', () => {
   it('every scene steps from 0 to its count with a caption, and every step’s formula builds', () => {
     for (const scene of SCENES) {
       const state = sceneState(scene.id);
-      expect(state.x).toBe(scene.id);
+      expect(state.part).toBe(scene.id);
       for (let k = 0; k <= stepCount(state); k++) {
-        const at = { ...state, k };
+        const at = { ...state, step: k };
         expect(describeStep(at, k).length).toBeGreaterThan(5);
         expect(() => steps.formula!(derive(at), at)).not.toThrow();
       }
@@ -179,9 +196,9 @@ describe('the script', () => {
   });
 
   it('a link with knots or weights that do not fit the points is mended, and says so', () => {
-    const { state, issues } = normalize({ ...sceneState('knots'), u: [0, 1, 2], w: [2] });
-    expect(state.u).toEqual([0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1]);
-    expect(state.w).toEqual([2, 1, 1, 1, 1, 1, 1]);
+    const { state, issues } = normalize({ ...sceneState('knots'), knots: [0, 1, 2], weights: [2] });
+    expect(state.knots).toEqual([0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1]);
+    expect(state.weights).toEqual([2, 1, 1, 1, 1, 1, 1]);
     expect(issues).toHaveLength(2);
   });
 });

@@ -9,8 +9,8 @@ import { knotControls } from './knotControls';
 import { slotNumbers } from '../../render/formulaParts';
 import type { BSplineModel } from './model';
 import { segmentButtons } from './segmentButtons';
+import { scriptOf } from './scripts';
 import { type BSplineState, isRationalPart, isUniformPart } from './state';
-import { describeStep, stepCount, steps } from './steps';
 import { TEXTS } from './texts';
 import { triangleTable } from './triangleTable';
 import { weightSliders } from './weightSliders';
@@ -48,7 +48,7 @@ export function bsplinePanel(
   const segments = segmentButtons(api);
   const before = h('button', { type: 'button' }, 'Take this curve as the new “before”');
   before.addEventListener('click', () =>
-    api.set({ ...api.get(), q: api.get().p.map((p) => [...p]) }),
+    api.set({ ...api.get(), before: api.get().points.map((p) => [...p]) }),
   );
   const localTools = h('div', { class: 'lesson-tools' }, before);
   const knots = knotControls(api);
@@ -88,24 +88,27 @@ export function bsplinePanel(
   return {
     element,
     update(m, state) {
-      if (state.x !== shownPart) {
-        shownPart = state.x;
-        setText(title, TEXTS[state.x].title);
-        setText(text, TEXTS[state.x].text);
-        setHidden(matrix, !isUniformPart(state.x));
-        setHidden(recursion, isUniformPart(state.x));
-        setHidden(localTools, state.x !== 'local');
-        setHidden(knots.element, isUniformPart(state.x));
-        setHidden(weights.element, !isRationalPart(state.x));
+      const { part } = state;
+      if (part !== shownPart) {
+        shownPart = part;
+        setText(title, TEXTS[part].title);
+        setText(text, TEXTS[part].text);
+        setHidden(matrix, !isUniformPart(part));
+        setHidden(recursion, isUniformPart(part));
+        setHidden(localTools, part !== 'local');
+        setHidden(knots.element, isUniformPart(part));
+        setHidden(weights.element, !isRationalPart(part));
       }
-      if (state.p !== shownPoints) {
-        shownPoints = state.p;
-        const note = shapeSentence(state.p);
+      if (state.points !== shownPoints) {
+        shownPoints = state.points;
+        const note = shapeSentence(state.points);
         setHidden(shapeNote, note === null);
         if (note !== null) setText(shapeNote, note);
       }
-      setText(stepLine, `Step ${state.k} of ${stepCount(state)}: ${describeStep(state, state.k)}`);
-      const tex = steps.formula?.(m, state) ?? null;
+      const script = scriptOf(state);
+      const caption = script.caption(state, m, state.step);
+      setText(stepLine, `Step ${state.step} of ${m.shown.lastStep}: ${caption}`);
+      const tex = script.formula(state, m, state.step);
       setHidden(stepBox, tex === null);
       if (tex !== null) stepFormula.set(slotNumbers(tex));
       segments.update(m, state);
@@ -113,7 +116,9 @@ export function bsplinePanel(
       weights.update(state);
       triangle.update(m, state, api.theme().palette);
       factRows.set(facts(m));
-      curvature.update(state.x === 'uniform' ? { src: 'b-spline', p: state.p, t: state.t } : null);
+      curvature.update(
+        part === 'uniform' ? { src: 'b-spline', p: state.points, t: state.t } : null,
+      );
     },
     hover(id) {
       segments.hover(id);

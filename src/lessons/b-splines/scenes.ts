@@ -1,6 +1,8 @@
-import type { Point, Scene } from '../../app/lesson';
-import { clampedUniformKnots, nurbsCircle } from '../../math';
-import { CIRCLE } from './model';
+import type { ScriptedScene } from '../../kit/lesson';
+import { clampedUniformKnots, nurbsCircle, type Point } from '../../math';
+import type { BSplineModel } from './model';
+import { CIRCLE } from './nurbsGeometry';
+import { type Reveal, partScript } from './scripts';
 import { type BSplineState, DEFAULT_LINE, LECTURE_POINTS, type Part } from './state';
 
 const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
@@ -32,53 +34,53 @@ const MOVED: Point[] = LONG.map((point, i) => (i === 4 ? [6.5, 3.5] : [...point]
 const n = LECTURE_POINTS.length;
 const ones = LECTURE_POINTS.map(() => 1);
 
-function scene(id: Part, label: string, fields: Partial<BSplineState> = {}): Scene<BSplineState> {
-  return {
-    id,
-    label,
-    apply: (s) => {
-      const p = fields.p ?? copy(LECTURE_POINTS);
-      const d = fields.d ?? 3;
-      return {
-        ...s,
-        x: id,
-        p,
-        q: fields.q ?? copy(p),
-        t: fields.t ?? 0.35,
-        k: 0,
-        d,
-        u: fields.u ?? clampedUniformKnots(p.length, d),
-        w: fields.w ?? p.map(() => 1),
-        l: copy(DEFAULT_LINE),
-      };
-    },
+type Scene = ScriptedScene<BSplineState, BSplineModel, Reveal>;
+
+/** A scene of one part, with the fields it sets (the rest: the lecture's points, cubic, clamped). */
+function scene(part: Part, label: string, fields: Partial<BSplineState> = {}): Scene {
+  const setup = (s: BSplineState): BSplineState => {
+    const points = fields.points ?? copy(LECTURE_POINTS);
+    const degree = fields.degree ?? 3;
+    return {
+      ...s,
+      part,
+      points,
+      before: fields.before ?? copy(points),
+      t: fields.t ?? 0.35,
+      step: 0,
+      degree,
+      knots: fields.knots ?? clampedUniformKnots(points.length, degree),
+      weights: fields.weights ?? points.map(() => 1),
+      line: copy(DEFAULT_LINE),
+    };
   };
+  return { id: part, label, setup, script: partScript(part) };
 }
 
 const circle = nurbsCircle(CIRCLE.centre, CIRCLE.radius);
 const circleFields: Partial<BSplineState> = {
-  p: circle.points,
-  w: circle.weights,
-  u: circle.knots,
-  d: circle.degree,
+  points: circle.points,
+  weights: circle.weights,
+  knots: circle.knots,
+  degree: circle.degree,
   t: 0.1,
 };
 
-/** The lesson's script, in the lecture's order. */
-export const SCENES: Scene<BSplineState>[] = [
+/** The lesson's scenes, in the lecture's order. */
+export const SCENES: Scene[] = [
   scene('uniform', 'Uniform cubic B-spline'),
-  scene('closed', 'Closed B-spline', { p: CLOSED, t: 0.1 }),
-  scene('local', 'Local control', { p: MOVED, q: copy(LONG), t: 0.45 }),
+  scene('closed', 'Closed B-spline', { points: CLOSED, t: 0.1 }),
+  scene('local', 'Local control', { points: MOVED, before: copy(LONG), t: 0.45 }),
   scene('knots', 'Knots and Cox–de Boor', {
-    u: Array.from({ length: n + 4 }, (_, j) => j),
+    knots: Array.from({ length: n + 4 }, (_, j) => j),
     t: 0.4,
   }),
-  scene('clamped', 'Clamped ends', { u: clampedUniformKnots(n, 3), t: 0.05 }),
-  scene('repeated', 'Repeated knots', { u: [0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2], t: 0.3 }),
+  scene('clamped', 'Clamped ends', { knots: clampedUniformKnots(n, 3), t: 0.05 }),
+  scene('repeated', 'Repeated knots', { knots: [0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2], t: 0.3 }),
   scene('convert', 'B-spline ↔ Bézier', { t: 0.4 }),
   scene('properties', 'Properties'),
   scene('nurbs', 'NURBS weights', {
-    w: ones.map((w, i) => (i === 2 ? 4 : i === 5 ? 0.25 : w)),
+    weights: ones.map((w, i) => (i === 2 ? 4 : i === 5 ? 0.25 : w)),
     t: 0.3,
   }),
   scene('circle', 'The exact circle', circleFields),

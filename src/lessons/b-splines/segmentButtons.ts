@@ -1,8 +1,9 @@
 import { h, setChildren, setHidden } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
+import { segmentIds } from './ids';
 import type { BSplineModel } from './model';
+import { segmentName } from './notation';
 import { type BSplineState, isUniformPart } from './state';
-import { segmentName } from './steps';
 
 /** One button per segment: hover or focus it to see its four control points (the keyboard's hover). */
 export function segmentButtons(api: LessonApi<BSplineState, BSplineModel>) {
@@ -13,8 +14,8 @@ export function segmentButtons(api: LessonApi<BSplineState, BSplineModel>) {
   return {
     element,
     update(m: BSplineModel, state: BSplineState) {
-      setHidden(element, !isUniformPart(state.x));
-      const next = `${state.x}:${m.segments.length}:${state.p.length}`;
+      setHidden(element, !isUniformPart(state.part));
+      const next = `${state.part}:${m.segments.length}:${state.points.length}`;
       if (next === key) return;
       key = next;
       buttons = m.segments.map((segment, i) => {
@@ -22,7 +23,7 @@ export function segmentButtons(api: LessonApi<BSplineState, BSplineModel>) {
         const last = segment.points[segment.points.length - 1];
         const button = h('button', { type: 'button' }, `${segmentName(i)}: x${first} … x${last}`);
         button.style.borderColor = api.theme().palette[i % api.theme().palette.length];
-        const on = () => api.setHover(`seg${i}`);
+        const on = () => api.setHover(segmentIds.id(i));
         const off = () => api.setHover(null);
         button.addEventListener('mouseenter', on);
         button.addEventListener('focus', on);
@@ -33,7 +34,7 @@ export function segmentButtons(api: LessonApi<BSplineState, BSplineModel>) {
       setChildren(list, buttons);
     },
     hover(id: string | null) {
-      buttons.forEach((button, i) => button.classList.toggle('current', id === `seg${i}`));
+      buttons.forEach((button, i) => button.classList.toggle('current', id === segmentIds.id(i)));
     },
   };
 }

@@ -1,4 +1,4 @@
-import { choice, int, knots, number, points, weights } from '../../app/fields';
+import { choice, int, knots, linkKey, number, points, weights } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { clampedUniformKnots } from '../../math';
@@ -35,25 +35,29 @@ export const PARTS: readonly Part[] = [
   'projective',
 ];
 
-/** Everything the lesson shows, and all of it goes in the link. */
+/**
+ * Everything the lesson shows, and all of it goes in the link, each field
+ * under its one-letter key (`x p q t k d u w l`, in this order).
+ */
 export interface BSplineState {
-  x: Part;
-  /** Control points x0 … xm. */
-  p: Point[];
-  /** The control points before the last change, for local control ("before" curve). */
-  q: Point[];
+  /** Which scene the state is in (`x`). */
+  part: Part;
+  /** Control points x0 … xm (`p`). */
+  points: Point[];
+  /** The control points before the last change, for local control's "before" curve (`q`). */
+  before: Point[];
   /** Where the cursor is along the whole curve, 0 … 1 (u = u_p + t·(u_{n} − u_p)). */
   t: number;
-  /** The step of the scene. */
-  k: number;
-  /** Degree p of the general B-spline (knot parts). */
-  d: number;
-  /** The knot vector u_0 … u_{m+p+1} (knot parts). */
-  u: number[];
-  /** One weight per control point (NURBS parts). */
-  w: number[];
-  /** Two points of the line that tests variation diminishing. */
-  l: Point[];
+  /** The step of the scene (`k`). */
+  step: number;
+  /** Degree p of the general B-spline, in the knot scenes (`d`). */
+  degree: number;
+  /** The knot vector u_0 … u_{m+p+1}, in the knot scenes (`u`). */
+  knots: number[];
+  /** One weight per control point, in the NURBS scenes (`w`). */
+  weights: number[];
+  /** Two points of the line that tests variation diminishing (`l`). */
+  line: Point[];
 }
 
 export const MAX_POINTS = 12;
@@ -75,26 +79,51 @@ export const DEFAULT_LINE: Point[] = [
   [10.5, 1.6],
 ];
 
+/**
+ * The scene families: the scenes of one family share their steps and their
+ * model (the open and the closed uniform cubic; the three knot scenes).
+ */
+export type Family =
+  'uniform' | 'local' | 'convert' | 'properties' | 'knots' | 'nurbs' | 'circle' | 'projective';
+
+export const FAMILY: Readonly<Record<Part, Family>> = {
+  uniform: 'uniform',
+  closed: 'uniform',
+  local: 'local',
+  convert: 'convert',
+  properties: 'properties',
+  knots: 'knots',
+  clamped: 'knots',
+  repeated: 'knots',
+  nurbs: 'nurbs',
+  circle: 'circle',
+  projective: 'projective',
+};
+
 const partUses = {
   uniform: new Set<Part>(['uniform', 'closed', 'local', 'convert', 'properties']),
   weights: new Set<Part>(['nurbs', 'circle', 'projective']),
 };
 
 /** The lecture's uniform cubic (matrix form): no knot vector or weights of its own. */
-export const isUniformPart = (x: Part) => partUses.uniform.has(x);
+export const isUniformPart = (part: Part) => partUses.uniform.has(part);
 /** Parts whose weights are not all 1 in general. */
-export const isRationalPart = (x: Part) => partUses.weights.has(x);
+export const isRationalPart = (part: Part) => partUses.weights.has(part);
 
+/** Most knots a link may give: n + p + 1 for the most points and the highest degree. */
+export const MAX_KNOTS = MAX_POINTS + MAX_DEGREE + 1;
+
+// The link's keys come in this order, the order they always had.
 export const schema: Schema<BSplineState> = {
-  x: choice({ default: 'uniform', values: PARTS }),
-  p: points({ default: LECTURE_POINTS, min: 3, max: MAX_POINTS }),
-  q: points({ default: [], min: 0, max: MAX_POINTS }),
+  part: linkKey(choice({ default: 'uniform', values: PARTS }), 'x'),
+  points: linkKey(points({ default: LECTURE_POINTS, min: 3, max: MAX_POINTS }), 'p'),
+  before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.35, min: 0, max: 1 }),
-  k: int({ default: 0, min: 0, max: 20 }),
-  d: int({ default: 3, min: 1, max: MAX_DEGREE }),
-  u: knots({ default: [], min: 0, max: MAX_POINTS + MAX_DEGREE + 1, low: -1e3, high: 1e3 }),
-  w: weights({ default: [], min: 0, max: MAX_POINTS, high: 100 }),
-  l: points({ default: DEFAULT_LINE, min: 2, max: 2 }),
+  step: linkKey(int({ default: 0, min: 0, max: 20 }), 'k'),
+  degree: linkKey(int({ default: 3, min: 1, max: MAX_DEGREE }), 'd'),
+  knots: linkKey(knots({ default: [], min: 0, max: MAX_KNOTS, low: -1e3, high: 1e3 }), 'u'),
+  weights: linkKey(weights({ default: [], min: 0, max: MAX_POINTS, high: 100 }), 'w'),
+  line: linkKey(points({ default: DEFAULT_LINE, min: 2, max: 2 }), 'l'),
 };
 
 const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
@@ -126,34 +155,34 @@ export function refitKnots(u: readonly number[], n: number, p: number): number[]
 export function normalize(state: BSplineState): { state: BSplineState; issues: string[] } {
   const issues: string[] = [];
   let next = state;
-  const n = next.p.length;
-  if (n < 4 && next.x !== 'closed') {
+  const n = next.points.length;
+  if (n < 4 && next.part !== 'closed') {
     issues.push(
       `a cubic B-spline needs at least 4 control points, not ${n}; the lecture's are shown`,
     );
-    next = { ...next, p: copy(LECTURE_POINTS) };
+    next = { ...next, points: copy(LECTURE_POINTS) };
   }
-  const count = next.p.length;
-  if (next.d > count - 1) {
+  const count = next.points.length;
+  if (next.degree > count - 1) {
     issues.push(
-      `degree ${next.d} needs ${next.d + 1} control points; the degree is now ${count - 1}`,
+      `degree ${next.degree} needs ${next.degree + 1} control points; the degree is now ${count - 1}`,
     );
-    next = { ...next, d: count - 1 };
+    next = { ...next, degree: count - 1 };
   }
-  if (!knotsFit(next.u, count, next.d)) {
-    if (next.u.length > 0) {
+  if (!knotsFit(next.knots, count, next.degree)) {
+    if (next.knots.length > 0) {
       issues.push(
-        `u: ${next.u.length} knots do not fit ${count} points of degree ${next.d} (${count + next.d + 1} are needed, with u_${next.d} < u_${count}); clamped uniform knots are used`,
+        `u: ${next.knots.length} knots do not fit ${count} points of degree ${next.degree} (${count + next.degree + 1} are needed, with u_${next.degree} < u_${count}); clamped uniform knots are used`,
       );
     }
-    next = { ...next, u: clampedUniformKnots(count, next.d) };
+    next = { ...next, knots: clampedUniformKnots(count, next.degree) };
   }
-  if (next.w.length !== count) {
-    if (next.w.length > 0) {
-      issues.push(`w: ${next.w.length} weights for ${count} points; missing weights are 1`);
+  if (next.weights.length !== count) {
+    if (next.weights.length > 0) {
+      issues.push(`w: ${next.weights.length} weights for ${count} points; missing weights are 1`);
     }
-    next = { ...next, w: next.p.map((_, i) => next.w[i] ?? 1) };
+    next = { ...next, weights: next.points.map((_, i) => next.weights[i] ?? 1) };
   }
-  if (next.q.length !== count) next = { ...next, q: copy(next.p) };
+  if (next.before.length !== count) next = { ...next, before: copy(next.points) };
   return { state: next, issues };
 }

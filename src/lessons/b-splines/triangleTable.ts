@@ -22,7 +22,7 @@ export function triangleTable() {
   return {
     element,
     update(m: BSplineModel, state: BSplineState, palette: readonly string[]) {
-      const hidden = isUniformPart(state.x);
+      const hidden = isUniformPart(state.part);
       setHidden(element, hidden);
       if (hidden) return;
       const count = m.table[0].length;
@@ -34,7 +34,7 @@ export function triangleTable() {
           Array.from({ length: count }, (_, i) => h('th', { scope: 'col' }, `i=${i}`)),
         );
       }
-      const last = shownRow(state, m.degree) ?? -1;
+      const last = shownRow(m) ?? -1;
       caption.textContent =
         last < 0
           ? 'Step on: the rows appear one by one, from N(i,0) to N(i,p).'

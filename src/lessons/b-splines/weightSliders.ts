@@ -18,9 +18,9 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
   return {
     element,
     update(state: BSplineState) {
-      if (state.w.length !== count) {
-        count = state.w.length;
-        inputs = state.w.map((_, i) => {
+      if (state.weights.length !== count) {
+        count = state.weights.length;
+        inputs = state.weights.map((_, i) => {
           const input = h('input', {
             type: 'range',
             min: String(WEIGHT_MIN),
@@ -30,12 +30,12 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
           });
           input.addEventListener('input', () => {
             const s = api.get();
-            const w = s.w.map((v, k) => (k === i ? Number(input.value) : v));
-            api.set({ ...s, w }, { coalesce: `weight-${i}` });
+            const weights = s.weights.map((v, k) => (k === i ? Number(input.value) : v));
+            api.set({ ...s, weights }, { coalesce: `weight-${i}` });
           });
           return input;
         });
-        outputs = state.w.map(() => h('output', {}));
+        outputs = state.weights.map(() => h('output', {}));
         setChildren(
           list,
           inputs.map((input, i) =>
@@ -43,7 +43,7 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
           ),
         );
       }
-      state.w.forEach((w, i) => {
+      state.weights.forEach((w, i) => {
         if (Number(inputs[i].value) !== w) inputs[i].value = String(w);
         outputs[i].textContent = trimmed(w, 4);
       });

@@ -1,0 +1,24 @@
+import { texNumber, texPoint } from '../../kit/format';
+
+/** A number in a formula: three decimals. */
+export const n3 = (v: number) => texNumber(v, 3);
+/** A point in a formula: two decimals. */
+export const pt = (p: readonly number[]) => texPoint(p, 2);
+
+const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+/** A small whole number as Unicode superscript digits (C², C⁰), for captions and labels. */
+export const superscript = (n: number) =>
+  [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
+
+/** The lecture names a segment after its last control point: Q_i blends x_{i−3} … x_i. */
+export const segmentName = (first: number) => `Q${first + 3}`;
+/** The same name with its subscript, for labels and TeX (`Q_{4}`). */
+export const segmentLabel = (first: number) => segmentName(first).replace(/(\d+)/, '_{$1}');
+
+/** Σ (number) x_i over the non-zero terms, e.g. `0.167\,x_{2} + 0.667\,x_{3}`. */
+export function blend(values: readonly number[], names: (i: number) => string): string {
+  return values
+    .map((v, i) => (v === 0 ? '' : `${n3(v)}\\,${names(i)}`))
+    .filter(Boolean)
+    .join(' + ');
+}

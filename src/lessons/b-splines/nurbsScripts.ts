@@ -1,0 +1,71 @@
+import { texNumber } from '../../kit/format';
+import { script, step } from '../../kit/script';
+import type { CircleModel, NurbsModel, ProjectiveModel } from './model';
+import { n3, pt } from './notation';
+import type { BSplineState } from './state';
+
+/** What the steps of the NURBS weights scene reveal, by name. */
+export type NurbsReveal = 'points' | 'plain' | 'weights' | 'sum';
+
+/** A weight per control point: the plain B-spline first, then the weights and their sum. */
+export const nurbsScript = script<BSplineState, NurbsModel, NurbsReveal>(
+  step('points', 'The control points'),
+  step('plain', 'All weights 1: the plain B-spline'),
+  step(
+    'weights',
+    'Weights: a heavier point pulls the curve towards itself, a lighter one lets it go',
+  ),
+  step('sum', 'C(u) = Σ wᵢNᵢ(u)xᵢ / Σ wᵢNᵢ(u), with the numbers at u', ({ model: m }) => {
+    const terms = m.basis.flatMap((b, i) =>
+      b === 0 ? [] : [`${texNumber(m.weights[i], 2)}\\cdot${n3(b)}\\,x_{${i}}`],
+    );
+    return `C(${n3(m.u)}) = \\dfrac{${terms.join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
+  }),
+);
+
+/** What the steps of the exact circle reveal, by name. */
+export type CircleReveal = 'points' | 'weights' | 'arcs' | 'samples' | 'plain';
+
+const circleGap = '\\max_u \\bigl\\lvert\\, \\lVert C(u) - c \\rVert - r \\,\\bigr\\rvert';
+
+/** The exact circle: nine points with their weights, four rational arcs, checked against the circle. */
+export const circleScript = script<BSplineState, CircleModel, CircleReveal>(
+  step('points', 'Nine control points on a square'),
+  step('weights', 'The polygon; weight 1 at the edge midpoints, √2/2 at the corners'),
+  step('arcs', 'Four rational quadratic arcs, one per quarter'),
+  step(
+    'samples',
+    'Sampled points of the curve lie on the circle, to rounding',
+    ({ model: m }) => `${circleGap} = ${m.circle.deviation.toExponential(1)}`,
+  ),
+  step(
+    'plain',
+    'With every weight 1 instead: not a circle',
+    ({ model: m }) => `\\text{all } w_i = 1:\\ ${circleGap} = ${n3(m.circle.plainDeviation)}`,
+  ),
+);
+
+/** What the steps of the projective map reveal, by name. */
+export type ProjectiveReveal = 'points' | 'curve' | 'map' | 'oldWeights';
+
+/** The perspective map with the weights (the image of the curve), and without (not the image). */
+export const projectiveScript = script<BSplineState, ProjectiveModel, ProjectiveReveal>(
+  step('points', 'The control points'),
+  step('curve', 'The NURBS curve'),
+  step(
+    'map',
+    'A perspective map of the control points, each weight times its new w: the image of the curve',
+    ({ model: { projective: pr } }) =>
+      pr.error
+        ? null
+        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert C_{Hx,\\,w'}(u) - H(C(u)) \\rvert = ${pr.deviation.toExponential(1)}`,
+  ),
+  step(
+    'oldWeights',
+    'The same mapped points with their old weights: a different curve',
+    ({ model: { projective: pr } }) =>
+      pr.error
+        ? null
+        : `\\text{old weights: } \\max_u \\lvert C_{Hx,\\,w}(u) - H(C(u)) \\rvert = ${n3(pr.plainDeviation)}`,
+  ),
+);

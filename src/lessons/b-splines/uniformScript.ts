@@ -1,0 +1,55 @@
+import { script, step } from '../../kit/script';
+import type { UniformModel } from './model';
+import { blend, n3, pt, segmentLabel, segmentName } from './notation';
+import type { BSplineState } from './state';
+
+/** What the steps of the uniform cubic (open or closed) reveal, by name. */
+export type UniformReveal = 'points' | 'polygon' | 'segment' | 'segments' | 'joints';
+
+const closed = (state: BSplineState) => state.part === 'closed';
+
+/**
+ * The lecture's uniform cubic, open or closed: the points, the polygon, the
+ * segment under the cursor alone, all segments, their joints.
+ */
+export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
+  step(
+    'points',
+    ({ state }) =>
+      `The m + 1 = ${state.points.length} control points x0 … x${state.points.length - 1}`,
+  ),
+  step('polygon', ({ state }) =>
+    closed(state)
+      ? `The closed control polygon: x${state.points.length - 1} joins x0 again`
+      : 'The control polygon: the curve will follow it, but pass through none of its points',
+  ),
+  step(
+    'segment',
+    ({ model: m }) =>
+      `Segment ${segmentName(m.segment)} blends ${m.segments[m.segment].points.map((j) => `x${j}`).join(', ')} with the 1/6 matrix`,
+    ({ model: m }) =>
+      `${segmentLabel(m.segment)}(${n3(m.local)}) = ${blend(m.basis, (j) => `x_{${m.owner[j]}}`)} = ${pt(m.point)}`,
+  ),
+  step(
+    'segments',
+    ({ state, model: m }) =>
+      closed(state)
+        ? `All m + 1 = ${m.segments.length} segments, one colour each, with the same matrix everywhere: a closed C² curve`
+        : `All m − 2 = ${m.segments.length} segments, one colour each: they join with C² continuity`,
+    ({ state }) => {
+      const points = state.points.length;
+      return closed(state)
+        ? `m + 1 = ${points}\\text{ points} \\;\\to\\; m + 1 = ${points}\\text{ segments}`
+        : `m + 1 = ${points}\\text{ points} \\;\\to\\; m - 2 = ${points - 3}\\text{ segments}`;
+    },
+  ),
+  step(
+    'joints',
+    'Each joint is (x(i−1) + 4x(i) + x(i+1))/6; P(t) runs along the whole curve',
+    ({ model: m }) => {
+      const i = m.segment;
+      const [a, b, c] = [0, 1, 2].map((k) => `x_{${m.owner[i + k]}}`);
+      return `${segmentLabel(i)}(0) = \\tfrac16(${a} + 4${b} + ${c}) = ${pt(m.beziers[i][0])}`;
+    },
+  ),
+);
