@@ -1,5 +1,6 @@
 import { type ClipRect, circleVisible, clipCubic, clipPolygon, clipPolyline } from './clip';
 import { drawGrid, drawPlotAxes } from './axes';
+import { bezierPoint } from '../math';
 import {
   type LabelBox,
   type LabelStyle,
@@ -215,18 +216,12 @@ export class Painter {
     c.restore();
   }
 
+  /** A cubic seen through a projection that bends lines (perspective): drawn as 48 chords. */
   private flattenedCubic(seg: readonly P[]): boolean {
+    // A segment with a coordinate that is not a number draws nothing (the maths would refuse it).
+    if (!seg.every((p) => p.every(Number.isFinite))) return false;
     const samples: P[] = [];
-    for (let i = 0; i <= 48; i++) {
-      const t = i / 48;
-      const s = 1 - t;
-      const w = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
-      samples.push(
-        seg[0].map(
-          (_, d) => w[0] * seg[0][d] + w[1] * seg[1][d] + w[2] * seg[2][d] + w[3] * seg[3][d],
-        ),
-      );
-    }
+    for (let i = 0; i <= 48; i++) samples.push(bezierPoint(seg, i / 48));
     return clipPolyline(this.project(samples), this.clip, this.ctx) > 0;
   }
 
