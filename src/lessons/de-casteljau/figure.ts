@@ -87,18 +87,18 @@ function drawLabels(painter: Painter, m: DeCasteljauModel): void {
 /** The two halves of the subdivision at t: polygons and curves, each in its own colour and dash. */
 function drawHalves(painter: Painter, m: DeCasteljauModel, withCurves: boolean): void {
   const theme = painter.theme;
-  ([0, 1] as const).forEach((k) => {
-    const color = halfColour(theme.palette, k);
+  ([0, 1] as const).forEach((half) => {
+    const color = halfColour(theme.palette, half);
     if (withCurves) {
-      painter.polylineFlat(k === 0 ? m.leftCurve : m.rightCurve, { color, role: 'curve' });
+      painter.polylineFlat(half === 0 ? m.leftCurve : m.rightCurve, { color, role: 'curve' });
     }
-    painter.polyline(k === 0 ? m.left : m.right, {
+    painter.polyline(half === 0 ? m.left : m.right, {
       color,
       width: theme.sizes.line * 1.6,
       alpha: 0.85,
-      dash: HALF_DASH[k],
+      dash: HALF_DASH[half],
     });
-    for (const q of k === 0 ? m.left : m.right) {
+    for (const q of half === 0 ? m.left : m.right) {
       painter.dot(q, color, theme.sizes.point * 0.9);
     }
   });

@@ -141,14 +141,17 @@ export function deCasteljauPanel(
       }
 
       table.set(
-        levels.flatMap((level, k) =>
-          level.map((point, i) => {
-            const visible = k <= r;
+        levels.flatMap((row, level) =>
+          row.map((point, i) => {
+            const visible = level <= r;
             return {
-              className: k === r && r > 0 ? 'current' : visible ? '' : 'future',
-              data: { level: String(k) },
+              className: level === r && r > 0 ? 'current' : visible ? '' : 'future',
+              data: { level: String(level) },
               cells: [
-                { text: `P${k},${i}`, swatch: k > 0 ? levelColour(palette, k) : undefined },
+                {
+                  text: `P${level},${i}`,
+                  swatch: level > 0 ? levelColour(palette, level) : undefined,
+                },
                 visible ? texNumber(point[0], 4) : '—',
                 visible ? texNumber(point[1], 4) : '—',
               ],
