@@ -80,6 +80,12 @@ describe('a script of named steps', () => {
     expect(construction.keepEnd({ n: 3 }, 5, { n: 4 })).toBe(6);
     expect(construction.keepEnd({ n: 3 }, 2, { n: 4 })).toBe(2);
     expect(construction.keepEnd({ n: 4 }, 5, { n: 2 })).toBe(4);
+    const edit = script<S & { k: number }, M, 'a' | 'b'>(
+      step('a', 'A'),
+      repeat('b', (s) => s.n, 'B'),
+    );
+    expect(edit.keptAtEnd({ n: 2, k: 2 }, { n: 3, k: 2 }, 'k')).toEqual({ n: 3, k: 3 });
+    expect(edit.keptAtEnd({ n: 2, k: 1 }, { n: 3, k: 1 }, 'k')).toEqual({ n: 3, k: 1 });
   });
 
   it('refuses a name used twice', () => {

@@ -172,6 +172,12 @@ export class Script<S, M, N extends string = string> {
     return step >= this.lastStep(before) ? last : Math.min(step, last);
   }
 
+  /** `after` (an edit of `before`) with its step field kept at the end if `before` was at its end. */
+  keptAtEnd<K extends keyof S>(before: S, after: S, field: K): S {
+    const step = this.keepEnd(before, before[field] as unknown as number, after);
+    return { ...after, [field]: step };
+  }
+
   private place(state: S, k: number): Place<S, M> {
     const places = this.places(state);
     return places[Math.max(0, Math.min(places.length - 1, Math.floor(k)))];

@@ -37,7 +37,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     set: (s, comparison) => {
       const next = { ...s, comparison };
       // A script shown to its end stays shown to its end (with or without the comparison's step).
-      return { ...next, step: blendingScript.keepEnd(s, s.step, next) };
+      return blendingScript.keptAtEnd(s, next, 'step');
     },
   });
   const explain = h('p', {});

@@ -13,8 +13,5 @@ export const controlPoints = pointList<BlendingState>({
   addLabel: 'N + 1: add a control point',
   removeLabel: 'N − 1: remove the last point',
   // A script shown to its end stays shown to its end.
-  after: (before, after) => ({
-    ...after,
-    step: blendingScript.keepEnd(before, before.step, after),
-  }),
+  after: (before, after) => blendingScript.keptAtEnd(before, after, 'step'),
 });

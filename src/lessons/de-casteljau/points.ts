@@ -11,5 +11,5 @@ export const controlPoints = pointList<DeCasteljauState>({
   min: 2,
   max: MAX_POINTS,
   // A construction shown to its end stays shown to its end.
-  after: (before, after) => ({ ...after, step: construction.keepEnd(before, before.step, after) }),
+  after: (before, after) => construction.keptAtEnd(before, after, 'step'),
 });

@@ -32,7 +32,7 @@ export function hermitePanel(
     // The Bézier view is a step of its own: a script shown to its end stays at its end.
     set: (s, on) => {
       const next = { ...s, bezier: on };
-      return { ...next, step: construction.keepEnd(s, s.step, next) };
+      return construction.keptAtEnd(s, next, 'step');
     },
   });
   const pointCount = controlPoints.buttons(api);

@@ -18,7 +18,7 @@ function followPoints(before: HermiteState, after: HermiteState): HermiteState {
       ? [...before.handGradients, [points[n - 1][0] - last[0], points[n - 1][1] - last[1]]]
       : before.handGradients.slice(0, n);
   const next = { ...after, handGradients, patch: Math.min(before.patch, n - 2) };
-  return { ...next, step: construction.keepEnd(before, before.step, next) };
+  return construction.keptAtEnd(before, next, 'step');
 }
 
 const chain = pointList<HermiteState>({

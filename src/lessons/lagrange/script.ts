@@ -56,7 +56,5 @@ export const interpolation = script<LagrangeState, LagrangeModel, Reveal>(
  * The step after an edit that changes how many steps there are (a point
  * added or removed, the spline switched): shown to the end, it stays at the end.
  */
-export const keepShownToEnd = (before: LagrangeState, after: LagrangeState): LagrangeState => ({
-  ...after,
-  step: interpolation.keepEnd(before, before.step, after),
-});
+export const keepShownToEnd = (before: LagrangeState, after: LagrangeState): LagrangeState =>
+  interpolation.keptAtEnd(before, after, 'step');
