@@ -81,3 +81,23 @@ describe('a declared point list', () => {
     expect(list.remove({ ...s, p: s.p.slice(0, 2) }, 0)).toBeNull();
   });
 });
+
+describe('labels of many points', () => {
+  it('groups 5000 points by spot in linear time', () => {
+    const many = pointList<S>({
+      ...{ id: 'v' },
+      get: (s) => s.p,
+      set: (s, p) => ({ ...s, p }),
+      label: (i) => `P_{${i}}`,
+      min: 0,
+      max: 9999,
+    });
+    const p = Array.from({ length: 5000 }, (_, i) => [i % 4999, 0]);
+    const start = performance.now();
+    const handles = many.handles({ p, step: 0 });
+    // Points 0 and 4999 share a spot: one label names both.
+    expect(handles[0].label).toBe('P_{0} = P_{4999}');
+    expect(handles[4999].showLabel).toBe(false);
+    expect(performance.now() - start).toBeLessThan(200);
+  });
+});
