@@ -1,6 +1,6 @@
 import { History, type HistoryOptions } from './history';
 import type { AnyLesson } from './lesson';
-import { decodeState, defaultsOf, encodeState } from './urlState';
+import { decodeState, defaultsOf, encodeState, keyOf } from './urlState';
 
 /** Key under which the last state of a lesson is kept in localStorage. */
 export const storageKey = (slug: string) => `spline-lab:lesson:${slug}`;
@@ -30,7 +30,7 @@ export function normalizeState<S>(lesson: AnyLesson, state: S): { state: S; issu
     if (step > count) {
       next = { ...next, [key]: count };
       issues.push(
-        `${String(key)}: ${step} is past the last step of this construction (${count}), so it shows step ${count}`,
+        `${keyOf(lesson.schema, key as keyof S & string)}: ${step} is past the last step of this construction (${count}), so it shows step ${count}`,
       );
     }
   }

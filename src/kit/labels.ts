@@ -89,13 +89,13 @@ export function stackedLabels(points: readonly Point[], name: (i: number) => str
   // Grouped by spot in one pass: 500 villages are 500 steps, not 250 000 comparisons.
   const spots = new Map<string, number[]>();
   points.forEach((point, i) => {
-    const key = `${point[0]},${point[1]}`;
+    const key = point.join(',');
     const same = spots.get(key);
     if (same) same.push(i);
     else spots.set(key, [i]);
   });
   return points.map((point, i) => {
-    const same = spots.get(`${point[0]},${point[1]}`)!;
+    const same = spots.get(point.join(','))!;
     return same[0] === i
       ? { label: same.map(name).join(' = '), showLabel: true }
       : { label: name(i), showLabel: false };

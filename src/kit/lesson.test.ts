@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { choice, int, points } from '../app/fields';
+import { choice, int, linkKey, points } from '../app/fields';
+import { normalizeState } from '../app/lessonState';
 import type { Point } from '../math';
 import { defineLesson } from './lesson';
 import { pointList } from './pointList';
@@ -160,6 +161,18 @@ describe('a lesson made of the kit', () => {
       'p1',
       'd2',
       'p2',
+    ]);
+  });
+});
+
+describe('a step past the end, in a link', () => {
+  it('is named by its link key in the notice, not by its name in code', () => {
+    const lesson = make(2, 5);
+    const keyed = { ...lesson, schema: { ...schema, step: linkKey(schema.step, 'k') } };
+    const { state, issues } = normalizeState(keyed, { ...a, step: 9 });
+    expect(state.step).toBe(1);
+    expect(issues).toEqual([
+      'k: 9 is past the last step of this construction (1), so it shows step 1',
     ]);
   });
 });

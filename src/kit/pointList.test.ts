@@ -101,3 +101,29 @@ describe('labels of many points', () => {
     expect(performance.now() - start).toBeLessThan(200);
   });
 });
+
+describe('points in space', () => {
+  it('share a label only where every coordinate agrees (stacked in plan is not one spot)', () => {
+    const net = pointList<S>({
+      id: 'x',
+      get: (s) => s.p,
+      set: (s, p) => ({ ...s, p }),
+      label: (i) => `x_{${i}}`,
+      min: 0,
+      max: 9,
+    });
+    const handles = net.handles({
+      p: [
+        [1, 1, 0],
+        [1, 1, 5],
+        [1, 1, 0],
+      ],
+      step: 0,
+    });
+    expect(handles.map((h) => [h.label, h.showLabel])).toEqual([
+      ['x_{0} = x_{2}', true],
+      ['x_{1}', true],
+      ['x_{2}', false],
+    ]);
+  });
+});
