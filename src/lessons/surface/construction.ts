@@ -3,7 +3,7 @@ import type { Painter, StrokeStyle } from '../../render/painter';
 import type { SpaceScene } from '../../render/space';
 import type { SurfaceModel } from './model';
 import { coordinateIndex } from './state';
-import { continuityName } from './steps';
+import { continuityName } from './notation';
 
 type Lift = (p: readonly number[]) => Point;
 
@@ -54,8 +54,7 @@ export function drawConstruction(
   up: Lift,
 ): void {
   const theme = painter.theme;
-  const { state } = m;
-  const k = state.k;
+  const { state, shown } = m;
   const color = (i: number) => painter.color(i);
   const polygon = (c: string): StrokeStyle => ({
     color: c,
@@ -63,50 +62,54 @@ export function drawConstruction(
     dash: [2, 4],
   });
   const curve: StrokeStyle = { color: theme.curve, width: theme.sizes.curve, role: 'curve' };
-  switch (state.s) {
+  switch (state.mode) {
     case 'rows':
-      if (k >= 1)
+      if (shown.has('rowCurves'))
         m.rowCurves.forEach((c, i) => {
-          scene.polyline(state.x[i], { color: color(i), width: theme.sizes.thin });
+          scene.polyline(state.net[i], { color: color(i), width: theme.sizes.thin });
           scene.polyline(c, { color: color(i), width: theme.sizes.line });
         });
-      if (k >= 2) drawPoints(scene, painter, m.rowPoints, 'r', info, color);
-      if (k >= 3) {
+      if (shown.has('rowPoints')) drawPoints(scene, painter, m.rowPoints, 'r', info, color);
+      if (shown.has('isoV')) {
         scene.polyline(m.rowPoints, polygon(theme.ink));
         scene.polyline(m.isoV.map(up), curve);
       }
-      if (k >= 5) scene.polyline(m.isoU.map(up), curve);
+      if (shown.has('isoU')) scene.polyline(m.isoU.map(up), curve);
       break;
     case 'casteljau': {
-      const first = k <= 3 ? m.uThenV : m.vThenU;
-      const local = k <= 3 ? k : k - 3;
-      const name = k <= 3 ? 'c' : 'r';
-      if (local >= 1)
+      // u first (columns, c₀ … c₃), then v first (rows, r₀ … r₃): the same three stages.
+      const vFirst = shown.has('rows');
+      const first = vFirst ? m.vThenU : m.uThenV;
+      const name = vFirst ? 'r' : 'c';
+      const lines = shown.is('columns') || shown.is('rows');
+      const points = vFirst ? shown.has('rowPoints') : shown.has('columnPoints');
+      if (shown.has('columns'))
         first.first.forEach((levels, i) => {
           scene.polyline(levels[0], { color: color(i), width: theme.sizes.thin });
-          if (local === 1) drawLevels(scene, painter, levels, color(i));
+          if (lines) drawLevels(scene, painter, levels, color(i));
         });
-      if (local >= 2) {
+      if (points) {
         drawPoints(scene, painter, first.intermediate, name, info, color);
         scene.polyline(first.intermediate, polygon(theme.ink));
       }
-      if (local >= 3) drawLevels(scene, painter, first.second, theme.ink);
+      if (shown.is('uThenV') || shown.is('vThenU'))
+        drawLevels(scene, painter, first.second, theme.ink);
       break;
     }
     case 'matrix': {
-      const d = coordinateIndex(state.c);
-      if (k === 0 && !info.thumbnail)
-        for (const row of state.x)
+      const d = coordinateIndex(state.coordinate);
+      if (shown.is('coordinates') && !info.thumbnail)
+        for (const row of state.net)
           for (const p of row)
             scene.label(p[d].toFixed(2), p, { dx: 10, dy: -10, color: theme.ink, halo: true });
-      if (k >= 1) {
+      if (shown.has('rowFactors')) {
         m.columnCurves.forEach((c, n) =>
           scene.polyline(c, { color: color(n), width: theme.sizes.line }),
         );
         m.columnPoints.forEach((p, n) => {
           scene.dot(p, color(n), theme.sizes.point * 1.3);
           if (!info.thumbnail)
-            scene.label(`${state.c}=${p[d].toFixed(3)}`, p, {
+            scene.label(`${state.coordinate}=${p[d].toFixed(3)}`, p, {
               dx: 10,
               dy: -10,
               color: color(n),
@@ -115,21 +118,23 @@ export function drawConstruction(
             });
         });
       }
-      if (k >= 2) {
+      if (shown.has('columnFactors')) {
         scene.polyline(m.columnPoints, polygon(theme.ink));
         scene.polyline(m.isoU.map(up), curve);
       }
       break;
     }
     case 'weights': {
-      const fu = m.weights.map((row) => row.reduce((s, w) => s + w, 0));
-      const fv = m.weights[0].map((_, n) => m.weights.reduce((s, row) => s + row[n], 0));
       const unit = theme.sizes.handle * 3.2;
-      state.x.forEach((row, i) =>
+      state.net.forEach((row, i) =>
         row.forEach((p, j) => {
-          const w = k === 1 ? fu[i] / 4 : k === 2 ? fv[j] / 4 : m.weights[i][j];
-          if (k >= 1) scene.dot(p, theme.accent, Math.max(1, unit * Math.sqrt(w)));
-          if (k >= 4)
+          const w = shown.is('rowShares')
+            ? m.rowShares[i] / 4
+            : shown.is('columnShares')
+              ? m.columnShares[j] / 4
+              : m.weights[i][j];
+          if (shown.has('rowShares')) scene.dot(p, theme.accent, Math.max(1, unit * Math.sqrt(w)));
+          if (shown.has('average'))
             scene.line(p, m.point, {
               color: theme.accent,
               width: theme.sizes.line,
@@ -140,9 +145,9 @@ export function drawConstruction(
       break;
     }
     case 'normal': {
-      if (k >= 1) scene.polyline(m.isoV.map(up), curve);
-      if (k >= 2) scene.polyline(m.isoU.map(up), { ...curve, color: color(1) });
-      if (k >= 4) {
+      if (shown.has('uTangent')) scene.polyline(m.isoV.map(up), curve);
+      if (shown.has('vTangent')) scene.polyline(m.isoU.map(up), { ...curve, color: color(1) });
+      if (shown.has('tangentPlane')) {
         const a = scaled(m.du, 1 / 3);
         const b = scaled(m.dv, 1 / 3);
         const p = m.point;
@@ -153,34 +158,40 @@ export function drawConstruction(
       }
       break;
     }
-    case 'join': {
-      if (k >= 1)
-        scene.polyline(state.x[3].map(up), { color: theme.accent, width: theme.sizes.curve * 1.3 });
-      if (k >= 3 && m.join) {
-        m.join.columns.forEach((c, n) => {
-          const smooth = c !== 'none' && c !== 'C0';
-          scene.polyline([state.x[2][n], state.x[3][n], state.y[0][n], state.y[1][n]], {
-            color: smooth ? color(2) : color(1),
-            width: theme.sizes.line * 1.4,
-          });
-        });
-        // One verdict for the edge, at its middle: the weakest column decides.
-        const weakest = m.join.weakest;
-        const middle = state.x[3][1].map((value, i) => (value + state.x[3][2][i]) / 2);
-        if (!info.thumbnail)
-          scene.label(continuityName(weakest), middle, {
-            dx: 12,
-            dy: -16,
-            color: weakest === 'none' || weakest === 'C0' ? color(1) : color(2),
-            halo: true,
-            bold: true,
-          });
-      }
+    case 'join':
+      drawJoin(scene, painter, m, info, up);
       break;
-    }
     case 'patch':
       break;
   }
+}
+
+/** The shared edge, then the legs across it coloured by how they continue, and the verdict. */
+function drawJoin(scene: SpaceScene, painter: Painter, m: SurfaceModel, info: DrawInfo, up: Lift) {
+  const theme = painter.theme;
+  const { net, secondNet } = m.state;
+  const color = (i: number) => painter.color(i);
+  if (m.shown.has('edge'))
+    scene.polyline(net[3].map(up), { color: theme.accent, width: theme.sizes.curve * 1.3 });
+  if (!m.shown.has('legs') || !m.join) return;
+  m.join.columns.forEach((c, n) => {
+    const smooth = c !== 'none' && c !== 'C0';
+    scene.polyline([net[2][n], net[3][n], secondNet[0][n], secondNet[1][n]], {
+      color: smooth ? color(2) : color(1),
+      width: theme.sizes.line * 1.4,
+    });
+  });
+  // One verdict for the edge, at its middle: the weakest column decides.
+  const weakest = m.join.weakest;
+  const middle = net[3][1].map((value, i) => (value + net[3][2][i]) / 2);
+  if (!info.thumbnail)
+    scene.label(continuityName(weakest), middle, {
+      dx: 12,
+      dy: -16,
+      color: weakest === 'none' || weakest === 'C0' ? color(1) : color(2),
+      halo: true,
+      bold: true,
+    });
 }
 
 const scaled = (p: readonly number[], s: number): Point => p.map((x) => x * s);
@@ -188,32 +199,31 @@ const scaled = (p: readonly number[], s: number): Point => p.map((x) => x * s);
 /** Marks above the handles: the tangent arrows and the normal, the first order's point to compare. */
 export function drawOverConstruction(painter: Painter, m: SurfaceModel, info: DrawInfo): void {
   const theme = painter.theme;
-  const { state } = m;
-  const k = state.k;
+  const { state, shown } = m;
   const p = m.point;
   const label = (text: string, at: Point, color: string) => {
     if (!info.thumbnail) painter.label(text, at, { dx: 8, dy: -8, color, halo: true, bold: true });
   };
-  if (state.s === 'normal') {
+  if (state.mode === 'normal') {
     const arrow = (v: readonly number[], text: string, color: string) => {
       const end = p.map((x, i) => x + v[i]);
       painter.arrow(p, end, { color, width: theme.sizes.line * 1.3 });
       label(text, end, color);
     };
-    if (k >= 1) arrow(scaled(m.du, 1 / 3), '∂x/∂u', painter.color(0));
-    if (k >= 2) arrow(scaled(m.dv, 1 / 3), '∂x/∂v', painter.color(1));
-    if (k >= 3 && m.normal) {
+    if (shown.has('uTangent')) arrow(scaled(m.du, 1 / 3), '∂x/∂u', painter.color(0));
+    if (shown.has('vTangent')) arrow(scaled(m.dv, 1 / 3), '∂x/∂v', painter.color(1));
+    if (shown.has('normal') && m.normal) {
       const b = m.bounds;
       const size = Math.max(b.maxX - b.minX, b.maxY - b.minY) * 0.3;
       arrow(scaled(m.normal, size), 'n', painter.color(2));
     }
   }
-  if (state.s === 'casteljau' && k >= 4) {
+  if (state.mode === 'casteljau' && shown.has('rows')) {
     // The point of the first order, to compare with the second.
     painter.ring(m.uThenV.point, theme.sizes.point * 2.4, {
       color: theme.ink,
       width: theme.sizes.line,
     });
-    if (k === 6) label('u then v = v then u', m.uThenV.point, theme.ink);
+    if (shown.is('vThenU')) label('u then v = v then u', m.uThenV.point, theme.ink);
   }
 }

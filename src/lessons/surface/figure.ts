@@ -1,10 +1,12 @@
-import type { DrawInfo, FigureSpec, Handle, Point } from '../../app/lesson';
+import type { DrawInfo, Point } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { OrbitCamera } from '../../render/orbitCamera';
 import type { Painter, StrokeStyle } from '../../render/painter';
 import { SpaceScene } from '../../render/space';
 import { type PatchSamples, type SurfaceModel } from './model';
 import { type SurfaceState } from './state';
 import { drawConstruction, drawOverConstruction } from './construction';
+import { netPoints, secondNetPoints } from './points';
 
 /** What a scene shows of the patch itself at its step. */
 export interface PatchShown {
@@ -20,35 +22,37 @@ export interface PatchShown {
 }
 
 /** The patch part of each scene's step, before the scene's own construction is drawn. */
-export function patchShown(state: SurfaceState): PatchShown {
-  const k = state.k;
-  const none: PatchShown = {
-    net: k >= 0,
-    corners: false,
-    edges: false,
-    patch: 'none',
-    point: false,
-  };
-  switch (state.s) {
+export function patchShown({ state, shown }: SurfaceModel): PatchShown {
+  const none: PatchShown = { net: true, corners: false, edges: false, patch: 'none', point: false };
+  switch (state.mode) {
     case 'patch':
       return {
-        net: k >= 1,
-        corners: k >= 2,
-        edges: k >= 3,
-        patch: k >= 5 ? 'full' : 'none',
-        point: k >= 5,
+        net: shown.has('net'),
+        corners: shown.has('corners'),
+        edges: shown.has('edges'),
+        patch: shown.has('patch') ? 'full' : 'none',
+        point: shown.has('patch'),
       };
     case 'rows':
-      return { ...none, patch: k >= 5 ? 'faint' : 'none', point: k >= 4 };
+      return { ...none, patch: shown.has('isoU') ? 'faint' : 'none', point: shown.has('point') };
     case 'casteljau':
-      return { ...none, point: k === 3 || k === 6 };
+      return { ...none, point: shown.is('uThenV') || shown.is('vThenU') };
     case 'matrix':
+      return {
+        ...none,
+        patch: shown.has('product') ? 'faint' : 'none',
+        point: shown.has('product'),
+      };
     case 'weights':
-      return { ...none, patch: k >= 3 ? 'faint' : 'none', point: k >= 3 };
+      return {
+        ...none,
+        patch: shown.has('products') ? 'faint' : 'none',
+        point: shown.has('products'),
+      };
     case 'normal':
       return { ...none, patch: 'full', point: true };
     case 'join':
-      return { ...none, patch: k >= 2 ? 'full' : 'none', corners: false, edges: k >= 1 };
+      return { ...none, patch: shown.has('patches') ? 'full' : 'none', edges: shown.has('edge') };
   }
 }
 
@@ -122,7 +126,7 @@ function drawPatch(
 /** The patch's share of the figures' row, against the heat map's 1. */
 export const PATCH_WEIGHT = 1.4;
 
-export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
+export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
   id: 'patch',
   title: 'The bicubic Bézier patch in space (drag to orbit, wheel to zoom)',
   kind: 'space',
@@ -135,7 +139,7 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
     const scene = new SpaceScene(painter, camera);
     const up = lift(camera, netSize(m));
     const state = m.state;
-    const shown = patchShown(state);
+    const shown = patchShown(m);
     const patchColor = painter.color(5);
     const netStyle: StrokeStyle = {
       color: theme.polygon,
@@ -150,10 +154,10 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
       if (m.second) drawPatch(scene, painter, m.second, state, shown.patch, painter.color(4), up);
     }
     if (shown.net) {
-      drawNet(scene, state.x, netStyle);
-      if (state.s === 'join') drawNet(scene, state.y, netStyle);
+      drawNet(scene, state.net, netStyle);
+      if (state.mode === 'join') drawNet(scene, state.secondNet, netStyle);
     }
-    if (shown.edges && state.s !== 'join') {
+    if (shown.edges && state.mode !== 'join') {
       const g = m.patch;
       for (const edge of [
         g.uLines[0],
@@ -168,8 +172,8 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
         });
     }
     if (shown.corners) {
-      const x = state.x;
-      for (const corner of [x[0][0], x[3][0], x[0][3], x[3][3]])
+      const net = state.net;
+      for (const corner of [net[0][0], net[3][0], net[0][3], net[3][3]])
         scene.dot(corner, theme.accent, theme.sizes.point * 1.8);
     }
     drawConstruction(scene, painter, m, info, up);
@@ -193,49 +197,6 @@ export const spaceFigure: FigureSpec<SurfaceState, SurfaceModel> = {
   drawOver(painter, m, info) {
     drawOverConstruction(painter, m, info);
   },
-  handles: (m) => netHandles(m),
-  moveHandle(state, id, to) {
-    const which = id[0] === 'y' ? 'y' : 'x';
-    const [mIndex, nIndex] = id.slice(1).split('_').map(Number);
-    const net = state[which].map((row, i) =>
-      row.map((p, j) => (i === mIndex && j === nIndex ? [to[0], to[1], to[2]] : p)),
-    );
-    return { ...state, [which]: net };
-  },
-  trail: (m) => (patchShown(m.state).point ? m.point : null),
+  points: [netPoints, secondNetPoints],
+  trail: (m) => (patchShown(m).point ? m.point : null),
 };
-
-/** Labels on every point while the net is the subject; on the corners afterwards. */
-function netHandles(m: SurfaceModel): Handle[] {
-  const state = m.state;
-  const allLabels = state.s === 'patch' && state.k <= 1;
-  const handles: Handle[] = [];
-  state.x.forEach((row, i) =>
-    row.forEach((p, j) =>
-      handles.push({
-        id: `x${i}_${j}`,
-        label: `x_{${i},${j}}`,
-        position: p,
-        small: true,
-        showLabel:
-          allLabels || ((i === 0 || i === 3) && (j === 0 || j === 3) && state.s !== 'join'),
-      }),
-    ),
-  );
-  if (state.s === 'join') {
-    // Row 0 of y sits on row 3 of x: it is edited in the table, so the edge's points stay one handle each.
-    state.y.forEach((row, i) =>
-      row.forEach((p, j) => {
-        if (i > 0)
-          handles.push({
-            id: `y${i}_${j}`,
-            label: `y_{${i},${j}}`,
-            position: p,
-            small: true,
-            showLabel: false,
-          });
-      }),
-    );
-  }
-  return handles;
-}

@@ -1,15 +1,17 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson } from '../../kit/lesson';
 import { PATCH_WEIGHT, spaceFigure } from './figure';
-import { type SurfaceModel, derive } from './model';
+import { derive } from './model';
 import { surfacePanel } from './panel';
-import { SCENES } from './presets';
-import { type SurfaceState, schema } from './state';
-import { steps } from './steps';
+import { SCENES, sceneOf } from './scenes';
+import { schema } from './state';
 import { weightsFigure } from './weightsFigure';
 
-export default defineLesson<SurfaceState, SurfaceModel>({
+export default defineLesson({
   slug: 'surface',
   schema,
+  step: 'step',
+  // Each kind of scene has its own steps; the state's mode says which.
+  sceneOf,
   derive,
   figures: [spaceFigure, weightsFigure],
   // The patch's box seen from the camera is about as tall as it is wide, and the
@@ -18,7 +20,6 @@ export default defineLesson<SurfaceState, SurfaceModel>({
   // height in presenter view and at 1400 × 850, and gives the heat map room.
   layout: { row: ['patch', 'weights'], weights: [PATCH_WEIGHT, 1] },
   parameter: { key: 'u', label: 'u', min: 0, max: 1, step: 0.01 },
-  steps,
   scenes: SCENES,
   panel: surfacePanel,
 });

@@ -1,13 +1,28 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import { derive } from './model';
-import { BUMP_NET, JOIN_NEXT_C0, SADDLE_NET, SCENES } from './presets';
-import { JOIN_NET, JOIN_NEXT_C1, type SurfaceState, schema } from './state';
-import { STEP_COUNT, steps } from './steps';
+import lesson from './lesson';
+import type { SurfaceModel } from './model';
+import { BUMP_NET, JOIN_NEXT_C0, SADDLE_NET } from './presets';
+import { SCENES } from './scenes';
+import { JOIN_NET, JOIN_NEXT_C1, type SurfaceMode, type SurfaceState, schema } from './state';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: SurfaceState) => lesson.derive(s) as SurfaceModel;
+const steps = lesson.steps!;
+/** The last step of each scene's construction. */
+const STEP_COUNT: Record<SurfaceMode, number> = {
+  patch: 5,
+  rows: 5,
+  casteljau: 6,
+  matrix: 3,
+  weights: 4,
+  normal: 4,
+  join: 3,
+};
 
 const defaults = defaultsOf(schema) as SurfaceState;
-const at = (x: SurfaceState['x'], u: number, v: number, extra: Partial<SurfaceState> = {}) =>
-  derive({ ...defaults, x, u, v, ...extra });
+const at = (net: SurfaceState['net'], u: number, v: number, extra: Partial<SurfaceState> = {}) =>
+  derive({ ...defaults, net, u, v, ...extra });
 
 describe('the surface model, against values by hand', () => {
   it('puts the top of the bump at 2·(3/4)² = 9/8, where the tangent plane is level', () => {
@@ -22,7 +37,7 @@ describe('the surface model, against values by hand', () => {
 
   it('gives the saddle z = 9(u − ½)(v − ½)/2 and its slopes, also from the matrix form', () => {
     // u = ¼, v = 1: z = 9·(−¼)·(½)/2 = −9/16; ∂z/∂u = 9(v − ½)/2 = 9/4; ∂z/∂v = 9(u − ½)/2 = −9/8.
-    const m = at(SADDLE_NET, 0.25, 1, { c: 'z' });
+    const m = at(SADDLE_NET, 0.25, 1, { coordinate: 'z' });
     expect(m.point[2]).toBeCloseTo(-9 / 16, 14);
     expect(m.du[2]).toBeCloseTo(9 / 4, 14);
     expect(m.dv[2]).toBeCloseTo(-9 / 8, 14);
@@ -40,8 +55,8 @@ describe('the surface model, against values by hand', () => {
   });
 
   it('reads the joined pairs as C¹ and C⁰, and a gap when the edge is moved', () => {
-    const pair = (y: SurfaceState['y'], x = JOIN_NET) =>
-      derive({ ...defaults, s: 'join', x, y }).join!;
+    const pair = (secondNet: SurfaceState['secondNet'], net = JOIN_NET) =>
+      derive({ ...defaults, mode: 'join', net, secondNet }).join!;
     expect(pair(JOIN_NEXT_C1).weakest).toBe('C1');
     expect(pair(JOIN_NEXT_C0).weakest).toBe('C0');
     // The legs of columns 0 and 3 stay straight in the C⁰ preset.
@@ -73,15 +88,15 @@ describe('the sampled patch', () => {
 
 describe('the script', () => {
   it('opens with the defaults, and every scene and step has a caption and a finite formula', () => {
-    expect(SCENES[0].apply(defaults)).toEqual(defaults);
+    expect(SCENES[0].setup(defaults)).toEqual(defaults);
     for (const scene of SCENES) {
-      const state = scene.apply(defaults);
-      expect(state.k).toBe(0);
+      const state = scene.setup(defaults);
+      expect(state.step).toBe(0);
       const count = steps.count(state);
-      expect(count).toBe(STEP_COUNT[state.s]);
+      expect(count).toBe(STEP_COUNT[state.mode]);
       expect(count).toBeLessThanOrEqual(12);
       for (let k = 0; k <= count; k++) {
-        const at = { ...state, k };
+        const at = { ...state, step: k };
         expect(steps.describe(at, k), `${scene.id} step ${k}`).toMatch(/\w/);
         expect(steps.formula?.(derive(at), at) ?? '').not.toMatch(/NaN|Infinity|undefined/);
       }

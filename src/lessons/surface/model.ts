@@ -15,8 +15,11 @@ import {
   surfaceRowPoints,
   surfaceWeights,
 } from '../../math';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
 import { boundsOf } from '../../render/projection';
 import type { Bounds } from '../../render/projection';
+import type { Reveal } from './scripts';
 import { type SurfaceState, coordinateIndex } from './state';
 
 /** Quads per side of the shaded patch: 16 × 16 flat facets, sampled once per state. */
@@ -61,12 +64,8 @@ export interface JoinReport {
   weakest: Continuity;
 }
 
-export interface SurfaceModel {
-  state: SurfaceState;
-  patch: PatchSamples;
-  /** The second patch, in the scene of two joined patches; null otherwise. */
-  second: PatchSamples | null;
-  join: JoinReport | null;
+/** The first patch at (u, v): its point, tangents, row and column curves, weights. */
+export interface PointGeometry {
   /** x(u, v) by the Bernstein double sum. */
   point: Point;
   du: Point;
@@ -89,63 +88,108 @@ export interface SurfaceModel {
   vThenU: SurfaceConstruction;
   /** fm(u)·fn(v), `weights[m][n]`, and their sum. */
   weights: number[][];
+  /** fm(u) = Σn fm(u)·fn(v), the share of row m; fn(v), the share of column n. */
+  rowShares: number[];
+  columnShares: number[];
   weightSum: number;
-  matrix: MatrixForm;
-  bounds: Bounds;
   /** All 16 control points on one spot: the patch is that point (the figure says so). */
   oneSpot: boolean;
 }
 
-export function derive(state: SurfaceState): SurfaceModel {
-  const { x, u, v } = state;
-  const jet = bezierSurfaceDerivatives(x, u, v);
-  const crossProduct = cross(jet.du, jet.dv);
-  let normal: Point | null;
-  try {
-    normal = bezierSurfaceNormal(x, u, v);
-  } catch {
-    normal = null;
-  }
-  const rowPoints = surfaceRowPoints(x, v);
-  const columnPoints = surfaceColumnPoints(x, u);
-  const weights = surfaceWeights(4, 4, u, v);
-  const pair = state.s === 'join';
-  return {
-    state,
-    oneSpot: onOneSpot(x.flat()),
-    patch: samplePatch(x),
-    second: pair ? samplePatch(state.y) : null,
-    join: pair ? joinReport(x, state.y) : null,
-    point: jet.point,
-    du: jet.du,
-    dv: jet.dv,
-    crossProduct,
-    normal,
-    rowPoints,
-    columnPoints,
-    rowCurves: x.map((row) => sampleCurve(row)),
-    columnCurves: x[0].map((_, n) => sampleCurve(x.map((row) => row[n]))),
-    isoV: sampleCurve(rowPoints),
-    isoU: sampleCurve(columnPoints),
-    uThenV: surfaceDeCasteljau(x, u, v, 'u-then-v'),
-    vThenU: surfaceDeCasteljau(x, u, v, 'v-then-u'),
-    weights,
-    weightSum: weights.flat().reduce((sum, w) => sum + w, 0),
-    matrix: matrixForm(state),
-    bounds: boundsOf(pair ? [...x.flat(), ...state.y.flat()] : x.flat()),
-  };
+export interface SurfaceModel extends PointGeometry {
+  state: SurfaceState;
+  /** What the scene's steps so far reveal. */
+  shown: Revealed<Reveal>;
+  patch: PatchSamples;
+  /** The second patch, in the scene of two joined patches; null otherwise. */
+  second: PatchSamples | null;
+  join: JoinReport | null;
+  matrix: MatrixForm;
+  bounds: Bounds;
 }
 
-/** Samples per net: moving u or v keeps the net's array, so its patch is sampled once. */
-const sampled = new WeakMap<readonly (readonly Point[])[], PatchSamples>();
+/** Everything about the first patch at (u, v): it reads only the net, u and v, so a step costs nothing. */
+const atPoint = memoOn<SurfaceState, 'net' | 'u' | 'v', PointGeometry>(
+  ['net', 'u', 'v'],
+  ({ net, u, v }) => {
+    const jet = bezierSurfaceDerivatives(net, u, v);
+    let normal: Point | null;
+    try {
+      normal = bezierSurfaceNormal(net, u, v);
+    } catch {
+      normal = null;
+    }
+    const rowPoints = surfaceRowPoints(net, v);
+    const columnPoints = surfaceColumnPoints(net, u);
+    const weights = surfaceWeights(4, 4, u, v);
+    return {
+      oneSpot: onOneSpot(net.flat()),
+      point: jet.point,
+      du: jet.du,
+      dv: jet.dv,
+      crossProduct: cross(jet.du, jet.dv),
+      normal,
+      rowPoints,
+      columnPoints,
+      rowCurves: net.map((row) => sampleCurve(row)),
+      columnCurves: net[0].map((_, n) => sampleCurve(net.map((row) => row[n]))),
+      isoV: sampleCurve(rowPoints),
+      isoU: sampleCurve(columnPoints),
+      uThenV: surfaceDeCasteljau(net, u, v, 'u-then-v'),
+      vThenU: surfaceDeCasteljau(net, u, v, 'v-then-u'),
+      weights,
+      rowShares: weights.map((row) => row.reduce((sum, w) => sum + w, 0)),
+      columnShares: weights[0].map((_, n) => weights.reduce((sum, row) => sum + row[n], 0)),
+      weightSum: weights.flat().reduce((sum, w) => sum + w, 0),
+    };
+  },
+);
+
+/** The patches sampled: once per net, whatever u, v or the step. */
+const firstPatch = memoOn<SurfaceState, 'net', PatchSamples>(['net'], ({ net }) =>
+  samplePatch(net),
+);
+const secondPatch = memoOn<Pick<SurfaceState, 'secondNet'>, 'secondNet', PatchSamples>(
+  ['secondNet'],
+  ({ secondNet }) => samplePatch(secondNet),
+);
+
+const matrixOf = memoOn<SurfaceState, 'net' | 'u' | 'v' | 'coordinate', MatrixForm>(
+  ['net', 'u', 'v', 'coordinate'],
+  matrixForm,
+);
+
+/** The second patch and the join, in the scene of two patches; the box around what is drawn. */
+const pairOf = memoOn<
+  SurfaceState,
+  'mode' | 'net' | 'secondNet',
+  Pick<SurfaceModel, 'second' | 'join' | 'bounds'>
+>(['mode', 'net', 'secondNet'], (state) => {
+  const { net, secondNet } = state;
+  const pair = state.mode === 'join';
+  return {
+    second: pair ? secondPatch(state) : null,
+    join: pair ? joinReport(net, secondNet) : null,
+    bounds: boundsOf(pair ? [...net.flat(), ...secondNet.flat()] : net.flat()),
+  };
+});
+
+export function derive(state: SurfaceState, shown: Revealed<Reveal>): SurfaceModel {
+  return {
+    state,
+    shown,
+    patch: firstPatch(state),
+    ...pairOf(state),
+    ...atPoint(state),
+    matrix: matrixOf(state),
+  };
+}
 
 /**
  * The patch sampled along its iso-curves: for u fixed, the column points
  * c_n(u) are a cubic in v (the construction of the notes), sampled directly.
  */
 function samplePatch(net: readonly (readonly Point[])[]): PatchSamples {
-  const known = sampled.get(net);
-  if (known) return known;
   const curve = (points: readonly Point[], segments: number): Point[] => {
     const flat = sampleBezier(points, segments);
     return Array.from({ length: segments + 1 }, (_, j) => [
@@ -162,9 +206,7 @@ function samplePatch(net: readonly (readonly Point[])[]): PatchSamples {
     uLines.push(curve(surfaceColumnPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
     vLines.push(curve(surfaceRowPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
   }
-  const samples = { grid, uLines, vLines };
-  sampled.set(net, samples);
-  return samples;
+  return { grid, uLines, vLines };
 }
 
 /** A cubic curve in 3D sampled at 33 points (drawn as a polyline in space). */
@@ -176,13 +218,13 @@ function sampleCurve(points: readonly Point[]): Point[] {
   return curve;
 }
 
-function matrixForm(state: SurfaceState): MatrixForm {
-  const d = coordinateIndex(state.c);
+function matrixForm(state: Pick<SurfaceState, 'net' | 'u' | 'v' | 'coordinate'>): MatrixForm {
+  const d = coordinateIndex(state.coordinate);
   const M = bezierBasisMatrix(3);
   const powers = (t: number) => [1, t, t * t, t * t * t];
   const U = powers(state.u);
   const V = powers(state.v);
-  const B = state.x.map((row) => row.map((p) => p[d]));
+  const B = state.net.map((row) => row.map((p) => p[d]));
   const times = (row: readonly number[], matrix: readonly (readonly number[])[]) =>
     matrix[0].map((_, j) => row.reduce((sum, value, k) => sum + value * matrix[k][j], 0));
   const UM = times(U, M);

@@ -28,6 +28,7 @@ export function netTable(
   api: LessonApi<SurfaceState, SurfaceModel>,
   which: 'x' | 'y',
 ): { element: HTMLElement; update(state: SurfaceState): void } {
+  const field = which === 'x' ? 'net' : 'secondNet';
   const inputs: HTMLInputElement[][] = [];
   const body = h('tbody', {});
   const message = h('p', { class: 'net-table-message', role: 'status' });
@@ -46,15 +47,15 @@ export function netTable(
         const state = api.get();
         const p = parseTriple(input.value);
         if (!p) {
-          message.textContent = `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[which][m][n])}.`;
-          input.value = tripleText(state[which][m][n]);
+          message.textContent = `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[field][m][n])}.`;
+          input.value = tripleText(state[field][m][n]);
           return;
         }
         message.textContent = '';
-        const net = state[which].map((points, i) =>
+        const net = state[field].map((points, i) =>
           points.map((q, j) => (i === m && j === n ? p : q)),
         );
-        api.set({ ...state, [which]: net });
+        api.set({ ...state, [field]: net });
       });
       inputs[m].push(input);
       row.append(h('td', {}, input));
@@ -80,7 +81,7 @@ export function netTable(
   return {
     element,
     update(state) {
-      state[which].forEach((points, m) =>
+      state[field].forEach((points, m) =>
         points.forEach((p, n) => {
           const input = inputs[m][n];
           const text = tripleText(p);

@@ -6,7 +6,7 @@ import { LiveFormula, SLOT, formula, slotPoint } from '../../render/formula';
 import type { SurfaceModel } from './model';
 import { netTable } from './netTable';
 import type { Coordinate, SurfaceLook, SurfaceState } from './state';
-import { continuityName, joinVerdict } from './steps';
+import { continuityName, joinVerdict } from './notation';
 import './surface.css';
 
 /** Digits of the check table: enough to see that three ways agree to the last digit shown. */
@@ -51,8 +51,8 @@ export function surfacePanel(
   const coordinate = radioGroup<SurfaceState, Coordinate>(api, {
     name: 'surface-coordinate',
     choices: (['x', 'y', 'z'] as const).map((value) => ({ value, label: `${value} coordinate` })),
-    get: (s) => s.c,
-    set: (s, value) => ({ ...s, c: value }),
+    get: (s) => s.coordinate,
+    set: (s, value) => ({ ...s, coordinate: value }),
   });
 
   const pointBody = h('tbody', {});
@@ -174,7 +174,7 @@ export function surfacePanel(
         ],
       );
       const f = m.matrix;
-      const c = state.c;
+      const c = state.coordinate;
       matrixFactors.set(
         `\\begin{aligned}U M &= ${row(4)}\\\\ M^{\\mathsf T} V^{\\mathsf T} &= ${row(4)}^{\\mathsf T}\\end{aligned}`,
         [...f.UM, ...f.VM].map((value) => fmt(value, 4)),

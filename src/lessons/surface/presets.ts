@@ -1,16 +1,8 @@
-import type { Point, Scene } from '../../app/lesson';
-import {
-  JOIN_NET,
-  JOIN_NEXT_C1,
-  LECTURE_NET,
-  type SurfaceMode,
-  type SurfaceState,
-  heights,
-} from './state';
+import type { Point } from '../../app/lesson';
+import { JOIN_NEXT_C1, heights } from './state';
 
-// The lesson's script: the construction scenes on the lecture's patch, then
-// the nets worth seeing (flat, saddle, bump, wave, not planar), then two
-// patches joined C⁰ and C¹.
+// The nets worth seeing (flat, saddle, bump, wave, not planar), and the second
+// net of two patches joined C⁰.
 
 export const FLAT_NET = heights([
   [0, 0, 0, 0],
@@ -69,32 +61,3 @@ export const JOIN_NEXT_C0: Point[][] = JOIN_NEXT_C1.map((row, m) =>
     ? row.map(([x, y, z], n) => [x, y, n === 1 || n === 2 ? 1.6 : z])
     : row.map((p) => p.slice()),
 );
-
-const scene = (
-  id: string,
-  label: string,
-  s: SurfaceMode,
-  net?: Point[][],
-  extra: Partial<SurfaceState> = {},
-): Scene<SurfaceState> => ({
-  id,
-  label,
-  apply: (current) => ({ ...current, s, k: 0, ...(net ? { x: net } : {}), ...extra }),
-});
-
-export const SCENES: Scene<SurfaceState>[] = [
-  scene('patch', 'The patch', 'patch', LECTURE_NET, { u: 0.3, v: 0.6, look: 'shaded' }),
-  scene('rows', 'Choose v, then u', 'rows'),
-  scene('casteljau', 'de Casteljau both ways', 'casteljau'),
-  scene('matrix', 'Matrix form', 'matrix'),
-  scene('weights', 'The 16 weights', 'weights'),
-  scene('normal', 'Tangents and normal', 'normal'),
-  scene('flat', 'Flat', 'patch', FLAT_NET, { look: 'shaded' }),
-  // The saddle's iso-curves are straight lines (it is bilinear): shown as lines.
-  scene('saddle', 'Saddle', 'patch', SADDLE_NET, { look: 'lines' }),
-  scene('bump', 'Bump', 'patch', BUMP_NET, { u: 0.5, v: 0.5, look: 'shaded' }),
-  scene('wave', 'Wave', 'patch', WAVE_NET),
-  scene('twisted', 'Not planar', 'patch', TWISTED_NET),
-  scene('c0', 'Two patches, C⁰', 'join', JOIN_NET, { y: JOIN_NEXT_C0 }),
-  scene('c1', 'Two patches, C¹', 'join', JOIN_NET, { y: JOIN_NEXT_C1 }),
-];

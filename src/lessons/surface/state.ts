@@ -1,4 +1,4 @@
-import { choice, int, number, pointGrid } from '../../app/fields';
+import { choice, int, linkKey, number, pointGrid } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -13,18 +13,19 @@ export type Coordinate = 'x' | 'y' | 'z';
 
 /** Everything the surface lesson shows, and all of it goes in the link. */
 export interface SurfaceState {
-  /** The control net x(m,n), `x[m][n]`: m runs along u, n along v. */
-  x: Point[][];
-  /** The second patch y(m,n) of the joined pair: its row m = 0 meets the first patch's row m = 3. */
-  y: Point[][];
+  /** The control net x(m,n), `net[m][n]`: m runs along u, n along v (`x=` in the link). */
+  net: Point[][];
+  /** The second patch y(m,n) of the joined pair: its row m = 0 meets the first patch's row m = 3 (`y=`). */
+  secondNet: Point[][];
   u: number;
   v: number;
-  /** The step of the scene's construction. */
-  k: number;
-  s: SurfaceMode;
+  /** The step of the scene's construction (`k=`). */
+  step: number;
+  /** What the scene teaches (`s=`). */
+  mode: SurfaceMode;
   look: SurfaceLook;
-  /** The coordinate of the matrix form. */
-  c: Coordinate;
+  /** The coordinate of the matrix form (`c=`). */
+  coordinate: Coordinate;
 }
 
 export const MODES: readonly SurfaceMode[] = [
@@ -89,15 +90,16 @@ export const JOIN_NEXT_C1: Point[][] = [
   ],
 ];
 
+/** Whole words in code, the lecture's short keys in the link (in this order). */
 export const schema: Schema<SurfaceState> = {
-  x: pointGrid({ default: LECTURE_NET, rows: 4, columns: 4, dimension: 3 }),
-  y: pointGrid({ default: JOIN_NEXT_C1, rows: 4, columns: 4, dimension: 3 }),
+  net: linkKey(pointGrid({ default: LECTURE_NET, rows: 4, columns: 4, dimension: 3 }), 'x'),
+  secondNet: linkKey(pointGrid({ default: JOIN_NEXT_C1, rows: 4, columns: 4, dimension: 3 }), 'y'),
   u: number({ default: 0.3, min: 0, max: 1 }),
   v: number({ default: 0.6, min: 0, max: 1 }),
-  k: int({ default: 0, min: 0, max: 20 }),
-  s: choice<SurfaceMode>({ default: 'patch', values: MODES }),
+  step: linkKey(int({ default: 0, min: 0, max: 20 }), 'k'),
+  mode: linkKey(choice<SurfaceMode>({ default: 'patch', values: MODES }), 's'),
   look: choice<SurfaceLook>({ default: 'shaded', values: ['shaded', 'lines'] }),
-  c: choice<Coordinate>({ default: 'z', values: ['x', 'y', 'z'] }),
+  coordinate: linkKey(choice<Coordinate>({ default: 'z', values: ['x', 'y', 'z'] }), 'c'),
 };
 
 /** Index of a coordinate in a point. */

@@ -1,4 +1,4 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { SurfaceModel } from './model';
 import type { SurfaceState } from './state';
 
@@ -7,9 +7,9 @@ import type { SurfaceState } from './state';
 // row factors fm(u) on the right, the column factors fn(v) below.
 
 /** What the map shows at the step: the row factors, the column factors, or the products. */
-export function weightsShown(state: SurfaceState): 'rows' | 'columns' | 'products' {
-  if (state.s === 'weights' && state.k === 1) return 'rows';
-  if (state.s === 'weights' && state.k === 2) return 'columns';
+export function weightsShown({ shown }: SurfaceModel): 'rows' | 'columns' | 'products' {
+  if (shown.is('rowShares')) return 'rows';
+  if (shown.is('columnShares')) return 'columns';
   return 'products';
 }
 
@@ -20,7 +20,7 @@ const cell = (m: number, n: number) => [
   [n, 4 - m],
 ];
 
-export const weightsFigure: FigureSpec<SurfaceState, SurfaceModel> = {
+export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
   id: 'weights',
   title: 'The 16 weights fm(u)·fn(v) at the point, as a heat map',
   kind: 'drawing',
@@ -28,9 +28,9 @@ export const weightsFigure: FigureSpec<SurfaceState, SurfaceModel> = {
   bounds: () => ({ minX: -0.8, minY: -1.35, maxX: 5.2, maxY: 4.7 }),
   draw(painter, m, info) {
     const theme = painter.theme;
-    const shown = weightsShown(m.state);
-    const fu = m.weights.map((row) => row.reduce((s, w) => s + w, 0));
-    const fv = m.weights[0].map((_, n) => m.weights.reduce((s, row) => s + row[n], 0));
+    const shown = weightsShown(m);
+    const fu = m.rowShares;
+    const fv = m.columnShares;
     // Numbers fit their cells: as large as the theme asks, or as the cell allows.
     const cellPixels = Math.abs(
       painter.view.toScreen([1, 0])[0] - painter.view.toScreen([0, 0])[0],
