@@ -31,7 +31,15 @@ export interface ArcModel {
   sAtT: number;
 }
 
-export function deriveArc(p: readonly Point[], n: number, t: number): ArcModel {
+/** Everything of the arc length model that does not depend on the cursor t: computed once per curve and n. */
+export type ArcCurve = Omit<ArcModel, 'sAtT'>;
+
+/** The arc length model at the cursor t: the table reused, only s(t) new. */
+export function deriveArc(curve: ArcCurve, p: readonly Point[], t: number): ArcModel {
+  return { ...curve, sAtT: bezierArcLength(p, t) };
+}
+
+export function deriveArcCurve(p: readonly Point[], n: number): ArcCurve {
   const table = bezierArcLengthTable(p, n);
   const length = table[n].s;
   const equal = table.map((_, k) => {
@@ -55,7 +63,6 @@ export function deriveArc(p: readonly Point[], n: number, t: number): ArcModel {
     plotPoints: Array.from({ length: PLOT_SAMPLES + 1 }, (_, i) =>
       bezierPoint(p, i / PLOT_SAMPLES),
     ),
-    sAtT: bezierArcLength(p, t),
   };
 }
 

@@ -1,21 +1,22 @@
-import type { FigureSpec, Handle } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
 import { COLOURS, arrowUnit, show, vectorArrow } from './marks';
 import type { CurvatureModel } from './model';
 import type { PlaneModel } from './planeModel';
+import { gradientHandles, gradientTips, planePoints, topViewPoints } from './points';
 import { THROUGH_POINTS } from './sources';
 import type { CurvatureState } from './state';
 
 /** The plane cubic with its frame, circle and comb; or the top view of the space cubic; or the arc length ticks. */
-export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+export const curveFigure: KitFigure<CurvatureState, CurvatureModel> = {
   id: 'curve',
   title: 'The curve with P(t), its tangent, normal, osculating circle and curvature comb',
   kind: 'geometry',
   bounds(m) {
     if (m.state.part === 'space') {
-      const polygon = m.state.curve === 'bezier' ? m.state.q : [];
+      const polygon = m.state.spaceCurve === 'bezier' ? m.state.spacePoints : [];
       return boundsOf([...m.space.curve, ...polygon].map((p) => [p[0], p[1]]));
     }
     const plane = m.plane!;
@@ -28,7 +29,7 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
           )
         : [];
     const box = boundsOf([
-      ...m.state.p,
+      ...m.state.points,
       ...curvePoints(plane),
       ...gradientTips(m.state),
       ...plane.comb.flat().map((tooth) => tooth[1]),
@@ -40,18 +41,27 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     if (m.state.part === 'space') return drawTopView(painter, m, labels);
-    // Say why instead of drawing nonsense: T is missing from step 2 (cusp), N from
-    // step 3. First, so the labels drawn after it keep clear of it.
+    // Say why instead of drawing nonsense: T is missing once T is shown (a cusp), N
+    // once N is. First, so the labels drawn after it keep clear of it.
     const at = m.plane?.at;
-    if (m.state.part === 'plane' && at?.why && labels && m.state.step >= (at.tangent ? 3 : 2))
+    if (
+      m.state.part === 'plane' &&
+      at?.why &&
+      labels &&
+      m.shown.has(at.tangent ? 'normal' : 'tangent')
+    )
       painter.note(at.why);
     const plane = m.plane!;
     const theme = painter.theme;
-    if (!THROUGH_POINTS[m.state.src])
-      painter.polyline(m.state.p, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    if (!THROUGH_POINTS[m.state.source])
+      painter.polyline(m.state.points, {
+        color: theme.polygon,
+        width: theme.sizes.thin,
+        dash: [6, 5],
+      });
     for (const [i, tip] of gradientTips(m.state).entries())
-      painter.segment(m.state.p[i], tip, { color: theme.polygon, width: theme.sizes.thin });
-    if (m.state.part === 'plane' && m.state.step >= 5) drawComb(painter, plane);
+      painter.segment(m.state.points[i], tip, { color: theme.polygon, width: theme.sizes.thin });
+    if (m.state.part === 'plane' && m.shown.has('comb')) drawComb(painter, plane);
     painter.polylineFlat(plane.curve, {
       color: theme.curve,
       width: theme.sizes.curve,
@@ -62,39 +72,7 @@ export const curveFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     if (m.state.part === 'arc') drawTicks(painter, m, labels);
     else drawFrame(painter, m, plane, labels);
   },
-  handles(m) {
-    if (m.state.part !== 'space')
-      return [
-        ...m.state.p.map((p, i) => ({ id: `p${i}`, label: `P_{${i}}`, position: p })),
-        ...gradientTips(m.state).map((tip, i): Handle => ({
-          id: `d${i}`,
-          label: `P_{${i}} + D_{${i}}/3`,
-          position: tip,
-          small: true,
-        })),
-      ];
-    if (m.state.curve !== 'bezier') return [];
-    return m.state.q.map((q, i): Handle => ({
-      id: `q${i}`,
-      label: `Q_{${i}}`,
-      position: [q[0], q[1]],
-      shape: 'square',
-    }));
-  },
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    // A Hermite gradient's handle is Pi + Di/3, the inner Bézier control point.
-    if (id.startsWith('d'))
-      return {
-        ...state,
-        d: state.d.map((v, k) =>
-          k === i ? [3 * (to[0] - state.p[i][0]), 3 * (to[1] - state.p[i][1])] : v,
-        ),
-      };
-    if (id.startsWith('q'))
-      return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], q[2]] : q)) };
-    return { ...state, p: state.p.map((p, k) => (k === i ? [to[0], to[1]] : p)) };
-  },
+  points: [planePoints, gradientHandles, topViewPoints],
   trail: (m) => (m.state.part === 'space' ? m.space.at.point.slice(0, 2) : m.plane!.at.point),
   weight: 3,
 };
@@ -106,19 +84,12 @@ function curvePoints(plane: PlaneModel): Point[] {
   return out;
 }
 
-/** The Hermite gradients' handles Pi + Di/3 (none for other sources). */
-function gradientTips(state: CurvatureState): Point[] {
-  if (state.src !== 'hermite' || state.part !== 'plane' || state.d.length !== state.p.length)
-    return [];
-  return state.p.map((p, i) => [p[0] + state.d[i][0] / 3, p[1] + state.d[i][1] / 3]);
-}
-
 function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, labels: boolean): void {
   const theme = painter.theme;
-  const { step } = m.state;
+  const { shown } = m;
   const at = plane.at;
   const unit = arrowUnit(plane.size);
-  if (step >= 6) {
+  if (shown.has('inflections')) {
     for (const mark of plane.marks)
       markPoint(
         painter,
@@ -127,7 +98,7 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
         labels,
       );
   }
-  if (step >= 4 && at.circle) {
+  if (shown.has('curvature') && at.circle) {
     const colour = painter.color(COLOURS.curvature);
     painter.circle(at.circle.centre, at.circle.radius, { color: colour, width: theme.sizes.line });
     painter.segment(at.point, at.circle.centre, {
@@ -144,11 +115,11 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
         dy: 18,
       });
   }
-  if (step >= 1 && at.speed > 0)
+  if (shown.has('velocity') && at.speed > 0)
     vectorArrow(painter, at.point, at.velocity, 1 / 3, '⅓P′(t)', theme.accent, labels);
-  if (step >= 2 && at.tangent)
+  if (shown.has('tangent') && at.tangent)
     vectorArrow(painter, at.point, at.tangent, unit, 'T', painter.color(COLOURS.tangent), labels);
-  if (step >= 3 && at.normal)
+  if (shown.has('normal') && at.normal)
     vectorArrow(painter, at.point, at.normal, unit, 'N', painter.color(COLOURS.normal), labels);
   painter.dot(at.point, theme.accent, theme.sizes.point * 1.3);
   if (labels) painter.label('P(t)', at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
@@ -177,7 +148,7 @@ function markPoint(painter: Painter, at: Point, text: string, labels: boolean): 
 function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
   const theme = painter.theme;
   const arc = m.arc!;
-  const { step } = m.state;
+  const { shown } = m;
   const length = 0.05 * m.plane!.size;
   const tick = (
     points: readonly Point[],
@@ -196,22 +167,24 @@ function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
       });
       painter.dot(q, colour, theme.sizes.point * 0.7);
     });
-  if (step >= 1) tick(arc.byT, arc.byTDirection, painter.color(0), 1, step === 4 ? 0.3 : 1);
-  if (step >= 4) tick(arc.byS, arc.bySDirection, painter.color(1), -1, 1);
+  // While equal steps of s are new, the ticks of equal t fade behind them.
+  const faded = shown.is('equalLength') ? 0.3 : 1;
+  if (shown.has('ticks')) tick(arc.byT, arc.byTDirection, painter.color(0), 1, faded);
+  if (shown.has('equalLength')) tick(arc.byS, arc.bySDirection, painter.color(1), -1, 1);
   painter.dot(m.plane!.at.point, theme.accent, theme.sizes.point * 1.3);
   if (!labels) return;
   painter.label('P(t)', m.plane!.at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
   let y = theme.sizes.label * 1.4;
-  if (step >= 1) {
-    painter.screenLabel(`■ ${m.state.n} equal steps of t`, 12, y, {
+  if (shown.has('ticks')) {
+    painter.screenLabel(`■ ${m.state.equalSteps} equal steps of t`, 12, y, {
       color: painter.color(0),
       halo: true,
       bold: true,
     });
     y += theme.sizes.label * 1.4;
   }
-  if (step >= 4)
-    painter.screenLabel(`■ ${m.state.n} equal steps of arc length s`, 12, y, {
+  if (shown.has('equalLength'))
+    painter.screenLabel(`■ ${m.state.equalSteps} equal steps of arc length s`, 12, y, {
       color: painter.color(1),
       halo: true,
       bold: true,
@@ -221,8 +194,8 @@ function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
 function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void {
   const theme = painter.theme;
   const flat = (points: readonly Point[]) => points.map((p) => [p[0], p[1]]);
-  if (m.state.curve === 'bezier')
-    painter.polyline(flat(m.state.q), {
+  if (m.state.spaceCurve === 'bezier')
+    painter.polyline(flat(m.state.spacePoints), {
       color: theme.polygon,
       width: theme.sizes.thin,
       dash: [6, 5],

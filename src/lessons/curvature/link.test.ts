@@ -23,12 +23,19 @@ describe('links into the curvature lesson', () => {
     );
     const { state, issues } = decodeState(schema, href.slice(href.indexOf('?') + 1));
     expect(issues).toEqual([]);
-    expect(state).toMatchObject({ part: 'plane', src: 'hermite', d, t: 1, step: 4 });
-    expect(state.p.map((q) => q.map((v) => v.toFixed(9)))).toEqual(
+    expect(state).toMatchObject({ part: 'plane', source: 'hermite', gradients: d, t: 1, step: 4 });
+    expect(state.points.map((q) => q.map((v) => v.toFixed(9)))).toEqual(
       p.map((q) => q.map((v) => v.toFixed(9))),
     );
-    for (const key of ['src', 'p', 'd'] as const)
-      expect(href).toContain(`${key}=${schema[key].encode(state[key] as never)}`);
+    // Each field under the key the link carries, as the schema writes it.
+    for (const [field, key] of [
+      ['source', 'src'],
+      ['points', 'p'],
+      ['gradients', 'd'],
+    ] as const) {
+      expect(schema[field].key).toBe(key);
+      expect(href).toContain(`${key}=${schema[field].encode(state[field] as never)}`);
+    }
   });
 
   it('is null for a curve the lesson cannot take', () => {

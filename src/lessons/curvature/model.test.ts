@@ -2,11 +2,13 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { bezierCurvature, cubicSplineC2 } from '../../math';
 import lesson from './lesson';
-import { derive } from './model';
+import type { CurvatureModel } from './model';
 import { cuspParameters } from './planeModel';
 import { type CurvatureState, schema } from './state';
 
 const defaults = defaultsOf(schema) as CurvatureState;
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: CurvatureState) => lesson.derive(s) as CurvatureModel;
 const scene = (id: string) => lesson.scenes!.find((s) => s.id === id)!.apply(defaults);
 
 describe('the plane cubic', () => {
@@ -45,8 +47,8 @@ describe('the plane cubic', () => {
 
   it('finds the cusp where P2 − P1 = P0 − P3, and says why T is undefined there', () => {
     const state = scene('cusp');
-    expect(cuspParameters(state.p)).toEqual([0.5]);
-    expect(cuspParameters(defaults.p)).toEqual([]);
+    expect(cuspParameters(state.points)).toEqual([0.5]);
+    expect(cuspParameters(defaults.points)).toEqual([]);
     const m = derive(state).plane!;
     expect(m.at.speed).toBe(0);
     expect(m.at.tangent).toBeNull();
@@ -89,7 +91,7 @@ describe('arc length', () => {
       [3, 0],
       [3, 0],
     ];
-    const arc = derive({ ...scene('arc'), p, n: 4 }).arc!;
+    const arc = derive({ ...scene('arc'), points: p, equalSteps: 4 }).arc!;
     expect(arc.length).toBeCloseTo(3, 12);
     // s(1/4) = 9/16 − 6/64 = 0.46875; s(1/2) = 1.5.
     expect(arc.table[1].s).toBeCloseTo(0.46875, 12);
@@ -110,7 +112,7 @@ describe('arc length', () => {
 });
 
 describe('the plane curve from another lesson’s spline', () => {
-  const through = scene('natural').p;
+  const through = scene('natural').points;
 
   it('puts the cursor on piece i at local u = m·t − i, with κ of that piece', () => {
     // Four pieces, t = 0.6: s = 2.4, piece 2, u = 0.4.
@@ -137,20 +139,20 @@ describe('the plane curve from another lesson’s spline', () => {
 
   it('falls back to the Bézier curve of too few B-spline points, and says so', () => {
     const three = through.slice(0, 3);
-    const m = derive({ ...defaults, src: 'b-spline', p: three }).plane!;
+    const m = derive({ ...defaults, source: 'b-spline', points: three }).plane!;
     expect(m.pieces.segments).toEqual([three]);
     expect(m.pieces.notice).toMatch(/at least 4 control points/);
-    const b = derive({ ...defaults, src: 'b-spline', p: through }).plane!;
+    const b = derive({ ...defaults, source: 'b-spline', points: through }).plane!;
     expect(b.pieces.notice).toBeNull();
     expect(b.pieces.segments).toHaveLength(2);
   });
 
   it('takes a repeated point of a spline through points once, and a chain’s extra points not at all', () => {
     const repeated = [through[0], through[1], through[1], through[2]];
-    const m = derive({ ...defaults, src: 'catmull-rom', p: repeated }).plane!;
+    const m = derive({ ...defaults, source: 'catmull-rom', points: repeated }).plane!;
     expect(m.pieces.segments).toHaveLength(2);
     expect(m.pieces.notice).toMatch(/repeats the one before/);
-    const chain = derive({ ...defaults, src: 'chain', p: through }).plane!;
+    const chain = derive({ ...defaults, source: 'chain', points: through }).plane!;
     expect(chain.pieces.segments).toEqual([through.slice(0, 4)]);
     expect(chain.pieces.notice).toMatch(/the last 1 of 5/);
   });
@@ -158,23 +160,23 @@ describe('the plane curve from another lesson’s spline', () => {
   it('gives a Hermite spline one gradient per point, Catmull-Rom’s where the link has none', () => {
     const { state, issues } = lesson.normalize!({
       ...scene('natural'),
-      src: 'hermite',
-      d: [[1, 0]],
+      source: 'hermite',
+      gradients: [[1, 0]],
     });
-    expect(state.d).toHaveLength(through.length);
-    expect(state.d[0]).toEqual([1, 0]);
-    expect(state.d[2]).toEqual([
+    expect(state.gradients).toHaveLength(through.length);
+    expect(state.gradients[0]).toEqual([1, 0]);
+    expect(state.gradients[2]).toEqual([
       (through[3][0] - through[1][0]) / 2,
       (through[3][1] - through[1][1]) / 2,
     ]);
     expect(issues[0]).toMatch(/1 gradients for 5 points/);
-    expect(lesson.normalize!({ ...scene('arc'), src: 'natural' }).state.src).toBe('bezier');
+    expect(lesson.normalize!({ ...scene('arc'), source: 'natural' }).state.source).toBe('bezier');
   });
 
   it('a line (two control points) is straight: κ = 0 and the page says why N is undefined', () => {
     const m = derive({
       ...defaults,
-      p: [
+      points: [
         [0, 0],
         [2, 1],
       ],

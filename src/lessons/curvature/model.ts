@@ -1,12 +1,24 @@
-import { type ArcModel, deriveArc } from './arcModel';
+import { memoOn } from '../../kit/memoOn';
+import type { Revealed } from '../../kit/script';
+import { type ArcCurve, type ArcModel, deriveArc, deriveArcCurve } from './arcModel';
 import { type PlaneCurve, type PlaneModel, deriveCurve, derivePlane } from './planeModel';
+import type { Reveal } from './scripts';
 import { piecewiseCurve } from './sources';
-import { type SpaceModel, deriveSpace } from './spaceModel';
+import {
+  type SpaceCurveFields,
+  type SpaceCurveModel,
+  type SpaceModel,
+  deriveSpace,
+  deriveSpaceCurve,
+  liftedSpace,
+} from './spaceModel';
 import type { CurvatureState } from './state';
 
 /** Everything the figures and the panel show, computed once per state. */
 export interface CurvatureModel {
   state: CurvatureState;
+  /** What the steps so far reveal (the part's own names: the tangent, the comb, the table, …). */
+  shown: Revealed<Reveal>;
   /** The plane curve, any source as Bézier pieces (parts plane and arc). */
   plane: PlaneModel | null;
   /** The space curve (part space), or the plane curve lying in z = 0. */
@@ -15,31 +27,51 @@ export interface CurvatureModel {
   arc: ArcModel | null;
 }
 
-/**
- * The last plane curve and what it was made from: moving t (the slider, Play,
- * the plot's cursor) keeps src, p and d, so the curve, its plot and comb are
- * not computed again; only the frame at t is.
- */
-let last: {
-  src: CurvatureState['src'];
-  p: CurvatureState['p'];
-  d: CurvatureState['d'];
-  curve: PlaneCurve;
-} | null = null;
+type Fields<K extends keyof CurvatureState> = Pick<CurvatureState, K>;
 
-function planeCurve(state: CurvatureState): PlaneCurve {
-  if (last && last.src === state.src && last.p === state.p && last.d === state.d) return last.curve;
-  const curve = deriveCurve(piecewiseCurve(state.src, state.p, state.d));
-  last = { src: state.src, p: state.p, d: state.d, curve };
-  return curve;
-}
+// Each piece is kept while the fields it reads are the same: moving t (the
+// slider, Play, the plot's cursor) keeps the curve, its plot and comb, and
+// computes only the frame at t; a step of the clicker computes nothing.
+const planeCurve = memoOn<
+  Fields<'source' | 'points' | 'gradients'>,
+  'source' | 'points' | 'gradients',
+  PlaneCurve
+>(['source', 'points', 'gradients'], ({ source, points, gradients }) =>
+  deriveCurve(piecewiseCurve(source, points, gradients)),
+);
+const planeAt = memoOn<
+  Fields<'source' | 'points' | 'gradients' | 't'>,
+  'source' | 'points' | 'gradients' | 't',
+  PlaneModel
+>(['source', 'points', 'gradients', 't'], (s) => derivePlane(planeCurve(s), s.t));
+const lifted = memoOn<{ plane: PlaneModel }, 'plane', SpaceModel>(['plane'], ({ plane }) =>
+  liftedSpace(plane),
+);
+const spaceCurve = memoOn<SpaceCurveFields, keyof SpaceCurveFields, SpaceCurveModel>(
+  ['spaceCurve', 'radius', 'rise', 'spacePoints'],
+  deriveSpaceCurve,
+);
+const spaceAt = memoOn<SpaceCurveFields & Fields<'t'>, keyof SpaceCurveFields | 't', SpaceModel>(
+  ['spaceCurve', 'radius', 'rise', 'spacePoints', 't'],
+  (s) => deriveSpace(spaceCurve(s), s, s.t),
+);
+const arcCurve = memoOn<Fields<'points' | 'equalSteps'>, 'points' | 'equalSteps', ArcCurve>(
+  ['points', 'equalSteps'],
+  ({ points, equalSteps }) => deriveArcCurve(points, equalSteps),
+);
+const arcAt = memoOn<
+  Fields<'points' | 'equalSteps' | 't'>,
+  'points' | 'equalSteps' | 't',
+  ArcModel
+>(['points', 'equalSteps', 't'], (s) => deriveArc(arcCurve(s), s.points, s.t));
 
-export function derive(state: CurvatureState): CurvatureModel {
-  const plane = state.part === 'space' ? null : derivePlane(planeCurve(state), state.t);
+export function derive(state: CurvatureState, shown: Revealed<Reveal>): CurvatureModel {
+  const plane = state.part === 'space' ? null : planeAt(state);
   return {
     state,
+    shown,
     plane,
-    space: deriveSpace(state, plane),
-    arc: state.part === 'arc' ? deriveArc(state.p, state.n, state.t) : null,
+    space: plane ? lifted({ plane }) : spaceAt(state),
+    arc: state.part === 'arc' ? arcAt(state) : null,
   };
 }

@@ -6,7 +6,8 @@ import { formula } from '../../render/formula';
 import type { CurvatureModel } from './model';
 import { CURVE_SOURCES, type CurveSource } from '../../kit/lessonLinks';
 import { SOURCE_NAMES } from './sources';
-import { type CurvatureState, type Part, type SpaceCurve, STEPS, schema, stepCount } from './state';
+import { PART_SCRIPTS } from './scripts';
+import { type CurvatureState, type Part, type SpaceCurve, schema } from './state';
 import { arcRows, valueRows } from './values';
 
 const INTRO: Record<Part, string> = {
@@ -49,19 +50,19 @@ export function curvaturePanel(
       { value: 'helix', label: 'Helix (a cos θ, a sin θ, bθ)' },
       { value: 'bezier', label: 'Cubic Bézier with 3D control points' },
     ],
-    get: (s) => s.curve,
-    set: (s, curve) => ({ ...s, curve }),
+    get: (s) => s.spaceCurve,
+    set: (s, spaceCurve) => ({ ...s, spaceCurve }),
   });
   const numberInput = (
     label: string,
-    key: 'a' | 'b' | 'n',
+    key: 'radius' | 'rise' | 'equalSteps',
     min: number,
     max: number,
     step: number,
   ) => {
     const input = h('input', { type: 'number', min, max, step, 'aria-label': label });
     input.addEventListener('change', () => {
-      const value = key === 'n' ? Math.round(Number(input.value)) : Number(input.value);
+      const value = key === 'equalSteps' ? Math.round(Number(input.value)) : Number(input.value);
       // The link's field checks the range too; here an out-of-range entry is simply not taken.
       if (input.value === '' || !(value >= min && value <= max)) return;
       // The state keeps what the link keeps (ten significant digits), so a link opens this picture.
@@ -70,15 +71,15 @@ export function curvaturePanel(
     });
     return { element: h('label', { class: 'toggle' }, `${label} `, input), input };
   };
-  const a = numberInput('Helix radius a', 'a', 0.1, 5, 0.05);
-  const b = numberInput('Helix rise b per radian', 'b', -3, 3, 0.05);
-  const n = numberInput('Equal steps n', 'n', 2, 24, 1);
+  const a = numberInput('Helix radius a', 'radius', 0.1, 5, 0.05);
+  const b = numberInput('Helix rise b per radian', 'rise', -3, 3, 0.05);
+  const n = numberInput('Equal steps n', 'equalSteps', 2, 24, 1);
   const spaceControls = h('div', { class: 'lesson-tools' }, ...curveChoice.labels);
   const sourceChoice = radioGroup<CurvatureState, CurveSource>(api, {
     name: 'plane-curve',
     choices: CURVE_SOURCES.map((value) => ({ value, label: SOURCE_NAMES[value] })),
-    get: (s) => s.src,
-    set: (s, src) => ({ ...s, src }),
+    get: (s) => s.source,
+    set: (s, source) => ({ ...s, source }),
   });
   const pieces = h('p', { class: 'note' });
   const notice = h('p', { class: 'note', role: 'status' });
@@ -135,18 +136,19 @@ export function curvaturePanel(
         setText(notice, m.plane.pieces.notice ?? '');
         setHidden(notice, !m.plane.pieces.notice);
       }
-      setHidden(helixControls, state.part !== 'space' || state.curve !== 'helix');
+      setHidden(helixControls, state.part !== 'space' || state.spaceCurve !== 'helix');
       setHidden(n.element, state.part !== 'arc');
       curveChoice.update(state);
       for (const [control, value] of [
-        [a, state.a],
-        [b, state.b],
-        [n, state.n],
+        [a, state.radius],
+        [b, state.rise],
+        [n, state.equalSteps],
       ] as const) {
         if (document.activeElement !== control.input) control.input.value = String(value);
       }
-      const step = Math.min(state.step, stepCount(state));
-      setText(stepTitle, `Step ${step} of ${stepCount(state)}: ${STEPS[state.part][step]}`);
+      const { k, lastStep } = m.shown;
+      const caption = PART_SCRIPTS[state.part].caption(state, m, k);
+      setText(stepTitle, `Step ${k} of ${lastStep}: ${caption}`);
       const reason =
         state.part === 'space' ? m.space.at.why : state.part === 'plane' ? m.plane!.at.why : null;
       setText(why, reason ?? '');

@@ -1,4 +1,4 @@
-import type { FigureSpec } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, niceStep } from '../../render/projection';
 import { COLOURS, show } from './marks';
@@ -10,27 +10,32 @@ const clampT = (t: number) => Math.min(1, Math.max(0, Number(t.toFixed(4))));
 
 /** What the plot shows now: κ(t) (or the speed first), κ and τ in space, s(t) for arc length. */
 function series(m: CurvatureModel): { name: string; runs: Float64Array[]; colour: number }[] {
-  const { part, step } = m.state;
+  const { part } = m.state;
+  const { shown } = m;
   if (part === 'plane') {
-    if (step >= 4) return [{ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature }];
-    return step >= 1 ? [{ name: '|P′|', runs: m.plane!.speed, colour: 4 }] : [];
+    if (shown.has('curvature'))
+      return [{ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature }];
+    return shown.has('velocity') ? [{ name: '|P′|', runs: m.plane!.speed, colour: 4 }] : [];
   }
   if (part === 'space') {
     const out = [];
-    if (step >= 2) out.push({ name: 'κ', runs: m.space.kappa, colour: COLOURS.curvature });
-    if (step >= 3) out.push({ name: 'τ', runs: m.space.tau, colour: COLOURS.torsion });
+    if (shown.has('normal'))
+      out.push({ name: 'κ', runs: m.space.kappa, colour: COLOURS.curvature });
+    if (shown.has('binormal')) out.push({ name: 'τ', runs: m.space.tau, colour: COLOURS.torsion });
     return out;
   }
-  return step >= 2 ? [{ name: 's', runs: [m.arc!.plot], colour: 3 }] : [];
+  return shown.has('arcLength') ? [{ name: 's', runs: [m.arc!.plot], colour: 3 }] : [];
 }
 
 function plotBounds(m: CurvatureModel): Bounds {
   let [low, high] = [0, 0];
-  const { part, step } = m.state;
+  const { part } = m.state;
+  // κ of the plane curve from the step that names it on; the speed before.
+  const kappa = part === 'plane' && m.shown.has('curvature');
   // The axes are set by everything the part will show, so stepping does not rescale them.
   const runs =
     part === 'plane'
-      ? step >= 4
+      ? kappa
         ? m.plane!.kappa
         : m.plane!.speed
       : part === 'space'
@@ -41,12 +46,7 @@ function plotBounds(m: CurvatureModel): Bounds {
       low = Math.min(low, run[i]);
       high = Math.max(high, run[i]);
     }
-  const cap =
-    part === 'plane' && step >= 4
-      ? 1.25 * m.plane!.kappaCap
-      : part === 'space'
-        ? 1.25 * m.space.cap
-        : Infinity;
+  const cap = kappa ? 1.25 * m.plane!.kappaCap : part === 'space' ? 1.25 * m.space.cap : Infinity;
   low = Math.max(low, -cap);
   high = Math.min(high, cap);
   const pad = 0.08 * (high - low || 1);
@@ -60,7 +60,7 @@ const pieces = (m: CurvatureModel) =>
 /** The plot's x: t for one piece; the global s = i + u across pieces (piece i, local u). */
 const axisName = (m: CurvatureModel) => (pieces(m) > 1 ? 's = i + u' : 't');
 
-export const plotFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
   id: 'plot',
   title: 'κ(t), τ(t) or s(t) plotted against t (or the global s across pieces), with a cursor at t',
   kind: 'plot',
@@ -137,7 +137,8 @@ function cursorValues(m: CurvatureModel): { name: string; y: number; colour: num
 /** Inflections and cusps (plane), frame flips (space), the table and its inverse (arc length). */
 function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
   const theme = painter.theme;
-  const { part, step } = m.state;
+  const { part } = m.state;
+  const { shown } = m;
   const vertical = (t: number, text: string) => {
     painter.segment([t, bounds.minY], [t, bounds.maxY], {
       color: theme.muted,
@@ -153,16 +154,16 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
       });
   };
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
-  if (part === 'plane' && step >= 6) {
+  if (part === 'plane' && shown.has('inflections')) {
     for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
     for (const t of m.plane!.cusps) vertical(t, t === 0 || t === pieces(m) ? 'P′ = 0' : 'cusp');
   }
-  if (part === 'space' && step >= 6) for (const t of m.space.flips) vertical(t, 'flip');
+  if (part === 'space' && shown.has('flips')) for (const t of m.space.flips) vertical(t, 'flip');
   if (part !== 'arc') return;
   const arc = m.arc!;
-  if (step >= 3)
+  if (shown.has('table'))
     for (const row of arc.table) painter.dot([row.t, row.s], painter.color(0), theme.sizes.point);
-  if (step >= 4)
+  if (shown.has('equalLength'))
     for (const row of arc.equal) {
       const colour = painter.color(1);
       painter.segment([0, row.s], [row.t, row.s], {
@@ -178,12 +179,12 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
 }
 
 /**
- * The joins of a piecewise curve: a line at each, named by its continuity from
- * step 4 (κ shown) on, where a C¹ or G¹ join also says how far κ jumps.
+ * The joins of a piecewise curve: a line at each, named by its continuity once
+ * κ is shown, where a C¹ or G¹ join also says how far κ jumps.
  */
 function drawJoins(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
   const theme = painter.theme;
-  const labels = !thumbnail && m.state.step >= 4;
+  const labels = !thumbnail && m.shown.has('curvature');
   const { joins } = m.plane!.pieces;
   // Many joins would bury each other's names: then only the one nearest the cursor is named.
   const cursor = m.state.t * pieces(m);

@@ -1,4 +1,4 @@
-import type { FigureSpec, Handle } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import type { Point } from '../../math';
 import { OrbitCamera } from '../../render/orbitCamera';
 import type { Painter } from '../../render/painter';
@@ -6,11 +6,12 @@ import { boundsOf } from '../../render/projection';
 import { SpaceScene } from '../../render/space';
 import { COLOURS, arrowUnit, vectorArrow } from './marks';
 import type { CurvatureModel } from './model';
+import { spacePoints } from './points';
 import type { SpaceAt } from './spaceModel';
 import type { CurvatureState } from './state';
 
 /** The curve in space with its Frenet frame T, N, B and the osculating plane. */
-export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
+export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
   id: 'space',
   title: 'The curve in space with the Frenet frame T, N, B and the osculating plane',
   kind: 'space',
@@ -24,17 +25,22 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     const camera = painter.view;
     if (!(camera instanceof OrbitCamera)) return;
     const scene = new SpaceScene(painter, camera);
-    const { part, step } = m.state;
-    const { space } = m;
-    const shows = (plane: number, spatial: number) => step >= (part === 'space' ? spatial : plane);
+    const { part } = m.state;
+    const { space, shown } = m;
+    // A plane curve shows its osculating circle with κ, and its B = ±e_z with N.
+    const inSpace = part === 'space';
     drawAxes(scene, painter, space.curve, labels);
-    if (part === 'space' && m.state.curve === 'bezier')
-      scene.polyline(m.state.q, { color: theme.polygon, width: theme.sizes.thin, dash: [6, 5] });
+    if (inSpace && m.state.spaceCurve === 'bezier')
+      scene.polyline(m.state.spacePoints, {
+        color: theme.polygon,
+        width: theme.sizes.thin,
+        dash: [6, 5],
+      });
     if (part === 'arc') drawFence(scene, painter, m);
     scene.polyline(space.curve, { color: theme.curve, width: theme.sizes.curve, role: 'curve' });
     const at = space.at;
     const unit = arrowUnit(space.size);
-    if (part !== 'arc' && shows(4, 4) && at.normal && at.tangent) {
+    if (shown.has(inSpace ? 'osculating' : 'curvature') && at.normal && at.tangent) {
       const h = 1.2 * unit;
       const corner = (a: number, b: number) =>
         at.point.map((v, d) => v + h * (a * at.tangent![d] + b * at.normal![d]));
@@ -50,10 +56,10 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
         width: theme.sizes.line,
       });
     }
-    if (part === 'space' && step >= 5)
+    if (inSpace && shown.has('frames'))
       for (const frame of space.along)
         drawFrame(scene, painter, frame, 0.6 * unit, theme.sizes.thin);
-    if (part === 'space' && step >= 6)
+    if (inSpace && shown.has('flips'))
       for (const t of space.flips) {
         const p = space.curve[Math.round(t * (space.curve.length - 1))];
         scene.dot(p, theme.ink, theme.sizes.point * 1.4);
@@ -67,14 +73,14 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
     if (part === 'space' || part === 'plane') {
       const frame = {
         ...at,
-        tangent: shows(2, 1) ? at.tangent : null,
-        normal: shows(3, 2) ? at.normal : null,
-        binormal: shows(3, 3) ? at.binormal : null,
+        tangent: shown.has('tangent') ? at.tangent : null,
+        normal: shown.has('normal') ? at.normal : null,
+        binormal: shown.has(inSpace ? 'binormal' : 'normal') ? at.binormal : null,
       };
       drawFrameOver(painter, frame, unit, labels);
-      const why = part === 'space' ? at.why : null;
-      if (labels && why && step >= 1) painter.note(why);
-      if (labels && part === 'plane' && step >= 3)
+      const why = inSpace ? at.why : null;
+      if (labels && why && shown.has('tangent')) painter.note(why);
+      if (labels && part === 'plane' && shown.has('normal'))
         painter.screenLabel(
           'A plane curve: B = T × N = ±e_z, τ = 0',
           12,
@@ -86,19 +92,7 @@ export const spaceFigure: FigureSpec<CurvatureState, CurvatureModel> = {
         );
     }
   },
-  handles(m) {
-    if (m.state.part !== 'space' || m.state.curve !== 'bezier') return [];
-    return m.state.q.map((q, i): Handle => ({
-      id: `q${i}`,
-      label: `Q_{${i}}`,
-      position: q,
-      shape: 'square',
-    }));
-  },
-  moveHandle(state, id, to) {
-    const i = Number(id.slice(1));
-    return { ...state, q: state.q.map((q, k) => (k === i ? [to[0], to[1], to[2] ?? q[2]] : q)) };
-  },
+  points: [spacePoints],
   trail: (m) => m.space.at.point,
   weight: 2,
 };
@@ -158,7 +152,8 @@ function drawFence(scene: SpaceScene, painter: Painter, m: CurvatureModel): void
   const height = (0.5 * m.space.size) / (arc.length || 1);
   const lifted = arc.plotPoints.map((p, i) => [p[0], p[1], height * arc.plot[2 * i + 1]]);
   const theme = painter.theme;
-  if (m.state.step >= 2)
+  const { shown } = m;
+  if (shown.has('arcLength'))
     scene.polyline(lifted, { color: painter.color(3), width: theme.sizes.line });
   const posts = (points: readonly Point[], s: readonly number[], colour: string) =>
     points.forEach((p, i) =>
@@ -167,19 +162,20 @@ function drawFence(scene: SpaceScene, painter: Painter, m: CurvatureModel): void
         width: theme.sizes.line,
       }),
     );
-  if (m.state.step >= 3 && m.state.step !== 4)
+  // While equal steps of s are new, only their posts stand.
+  if (shown.has('table') && !shown.is('equalLength'))
     posts(
       arc.byT,
       arc.table.map((r) => r.s),
       painter.color(0),
     );
-  if (m.state.step >= 4)
+  if (shown.has('equalLength'))
     posts(
       arc.byS,
       arc.equal.map((r) => r.s),
       painter.color(1),
     );
-  if (m.state.step >= 2)
+  if (shown.has('arcLength'))
     scene.label('height = s(t)', lifted[lifted.length - 1], {
       color: painter.color(3),
       halo: true,

@@ -18,6 +18,12 @@ import { robustCap, runs, sizeOf } from './measure';
 import type { PlaneModel } from './planeModel';
 import { type CurvatureState, HELIX_TURNS } from './state';
 
+/** The fields the space curve is made of: which curve, the helix's a and b, the cubic's Q0 … Q3. */
+export type SpaceCurveFields = Pick<
+  CurvatureState,
+  'spaceCurve' | 'radius' | 'rise' | 'spacePoints'
+>;
+
 const SAMPLES = 240;
 /** Frames drawn along the curve (step 5). */
 const FRAMES_ALONG = 9;
@@ -59,16 +65,18 @@ const flipWhy =
   'κ = 0 here: P″ is parallel to P′, the curve is straight for an instant, so no plane osculates and N, B and τ are undefined.';
 
 /** The frame at t of the helix (closed forms, θ = 2π·turns·t) or of the space cubic. */
-export function spaceFrame(state: CurvatureState, t: number): SpaceAt {
-  if (state.curve === 'helix') {
+export function spaceFrame(state: SpaceCurveFields, t: number): SpaceAt {
+  if (state.spaceCurve === 'helix') {
     const theta = 2 * Math.PI * HELIX_TURNS * t;
-    const f = helixFrame(state.a, state.b, theta);
+    const f = helixFrame(state.radius, state.rise, theta);
     // κ and τ from the general formulas (the closed forms are shown beside them);
     // neither depends on the parameter, and dθ/dt = 2π·turns.
-    const { curvature, torsion } = frenetInvariants(...helixDerivatives(state.a, state.b, theta));
+    const { curvature, torsion } = frenetInvariants(
+      ...helixDerivatives(state.radius, state.rise, theta),
+    );
     return { ...f, curvature, torsion, t, speed: f.speed * 2 * Math.PI * HELIX_TURNS, why: null };
   }
-  return bezierFrame(state.q, t);
+  return bezierFrame(state.spacePoints, t);
 }
 
 export function bezierFrame(q: readonly Point[], t: number): SpaceAt {
@@ -135,8 +143,8 @@ function osculating(at: SpaceAt): Point[] {
 }
 
 /** Local minima of κ below a tenth of its largest value where B turns by more than 90° within Δt = ±0.15. */
-function findFlips(state: CurvatureState, kappa: readonly (number | null)[]): number[] {
-  if (state.curve === 'helix') return [];
+function findFlips(state: SpaceCurveFields, kappa: readonly (number | null)[]): number[] {
+  if (state.spaceCurve === 'helix') return [];
   const largest = Math.max(0, ...kappa.map((k) => k ?? 0));
   const flips: number[] = [];
   for (let i = 1; i < kappa.length - 1; i++) {
@@ -144,48 +152,53 @@ function findFlips(state: CurvatureState, kappa: readonly (number | null)[]): nu
     if (here === null || before === null || after === null) continue;
     if (!(here <= before && here < after && here < 0.1 * largest)) continue;
     const t = i / (kappa.length - 1);
-    const a = bezierFrame(state.q, Math.max(0, t - FLIP_WINDOW)).binormal;
-    const b = bezierFrame(state.q, Math.min(1, t + FLIP_WINDOW)).binormal;
+    const a = bezierFrame(state.spacePoints, Math.max(0, t - FLIP_WINDOW)).binormal;
+    const b = bezierFrame(state.spacePoints, Math.min(1, t + FLIP_WINDOW)).binormal;
     if (a && b && dot(a, b) < 0) flips.push(t);
   }
   return flips;
 }
 
-export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): SpaceModel {
-  if (state.part !== 'space' && plane) {
-    const at = liftPlane(plane);
-    // At most about 240 points: the space view strokes each segment on its own.
-    const samples = plane.curve.length / 2;
-    const every = Math.max(1, Math.ceil((samples - 1) / 240));
-    const curve: Point[] = [];
-    for (let i = 0; i < samples; i += every)
-      curve.push([plane.curve[2 * i], plane.curve[2 * i + 1], 0]);
-    if ((samples - 1) % every) curve.push([plane.curve.at(-2)!, plane.curve.at(-1)!, 0]);
-    return {
-      curve,
-      size: plane.size,
-      at,
-      circle: osculating(at),
-      along: [],
-      kappa: [],
-      tau: [],
-      flips: [],
-      cap: 1,
-      closed: null,
-    };
-  }
+/** The plane curve (parts plane and arc) as a space curve lying in z = 0, with its frame at t. */
+export function liftedSpace(plane: PlaneModel): SpaceModel {
+  const at = liftPlane(plane);
+  // At most about 240 points: the space view strokes each segment on its own.
+  const samples = plane.curve.length / 2;
+  const every = Math.max(1, Math.ceil((samples - 1) / 240));
+  const curve: Point[] = [];
+  for (let i = 0; i < samples; i += every)
+    curve.push([plane.curve[2 * i], plane.curve[2 * i + 1], 0]);
+  if ((samples - 1) % every) curve.push([plane.curve.at(-2)!, plane.curve.at(-1)!, 0]);
+  return {
+    curve,
+    size: plane.size,
+    at,
+    circle: osculating(at),
+    along: [],
+    kappa: [],
+    tau: [],
+    flips: [],
+    cap: 1,
+    closed: null,
+  };
+}
+
+/** Everything of the space model that does not depend on the cursor t: computed once per curve. */
+export type SpaceCurveModel = Omit<SpaceModel, 'at' | 'circle'>;
+
+export function deriveSpaceCurve(state: SpaceCurveFields): SpaceCurveModel {
   const curve: Point[] = [];
   const kappa: (number | null)[] = [];
   const tau: (number | null)[] = [];
   for (let i = 0; i <= SAMPLES; i++) {
     const t = i / SAMPLES;
-    if (state.curve === 'helix') {
-      curve.push(helixPoint(state.a, state.b, 2 * Math.PI * HELIX_TURNS * t));
+    if (state.spaceCurve === 'helix') {
+      curve.push(helixPoint(state.radius, state.rise, 2 * Math.PI * HELIX_TURNS * t));
       const f = spaceFrame(state, t);
       kappa.push(f.curvature);
       tau.push(f.torsion);
     } else {
-      const f = bezierFrame(state.q, t);
+      const f = bezierFrame(state.spacePoints, t);
       curve.push(f.point);
       kappa.push(f.curvature);
       tau.push(f.torsion);
@@ -194,19 +207,17 @@ export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): Sp
   // The plot shows ±1.25 cap: runs are cut where a value leaves it (τ near κ = 0).
   const cap = robustCap([...kappa, ...tau]);
   const inside = (v: number | null) => (v !== null && Math.abs(v) <= 1.25 * cap ? v : null);
-  const at = spaceFrame(state, state.t);
   const along = Array.from({ length: FRAMES_ALONG }, (_, k) =>
     spaceFrame(state, k / (FRAMES_ALONG - 1)),
   );
+  const { radius: a, rise: b } = state;
   const closed =
-    state.curve === 'helix'
-      ? { curvature: helixCurvature(state.a, state.b), torsion: helixTorsion(state.a, state.b) }
+    state.spaceCurve === 'helix'
+      ? { curvature: helixCurvature(a, b), torsion: helixTorsion(a, b) }
       : null;
   return {
     curve,
     size: sizeOf(curve.filter((_, i) => i % 24 === 0)),
-    at,
-    circle: osculating(at),
     along,
     kappa: runs(kappa.map(inside)),
     tau: runs(tau.map(inside)),
@@ -214,4 +225,14 @@ export function deriveSpace(state: CurvatureState, plane: PlaneModel | null): Sp
     cap,
     closed,
   };
+}
+
+/** The space model at the cursor t: the curve's part reused, only the frame at t new. */
+export function deriveSpace(
+  curve: SpaceCurveModel,
+  state: SpaceCurveFields,
+  t: number,
+): SpaceModel {
+  const at = spaceFrame(state, t);
+  return { ...curve, at, circle: osculating(at) };
 }

@@ -1,0 +1,41 @@
+import { script, step } from '../../kit/script';
+import type { CurvatureModel } from './model';
+import type { CurvatureState } from './state';
+import { tex } from './tex';
+
+/** What the steps of arc length against parameter reveal, by name. */
+export type ArcReveal = 'curve' | 'ticks' | 'arcLength' | 'table' | 'equalLength' | 'both';
+
+/** s_k = kL/n, and t read back from the table: the same at the step that shows both sets of ticks. */
+const equalLength = ({ state, model }: { state: CurvatureState; model: CurvatureModel }) => {
+  const arc = model.arc!;
+  const n = state.equalSteps;
+  return `s_k = \\frac{k L}{${n}} = k \\cdot ${tex(arc.length / n, 6)},\\quad t(s_1) = ${tex(arc.equal[1].t, 6)}`;
+};
+
+/**
+ * Arc length against parameter: equal steps of t, the arc length s(t), its
+ * table, and equal steps of length read back from it.
+ */
+export const arcScript = script<CurvatureState, CurvatureModel, ArcReveal>(
+  step('curve', 'The curve and its parameter t', () => `P(t),\\quad t \\in [0, 1]`),
+  step(
+    'ticks',
+    'Ticks at equal steps of t: they bunch where the curve is slow',
+    ({ state: { equalSteps: n } }) => `t_i = \\frac{i}{${n}},\\quad i = 0, \\dots, ${n}`,
+  ),
+  step(
+    'arcLength',
+    'The arc length s(t) = ∫₀ᵗ |P′(u)| du against t',
+    ({ state, model }) =>
+      `s(${tex(state.t)}) = \\int_0^{${tex(state.t)}} |P'(u)|\\,du = ${tex(model.arc!.sAtT, 6)}`,
+  ),
+  step(
+    'table',
+    'The arc length table: s at equal steps of t',
+    ({ model: { arc } }) =>
+      `L = s(1) = ${tex(arc!.length, 6)},\\quad s(t_1) = ${tex(arc!.table[1].s, 6)}`,
+  ),
+  step('equalLength', 'Equal steps of arc length: t read back from the table', equalLength),
+  step('both', 'Both sets of ticks: equal t against equal s', equalLength),
+);
