@@ -1,6 +1,6 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
-import { LABEL_VILLAGES } from './handles';
+import { LABEL_VILLAGES } from './points';
 import { drawRoadway } from './mapDrawing';
 import type { RoadModel } from './model';
 import { isFixed } from './solve';
@@ -17,7 +17,7 @@ export function drawMethodAids(painter: Painter, m: RoadModel, info: DrawInfo): 
   if (info.thumbnail) return;
   const { theme } = painter;
   const { state } = m;
-  const v = state.v;
+  const v = state.villages;
   const arrow = { color: theme.accent, width: theme.sizes.line };
   if (m.usesQuadraticHandle) {
     const controls = m.quadraticPolygon;
@@ -65,12 +65,17 @@ export function drawOtherRoads(painter: Painter, m: RoadModel): void {
 export function drawSolveProgress(painter: Painter, m: RoadModel): void {
   const { theme } = painter;
   const { state, progress, solve } = m;
-  painter.polyline(state.v, { color: theme.curveFaint, width: theme.sizes.line, dash: [6, 6] });
-  if (!progress || !solve || state.v.length > LABEL_VILLAGES) return;
+  painter.polyline(state.villages, {
+    color: theme.curveFaint,
+    width: theme.sizes.line,
+    dash: [6, 6],
+  });
+  if (!progress || !solve || state.villages.length > LABEL_VILLAGES) return;
   // Row i of the system belongs to village Pi: mark the rows swept so far.
-  state.v.forEach((p, i) => {
+  state.villages.forEach((p, i) => {
     if (i >= progress.swept) return;
-    const current = i === progress.row && (m.stage.solveStep ?? 0) <= solve.n;
+    // The row being swept is the current one until the back substitution starts.
+    const current = i === progress.row && !m.shown.has('substitution');
     painter.ring(p, theme.sizes.handle * (current ? 2.4 : 1.7), {
       color: current ? theme.accent : painter.color(0),
       width: current ? theme.sizes.line * 1.5 : theme.sizes.thin,
@@ -82,8 +87,9 @@ export function drawSolveProgress(painter: Painter, m: RoadModel): void {
 export function drawFixedGradients(painter: Painter, m: RoadModel): void {
   const { theme } = painter;
   const { state, progress, solve, gradientTips } = m;
-  if (!m.solving || !progress || !solve || !gradientTips || state.v.length > LABEL_VILLAGES) return;
-  state.v.forEach((p, i) => {
+  if (!m.solving || !progress || !solve || !gradientTips || state.villages.length > LABEL_VILLAGES)
+    return;
+  state.villages.forEach((p, i) => {
     if (!isFixed(solve.n, progress, i)) return;
     const current = i === progress.row;
     painter.arrow(p, gradientTips[i], {
@@ -95,17 +101,17 @@ export function drawFixedGradients(painter: Painter, m: RoadModel): void {
 
 /** "p̄ = 2.40: segment 2, p = 0.40" beside the marker. */
 export function drawMarkerLabel(painter: Painter, m: RoadModel): void {
-  const marker = m.shown?.marker;
+  const marker = m.visible?.marker;
   if (!marker) return;
   const { sizes } = painter.theme;
   // On the side away from the villages, so it covers none of them or their names (a phone's narrow map).
-  const v = m.state.v;
+  const v = m.state.villages;
   // A narrow map (a phone) gets the short form: the panel has the rest.
   const narrow = painter.view.width < 40 * sizes.small;
   painter.labelClear(
     narrow
-      ? `p̄ = ${m.state.s.toFixed(2)}`
-      : `p̄ = ${m.state.s.toFixed(2)}: segment ${marker.piece}, p = ${marker.p.toFixed(2)}`,
+      ? `p̄ = ${m.state.pBar.toFixed(2)}`
+      : `p̄ = ${m.state.pBar.toFixed(2)}: segment ${marker.piece}, p = ${marker.p.toFixed(2)}`,
     marker.point,
     v.length <= LABEL_VILLAGES ? v : [v[marker.piece], v[Math.min(marker.piece + 1, v.length - 1)]],
     { size: sizes.small, box: true },

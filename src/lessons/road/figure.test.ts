@@ -6,8 +6,15 @@ import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
 import { Viewport } from '../../render/viewport';
 import { mapFigure } from './figure';
-import { derive } from './model';
-import { type RoadState, normalize, schema, stepCount } from './state';
+import lesson from './lesson';
+import type { RoadModel } from './model';
+import { type RoadState, normalize, schema } from './state';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: RoadState) => lesson.derive(s) as RoadModel;
+const stepCount = (s: RoadState) => lesson.steps!.count(s);
+/** The map as the shell hosts it: its villages from the kit's point list. */
+const map = lesson.figures[0];
 
 function state(change: Partial<RoadState>): RoadState {
   // The whole road (the last step) unless a step is asked for.
@@ -32,7 +39,7 @@ describe('the map', () => {
   const m = derive(lecture);
 
   it('knows the segment under the pointer, within twice the tolerance of the road', () => {
-    const onSegment2 = bezierPoint(m.shown!.pieces[2], 0.5);
+    const onSegment2 = bezierPoint(m.visible!.pieces[2], 0.5);
     expect(mapFigure.hoverAt!(m, onSegment2, 0.5)).toBe('seg2');
     expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 0.9], 0.5)).toBe('seg2');
     expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 30], 0.5)).toBeNull();
@@ -40,16 +47,18 @@ describe('the map', () => {
   });
 
   it('moves the marker p̄ to the road point nearest the pointer, to 0.01', () => {
-    const at: Point = bezierPoint(m.shown!.pieces[3], 0.25);
-    const next = mapFigure.moveHandle!(lecture, 's', [at[0], at[1] + 0.01], m);
-    expect(next.s).toBe(3.25);
+    const at: Point = bezierPoint(m.visible!.pieces[3], 0.25);
+    const next = map.moveHandle!(lecture, 's', [at[0], at[1] + 0.01], m);
+    expect(next.pBar).toBe(3.25);
   });
 
   it('keeps villages to 0.01 and gradients as the vector to their handle', () => {
-    expect(mapFigure.moveHandle!(lecture, 'p2', [40.123, 11.987], m).v[2]).toEqual([40.12, 11.99]);
+    expect(map.moveHandle!(lecture, 'p2', [40.123, 11.987], m).villages[2]).toEqual([40.12, 11.99]);
     const clamped = state({ road: 'clamped' });
     // D0/3 ends at the handle: a handle at P0 + (10, −5) is the gradient (30, −15).
-    expect(mapFigure.moveHandle!(clamped, 'a', [10, -5], derive(clamped)).a).toEqual([30, -15]);
+    expect(map.moveHandle!(clamped, 'a', [10, -5], derive(clamped)).startGradient).toEqual([
+      30, -15,
+    ]);
   });
 
   it('draws the marker label and, over a segment, highlights it', () => {
@@ -62,7 +71,7 @@ describe('the map', () => {
   it('says on the map why the ring through two villages is missing', () => {
     const svg = drawn(
       state({
-        v: [
+        villages: [
           [0, 0],
           [60, 25],
         ],
@@ -74,7 +83,7 @@ describe('the map', () => {
 
   it('draws 500 villages without a label for each', () => {
     const villages: Point[] = Array.from({ length: 500 }, (_, i) => [i, Math.sin(i / 10) * 20]);
-    const svg = drawn(state({ v: villages }));
+    const svg = drawn(state({ villages: villages }));
     expect(svg.texts).toEqual(['p̄ = 2.40: segment 2, p = 0.40']);
   });
 });

@@ -1,4 +1,5 @@
-import type { DrawInfo, FigureSpec } from '../../app/lesson';
+import type { DrawInfo } from '../../app/lesson';
+import type { KitFigure } from '../../kit/lesson';
 import { nearestOnBezierPieces } from '../../math';
 import type { Painter } from '../../render/painter';
 import {
@@ -8,7 +9,7 @@ import {
   drawOtherRoads,
   drawSolveProgress,
 } from './aids';
-import { LABEL_VILLAGES, addVillage, moveRoadHandle, removeVillage, roadHandles } from './handles';
+import { moveRoadHandle, roadHandles } from './handles';
 import {
   drawCurvatureComb,
   drawFigureNote,
@@ -18,41 +19,45 @@ import {
   drawRoadway,
 } from './mapDrawing';
 import type { RoadModel } from './model';
+import { LABEL_VILLAGES, villagePoints } from './points';
 import type { ShownRoad } from './shownRoad';
 import type { RoadState } from './state';
 
-/** The segment under the pointer (`seg3`), as an index into the shown pieces, else −1. */
-export const hoveredSegment = (hover: string | null) =>
-  hover?.startsWith('seg') ? Number(hover.slice(3)) : -1;
+/** What the pointer is over when it is over shown piece i: `seg3`. */
+const segmentId = (piece: number) => `seg${piece}`;
 
-export const mapFigure: FigureSpec<RoadState, RoadModel> = {
+/** The shown piece under the pointer, as an index into the shown pieces, else −1. */
+export const hoveredSegment = (m: RoadModel, hover: string | null) =>
+  hover === null ? -1 : (m.visible?.pieces ?? []).findIndex((_, i) => segmentId(i) === hover);
+
+export const mapFigure: KitFigure<RoadState, RoadModel> = {
   id: 'map',
   title: 'Map: the villages and the road through them',
   kind: 'geometry',
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const { theme } = painter;
-    if (m.state.v.length <= LABEL_VILLAGES && !info.thumbnail) {
-      for (const village of m.state.v)
+    if (m.state.villages.length <= LABEL_VILLAGES && !info.thumbnail) {
+      for (const village of m.state.villages)
         painter.ring(village, theme.sizes.handle * 2.2, { alpha: 0 }, painter.color(2), 0.16);
     }
-    if (m.stage.bare) drawBare(painter, m, info);
-    else if (m.shown) drawMethodRoad(painter, m, m.shown, info);
+    if (m.shown.is('villages')) drawBare(painter, m, info);
+    else if (m.visible) drawMethodRoad(painter, m, m.visible, info);
     else drawOverlay(painter, m, info);
   },
-  trail: (m) => m.shown?.marker?.point ?? null,
+  trail: (m) => m.visible?.marker?.point ?? null,
   drawOver(painter, m, info) {
-    if (!info.thumbnail && m.shown) drawFixedGradients(painter, m);
+    if (!info.thumbnail && m.visible) drawFixedGradients(painter, m);
   },
+  points: [villagePoints],
+  addTo: villagePoints,
   handles: roadHandles,
   moveHandle: moveRoadHandle,
-  addPoint: addVillage,
-  removeHandle: removeVillage,
   hoverAt(m, at, tolerance) {
-    if (!m.shown) return null;
-    const { pieces, boxes } = m.shown;
+    if (!m.visible) return null;
+    const { pieces, boxes } = m.visible;
     const near = nearestOnBezierPieces(pieces, at, { boxes, within: tolerance * 2 });
-    return near ? `seg${near.piece}` : null;
+    return near ? segmentId(near.piece) : null;
   },
 };
 
@@ -65,7 +70,7 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
     // The comb first: the road covers the bases of its teeth.
     if (shown.comb) drawCurvatureComb(painter, shown.comb, painter.color(3));
     drawRoadway(painter, shown.cubics, painter.color(4), true);
-    const hovered = hoveredSegment(info.hover);
+    const hovered = hoveredSegment(m, info.hover);
     if (hovered >= 0 && hovered < shown.cubics.length && !m.solving) {
       painter.cubicSegments([shown.cubics[hovered]], {
         color: theme.accent,
@@ -73,7 +78,11 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
       });
     }
   } else if (!info.thumbnail) {
-    painter.polyline(m.state.v, { color: theme.curveFaint, width: theme.sizes.line, dash: [6, 6] });
+    painter.polyline(m.state.villages, {
+      color: theme.curveFaint,
+      width: theme.sizes.line,
+      dash: [6, 6],
+    });
   }
   drawMethodAids(painter, m, info);
   if (info.thumbnail) return;
@@ -85,7 +94,11 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
 /** Step 0: the villages alone, in the order the road will visit them, faintly. */
 function drawBare(painter: Painter, m: RoadModel, info: DrawInfo): void {
   const { theme } = painter;
-  painter.polyline(m.state.v, { color: theme.curveFaint, width: theme.sizes.thin, dash: [4, 8] });
+  painter.polyline(m.state.villages, {
+    color: theme.curveFaint,
+    width: theme.sizes.thin,
+    dash: [4, 8],
+  });
   if (!info.thumbnail && m.mapNotes.length) drawFigureNote(painter, m.mapNotes);
 }
 

@@ -1,36 +1,28 @@
 import type { Handle, Point } from '../../app/lesson';
 import { nearestOnBezierPieces } from '../../math';
 import type { RoadModel } from './model';
-import {
-  MAX_VILLAGES,
-  type RoadState,
-  insertVillage,
-  keepStepEnd,
-  roundCoordinate,
-  roundPoint,
-} from './state';
+import { type RoadState, roundCoordinate } from './state';
 
-/** Up to this many villages every one is labelled and decorated; beyond, the map stays legible. */
-export const LABEL_VILLAGES = 40;
-
-/** What can be moved on the map: the chosen gradients, the marker p̄ and the villages. */
+/**
+ * What can be moved on the map besides the villages: the chosen gradients
+ * (from the step that builds with them) and the marker p̄ on a built road.
+ */
 export function roadHandles(m: RoadModel): Handle[] {
-  const v = m.state.v;
   const handles: Handle[] = [];
   // Step 0 shows the villages alone: the chosen gradients come with the construction.
-  const aids = !m.stage.bare;
+  const aids = !m.shown.is('villages');
   if (aids && m.usesQuadraticHandle)
     handles.push({ id: 'q', label: 'B_0', position: m.quadraticControl, shape: 'square' });
   if (aids && m.usesEndGradients) {
     handles.push({ id: 'a', label: 'D_0', position: m.endHandles[0], shape: 'square' });
     handles.push({
       id: 'b',
-      label: `D_{${v.length - 1}}`,
+      label: `D_{${m.state.villages.length - 1}}`,
       position: m.endHandles[1],
       shape: 'square',
     });
   }
-  const marker = m.shown?.marker;
+  const marker = m.visible?.marker;
   if (marker)
     handles.push({
       id: 's',
@@ -39,16 +31,6 @@ export function roadHandles(m: RoadModel): Handle[] {
       shape: 'diamond',
       showLabel: false,
     });
-  const few = v.length <= LABEL_VILLAGES;
-  v.forEach((village, i) =>
-    handles.push({
-      id: `p${i}`,
-      label: `P_{${i}}`,
-      position: village,
-      showLabel: few,
-      small: !few,
-    }),
-  );
   return handles;
 }
 
@@ -59,34 +41,21 @@ const gradient = (to: Point, from: Point, k: number) => [
 ];
 
 export function moveRoadHandle(state: RoadState, id: string, to: Point, m: RoadModel): RoadState {
-  const v = state.v;
+  const v = state.villages;
   switch (id) {
     case 'q':
-      return { ...state, q: gradient(to, v[0], 2) };
+      return { ...state, quadraticGradient: gradient(to, v[0], 2) };
     case 'a':
-      return { ...state, a: gradient(to, v[0], 3) };
+      return { ...state, startGradient: gradient(to, v[0], 3) };
     case 'b':
-      return { ...state, b: gradient(to, v[v.length - 1], 3) };
+      return { ...state, endGradient: gradient(to, v[v.length - 1], 3) };
     case 's': {
       // The p̄ of the road point nearest to `to`, to 0.01.
-      const shown = m.shown;
-      const near = shown && nearestOnBezierPieces(shown.pieces, to, { boxes: shown.boxes });
-      return near ? { ...state, s: Math.round((near.piece + near.t) * 100) / 100 } : state;
+      const visible = m.visible;
+      const near = visible && nearestOnBezierPieces(visible.pieces, to, { boxes: visible.boxes });
+      return near ? { ...state, pBar: Math.round((near.piece + near.t) * 100) / 100 } : state;
     }
-    default: {
-      const i = Number(id.slice(1));
-      return { ...state, v: v.map((p, k) => (k === i ? roundPoint(to) : p)) };
-    }
+    default:
+      return state;
   }
-}
-
-export function addVillage(state: RoadState, at: Point): RoadState | null {
-  if (state.v.length >= MAX_VILLAGES) return null;
-  return keepStepEnd(state, { ...state, v: insertVillage(state.v, at) });
-}
-
-export function removeVillage(state: RoadState, id: string): RoadState | null {
-  if (!id.startsWith('p') || state.v.length <= 2) return null;
-  const i = Number(id.slice(1));
-  return keepStepEnd(state, { ...state, v: state.v.filter((_, k) => k !== i) });
 }

@@ -1,18 +1,36 @@
-import { defineLesson } from '../../app/lesson';
+import type { FigureSpec } from '../../app/lesson';
+import { defineLesson } from '../../kit/lesson';
 import { mapFigure } from './figure';
 import { type RoadModel, derive } from './model';
 import { roadPanel } from './panel';
-import { presets } from './presets';
-import { describeStep, roadFormula } from './script';
-import { type RoadState, normalize, schema, stepCount } from './state';
+import { scenes } from './scenes';
+import { roadScript } from './script';
+import { type RoadState, normalize, schema } from './state';
 
-export default defineLesson<RoadState, RoadModel>({
+const lesson = defineLesson({
   slug: 'road',
   schema,
+  step: 'step',
+  script: roadScript,
   derive,
   figures: [mapFigure],
-  steps: { key: 'step', count: stepCount, describe: describeStep, formula: roadFormula },
   normalize,
-  scenes: presets,
+  scenes,
   panel: roadPanel,
 });
+
+/**
+ * The kit lists a figure's point lists first; the road has always drawn its
+ * gradient handles and the marker under the villages, and Tab reached them
+ * first: kept (the villages are the first `villages.length` of the kit's).
+ */
+const villagesLast = (figure: FigureSpec<RoadState, RoadModel>) => ({
+  ...figure,
+  handles: (m: RoadModel) => {
+    const all = figure.handles?.(m) ?? [];
+    const villages = m.state.villages.length;
+    return [...all.slice(villages), ...all.slice(0, villages)];
+  },
+});
+
+export default { ...lesson, figures: lesson.figures.map(villagesLast) };

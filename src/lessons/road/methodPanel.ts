@@ -9,7 +9,8 @@ import { methodFormula } from './methodFormula';
 import { NAMES, TEXT } from './methods';
 import type { RoadModel } from './model';
 import { CURVES } from './roads';
-import { ROAD_METHODS, type RoadState, keepStepEnd, stepCount } from './state';
+import { keepShownToEnd, shownToEnd } from './script';
+import { ROAD_METHODS, type RoadState } from './state';
 
 /** Method radio buttons, overlay checkboxes, the method's explanation and the counting panel. */
 export function methodSection(api: LessonApi<RoadState, RoadModel>) {
@@ -17,7 +18,8 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
     name: 'road',
     choices: ROAD_METHODS.map((method) => ({ value: method, label: NAMES[method] })),
     get: (s) => s.road,
-    set: (s, road) => keepStepEnd(s, { ...s, road, step: stepCount({ ...s, road }) }),
+    // Choosing a method shows its whole road (its last step).
+    set: (s, road) => shownToEnd({ ...s, road }),
   });
   const methodList = h(
     'fieldset',
@@ -30,14 +32,14 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
     label: 'Compare: draw several answers at once',
     get: (s) => s.overlay,
     // Switching the overlay shows every answer chosen (its last step), as choosing a method does.
-    set: (s, on) => ({ ...s, overlay: on, step: stepCount({ ...s, overlay: on }) }),
+    set: (s, on) => shownToEnd({ ...s, overlay: on }),
   });
   const compareBoxes = CURVES.map((curve, index) => {
     const box = h('input', { type: 'checkbox', id: `road-compare-${curve.id}` });
     box.addEventListener('change', () => {
       const s = api.get();
       const compare = box.checked ? [...s.compare, index] : s.compare.filter((c) => c !== index);
-      api.set(keepStepEnd(s, { ...s, compare: compare.sort((x, y) => x - y) }));
+      api.set(keepShownToEnd(s, { ...s, compare: compare.sort((x, y) => x - y) }));
     });
     const line = h('span', { class: 'road-line', 'aria-hidden': 'true' });
     const why = h('span', { class: 'note' });

@@ -1,21 +1,19 @@
 import { describe, expect, it } from 'vitest';
 import type { Point } from '../../math';
-import { derive } from './model';
-import type { AnyLesson } from '../../app/lesson';
 import { checkScript } from '../../kit/scriptChecks';
 import { roadHandles } from './handles';
-import { valleyVillages } from './presets';
-import { describeStep } from './script';
-import {
-  LECTURE_VILLAGES,
-  type RoadState,
-  chunkSize,
-  normalize,
-  schema,
-  stage,
-  stepCount,
-} from './state';
+import lesson from './lesson';
+import type { RoadModel } from './model';
+import { valleyVillages } from './scenes';
+import { LECTURE_VILLAGES, type RoadState, chunkSize, normalize, schema } from './state';
 import { defaultsOf } from '../../app/urlState';
+
+/** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
+const derive = (s: RoadState) => lesson.derive(s) as RoadModel;
+const stepCount = (s: RoadState) => lesson.steps!.count(s);
+const describeStep = (s: RoadState, k: number) => lesson.steps!.describe(s, k);
+/** How far step `s.step` has built the road. */
+const stage = (s: RoadState) => derive(s).stage;
 
 /** A state of the lesson: its defaults with some fields changed, then its cross-field rules. */
 function state(change: Partial<RoadState>): RoadState {
@@ -38,7 +36,7 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
   // The system (lecture notes): [2 1 | 3(y1 − y0)], [1 4 1 | 3(y2 − y0)], [1 2 | 3(y2 − y1)].
   // For y = 0, 1, 0: right-hand side 3, 0, −3, solved by D = 3/2, 0, −3/2
   // (2·3/2 + 0 = 3, 3/2 + 0 − 3/2 = 0, 0 − 3 = −3). For x = 0, 1, 2: 3, 6, 3, so D = 1, 1, 1.
-  const m = derive(state({ v: hill, road: 'natural' }));
+  const m = derive(state({ villages: hill, road: 'natural' }));
 
   it('solves the system for both coordinates', () => {
     const solve = m.solve!;
@@ -55,7 +53,7 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
   });
 
   it('builds each piece from the gradients: [Pi, Pi + Di/3, P(i+1) − D(i+1)/3, P(i+1)]', () => {
-    const pieces = m.shown!.pieces;
+    const pieces = m.visible!.pieces;
     expect(pieces).toHaveLength(2);
     [
       [0, 0],
@@ -91,19 +89,19 @@ describe('the natural road through (0, 0), (1, 1), (2, 0)', () => {
   it('while the solve is stepped through, shows only the pieces whose gradients are known', () => {
     // 3 rows: step 0 the villages, 1 the system, 2–4 sweep, 5 fixes D2, 6 fixes D1:
     // segment 1 (P1 to P2) can be drawn.
-    const fixing = derive(state({ v: hill, road: 'natural', step: 5 }));
+    const fixing = derive(state({ villages: hill, road: 'natural', step: 5 }));
     expect(fixing.solving).toBe(true);
     expect(fixing.progress).toEqual({ swept: 3, fixed: 1, row: 2 });
-    expect(fixing.shown!.pieces).toEqual([]);
-    const half = derive(state({ v: hill, road: 'natural', step: 6 }));
-    expect(half.shown!.offset).toBe(1);
+    expect(fixing.visible!.pieces).toEqual([]);
+    const half = derive(state({ villages: hill, road: 'natural', step: 6 }));
+    expect(half.visible!.offset).toBe(1);
     [
       [1, 1],
       [4 / 3, 1],
       [5 / 3, 1 / 2],
       [2, 0],
-    ].forEach((point, k) => close(half.shown!.pieces[0][k], point));
-    expect(half.shown!.marker).toBeNull();
+    ].forEach((point, k) => close(half.visible!.pieces[0][k], point));
+    expect(half.visible!.marker).toBeNull();
     // The arrows of the gradients found so far end at Pi + Di/3.
     close(half.gradientTips![2], [2 + 1 / 3, -1 / 2]);
   });
@@ -119,16 +117,16 @@ describe('the other roads', () => {
   it('Roman road: straight pieces, with the marker halfway along at p̄ = ½', () => {
     const m = derive(
       state({
-        v: [
+        villages: [
           [0, 0],
           [4, 2],
           [4, 6],
         ],
         road: 'roman',
-        s: 1.5,
+        pBar: 1.5,
       }),
     );
-    expect(m.shown!.pieces).toEqual([
+    expect(m.visible!.pieces).toEqual([
       [
         [0, 0],
         [4, 2],
@@ -138,18 +136,20 @@ describe('the other roads', () => {
         [4, 6],
       ],
     ]);
-    expect(m.shown!.marker).toEqual({ piece: 1, p: 0.5, point: [4, 4] });
+    expect(m.visible!.marker).toEqual({ piece: 1, p: 0.5, point: [4, 4] });
     expect(m.along).toEqual({ piece: 1, p: 0.5 });
     expect(m.coefficients(0)).toEqual([
       [0, 0],
       [4, 2],
     ]);
     // Ticks at p̄ = 0, ¼, …, 2: five on the first piece, four more on the second.
-    expect(m.shown!.ticks!.length / 5).toBe(9);
+    expect(m.visible!.ticks!.length / 5).toBe(9);
   });
 
   it('quadratic pieces: B0 = P0 + D0/2, then each Bi is B(i−1) reflected in Pi', () => {
-    const m = derive(state({ v: LECTURE_VILLAGES, road: 'quadratic', q: [30, 0] }));
+    const m = derive(
+      state({ villages: LECTURE_VILLAGES, road: 'quadratic', quadraticGradient: [30, 0] }),
+    );
     expect(m.quadraticControl).toEqual([15, 0]);
     // B1 = 2·(20, 16) − (15, 0) = (25, 32); B2 = 2·(42, 10) − (25, 32) = (59, −12).
     expect(m.quadraticPolygon!.controls.slice(0, 2)).toEqual([
@@ -166,7 +166,7 @@ describe('the other roads', () => {
   });
 
   it('Hermite: the gradient at Pi is half the chord between its neighbours, zero at the ends', () => {
-    const m = derive(state({ v: LECTURE_VILLAGES, road: 'hermite' }));
+    const m = derive(state({ villages: LECTURE_VILLAGES, road: 'hermite' }));
     // D1 = ((42, 10) − (0, 0))/2 = (21, 5).
     expect(m.gradients!.slice(0, 2)).toEqual([
       [0, 0],
@@ -175,23 +175,23 @@ describe('the other roads', () => {
   });
 
   it('ring road: one more segment, and the first right-hand side 3(x1 − xm)', () => {
-    const m = derive(state({ v: LECTURE_VILLAGES, road: 'ring' }));
-    expect(m.shown!.pieces).toHaveLength(6);
+    const m = derive(state({ villages: LECTURE_VILLAGES, road: 'ring' }));
+    expect(m.visible!.pieces).toHaveLength(6);
     expect(m.ringRhs).toBe(3 * (20 - 92));
-    expect(m.shown!.pieces[5][3]).toEqual([0, 0]);
+    expect(m.visible!.pieces[5][3]).toEqual([0, 0]);
   });
 
   it('a ring through two villages is not drawn, and the map says why first', () => {
     const m = derive(
       state({
-        v: [
+        villages: [
           [0, 0],
           [60, 25],
         ],
         road: 'ring',
       }),
     );
-    expect(m.shown!.missing).toMatch(/at least three villages/);
+    expect(m.visible!.missing).toMatch(/at least three villages/);
     expect(m.count).toBeNull();
     expect(m.mapNotes[0]).toBe(
       'A ring road needs at least three villages: with two it would only go there and back.',
@@ -202,7 +202,9 @@ describe('the other roads', () => {
   });
 
   it('clamped: the end handles are the tips of D0/3 and Dm/3', () => {
-    const m = derive(state({ v: hill, road: 'clamped', a: [3, 6], b: [-3, 3] }));
+    const m = derive(
+      state({ villages: hill, road: 'clamped', startGradient: [3, 6], endGradient: [-3, 3] }),
+    );
     expect(m.usesEndGradients).toBe(true);
     expect(m.endHandles).toEqual([
       [1, 2],
@@ -214,8 +216,8 @@ describe('the other roads', () => {
 
 describe('the overlay', () => {
   it('builds each chosen curve once, in order, and says which it cannot draw', () => {
-    const m = derive(state({ v: hill, overlay: true, compare: [10, 0, 6] }));
-    expect(m.shown).toBeNull();
+    const m = derive(state({ villages: hill, overlay: true, compare: [10, 0, 6] }));
+    expect(m.visible).toBeNull();
     expect(m.overlay.map((curve) => curve.index)).toEqual([0, 6, 10]);
     expect(m.overlay.map((curve) => curve.road.kind)).toEqual(['pieces', 'polyline', 'missing']);
     // The Roman road's first piece elevated to a cubic: control points a third of the way along.
@@ -232,7 +234,7 @@ describe('notes about the villages', () => {
   it('names villages on one spot', () => {
     const m = derive(
       state({
-        v: [
+        villages: [
           [0, 0],
           [1, 1],
           [1, 1],
@@ -245,8 +247,8 @@ describe('notes about the villages', () => {
 });
 
 describe('the script (road)', () => {
-  it('every scene steps from the villages alone to the whole road, in at most 20 steps', async () => {
-    checkScript((await import('./lesson')).default as AnyLesson);
+  it('every scene steps from the villages alone to the whole road, in at most 20 steps', () => {
+    checkScript(lesson);
   });
 
   it('the lecture villages: the system, six rows swept, six gradients fixed', () => {
@@ -262,7 +264,7 @@ describe('the script (road)', () => {
   });
 
   it('500 villages sweep and substitute in chunks of 56 rows: 19 steps, not 1000', () => {
-    const valley = state({ v: valleyVillages(500), step: 0 });
+    const valley = state({ villages: valleyVillages(500), step: 0 });
     expect(chunkSize(500)).toBe(56);
     expect(stepCount(valley)).toBe(1 + 9 + 9);
     expect(stage({ ...valley, step: 2 }).solveStep).toBe(56);
@@ -274,13 +276,13 @@ describe('the script (road)', () => {
   it('every method has steps: the others build their pieces from P0 after their construction', () => {
     const roman = state({ road: 'roman', step: 0 });
     expect(stepCount(roman)).toBe(5);
-    expect(derive({ ...roman, step: 2 }).shown!.pieces).toHaveLength(2);
-    expect(derive({ ...roman, step: 2 }).shown!.marker).toBeNull();
-    expect(derive({ ...roman, step: 5 }).shown!.marker).not.toBeNull();
+    expect(derive({ ...roman, step: 2 }).visible!.pieces).toHaveLength(2);
+    expect(derive({ ...roman, step: 2 }).visible!.marker).toBeNull();
+    expect(derive({ ...roman, step: 5 }).visible!.marker).not.toBeNull();
     const quadratic = state({ road: 'quadratic', step: 0 });
     expect(stepCount(quadratic)).toBe(6);
     expect(describeStep(quadratic, 1)).toMatch(/^One chosen gradient D0 at P0/);
-    expect(derive({ ...quadratic, step: 1 }).shown!.pieces).toHaveLength(0);
+    expect(derive({ ...quadratic, step: 1 }).visible!.pieces).toHaveLength(0);
     const ring = state({ road: 'ring', step: 0 });
     expect(stepCount(ring)).toBe(1 + 6);
     const overlay = state({ overlay: true, compare: [0, 3, 6], step: 2 });
@@ -291,7 +293,7 @@ describe('the script (road)', () => {
 
   it('labels the 600th village’s gradient D_{599}, all digits subscripted', () => {
     const v = valleyVillages(600);
-    const m = derive(state({ v, road: 'clamped' }));
+    const m = derive(state({ villages: v, road: 'clamped' }));
     expect(roadHandles(m).find((h) => h.id === 'b')!.label).toBe('D_{599}');
   });
 });

@@ -1,14 +1,14 @@
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { checkbox, pointButtons } from '../../app/panelControls';
-import { extendPolygon } from '../../interact/editPoints';
+import { checkbox } from '../../app/panelControls';
 import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
 import { setText } from '../../app/dom';
 import { methodSection } from './methodPanel';
 import type { RoadModel } from './model';
 import { segmentSection } from './segmentPanel';
 import { solveSection } from './solvePanel';
-import { MAX_VILLAGES, type RoadState, insertVillage, keepStepEnd, segmentCount } from './state';
+import { villagePoints } from './points';
+import { type RoadState, segmentCount } from './state';
 import './road.css';
 
 export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<RoadState, RoadModel> {
@@ -23,7 +23,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
     'aria-label': 'p̄ along the road',
   });
   slider.addEventListener('input', () =>
-    api.set({ ...api.get(), s: Number(slider.value) }, { coalesce: 'road-s', windowMs: 1500 }),
+    api.set({ ...api.get(), pBar: Number(slider.value) }, { coalesce: 'road-s', windowMs: 1500 }),
   );
   const sliderValue = h('span', {});
 
@@ -33,15 +33,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
     get: (s) => s.comb,
     set: (s, on) => ({ ...s, comb: on }),
   });
-  const pointCount = pointButtons(api, {
-    addLabel: 'Add a village',
-    removeLabel: 'Remove the last village',
-    count: (s) => s.v.length,
-    min: 2,
-    max: MAX_VILLAGES,
-    add: (s) => keepStepEnd(s, { ...s, v: insertVillage(s.v, extendPolygon(s.v)) }),
-    remove: (s) => keepStepEnd(s, { ...s, v: s.v.slice(0, -1) }),
-  });
+  const pointCount = villagePoints.buttons(api);
   const notes = h('div', {});
   let shownNotes: readonly string[] = [];
   let hover: string | null = null;
@@ -88,9 +80,9 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       curvature.update(roadCurve(m, state));
       const max = String(segmentCount(state));
       if (slider.max !== max) slider.max = max;
-      if (Number(slider.value) !== state.s) slider.value = String(state.s);
+      if (Number(slider.value) !== state.pBar) slider.value = String(state.pBar);
       const { piece, p } = m.along;
-      setText(sliderValue, `p̄ = ${fmt(state.s, 2)}: segment ${piece}, p = ${fmt(p, 2)}`);
+      setText(sliderValue, `p̄ = ${fmt(state.pBar, 2)}: segment ${piece}, p = ${fmt(p, 2)}`);
       segment.update(m, hover);
       // The list of notes changes only when the villages' oddities do.
       if (m.notes.join('\n') !== shownNotes.join('\n')) {
@@ -110,9 +102,9 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
 
 /** The road as the curvature lesson takes it: natural, or Hermite with the method's gradients. */
 function roadCurve(m: RoadModel, state: RoadState): CurvatureOf | null {
-  const t = state.s / Math.max(1, state.v.length - 1);
-  if (state.road === 'natural') return { src: 'natural', p: state.v, t };
+  const t = state.pBar / Math.max(1, state.villages.length - 1);
+  if (state.road === 'natural') return { src: 'natural', p: state.villages, t };
   if ((state.road === 'hermite' || state.road === 'clamped') && m.gradients)
-    return { src: 'hermite', p: state.v, d: m.gradients, t };
+    return { src: 'hermite', p: state.villages, d: m.gradients, t };
   return null;
 }

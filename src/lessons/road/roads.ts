@@ -11,7 +11,7 @@ import {
   quadraticSplineC1,
   uniformBSplineSegments,
 } from '../../math';
-import type { RoadMethod, RoadState } from './state';
+import type { RoadInputs, RoadMethod } from './state';
 
 /** Every answer the lesson can draw: the six methods, then the comparisons of the overlay. */
 export type CurveId =
@@ -68,34 +68,30 @@ export function asCubics(pieces: readonly Point[][]): Point[][] {
   });
 }
 
-/** The start and end gradients chosen with the handles. */
-export const startGradient = (state: RoadState): Point => state.a;
-export const endGradient = (state: RoadState): Point => state.b;
-
 /** The first control point of the quadratic pieces: P0 + D0/2 (a quadratic's P′(0) = 2(B0 − P0)). */
-export const quadraticControl = (state: RoadState): Point => [
-  state.v[0][0] + state.q[0] / 2,
-  state.v[0][1] + state.q[1] / 2,
+export const quadraticControl = (state: RoadInputs): Point => [
+  state.villages[0][0] + state.quadraticGradient[0] / 2,
+  state.villages[0][1] + state.quadraticGradient[1] / 2,
 ];
 
 /** The gradients D0 … Dm a Hermite-type method uses (undefined for the others). */
-export function roadGradients(id: CurveId, state: RoadState): Point[] | undefined {
-  const v = state.v;
+export function roadGradients(id: CurveId, state: RoadInputs): Point[] | undefined {
+  const v = state.villages;
   switch (id) {
     case 'hermite': {
       // Parabola through P(i−1), Pi, P(i+1) at p̄ = i−1, i, i+1: its gradient at Pi
       // is (P(i+1) − P(i−1))/2, which is the uniform Catmull-Rom gradient.
       const tangents = catmullRomTangents(v);
       if (state.ends) {
-        tangents[0] = startGradient(state);
-        tangents[tangents.length - 1] = endGradient(state);
+        tangents[0] = state.startGradient;
+        tangents[tangents.length - 1] = state.endGradient;
       }
       return tangents;
     }
     case 'natural':
       return naturalCubicTangents(v);
     case 'clamped':
-      return clampedCubicTangents(v, startGradient(state), endGradient(state));
+      return clampedCubicTangents(v, state.startGradient, state.endGradient);
     case 'ring':
       return v.length >= 3 ? closedCubicTangents(v) : undefined;
     default:
@@ -109,10 +105,10 @@ export function roadGradients(id: CurveId, state: RoadState): Point[] | undefine
  */
 export function buildRoad(
   id: CurveId,
-  state: RoadState,
+  state: RoadInputs,
   gradients: readonly Point[] | undefined = roadGradients(id, state),
 ): Road {
-  const v = state.v;
+  const v = state.villages;
   const n = v.length;
   switch (id) {
     case 'roman': {

@@ -1,4 +1,5 @@
-import type { Point, Preset } from '../../app/lesson';
+import type { Point } from '../../app/lesson';
+import type { SceneSpec } from '../../kit/lesson';
 import { defaultsOf } from '../../app/urlState';
 import { seededRandom } from '../../math/seededRandom';
 import { CURVES } from './roads';
@@ -21,43 +22,48 @@ export function valleyVillages(count: number, seed = 6): Point[] {
   return villages;
 }
 
-/** A preset sets up villages (and what to look at); the script opens it at step 0. */
-const preset = (
+/** A scene sets up villages (and what to look at); the clicker opens it at step 0. */
+const scene = (
   id: string,
   label: string,
   change: (s: RoadState) => Partial<RoadState>,
-): Preset<RoadState> => ({
+): SceneSpec<RoadState> => ({
   id,
   label,
-  apply: (current) => {
+  setup: (current) => {
     const next = { ...current, ...change(current) };
-    return { ...next, s: Math.min(next.s, next.v.length - 1), step: 0 };
+    return { ...next, pBar: Math.min(next.pBar, next.villages.length - 1), step: 0 };
   },
 });
 
 /**
- * Villages shown with the natural spline, whatever was on before: a preset
+ * Villages shown with the natural spline, whatever was on before: a scene
  * sets up its whole figure (a ring road through a valley's villages, left
- * over from the lake preset, would only look broken).
+ * over from the lake scene, would only look broken).
  */
-const villages = (v: Point[]) => () => ({ v, road: 'natural' as const, overlay: false });
+const naturalThrough = (villages: Point[]) => () => ({
+  villages,
+  road: 'natural' as const,
+  overlay: false,
+});
 
-export const presets: Preset<RoadState>[] = [
+/** The lesson's scenes, in teaching order. */
+export const scenes: SceneSpec<RoadState>[] = [
   // Back to the lesson as it opens: the lecture's villages, the natural spline, nothing else.
-  preset('lecture', 'Lecture villages', () => defaultsOf(schema)),
-  preset('compare', 'Every answer at once', (s) => ({
-    v: s.v.length > 12 ? LECTURE_VILLAGES : s.v,
+  scene('lecture', 'Lecture villages', () => defaultsOf(schema)),
+  scene('compare', 'Every answer at once', (s) => ({
+    villages: s.villages.length > 12 ? LECTURE_VILLAGES : s.villages,
     overlay: true,
     compare: CURVES.map((_, i) => i),
   })),
-  preset('swing', 'Quadratics swing', () => ({
-    v: LECTURE_VILLAGES,
+  scene('swing', 'Quadratics swing', () => ({
+    villages: LECTURE_VILLAGES,
     road: 'quadratic',
     overlay: false,
-    q: [10, 40],
+    quadraticGradient: [10, 40],
   })),
-  preset('ring', 'Villages round a lake', () => ({
-    v: [
+  scene('ring', 'Villages round a lake', () => ({
+    villages: [
       [0, 20],
       [18, 2],
       [46, 0],
@@ -69,18 +75,18 @@ export const presets: Preset<RoadState>[] = [
     road: 'ring',
     overlay: false,
   })),
-  preset(
+  scene(
     'two',
     'Two villages',
-    villages([
+    naturalThrough([
       [0, 0],
       [60, 25],
     ]),
   ),
-  preset(
+  scene(
     'line',
     'Villages in a line',
-    villages([
+    naturalThrough([
       [0, 0],
       [20, 8],
       [30, 12],
@@ -88,10 +94,10 @@ export const presets: Preset<RoadState>[] = [
       [100, 40],
     ]),
   ),
-  preset(
+  scene(
     'same',
     'Two villages on one spot',
-    villages([
+    naturalThrough([
       [0, 0],
       [20, 16],
       [42, 10],
@@ -100,6 +106,6 @@ export const presets: Preset<RoadState>[] = [
       [92, 44],
     ]),
   ),
-  preset('valley50', 'Valley: 50 villages', villages(valleyVillages(50))),
-  preset('valley500', 'Valley: 500 villages', villages(valleyVillages(500))),
+  scene('valley50', 'Valley: 50 villages', naturalThrough(valleyVillages(50))),
+  scene('valley500', 'Valley: 500 villages', naturalThrough(valleyVillages(500))),
 ];

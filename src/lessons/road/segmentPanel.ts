@@ -7,7 +7,7 @@ import { LiveFormula } from '../../render/formula';
 import type { RoadModel } from './model';
 
 const LETTERS = ['a', 'b', 'c', 'd'];
-const power = (k: number) => (k === 0 ? '' : k === 1 ? '\\,p' : `\\,p^{${k}}`);
+const power = (degree: number) => (degree === 0 ? '' : degree === 1 ? '\\,p' : `\\,p^{${degree}}`);
 
 /** The coefficients of one segment: the one under the pointer, else the one the marker is on. */
 export function segmentSection() {
@@ -25,7 +25,7 @@ export function segmentSection() {
   return {
     element,
     update(m: RoadModel, hover: string | null) {
-      const shown = m.shown;
+      const shown = m.visible;
       const pieces = shown?.pieces ?? [];
       setHidden(formula.element, !shown || !pieces.length);
       if (!shown || !pieces.length) {
@@ -39,25 +39,30 @@ export function segmentSection() {
         return;
       }
       // While the solve is under way only the last pieces exist, newest first.
-      const hovered = hoveredSegment(hover);
+      const hovered = hoveredSegment(m, hover);
       const i =
         Number.isInteger(hovered) && hovered >= 0 && hovered < pieces.length
           ? hovered
           : (shown.marker?.piece ?? 0);
       const index = shown.offset + i;
       const coefficients = m.coefficients(i);
-      setText(title, `Segment ${index}: from P${index} to P${(index + 1) % m.state.v.length}`);
+      setText(
+        title,
+        `Segment ${index}: from P${index} to P${(index + 1) % m.state.villages.length}`,
+      );
       setText(
         text,
         'Hover over the road, or move p̄, to choose a segment. Its coefficients, with the local parameter p from 0 to 1:',
       );
-      const names = coefficients.map((_, k) => `${LETTERS[k]}_{${index}}${power(k)}`).join(' + ');
+      const names = coefficients
+        .map((_, degree) => `${LETTERS[degree]}_{${index}}${power(degree)}`)
+        .join(' + ');
       // x(p) = a + b p + c p² + d p³ with the signs in the shape, so a number is never "+ −3".
       const poly = (d: number) =>
         joined(
-          coefficients.map((c, k) => {
-            const sign = k === 0 ? '' : c[d] < 0 ? ' - ' : ' + ';
-            return tex`${sign}${live(texNumber(k === 0 ? c[d] : Math.abs(c[d]), 3))}${power(k)}`;
+          coefficients.map((c, degree) => {
+            const sign = degree === 0 ? '' : c[d] < 0 ? ' - ' : ' + ';
+            return tex`${sign}${live(texNumber(degree === 0 ? c[d] : Math.abs(c[d]), 3))}${power(degree)}`;
           }),
           '',
         );

@@ -48,12 +48,12 @@ export function showRoad(
 ): ShownRoad {
   const all = road.kind === 'pieces' ? road.pieces : [];
   const pieces = progress
-    ? builtPieces(state.v, gradients!, progress)
+    ? builtPieces(state.villages, gradients!, progress)
     : limit < all.length
       ? all.slice(0, limit)
       : all;
   const built = !progress && pieces.length > 0 && pieces.length === all.length;
-  const marker = built ? localParameter(state.s, pieces.length) : null;
+  const marker = built ? localParameter(state.pBar, pieces.length) : null;
   return {
     pieces,
     cubics: asCubics(pieces),

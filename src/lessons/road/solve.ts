@@ -7,8 +7,7 @@ import {
   naturalCubicSystem,
   traceTridiagonal,
 } from '../../math';
-import { endGradient, startGradient } from './roads';
-import { type RoadState, hasSolve } from './state';
+import { type RoadInputs, hasSolve } from './state';
 
 /**
  * The spline's system for both coordinates: one matrix (it depends only on the
@@ -26,15 +25,15 @@ export interface RoadSolve {
   n: number;
 }
 
-export function buildSolve(state: RoadState): RoadSolve | null {
+export function buildSolve(state: RoadInputs): RoadSolve | null {
   if (!hasSolve(state)) return null;
-  const xs = state.v.map((p) => p[0]);
-  const ys = state.v.map((p) => p[1]);
+  const xs = state.villages.map((p) => p[0]);
+  const ys = state.villages.map((p) => p[1]);
   const systems =
     state.road === 'clamped'
       ? [
-          clampedCubicSystem(xs, startGradient(state)[0], endGradient(state)[0]),
-          clampedCubicSystem(ys, startGradient(state)[1], endGradient(state)[1]),
+          clampedCubicSystem(xs, state.startGradient[0], state.endGradient[0]),
+          clampedCubicSystem(ys, state.startGradient[1], state.endGradient[1]),
         ]
       : [naturalCubicSystem(xs), naturalCubicSystem(ys)];
   const trace = systems.map((s) => traceTridiagonal(s.sub, s.diag, s.sup, s.rhs)) as [
@@ -49,20 +48,19 @@ export function buildSolve(state: RoadState): RoadSolve | null {
   };
 }
 
-/** Where step k of the solve is: rows swept so far, and gradients fixed by back substitution. */
+/** Where the solve stands: rows swept so far, and gradients fixed by back substitution. */
 export interface SolveProgress {
   /** Rows 0 … swept−1 have become [1 γi | Γi]. */
   swept: number;
   /** D(n−1), D(n−2), …, D(n−fixed) are known. */
   fixed: number;
-  /** The row this step worked on, or null at step 0. */
+  /** The row the solve worked on last, or null before it starts. */
   row: number | null;
 }
 
-export function solveProgress(n: number, step: number): SolveProgress {
-  const swept = Math.min(step, n);
-  const fixed = Math.max(0, Math.min(step - n, n));
-  const row = step === 0 ? null : step <= n ? step - 1 : n - fixed;
+/** The solve of n rows with `swept` rows swept and then `fixed` gradients fixed. */
+export function solveProgress(n: number, swept: number, fixed: number): SolveProgress {
+  const row = fixed > 0 ? n - fixed : swept > 0 ? swept - 1 : null;
   return { swept, fixed, row };
 }
 

@@ -40,19 +40,19 @@ export function stepText(
   return `Back substitution: ${rule}. ${drawn}${row === 0 ? ' Every gradient is known: the whole road is built.' : ''}`;
 }
 
-/** The formula of this step for coordinate k (0: x, 1: y), with its numbers live. */
+/** The formula of this step for a coordinate (0: x, 1: y), with its numbers live. */
 export function stepFormula(
   solve: RoadSolve,
-  k: number,
+  coordinate: number,
   step: number,
   row: number | null,
   /** On one line, for the presenter's caption (the panel stacks it in lines). */
   oneLine = false,
 ): FormulaParts {
   const n = solve.n;
-  const axis = k === 0 ? 'x' : 'y';
+  const axis = coordinate === 0 ? 'x' : 'y';
   const { sub, diag, sup } = solve.matrix;
-  const trace = solve.trace[k];
+  const trace = solve.trace[coordinate];
   if (row === null) {
     // Step 0: one inner row of the system as it stands.
     const i = Math.min(1, n - 1);
@@ -61,7 +61,7 @@ export function stepFormula(
       tex`${number(diag[i])}\,D_{${i}}`,
       ...(i < n - 1 ? [tex`${number(sup[i])}\,D_{${i + 1}}`] : []),
     ];
-    return tex`\text{row } ${i},\ ${axis}:\quad ${joined(left, ' + ')} = ${number(solve.rhs[k][i])}`;
+    return tex`\text{row } ${i},\ ${axis}:\quad ${joined(left, ' + ')} = ${number(solve.rhs[coordinate][i])}`;
   }
   const i = row;
   if (step <= n) {
@@ -74,13 +74,13 @@ export function stepFormula(
     // Lines aligned at "=" in the panel; one line, side by side, in the caption.
     const eq = oneLine ? '=' : '&=';
     const gamma =
-      k === 0 && i < n - 1
+      coordinate === 0 && i < n - 1
         ? tex`\gamma_{${i}} ${eq} \frac{${number(sup[i])}}{${pivotTex}} = ${number(trace.gamma[i])}`
         : null;
     const numerator =
       i === 0
-        ? number(solve.rhs[k][0])
-        : tex`${number(solve.rhs[k][i])} - ${number(sub[i])}\cdot${term(trace.Gamma[i - 1])}`;
+        ? number(solve.rhs[coordinate][0])
+        : tex`${number(solve.rhs[coordinate][i])} - ${number(sub[i])}\cdot${term(trace.Gamma[i - 1])}`;
     const Gamma = tex`\Gamma^{${axis}}_{${i}} ${eq} \frac{${numerator}}{${number(pivot)}} = ${number(trace.Gamma[i])}`;
     const lines = gamma ? [gamma, Gamma] : [Gamma];
     return oneLine
