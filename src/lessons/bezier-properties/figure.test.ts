@@ -5,14 +5,15 @@ import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
 import { Viewport } from '../../render/viewport';
 import { propertiesFigure } from './figure';
-import { derive } from './model';
-import { PRESETS } from './presets';
+import lesson from './lesson';
+import type { PropertiesModel } from './model';
+import { SCENES } from './scenes';
 import { normalize, schema } from './state';
 
-/** Draws a preset's figure into a recording context, as the shell would (fitted to its bounds). */
+/** Draws a scene's figure into a recording context, as the shell would (fitted to its bounds). */
 function draw(id: string, thumbnail = false): SvgContext {
-  const preset = PRESETS.find((p) => p.id === id)!;
-  const model = derive(normalize(preset.apply(defaultsOf(schema))).state);
+  const scene = SCENES.find((s) => s.id === id)!;
+  const model = lesson.derive(normalize(scene.setup(defaultsOf(schema))).state) as PropertiesModel;
   const view = new Viewport(800, 500);
   view.resize(800, 500);
   view.fit(propertiesFigure.bounds(model), 18, true);
@@ -25,8 +26,8 @@ function draw(id: string, thumbnail = false): SvgContext {
 }
 
 describe('the experiment figure', () => {
-  it('draws every preset, and no label in a thumbnail', () => {
-    for (const { id } of PRESETS) {
+  it('draws every scene, and no label in a thumbnail', () => {
+    for (const { id } of SCENES) {
       expect(draw(id).elements.length, id).toBeGreaterThan(3);
       expect(draw(id, true).texts, id).toEqual([]);
     }

@@ -1,19 +1,20 @@
-import { defineLesson } from '../../app/lesson';
+import { defineLesson } from '../../kit/lesson';
 import { propertiesFigure } from './figure';
-import { type PropertiesModel, derive } from './model';
+import { derive } from './model';
 import { propertiesPanel } from './panel';
-import { PRESETS } from './presets';
-import { describeStep, stepFormula } from './script';
-import { type PropertiesState, normalize, schema, stepCount } from './state';
+import { SCENES, sceneOf } from './scenes';
+import { normalize, schema } from './state';
 
-export default defineLesson<PropertiesState, PropertiesModel>({
+export default defineLesson({
   slug: 'bezier-properties',
   schema,
+  step: 'step',
+  // Each scene walks its experiment's steps; the state's experiment says which scene it is in.
+  sceneOf,
   derive,
   figures: [propertiesFigure],
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
-  steps: { key: 'k', count: stepCount, describe: describeStep, formula: stepFormula },
-  scenes: PRESETS,
+  scenes: SCENES,
   normalize,
   panel: propertiesPanel,
 });

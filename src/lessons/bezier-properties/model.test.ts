@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import type { Point } from '../../math';
-import { type ModelOf, derive } from './model';
+import lesson from './lesson';
+import type { ModelOf, PropertiesModel } from './model';
 import { type ExperimentId, LECTURE_CUBIC, type PropertiesState, schema } from './state';
 
 // Every expected value below is worked out by hand from the lecture's formulas.
@@ -12,8 +13,8 @@ const state = (changes: Partial<PropertiesState>): PropertiesState => ({
 });
 
 function modelOf<X extends ExperimentId>(x: X, changes: Partial<PropertiesState>): ModelOf<X> {
-  const m = derive(state({ ...changes, x }));
-  if (m.x !== x) throw new Error(`derive gave the ${m.x} model for ${x}`);
+  const m = lesson.derive(state({ ...changes, experiment: x })) as PropertiesModel;
+  if (m.kind !== x) throw new Error(`derive gave the ${m.kind} model for ${x}`);
   return m as ModelOf<X>;
 }
 
@@ -21,7 +22,7 @@ const closeTo = (actual: readonly number[], expected: readonly number[], digits 
   expected.forEach((v, i) => expect(actual[i]).toBeCloseTo(v, digits));
 
 describe('end points and end tangents', () => {
-  const m = modelOf('ends', { p: LECTURE_CUBIC, t: 0.5 });
+  const m = modelOf('ends', { points: LECTURE_CUBIC, t: 0.5 });
   it('has P′(0) = 3(P1 − P0), P′(1) = 3(P3 − P2) and P′(½) from the hodograph', () => {
     const [start, end, at] = m.tangents;
     expect(start.vector).toEqual([3, 6]);
@@ -41,7 +42,7 @@ describe('end points and end tangents', () => {
 describe('convex hull', () => {
   it('finds five corners for the preset and keeps all 401 samples inside', () => {
     const m = modelOf('hull', {
-      p: [
+      points: [
         [0, 0],
         [1, 3],
         [3, 3.5],
@@ -58,7 +59,7 @@ describe('convex hull', () => {
   });
   it('is a segment for collinear points', () => {
     const m = modelOf('hull', {
-      p: [
+      points: [
         [0, 0],
         [1, 1],
         [2, 2],
@@ -77,7 +78,7 @@ describe('no local control', () => {
   it('moves the curve by at most W(11, 5, 5/11) times the shift of P5', () => {
     const before: Point[] = Array.from({ length: 12 }, (_, i) => [i, 0]);
     const after = before.map((q, i) => (i === 5 ? [5, 2] : q));
-    const m = modelOf('local', { p: after, q: before });
+    const m = modelOf('local', { points: after, before });
     // W(11, 5, 5/11) = C(11, 5)·5⁵·6⁶ / 11¹¹ = 462·3125·46656 / 11¹¹ ≈ 0.2361.
     const peak = (462 * 3125 * 46656) / 11 ** 11;
     expect(m.moved).toEqual([5]);
@@ -93,15 +94,15 @@ describe('no local control', () => {
 describe('repeated and closing points', () => {
   it('sums the weights of the copies: P1 three times in a cubic is degree 5', () => {
     const m = modelOf('repeat', {
-      p: [
+      points: [
         [0, 0],
         [1, 3],
         [4, 3],
         [5, 0],
       ],
-      r: 1,
+      repeated: 1,
       // Step 3: the curve (step 1), then two extra copies.
-      k: 3,
+      step: 3,
       t: 0.5,
     });
     expect(m.controls).toHaveLength(6);
@@ -111,7 +112,7 @@ describe('repeated and closing points', () => {
   });
   it('measures the corner where a closed curve meets itself', () => {
     const square = modelOf('closed', {
-      p: [
+      points: [
         [0, 0],
         [1, 0],
         [1, 1],
@@ -123,7 +124,7 @@ describe('repeated and closing points', () => {
     expect(square.corner).toBeCloseTo(90, 12);
     expect(square.smooth).toBe(false);
     const smooth = modelOf('closed', {
-      p: [
+      points: [
         [0, 0],
         [1, 0],
         [1, 1],
@@ -136,7 +137,7 @@ describe('repeated and closing points', () => {
 });
 
 describe('degree elevation', () => {
-  const m = modelOf('elevate', { p: LECTURE_CUBIC, k: 2 }); // one elevation;
+  const m = modelOf('elevate', { points: LECTURE_CUBIC, step: 2 }); // one elevation;
   it('gives Qi = i/4·P(i−1) + (1 − i/4)·Pi on the same curve', () => {
     expect(m.controls).toEqual([
       [0, 0],
@@ -157,7 +158,7 @@ describe('degree elevation', () => {
 
 describe('subdivision', () => {
   it('splits at ½ into the de Casteljau polygons, twice', () => {
-    const m = modelOf('split', { p: LECTURE_CUBIC, t: 0.5, k: 3 }); // two splits;
+    const m = modelOf('split', { points: LECTURE_CUBIC, t: 0.5, step: 3 }); // two splits;
     expect(m.levels.map((level) => level.length)).toEqual([1, 2, 4]);
     expect(m.first?.[0]).toEqual([
       [0, 0],
@@ -169,13 +170,13 @@ describe('subdivision', () => {
     expect(m.atEnd).toBe(false);
   });
   it('says when t = 0 splits off a single point', () => {
-    expect(modelOf('split', { t: 0, k: 2 }).atEnd).toBe(true);
+    expect(modelOf('split', { t: 0, step: 2 }).atEnd).toBe(true);
   });
 });
 
 describe('affine and perspective maps', () => {
   it('shears about (2, 1) and shifts 6 right: images agree', () => {
-    const m = modelOf('affine', { p: LECTURE_CUBIC, m: 'shear' });
+    const m = modelOf('affine', { points: LECTURE_CUBIC, map: 'shear' });
     if (!m.images.ok) throw new Error(m.images.why);
     // (x, y) ↦ (x + 0.8(y − 1) + 6, y): P0 = (0, 0) ↦ (5.2, 0), P1 = (1, 2) ↦ (7.8, 2).
     closeTo(m.images.mappedControls[0], [5.2, 0]);
@@ -185,7 +186,7 @@ describe('affine and perspective maps', () => {
     expect(m.images.rationalDistance).toBeNull();
   });
   it('divides by w = 1 + 0.22(x − 2) + 0.12(y − 1) in perspective, and weights repair it', () => {
-    const m = modelOf('affine', { p: LECTURE_CUBIC, m: 'perspective' });
+    const m = modelOf('affine', { points: LECTURE_CUBIC, map: 'perspective' });
     if (!m.images.ok) throw new Error(m.images.why);
     closeTo(m.images.weights, [0.44, 0.9, 1.34, 1.32]);
     closeTo(m.images.weightRange, [0.44, 1.34]);
@@ -195,8 +196,8 @@ describe('affine and perspective maps', () => {
   it('draws no image when a point is beyond the vanishing line', () => {
     // w(−5, 0) = 1 + 0.22·(−7) + 0.12·(−1) = −0.66.
     const m = modelOf('affine', {
-      p: [[-5, 0], ...LECTURE_CUBIC.slice(1)],
-      m: 'perspective',
+      points: [[-5, 0], ...LECTURE_CUBIC.slice(1)],
+      map: 'perspective',
     });
     expect(m.images.ok).toBe(false);
     expect(m.extra).toEqual([]);
@@ -206,7 +207,7 @@ describe('affine and perspective maps', () => {
 describe('inflection and self-intersection', () => {
   it('finds the inflection of a cubic symmetric about (2, 1) at t = ½', () => {
     const m = modelOf('cubic', {
-      p: [
+      points: [
         [0, 0],
         [1.5, 3],
         [2.5, -1],
@@ -224,7 +225,7 @@ describe('inflection and self-intersection', () => {
   it('finds the loop where x(t) = 2: t = ½ ± √33/22, at (2, 18/11)', () => {
     // x(t) − 2 = 22t³ − 33t² + 15t − 2 = (2t − 1)(11t² − 11t + 2); y = 9t(1 − t) = 18/11 there.
     const m = modelOf('cubic', {
-      p: [
+      points: [
         [0, 0],
         [5, 3],
         [-1, 3],
@@ -238,9 +239,9 @@ describe('inflection and self-intersection', () => {
   });
   it('gives κ(½) = −16/27 for the lecture cubic, and nothing for a straight one', () => {
     // P′(½) = (4.5, 0), P″(½) = (0, −12): κ = 4.5·(−12) / 4.5³.
-    expect(modelOf('cubic', { p: LECTURE_CUBIC, t: 0.5 }).curvature).toBeCloseTo(-16 / 27, 12);
+    expect(modelOf('cubic', { points: LECTURE_CUBIC, t: 0.5 }).curvature).toBeCloseTo(-16 / 27, 12);
     const line = modelOf('cubic', {
-      p: [
+      points: [
         [0, 0],
         [1, 1],
         [2, 2],
@@ -252,7 +253,7 @@ describe('inflection and self-intersection', () => {
 });
 
 describe('the Hermite form of a cubic', () => {
-  const m = modelOf('hermite', { p: LECTURE_CUBIC, t: 0.4 });
+  const m = modelOf('hermite', { points: LECTURE_CUBIC, t: 0.4 });
   it('has the power form of equation 11 and the end data x0, x0′, x1, x1′', () => {
     expect(m.power).toEqual([
       [0, 0],

@@ -61,14 +61,14 @@ export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, Pro
   return {
     element,
     update(m, state) {
-      if (state.x !== shownX) {
-        shownX = state.x;
-        const panel = PANELS[state.x];
+      if (state.experiment !== shownX) {
+        shownX = state.experiment;
+        const panel = PANELS[state.experiment];
         title.textContent = `${panel.number}. ${panel.title}`;
         sentence.textContent = panel.sentence;
       }
-      tools.update(state);
-      const nodes = detailsOf(m.x).update(m);
+      tools.update(m, state);
+      const nodes = detailsOf(m.kind).update(m);
       if (nodes !== shownNodes) {
         shownNodes = nodes;
         details.replaceChildren(...nodes);

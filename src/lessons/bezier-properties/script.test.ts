@@ -3,15 +3,18 @@ import { defaultsOf } from '../../app/urlState';
 import { checkScript, drawState, sceneStates } from '../../kit/scriptChecks';
 import { propertiesFigure } from './figure';
 import lesson from './lesson';
-import { type ModelOf, derive } from './model';
-import { PRESETS } from './presets';
-import { describeStep, stepFormula } from './script';
+import type { ModelOf, PropertiesModel } from './model';
+import { SCENES } from './scenes';
 import { LECTURE_CUBIC, type PropertiesState, schema } from './state';
 
-const scene = (id: string, k?: number): PropertiesState => {
-  const s = PRESETS.find((p) => p.id === id)!.apply(defaultsOf(schema));
-  return k === undefined ? s : { ...s, k };
+const scene = (id: string, step?: number): PropertiesState => {
+  const s = SCENES.find((p) => p.id === id)!.setup(defaultsOf(schema));
+  return step === undefined ? s : { ...s, step };
 };
+/** The model, caption and formula as the shell gets them from the kit. */
+const derive = (s: PropertiesState) => lesson.derive(s) as PropertiesModel;
+const describeStep = (s: PropertiesState, k: number) => lesson.steps!.describe(s, k);
+const stepFormula = (m: PropertiesModel, s: PropertiesState) => lesson.steps!.formula!(m, s);
 
 describe('the script of the Bézier properties', () => {
   it('every experiment steps from little to all, in at most 20 steps, with plain captions', () =>
@@ -65,7 +68,7 @@ describe('the script of the Bézier properties', () => {
     ]);
     const texts = drawState(lesson, s).texts.join(' ');
     expect(texts).not.toMatch(/P\s*0\s*=\s*P\s*5/);
-    expect(propertiesFigure.handles!(m)[0].label).toBe('P_0 = P_{5}');
+    expect(lesson.figures[0].handles!(m)[0].label).toBe('P_0 = P_{5}');
   });
 
   it('traces P(t) once the experiment shows it', () => {
@@ -79,9 +82,9 @@ describe('the script of the Bézier properties', () => {
   it('stacks coincident control points under one name', () => {
     const m = derive({
       ...scene('hull'),
-      p: [LECTURE_CUBIC[0], LECTURE_CUBIC[0], LECTURE_CUBIC[3]],
+      points: [LECTURE_CUBIC[0], LECTURE_CUBIC[0], LECTURE_CUBIC[3]],
     });
-    expect(propertiesFigure.handles!(m).map((h) => [h.label, h.showLabel])).toEqual([
+    expect(lesson.figures[0].handles!(m).map((h) => [h.label, h.showLabel])).toEqual([
       ['P_{0} = P_{1}', true],
       ['P_{1}', false],
       ['P_{2}', true],

@@ -2,6 +2,8 @@ import { h, setChildren } from '../../app/dom';
 import type { Point } from '../../app/lesson';
 import { radioGroup } from '../../app/panelControls';
 import type { PanelApi } from './experimentPanel';
+import type { PropertiesModel } from './model';
+import { scriptOf } from './scripts';
 import {
   type ExperimentId,
   MAX_COPIES,
@@ -9,9 +11,25 @@ import {
   MAX_SPLITS,
   type MapKind,
   type PropertiesState,
-  amount,
-  stepFor,
 } from './state';
+
+/** The step each experiment repeats, once per elevation, split or copy. */
+const REPEATED = { elevate: 'elevation', split: 'split', repeat: 'copy' } as const;
+
+/** Elevations, splits or copies the steps so far show (none in other experiments). */
+function done(m: PropertiesModel): number {
+  if (m.kind === 'elevate') return m.shown.count('elevation');
+  if (m.kind === 'split') return m.shown.count('split');
+  if (m.kind === 'repeat') return m.shown.count('copy');
+  return 0;
+}
+
+/** The step that shows `count` elevations, splits or copies: the curve alone for none. */
+function stepShowing(state: PropertiesState, count: number): number {
+  const script = scriptOf(state);
+  const name = REPEATED[state.experiment as keyof typeof REPEATED];
+  return count === 0 ? script.stepOf(state, 'curve') : script.stepOf(state, name, count);
+}
 
 const MAPS: { value: MapKind; label: string }[] = [
   { value: 'rotate', label: 'Rotation' },
@@ -34,27 +52,42 @@ export function experimentTools(api: PanelApi) {
     api.set({ ...s, ...f(s) });
   };
   // Each press is one step of the experiment: one elevation, split or copy more or less.
-  const more = (most: number) => (s: PropertiesState) => ({
-    k: stepFor(Math.min(most, amount(s) + 1)),
-  });
-  const raise = button('Raise the degree', () => change(more(MAX_ELEVATIONS)));
-  const original = button('Back to the original degree', () => change(() => ({ k: stepFor(0) })));
-  const splitAgain = button('Split every piece', () => change(more(MAX_SPLITS)));
-  const unsplit = button('Undo the splits', () => change(() => ({ k: stepFor(0) })));
-  const addCopy = button('Add a copy', () => change(more(MAX_COPIES)));
-  const removeCopy = button('Remove a copy', () =>
-    change((s) => ({ k: stepFor(Math.max(0, amount(s) - 1)) })),
+  const showing = (count: (now: number) => number) => () =>
+    change((s) => ({ step: stepShowing(s, count(done(api.model()))) }));
+  const raise = button(
+    'Raise the degree',
+    showing((now) => Math.min(MAX_ELEVATIONS, now + 1)),
+  );
+  const original = button(
+    'Back to the original degree',
+    showing(() => 0),
+  );
+  const splitAgain = button(
+    'Split every piece',
+    showing((now) => Math.min(MAX_SPLITS, now + 1)),
+  );
+  const unsplit = button(
+    'Undo the splits',
+    showing(() => 0),
+  );
+  const addCopy = button(
+    'Add a copy',
+    showing((now) => Math.min(MAX_COPIES, now + 1)),
+  );
+  const removeCopy = button(
+    'Remove a copy',
+    showing((now) => Math.max(0, now - 1)),
   );
   const repeated = h('select', { id: 'repeated-point', 'aria-label': 'Repeated point' });
-  repeated.addEventListener('change', () => change(() => ({ r: Number(repeated.value) })));
+  repeated.addEventListener('change', () => change(() => ({ repeated: Number(repeated.value) })));
   const remember = button('Make this the "before" curve', () =>
-    change((s) => ({ q: s.p.map((point): Point => [...point]) })),
+    change((s) => ({ before: s.points.map((point): Point => [...point]) })),
   );
   const mapChoice = radioGroup(api, {
     name: 'map',
     choices: MAPS,
-    get: (s) => s.m,
-    set: (s, m) => ({ ...s, m }),
+    get: (s) => s.map,
+    set: (s, map) => ({ ...s, map }),
   });
 
   const groups: Partial<Record<ExperimentId, HTMLElement>> = {
@@ -80,28 +113,28 @@ export function experimentTools(api: PanelApi) {
 
   return {
     elements: Object.values(groups),
-    update(state: PropertiesState) {
-      if (state.x !== shownX) {
-        shownX = state.x;
+    update(m: PropertiesModel, state: PropertiesState) {
+      if (state.experiment !== shownX) {
+        shownX = state.experiment;
         for (const [id, group] of Object.entries(groups))
-          group.style.display = id === state.x ? '' : 'none';
+          group.style.display = id === state.experiment ? '' : 'none';
       }
-      const done = amount(state);
-      raise.disabled = done >= MAX_ELEVATIONS;
-      original.disabled = done === 0;
-      splitAgain.disabled = done >= MAX_SPLITS;
-      unsplit.disabled = done === 0;
-      addCopy.disabled = done >= MAX_COPIES;
-      removeCopy.disabled = done === 0;
-      addCopy.textContent = `Add a copy of P${state.r}`;
-      removeCopy.textContent = `Remove a copy of P${state.r}`;
-      if (repeated.options.length !== state.p.length) {
+      const count = done(m);
+      raise.disabled = count >= MAX_ELEVATIONS;
+      original.disabled = count === 0;
+      splitAgain.disabled = count >= MAX_SPLITS;
+      unsplit.disabled = count === 0;
+      addCopy.disabled = count >= MAX_COPIES;
+      removeCopy.disabled = count === 0;
+      addCopy.textContent = `Add a copy of P${state.repeated}`;
+      removeCopy.textContent = `Remove a copy of P${state.repeated}`;
+      if (repeated.options.length !== state.points.length) {
         setChildren(
           repeated,
-          state.p.map((_, i) => h('option', { value: i }, `P${i}`)),
+          state.points.map((_, i) => h('option', { value: i }, `P${i}`)),
         );
       }
-      repeated.value = String(state.r);
+      repeated.value = String(state.repeated);
       mapChoice.update(state);
     },
   };

@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   bezierPoint,
@@ -37,7 +38,7 @@ export interface MapImages {
 }
 
 export interface AffineModel extends ExperimentBase {
-  x: 'affine';
+  kind: 'affine';
   curve: Float64Array;
   point: Point;
   /** The map about the origin (as printed) and as applied (about the centre, shifted). */
@@ -89,25 +90,27 @@ function mapImages(
   };
 }
 
-export function deriveAffine(state: PropertiesState): AffineModel {
-  const controls = state.p;
-  const matrix = mapMatrix(state.m);
-  const curve = sampleCurve(controls);
-  const point = bezierPoint(controls, state.t);
-  let images: AffineModel['images'];
-  try {
-    images = mapImages(matrix, controls, curve, point, state.t);
-  } catch (error) {
-    images = { ok: false, why: error instanceof Error ? error.message : String(error) };
-  }
-  return {
-    x: 'affine',
-    controls,
-    extra: images.ok ? images.mappedControls : [],
-    curve,
-    point,
-    linear: LINEAR[state.m],
-    matrix,
-    images,
-  };
-}
+export const deriveAffine = memoOn<PropertiesState, 'points' | 't' | 'map', AffineModel>(
+  ['points', 't', 'map'],
+  ({ points: controls, t, map }) => {
+    const matrix = mapMatrix(map);
+    const curve = sampleCurve(controls);
+    const point = bezierPoint(controls, t);
+    let images: AffineModel['images'];
+    try {
+      images = mapImages(matrix, controls, curve, point, t);
+    } catch (error) {
+      images = { ok: false, why: error instanceof Error ? error.message : String(error) };
+    }
+    return {
+      kind: 'affine',
+      controls,
+      extra: images.ok ? images.mappedControls : [],
+      curve,
+      point,
+      linear: LINEAR[map],
+      matrix,
+      images,
+    };
+  },
+);

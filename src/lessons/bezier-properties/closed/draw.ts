@@ -2,16 +2,13 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
-import { STAGES } from '../state';
-
-const AT = STAGES.closed;
 
 export function drawClosed(painter: Painter, m: ModelOf<'closed'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const k = m.state.k;
-  if (k >= AT.polygon) drawPolygon(painter, m.controls);
-  if (k >= AT.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
-  if (k >= AT.tangents) {
+  const { shown } = m;
+  if (shown.has('polygon')) drawPolygon(painter, m.controls);
+  if (shown.has('curve')) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
+  if (shown.has('tangents')) {
     painter.arrow(m.leaving[0], m.leaving[1], {
       color: painter.color(0),
       width: theme.sizes.line * 1.3,
@@ -22,5 +19,5 @@ export function drawClosed(painter: Painter, m: ModelOf<'closed'>, info: DrawInf
     });
   }
   // P0 = PN is named once, by its handle.
-  if (k >= AT.point) drawMarked(painter, m.point, 'P(t)', info, theme.accent);
+  if (shown.has('point')) drawMarked(painter, m.point, 'P(t)', info, theme.accent);
 }

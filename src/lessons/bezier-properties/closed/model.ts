@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   bezierDerivative,
@@ -21,7 +22,7 @@ export const ARROW_SCALE = 0.35;
 export const ARROW_REACH = 0.3;
 
 export interface ClosedModel extends ExperimentBase {
-  x: 'closed';
+  kind: 'closed';
   /** Degree N (the polygon P0 … PN−1, P0). */
   n: number;
   curve: Float64Array;
@@ -35,32 +36,35 @@ export interface ClosedModel extends ExperimentBase {
   smooth: boolean;
 }
 
-export function deriveClosed(state: PropertiesState): ClosedModel {
-  const p0 = state.p[0];
-  const controls = [...state.p, p0];
-  const hodograph = bezierDerivative(controls);
-  const start = hodograph[0];
-  const end = hodograph[hodograph.length - 1];
-  const measurable = norm(start) !== 0 && norm(end) !== 0;
-  const xs = state.p.map((q) => q[0]);
-  const ys = state.p.map((q) => q[1]);
-  const size = Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
-  const arrow = (v: Point) =>
-    scale(v, norm(v) === 0 ? 0 : Math.min(ARROW_SCALE, (ARROW_REACH * size) / norm(v)));
-  const leaving: [Point, Point] = [p0, add(p0, arrow(start))];
-  const arriving: [Point, Point] = [subtract(p0, arrow(end)), p0];
-  const corner = measurable ? Math.abs((signedAngle(start, end) * 180) / Math.PI) : null;
-  return {
-    x: 'closed',
-    controls,
-    // The arrows are in the view, and short enough not to set its size.
-    extra: [leaving[1], arriving[0]],
-    n: controls.length - 1,
-    curve: sampleCurve(controls),
-    point: bezierPoint(controls, state.t),
-    leaving,
-    arriving,
-    corner,
-    smooth: corner !== null && corner < 0.5,
-  };
-}
+export const deriveClosed = memoOn<PropertiesState, 'points' | 't', ClosedModel>(
+  ['points', 't'],
+  ({ points, t }) => {
+    const p0 = points[0];
+    const controls = [...points, p0];
+    const hodograph = bezierDerivative(controls);
+    const start = hodograph[0];
+    const end = hodograph[hodograph.length - 1];
+    const measurable = norm(start) !== 0 && norm(end) !== 0;
+    const xs = points.map((q) => q[0]);
+    const ys = points.map((q) => q[1]);
+    const size = Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+    const arrow = (v: Point) =>
+      scale(v, norm(v) === 0 ? 0 : Math.min(ARROW_SCALE, (ARROW_REACH * size) / norm(v)));
+    const leaving: [Point, Point] = [p0, add(p0, arrow(start))];
+    const arriving: [Point, Point] = [subtract(p0, arrow(end)), p0];
+    const corner = measurable ? Math.abs((signedAngle(start, end) * 180) / Math.PI) : null;
+    return {
+      kind: 'closed',
+      controls,
+      // The arrows are in the view, and short enough not to set its size.
+      extra: [leaving[1], arriving[0]],
+      n: controls.length - 1,
+      curve: sampleCurve(controls),
+      point: bezierPoint(controls, t),
+      leaving,
+      arriving,
+      corner,
+      smooth: corner !== null && corner < 0.5,
+    };
+  },
+);

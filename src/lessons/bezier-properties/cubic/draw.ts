@@ -2,23 +2,20 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
-import { STAGES } from '../state';
-
-const AT = STAGES.cubic;
 
 export function drawCubic(painter: Painter, m: ModelOf<'cubic'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const k = m.state.k;
-  if (k >= AT.polygon) drawPolygon(painter, m.controls);
+  const { shown } = m;
+  if (shown.has('polygon')) drawPolygon(painter, m.controls);
   // One colour turning left, another turning right (neither is the accent of the marks).
-  for (const { sign, samples } of k >= AT.curve ? m.runs : []) {
-    const turning = k >= AT.turning;
+  for (const { sign, samples } of shown.has('curve') ? m.runs : []) {
+    const turning = shown.has('turning');
     const color =
       turning && sign > 0 ? painter.color(0) : turning && sign < 0 ? painter.color(2) : theme.curve;
     painter.polylineFlat(samples, { color, role: 'curve' });
   }
-  if (k >= AT.marks) drawMarks(painter, m, info);
-  if (k >= AT.point) drawMarked(painter, m.point, 'P(t)', info, theme.ink);
+  if (shown.has('marks')) drawMarks(painter, m, info);
+  if (shown.has('point')) drawMarked(painter, m.point, 'P(t)', info, theme.ink);
 }
 
 /** The inflections and the crossing of a loop, with their parameters. */

@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   bezierCurvature,
@@ -19,7 +20,7 @@ export interface SignRun {
 }
 
 export interface CubicModel extends ExperimentBase {
-  x: 'cubic';
+  kind: 'cubic';
   point: Point;
   /** The curve cut where its curvature changes sign, to colour each turn. */
   runs: SignRun[];
@@ -56,23 +57,25 @@ function signRuns(curve: Float64Array, signs: readonly number[]): SignRun[] {
   return runs;
 }
 
-export function deriveCubic(state: PropertiesState): CubicModel {
-  const controls = state.p;
-  const signs = Array.from({ length: SAMPLES + 1 }, (_, k) =>
-    Math.sign(curvatureAt(controls, k / SAMPLES)),
-  );
-  const crossing = cubicSelfIntersection(controls);
-  const curvature = curvatureAt(controls, state.t);
-  return {
-    x: 'cubic',
-    controls,
-    extra: [],
-    point: bezierPoint(controls, state.t),
-    runs: signRuns(sampleBezier(controls, SAMPLES), signs),
-    inflections: cubicInflections(controls).map((t) => ({ t, point: bezierPoint(controls, t) })),
-    loop: crossing ? { t: crossing, point: bezierPoint(controls, crossing[0]) } : null,
-    curvature: Number.isNaN(curvature) ? null : curvature,
-    straight: signs.every((s) => s === 0),
-    cusp: signs.some((s) => Number.isNaN(s)),
-  };
-}
+export const deriveCubic = memoOn<PropertiesState, 'points' | 't', CubicModel>(
+  ['points', 't'],
+  ({ points: controls, t }) => {
+    const signs = Array.from({ length: SAMPLES + 1 }, (_, k) =>
+      Math.sign(curvatureAt(controls, k / SAMPLES)),
+    );
+    const crossing = cubicSelfIntersection(controls);
+    const curvature = curvatureAt(controls, t);
+    return {
+      kind: 'cubic',
+      controls,
+      extra: [],
+      point: bezierPoint(controls, t),
+      runs: signRuns(sampleBezier(controls, SAMPLES), signs),
+      inflections: cubicInflections(controls).map((t) => ({ t, point: bezierPoint(controls, t) })),
+      loop: crossing ? { t: crossing, point: bezierPoint(controls, crossing[0]) } : null,
+      curvature: Number.isNaN(curvature) ? null : curvature,
+      straight: signs.every((s) => s === 0),
+      cusp: signs.some((s) => Number.isNaN(s)),
+    };
+  },
+);

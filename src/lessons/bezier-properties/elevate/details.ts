@@ -43,17 +43,17 @@ export const elevatePanel: ExperimentPanel<ModelOf<'elevate'>> = {
     const show = arrangements();
     return {
       update(m) {
-        const k = m.polygons.length - 1;
+        const raised = m.polygons.length - 1;
         degree.textContent =
-          k === 0
+          raised === 0
             ? `Degree ${m.originalDegree}, not raised yet. Press "Raise the degree" (or step forward).`
-            : `Degree ${m.originalDegree} raised ${k} time${k === 1 ? '' : 's'}: degree ${m.n}, ${m.n + 1} control points (solid), the original polygon dashed.`;
+            : `Degree ${m.originalDegree} raised ${raised} time${raised === 1 ? '' : 's'}: degree ${m.n}, ${m.n + 1} control points (solid), the original polygon dashed.`;
         deviation.dataset.deviation = String(m.deviation);
         deviation.textContent = `Largest distance between this curve and the original, over ${DEVIATION_SAMPLES + 1} samples: ${smallNumber(m.deviation)} — the same curve, up to rounding.`;
         if (m.lastStep) lastStep.set(lastStepShape(m.lastStep.from), coords(m.lastStep.q1, 3));
         rows.set(
           m.polygons.map((polygon, j) => ({
-            className: j === k ? 'current' : '',
+            className: j === raised ? 'current' : '',
             cells: [String(polygon.length - 1), m.gaps[j].toFixed(4)],
           })),
         );

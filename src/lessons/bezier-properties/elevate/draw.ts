@@ -2,18 +2,17 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawPolygon } from '../painting';
-import { STAGES } from '../state';
 
 /** Above this many control points, the points are drawn smaller and unlabelled. */
 const LABEL_UP_TO = 10;
 
 export function drawElevate(painter: Painter, m: ModelOf<'elevate'>, info: DrawInfo): void {
   const theme = painter.theme;
-  if (m.state.k < STAGES.elevate.curve) return;
+  if (!m.shown.has('curve')) return;
   const raised = m.polygons.length > 1;
   const color = painter.color(0);
-  if (raised) drawPolygon(painter, m.state.p, { alpha: 0.5 });
-  else drawPolygon(painter, m.state.p);
+  if (raised) drawPolygon(painter, m.state.points, { alpha: 0.5 });
+  else drawPolygon(painter, m.state.points);
   painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
   if (!raised) return;
   painter.polyline(m.controls, { color, width: theme.sizes.line });

@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   add,
@@ -27,7 +28,7 @@ export interface Tangent {
 }
 
 export interface EndsModel extends ExperimentBase {
-  x: 'ends';
+  kind: 'ends';
   /** Degree N. */
   n: number;
   curve: Float64Array;
@@ -48,25 +49,27 @@ const tangent = (from: Point, vector: Point): Tangent => ({
   speed: norm(vector),
 });
 
-export function deriveEnds(state: PropertiesState): EndsModel {
-  const controls = state.p;
-  const n = controls.length - 1;
-  const hodograph = bezierDerivative(controls);
-  const point = bezierPoint(controls, state.t);
-  const tangents: EndsModel['tangents'] = [
-    tangent(controls[0], hodograph[0]),
-    tangent(controls[n], hodograph[hodograph.length - 1]),
-    tangent(point, bezierPoint(hodograph, state.t)),
-  ];
-  return {
-    x: 'ends',
-    controls,
-    extra: tangents.map((arrow) => arrow.tip),
-    n,
-    curve: sampleCurve(controls),
-    point,
-    tangents,
-    stillAtStart: norm(subtract(controls[1], controls[0])) === 0,
-    stillAtEnd: norm(subtract(controls[n], controls[n - 1])) === 0,
-  };
-}
+export const deriveEnds = memoOn<PropertiesState, 'points' | 't', EndsModel>(
+  ['points', 't'],
+  ({ points: controls, t }) => {
+    const n = controls.length - 1;
+    const hodograph = bezierDerivative(controls);
+    const point = bezierPoint(controls, t);
+    const tangents: EndsModel['tangents'] = [
+      tangent(controls[0], hodograph[0]),
+      tangent(controls[n], hodograph[hodograph.length - 1]),
+      tangent(point, bezierPoint(hodograph, t)),
+    ];
+    return {
+      kind: 'ends',
+      controls,
+      extra: tangents.map((arrow) => arrow.tip),
+      n,
+      curve: sampleCurve(controls),
+      point,
+      tangents,
+      stillAtStart: norm(subtract(controls[1], controls[0])) === 0,
+      stillAtEnd: norm(subtract(controls[n], controls[n - 1])) === 0,
+    };
+  },
+);

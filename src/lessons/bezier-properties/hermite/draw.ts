@@ -2,15 +2,13 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
-import { STAGES } from '../state';
 
 const NAMES = ['3(P_1 − P_0)', '3(P_3 − P_2)'];
-const AT = STAGES.hermite;
 
 export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const k = m.state.k;
-  if (k < AT.curve) return;
+  const { shown } = m;
+  if (!shown.has('curve')) return;
   // Neither form wears the accent, the colour of P(t).
   const hermite = painter.color(2);
   drawPolygon(painter, m.controls);
@@ -19,7 +17,7 @@ export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawI
     width: theme.sizes.curve * 2.2,
     role: 'curve',
   });
-  if (k >= AT.hermite) {
+  if (shown.has('hermite')) {
     painter.polylineFlat(m.hermiteCurve, {
       color: hermite,
       width: theme.sizes.curve * 0.8,
@@ -27,7 +25,7 @@ export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawI
       role: 'curve',
     });
   }
-  if (k >= AT.tangents) {
+  if (shown.has('tangents')) {
     painter.arrow(m.x0, m.tips[0], { color: hermite, width: theme.sizes.line * 1.3 });
     painter.arrow(m.x1, m.tips[1], { color: hermite, width: theme.sizes.line * 1.3 });
     if (!info.thumbnail) {
@@ -42,5 +40,5 @@ export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawI
       );
     }
   }
-  if (k >= AT.point) drawMarked(painter, m.point, 'P(t)', info);
+  if (shown.has('point')) drawMarked(painter, m.point, 'P(t)', info);
 }

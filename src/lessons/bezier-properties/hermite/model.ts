@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   add,
@@ -15,7 +16,7 @@ import type { PropertiesState } from '../state';
 export const SAMPLES = 200;
 
 export interface HermiteModel extends ExperimentBase {
-  x: 'hermite';
+  kind: 'hermite';
   /** The Bézier form and the Hermite form, sampled at the same t. */
   curve: Float64Array;
   hermiteCurve: Float64Array;
@@ -34,28 +35,30 @@ export interface HermiteModel extends ExperimentBase {
   hermiteAtT: Point;
 }
 
-export function deriveHermite(state: PropertiesState): HermiteModel {
-  const controls = state.p;
-  const [x0, d0, x1, d1] = bezierToHermite(controls);
-  const hermiteCurve = new Float64Array(2 * (SAMPLES + 1));
-  for (let k = 0; k <= SAMPLES; k++)
-    hermiteCurve.set(hermitePoint(x0, d0, x1, d1, k / SAMPLES), 2 * k);
-  const curve = sampleBezier(controls, SAMPLES);
-  const tips: [Point, Point] = [add(x0, d0), add(x1, d1)];
-  return {
-    x: 'hermite',
-    controls,
-    extra: tips,
-    curve,
-    hermiteCurve,
-    deviation: sampledDeviation(curve, hermiteCurve).distance,
-    point: bezierPoint(controls, state.t),
-    power: bezierToPowerBasis(controls),
-    x0,
-    d0,
-    x1,
-    d1,
-    tips,
-    hermiteAtT: hermitePoint(x0, d0, x1, d1, state.t),
-  };
-}
+export const deriveHermite = memoOn<PropertiesState, 'points' | 't', HermiteModel>(
+  ['points', 't'],
+  ({ points: controls, t }) => {
+    const [x0, d0, x1, d1] = bezierToHermite(controls);
+    const hermiteCurve = new Float64Array(2 * (SAMPLES + 1));
+    for (let k = 0; k <= SAMPLES; k++)
+      hermiteCurve.set(hermitePoint(x0, d0, x1, d1, k / SAMPLES), 2 * k);
+    const curve = sampleBezier(controls, SAMPLES);
+    const tips: [Point, Point] = [add(x0, d0), add(x1, d1)];
+    return {
+      kind: 'hermite',
+      controls,
+      extra: tips,
+      curve,
+      hermiteCurve,
+      deviation: sampledDeviation(curve, hermiteCurve).distance,
+      point: bezierPoint(controls, t),
+      power: bezierToPowerBasis(controls),
+      x0,
+      d0,
+      x1,
+      d1,
+      tips,
+      hermiteAtT: hermitePoint(x0, d0, x1, d1, t),
+    };
+  },
+);

@@ -1,3 +1,4 @@
+import { memoOn } from '../../../kit/memoOn';
 import {
   type Point,
   bezierPoint,
@@ -12,7 +13,7 @@ import type { PropertiesState } from '../state';
 const SAMPLES = 400;
 
 export interface HullModel extends ExperimentBase {
-  x: 'hull';
+  kind: 'hull';
   curve: Float64Array;
   point: Point;
   /** Corners of the convex hull of the control points, anticlockwise: 1 if they coincide, 2 if collinear. */
@@ -22,24 +23,26 @@ export interface HullModel extends ExperimentBase {
   total: number;
 }
 
-export function deriveHull(state: PropertiesState): HullModel {
-  const controls = state.p;
-  const hull = convexHull(controls);
-  const curve = sampleBezier(controls, SAMPLES);
-  // Rounding may put a sample a hair outside an edge: allow a tolerance relative to the size.
-  const tolerance = 1e-9 * Math.max(1, ...controls.flat().map(Math.abs));
-  let inside = 0;
-  for (let k = 0; k < curve.length; k += 2) {
-    if (convexHullContains(hull, [curve[k], curve[k + 1]], tolerance)) inside++;
-  }
-  return {
-    x: 'hull',
-    controls,
-    extra: [],
-    curve,
-    point: bezierPoint(controls, state.t),
-    hull,
-    inside,
-    total: SAMPLES + 1,
-  };
-}
+export const deriveHull = memoOn<PropertiesState, 'points' | 't', HullModel>(
+  ['points', 't'],
+  ({ points: controls, t }) => {
+    const hull = convexHull(controls);
+    const curve = sampleBezier(controls, SAMPLES);
+    // Rounding may put a sample a hair outside an edge: allow a tolerance relative to the size.
+    const tolerance = 1e-9 * Math.max(1, ...controls.flat().map(Math.abs));
+    let inside = 0;
+    for (let k = 0; k < curve.length; k += 2) {
+      if (convexHullContains(hull, [curve[k], curve[k + 1]], tolerance)) inside++;
+    }
+    return {
+      kind: 'hull',
+      controls,
+      extra: [],
+      curve,
+      point: bezierPoint(controls, t),
+      hull,
+      inside,
+      total: SAMPLES + 1,
+    };
+  },
+);

@@ -2,14 +2,11 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawPolygon } from '../painting';
-import { STAGES } from '../state';
-
-const AT = STAGES.local;
 
 export function drawLocal(painter: Painter, m: ModelOf<'local'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const k = m.state.k;
-  if (k >= AT.before) {
+  const { shown } = m;
+  if (shown.has('before')) {
     drawPolygon(painter, m.before, { alpha: 0.45 });
     painter.polylineFlat(m.beforeCurve, {
       color: theme.curveFaint,
@@ -17,12 +14,12 @@ export function drawLocal(painter: Painter, m: ModelOf<'local'>, info: DrawInfo)
       dash: [8, 6],
     });
   }
-  if (k >= AT.curve) {
+  if (shown.has('curve')) {
     drawPolygon(painter, m.controls);
     painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
   }
   const { from, to, distance } = m.largest;
-  if (k >= AT.largest && distance > 0) {
+  if (shown.has('largest') && distance > 0) {
     painter.arrow(from, to, { color: theme.accent, width: theme.sizes.line * 1.3 });
     if (!info.thumbnail) {
       painter.label(`max ${distance.toFixed(3)}`, to, {
@@ -34,7 +31,7 @@ export function drawLocal(painter: Painter, m: ModelOf<'local'>, info: DrawInfo)
       });
     }
   }
-  if (k < AT.moved) return;
+  if (!shown.has('moved')) return;
   for (const i of m.moved) {
     painter.arrow(m.before[i], m.controls[i], {
       color: theme.muted,

@@ -1,9 +1,10 @@
+import { memoOn } from '../../../kit/memoOn';
 import { type Point, bernstein, bezierDeviation, bezierPoint, distance } from '../../../math';
 import { type ExperimentBase, sampleCurve } from '../curve';
 import type { PropertiesState } from '../state';
 
 export interface LocalModel extends ExperimentBase {
-  x: 'local';
+  kind: 'local';
   /** Degree N. */
   n: number;
   /** The "before" control points and curve (dashed), and the current curve. */
@@ -22,32 +23,34 @@ export interface LocalModel extends ExperimentBase {
   single: { index: number; shift: number; peak: number; percent: number } | null;
 }
 
-export function deriveLocal(state: PropertiesState): LocalModel {
-  const { p, q } = state;
-  const n = p.length - 1;
-  const { at, distance: largest } = bezierDeviation(q, p);
-  const moved = p.flatMap((point, i) => (distance(point, q[i]) > 0 ? [i] : []));
-  let single: LocalModel['single'] = null;
-  if (moved.length === 1) {
-    const index = moved[0];
-    const shift = distance(p[index], q[index]);
-    single = {
-      index,
-      shift,
-      peak: bernstein(n, index, index / n),
-      percent: (100 * largest) / shift,
+export const deriveLocal = memoOn<PropertiesState, 'points' | 'before', LocalModel>(
+  ['points', 'before'],
+  ({ points: p, before: q }) => {
+    const n = p.length - 1;
+    const { at, distance: largest } = bezierDeviation(q, p);
+    const moved = p.flatMap((point, i) => (distance(point, q[i]) > 0 ? [i] : []));
+    let single: LocalModel['single'] = null;
+    if (moved.length === 1) {
+      const index = moved[0];
+      const shift = distance(p[index], q[index]);
+      single = {
+        index,
+        shift,
+        peak: bernstein(n, index, index / n),
+        percent: (100 * largest) / shift,
+      };
+    }
+    return {
+      kind: 'local',
+      controls: p,
+      extra: q,
+      n,
+      before: q,
+      beforeCurve: sampleCurve(q),
+      curve: sampleCurve(p),
+      largest: { at, distance: largest, from: bezierPoint(q, at), to: bezierPoint(p, at) },
+      moved,
+      single,
     };
-  }
-  return {
-    x: 'local',
-    controls: p,
-    extra: q,
-    n,
-    before: q,
-    beforeCurve: sampleCurve(q),
-    curve: sampleCurve(p),
-    largest: { at, distance: largest, from: bezierPoint(q, at), to: bezierPoint(p, at) },
-    moved,
-    single,
-  };
-}
+  },
+);

@@ -19,7 +19,7 @@ export const repeatPanel: ExperimentPanel<ModelOf<'repeat'>> = {
     const nodes = [summary, weight.element];
     return {
       update(m) {
-        const { r, t } = m.state;
+        const { repeated: r, t } = m.state;
         const { copies, n } = m;
         summary.textContent = `P${r} appears ${copies} time${copies === 1 ? '' : 's'}: the curve has ${n + 1} control points, degree ${n}. Dashed: the curve with P${r} once.`;
         weight.set(weightShape(r, copies, n), [

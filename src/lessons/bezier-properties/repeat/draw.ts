@@ -2,12 +2,11 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
-import { STAGES } from '../state';
 
 export function drawRepeat(painter: Painter, m: ModelOf<'repeat'>, info: DrawInfo): void {
   const theme = painter.theme;
-  const { p, r } = m.state;
-  if (m.state.k < STAGES.repeat.curve) return;
+  const { points: p, repeated: r } = m.state;
+  if (!m.shown.has('curve')) return;
   const extra = m.copies - 1;
   if (extra > 0) {
     painter.polylineFlat(m.onceCurve, {

@@ -1,12 +1,15 @@
+import { memoOn } from '../../../kit/memoOn';
+import type { Revealed } from '../../../kit/script';
 import { type Point, bernsteinBasis, bezierPoint } from '../../../math';
-import { type ExperimentBase, sampleCurve } from '../curve';
-import { type PropertiesState, amount } from '../state';
+import { type ExperimentBase, byCount, sampleCurve } from '../curve';
+import type { PropertiesState } from '../state';
+import type { RepeatReveal } from './script';
 
 export interface RepeatModel extends ExperimentBase {
-  x: 'repeat';
+  kind: 'repeat';
   /** Degree of the curve with the copies. */
   n: number;
-  /** How many times P_r is listed (k + 1). */
+  /** How many times P_r is listed: once, and once more per copy the steps show. */
   copies: number;
   /** The curve with the copies, and the curve with P_r once (dashed). */
   curve: Float64Array;
@@ -17,30 +20,39 @@ export interface RepeatModel extends ExperimentBase {
   weightOnce: number;
 }
 
-/** The user's points with P_r listed k + 1 times. */
-export const repeatPoint = (state: PropertiesState): Point[] =>
-  state.p.flatMap((point, i) =>
-    i === state.r ? Array.from({ length: amount(state) + 1 }, () => point) : [point],
-  );
+/** The user's points with P_r listed `copies` times. */
+export const repeatPoint = (points: readonly Point[], r: number, copies: number): Point[] =>
+  points.flatMap((point, i) => (i === r ? Array.from({ length: copies }, () => point) : [point]));
 
-export function deriveRepeat(state: PropertiesState): RepeatModel {
-  const controls = repeatPoint(state);
-  const n = controls.length - 1;
-  const copies = amount(state) + 1;
-  // The copies of P_r sit at indices r … r + copies − 1 of the repeated list.
-  const weight = bernsteinBasis(n, state.t)
-    .slice(state.r, state.r + copies)
-    .reduce((a, b) => a + b, 0);
-  return {
-    x: 'repeat',
-    controls,
-    extra: [],
-    n,
-    copies,
-    curve: sampleCurve(controls),
-    onceCurve: sampleCurve(state.p),
-    point: bezierPoint(controls, state.t),
-    weight,
-    weightOnce: bernsteinBasis(state.p.length - 1, state.t)[state.r],
-  };
-}
+/** The curve with P_r listed 1, 2, … times: made once for each count while the points, r and t stay. */
+const curves = memoOn<
+  PropertiesState,
+  'points' | 'repeated' | 't',
+  (copies: number) => RepeatModel
+>(['points', 'repeated', 't'], ({ points, repeated: r, t }) => {
+  const onceCurve = sampleCurve(points);
+  const weightOnce = bernsteinBasis(points.length - 1, t)[r];
+  return byCount((copies) => {
+    const controls = repeatPoint(points, r, copies);
+    const n = controls.length - 1;
+    // The copies of P_r sit at indices r … r + copies − 1 of the repeated list.
+    const weight = bernsteinBasis(n, t)
+      .slice(r, r + copies)
+      .reduce((a, b) => a + b, 0);
+    return {
+      kind: 'repeat',
+      controls,
+      extra: [],
+      n,
+      copies,
+      curve: sampleCurve(controls),
+      onceCurve,
+      point: bezierPoint(controls, t),
+      weight,
+      weightOnce,
+    };
+  });
+});
+
+export const deriveRepeat = (state: PropertiesState, shown: Revealed<RepeatReveal>) =>
+  curves(state)(shown.count('copy') + 1);

@@ -2,11 +2,10 @@ import type { DrawInfo } from '../../../app/lesson';
 import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
-import { STAGES } from '../state';
 
 export function drawSplit(painter: Painter, m: ModelOf<'split'>, info: DrawInfo): void {
   const theme = painter.theme;
-  if (m.state.k < STAGES.split.curve) return;
+  if (!m.shown.has('curve')) return;
   const splits = m.levels.length - 1;
   drawPolygon(painter, m.controls, splits > 0 ? { width: theme.sizes.thin, alpha: 0.6 } : {});
   painter.polylineFlat(m.curve, { color: theme.curve, width: theme.sizes.curve, role: 'curve' });

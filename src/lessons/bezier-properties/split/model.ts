@@ -1,9 +1,12 @@
+import { memoOn } from '../../../kit/memoOn';
+import type { Revealed } from '../../../kit/script';
 import { type Point, bezierPoint, controlPolygonGap, subdivisionLevels } from '../../../math';
-import { type ExperimentBase, sampleCurve } from '../curve';
-import { type PropertiesState, amount } from '../state';
+import { type ExperimentBase, byCount, sampleCurve } from '../curve';
+import type { PropertiesState } from '../state';
+import type { SplitReveal } from './script';
 
 export interface SplitModel extends ExperimentBase {
-  x: 'split';
+  kind: 'split';
   curve: Float64Array;
   point: Point;
   /** levels[j]: the 2ʲ control polygons after j splits at t; the last level is drawn. */
@@ -16,19 +19,28 @@ export interface SplitModel extends ExperimentBase {
   atEnd: boolean;
 }
 
-export function deriveSplit(state: PropertiesState): SplitModel {
-  const controls = state.p;
-  const splits = amount(state);
-  const levels = subdivisionLevels(controls, state.t, splits);
-  return {
-    x: 'split',
-    controls,
-    extra: [],
-    curve: sampleCurve(controls),
-    point: bezierPoint(controls, state.t),
-    levels,
-    gaps: levels.map((pieces) => Math.max(...pieces.map(controlPolygonGap))),
-    first: splits > 0 ? [levels[1][0], levels[1][1]] : null,
-    atEnd: splits > 0 && (state.t === 0 || state.t === 1),
-  };
-}
+/** The curve split 0, 1, 2, … times at t, each made once while the points and t stay. */
+const splits = memoOn<PropertiesState, 'points' | 't', (count: number) => SplitModel>(
+  ['points', 't'],
+  ({ points: controls, t }) => {
+    const curve = sampleCurve(controls);
+    const point = bezierPoint(controls, t);
+    return byCount((count) => {
+      const levels = subdivisionLevels(controls, t, count);
+      return {
+        kind: 'split',
+        controls,
+        extra: [],
+        curve,
+        point,
+        levels,
+        gaps: levels.map((pieces) => Math.max(...pieces.map(controlPolygonGap))),
+        first: count > 0 ? [levels[1][0], levels[1][1]] : null,
+        atEnd: count > 0 && (t === 0 || t === 1),
+      };
+    });
+  },
+);
+
+export const deriveSplit = (state: PropertiesState, shown: Revealed<SplitReveal>) =>
+  splits(state)(shown.count('split'));
