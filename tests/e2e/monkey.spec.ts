@@ -50,9 +50,13 @@ async function picture(page: Page): Promise<string[]> {
   await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
   await page.keyboard.press('0');
   await settled(page);
-  return page
-    .locator('canvas[data-figure]')
-    .evaluateAll((canvases) => canvases.map((c) => (c as HTMLCanvasElement).toDataURL()));
+  return page.locator('canvas[data-figure]').evaluateAll((canvases) =>
+    // The figures on screen: a scene's hidden figures are not drawn, so a
+    // page that showed them earlier keeps their old pixels out of sight.
+    canvases
+      .filter((c) => c.checkVisibility())
+      .map((c) => `${(c as HTMLElement).dataset.figure}: ${(c as HTMLCanvasElement).toDataURL()}`),
+  );
 }
 
 const fields = (page: Page) =>
