@@ -25,7 +25,11 @@ test('the table shows L_k(t) of the product formula, and they add up to 1', asyn
     await expect(row).toContainText(ts[k].toFixed(4));
     await expect(row).toContainText(lagrangeWeight(ts, k, 0.4).toFixed(4));
   }
-  await expect(page.getByText(/The weights add up to 1\.000000/)).toBeVisible();
+  await expect(page.getByText(/The weights add up to 1 at every t/)).toBeVisible();
+  // The continuation notes' slip, said beside the formula: Lₖ(tᵢ), not Lₖ(t).
+  await expect(
+    page.getByRole('note').getByText(/continuation notes writes? “Lₖ\(t\) is 1 if k = i/),
+  ).toContainText('Lₖ(tᵢ) = 1 if k = i');
   // Moving t with the slider moves the weights.
   await page.getByRole('slider', { name: 't' }).fill('0.9');
   await expectHash(page, 't', (v) => v === '0.9');
@@ -92,6 +96,30 @@ test('Runge: the weights swing far past 1, and a spline can be switched on besid
   await snapshot(page, 'lagrange-runge-spline');
   await page.keyboard.press('p');
   await snapshot(page, 'lagrange-projector-runge-spline');
+  // The spline is global: no sentence says its pieces listen only to nearby points.
+  await expect(page.getByText(/only listens to nearby points/)).toHaveCount(0);
+  await expect(page.getByText(/moving one point changes every gradient/)).toBeAttached();
+});
+
+test('Runge vs a spline starts at the points, shows the polynomial at once, and ends with one point moved', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'Runge vs a cubic spline' }).click();
+  await expectHash(page, 'spline', (v) => v === '1');
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText('Step 0/13: The 11 points P0 … P10 to pass through, in order');
+  let previous = await pixels(page);
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText(/^Step 1\/13: The polynomial of degree 10 through them/);
+  await expect.poll(() => pixels(page)).not.toBe(previous);
+  previous = await pixels(page);
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText(/^Step 2\/13: The natural cubic spline's gradients D0 … D10/);
+  await expect.poll(() => pixels(page)).not.toBe(previous);
+  await page.keyboard.press('End');
+  await expect(status).toHaveText(
+    'Step 13/13: Move P4 up by 1 (dashed): all 11 gradients change, so the pieces are coupled',
+  );
 });
 
 test('the cursor in the basis plot moves t, by keyboard and by dragging its line', async ({

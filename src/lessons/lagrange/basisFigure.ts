@@ -19,8 +19,10 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
     const theme = painter.theme;
     const { ts, weights, plotBounds: bounds, shown } = m;
     const t = m.state.t;
-    // L_k is drawn once its step is reached.
-    const drawn = (k: number) => shown.has('basis', k + 1);
+    // L_k is drawn once its step is reached; beside the spline, all of them with the polynomial.
+    const all = m.comparison !== null && shown.has('curve');
+    const drawn = (k: number) => all || shown.has('basis', k + 1);
+    const count = all ? ts.length : shown.count('basis');
     const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
     painter.plotAxes(bounds, 0.1, yStep, 't', '');
     const top = info.thumbnail ? 0 : plotYName(painter, bounds.minX, bounds.maxY, 'L_k(t)');
@@ -49,18 +51,18 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
       .map((w, k) => ({ w, k }))
       .filter(({ w, k }) => drawn(k) && w >= bounds.minY && w <= bounds.maxY);
     for (const { w, k } of inView) painter.dot([t, w], painter.color(k), theme.sizes.point);
-    if (!info.thumbnail && shown.has('basis') && ts.length <= LABEL_UP_TO)
+    if (!info.thumbnail && count > 0 && ts.length <= LABEL_UP_TO)
       valueColumn(
         painter,
         t,
         bounds,
         top,
-        weights.slice(0, shown.count('basis')).map((w, k) => ({
+        weights.slice(0, count).map((w, k) => ({
           text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
           color: painter.color(k),
         })),
       );
-    if (!info.thumbnail && m.basisCut && shown.has('basis')) {
+    if (!info.thumbnail && m.basisCut && count > 0) {
       const [x, y] = painter.view.toScreen([1, bounds.minY]);
       painter.screenLabel(`cut at ±${CLIP}`, x, y - theme.sizes.small * 1.2, {
         align: 'right',

@@ -26,13 +26,7 @@ export const curveFigure: KitFigure<LagrangeState, LagrangeModel> = {
       });
     });
     if (shown.has('curve')) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
-    // The spline on top: where the two agree, it is the spline one sees.
-    if (m.spline && shown.has('spline'))
-      painter.cubicSegments(m.spline, {
-        color: painter.color(2),
-        width: theme.sizes.curve,
-        dash: [theme.sizes.curve * 2, theme.sizes.curve * 1.2],
-      });
+    if (m.comparison) drawSpline(painter, m);
     if (shown.has('curve')) painter.dot(at, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
     // The point whose basis curve is under the pointer in the plot.
@@ -53,6 +47,38 @@ export const curveFigure: KitFigure<LagrangeState, LagrangeModel> = {
   points: [interpolatedPoints],
   addTo: interpolatedPoints,
 };
+
+/**
+ * The natural spline as far as the steps reveal it: its gradients (arrows at
+ * true length), its pieces so far (on top: where the two curves agree, it is
+ * the spline one sees), and the spline after one point is moved (dashed).
+ */
+function drawSpline(painter: Painter, m: LagrangeModel) {
+  const theme = painter.theme;
+  const { shown, state } = m;
+  const c = m.comparison!;
+  const colour = painter.color(2);
+  if (shown.has('gradients'))
+    state.points.forEach((p, k) =>
+      painter.arrow(p, [p[0] + c.gradients[k][0], p[1] + c.gradients[k][1]], {
+        color: colour,
+        width: theme.sizes.line,
+      }),
+    );
+  const pieces = c.segments.slice(0, shown.count('piece'));
+  if (pieces.length)
+    painter.cubicSegments(pieces, {
+      color: colour,
+      width: theme.sizes.curve,
+      dash: [theme.sizes.curve * 2, theme.sizes.curve * 1.2],
+    });
+  if (!shown.has('coupled')) return;
+  painter.cubicSegments(c.ghost, { color: theme.muted, width: theme.sizes.line, dash: [4, 4] });
+  const moved = state.points[c.moved];
+  const to: [number, number] = [moved[0], moved[1] + c.nudge];
+  painter.arrow(moved, to, { color: theme.muted, width: theme.sizes.line });
+  painter.ring(to, theme.sizes.handle, { color: theme.muted, width: theme.sizes.line });
+}
 
 /** What each line is, in the top left corner (screen pixels). */
 function legend(painter: Painter, m: LagrangeModel, top: number) {
@@ -75,5 +101,7 @@ function legend(painter: Painter, m: LagrangeModel, top: number) {
     y += size * 1.5;
   };
   entry(`Lagrange polynomial, degree ${m.n}`, theme.curve);
-  if (m.spline && m.shown.has('spline')) entry('natural cubic spline', painter.color(2), true);
+  if (m.comparison && m.shown.has('piece')) entry('natural cubic spline', painter.color(2), true);
+  if (m.comparison && m.shown.has('coupled'))
+    entry(`spline with P${m.comparison.moved} moved`, theme.muted, true);
 }

@@ -4,7 +4,7 @@ import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
 import { derive } from './model';
 import { lagrangePanel } from './panel';
-import { interpolation } from './script';
+import { comparison, interpolation } from './script';
 import { DEFAULT_POINTS, type LagrangeState, RUNGE_POINTS, type Spacing, schema } from './state';
 
 /** A scene: its points, spacing, spline and t (the clicker opens it at step 0). */
@@ -30,6 +30,8 @@ export default defineLesson({
   schema,
   step: 'step',
   script: interpolation,
+  // With the spline switched on, a state walks the comparison's script, in whichever scene.
+  sceneOf: (s) => (s.spline ? 'runge-spline' : 'five'),
   derive,
   figures: [curveFigure, basisFigure],
   layout: 'column',
@@ -49,7 +51,10 @@ export default defineLesson({
       { spacing: 'uniform' },
     ),
     scene('runge', 'Runge: 11 equally spaced points on a bump', RUNGE_POINTS, { t: 0.05 }),
-    scene('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
+    {
+      ...scene('runge-spline', 'Runge vs a cubic spline', RUNGE_POINTS, { spline: true, t: 0.05 }),
+      script: comparison,
+    },
     scene(
       'line',
       'Two points: a line',

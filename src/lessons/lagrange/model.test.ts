@@ -21,7 +21,7 @@ const describeStep = (s: LagrangeState, k: number) => lesson.steps!.describe(s, 
 /** What a step shows: how many Lₖ, the polynomial, the spline. */
 const revealed = (s: LagrangeState) => {
   const { shown } = derive(s);
-  return { basis: shown.count('basis'), curve: shown.has('curve'), spline: shown.has('spline') };
+  return { basis: shown.count('basis'), curve: shown.has('curve'), pieces: shown.count('piece') };
 };
 
 describe('Lagrange model', () => {
@@ -101,8 +101,8 @@ describe('Lagrange model', () => {
   });
 
   it('draws the spline only when asked, one cubic per gap', () => {
-    expect(derive(state()).spline).toBeNull();
-    expect(derive(state({ spline: true })).spline).toHaveLength(4);
+    expect(derive(state()).comparison).toBeNull();
+    expect(derive(state({ spline: true })).comparison!.segments).toHaveLength(4);
   });
 
   it('cuts the basis plot at ±3 when the weights swing wider (Runge)', () => {
@@ -122,22 +122,23 @@ describe('the script (Lagrange)', () => {
     checkScript(lesson);
   });
 
-  it('reveals L0 … Ln one by one, then the polynomial, then the spline', () => {
+  it('reveals L0 … Ln one by one, then the polynomial; beside the spline, its pieces one by one', () => {
     expect(stepCount(state())).toBe(6);
+    // The points, the polynomial, the gradients, four pieces, the coupling.
     expect(stepCount(state({ spline: true }))).toBe(7);
-    expect(revealed(state({ step: 3 }))).toEqual({ basis: 3, curve: false, spline: false });
-    expect(revealed(state({ step: 6, spline: true }))).toEqual({
-      basis: 5,
+    expect(revealed(state({ step: 3 }))).toEqual({ basis: 3, curve: false, pieces: 0 });
+    expect(revealed(state({ step: 1, spline: true }))).toEqual({
+      basis: 0,
       curve: true,
-      spline: false,
+      pieces: 0,
     });
-    expect(revealed(state({ step: 7, spline: true }))).toEqual({
-      basis: 5,
+    expect(revealed(state({ step: 4, spline: true }))).toEqual({
+      basis: 0,
       curve: true,
-      spline: true,
+      pieces: 2,
     });
     expect(describeStep(state(), 2)).toBe('L1(t): 1 at its own t1, 0 at every other tₖ');
-    // Sixteen points and the spline: still at most 20 presses.
+    // Sixteen points and the spline: 3 + 15 pieces, still at most 20 presses.
     const many = Array.from({ length: 16 }, (_, k) => [k, k % 3]);
     expect(stepCount(state({ points: many, spline: true }))).toBe(18);
   });

@@ -1,5 +1,6 @@
 import {
   type BasisSamples,
+  bezierPoint,
   clipToBand,
   cubicSplineSegments,
   lagrangeBasis,
@@ -49,8 +50,8 @@ export interface LagrangeModel {
   weights: number[];
   weightSum: number;
   at: Point;
-  /** The natural cubic spline through the same points, as cubic Béziers (when asked for). */
-  spline: Point[][] | null;
+  /** The natural cubic spline through the same points, compared with the polynomial (when asked for). */
+  comparison: SplineComparison | null;
   /** The largest Σ|L_k(t)| (the Lebesgue constant, sampled) and where it is reached. */
   lebesgue: { value: number; t: number };
   /** "Fit view" of the curve figure: the points, and the polynomial's swings up to a point. */
@@ -62,11 +63,38 @@ export interface LagrangeModel {
   basisCut: boolean;
 }
 
+/**
+ * The natural cubic spline beside the polynomial: its gradients solve one
+ * system for all the points together, so it is global (moving one point moves
+ * every gradient), though far calmer than one polynomial of high degree.
+ */
+export interface SplineComparison {
+  /** One cubic Bézier per gap, from the gradients D0 … Dn. */
+  segments: Point[][];
+  /** D0 … Dn of the natural spline (uniform parameter, one unit per piece). */
+  gradients: Point[];
+  /** On each piece, the largest distance between the polynomial and the spline. */
+  gaps: number[];
+  /** The point moved to show the coupling, and how far (up, in y). */
+  moved: number;
+  nudge: number;
+  /** The spline after that move, and |ΔDₖ| for every gradient. */
+  ghost: Point[][];
+  gradientChange: number[];
+  /** How many gradients changed (all, unless the points are symmetric about the moved one). */
+  changed: number;
+}
+
 /** What depends on the points and the spacing only. */
 type Polynomial = Omit<
   LagrangeModel,
-  'state' | 'shown' | 'weights' | 'weightSum' | 'at' | 'spline'
+  'state' | 'shown' | 'weights' | 'weightSum' | 'at' | 'comparison'
 >;
+
+/** The point moved to show the coupling: off the middle, so symmetry hides no change. */
+export const movedPoint = (n: number) => Math.max(0, Math.ceil(n / 2) - 1);
+/** How far it is moved, up. */
+export const NUDGE = 1;
 
 /** The id under the pointer when it is over L_k's curve (the panel marks L_k's row). */
 export const basisId = (k: number) => `L${k}`;
@@ -90,7 +118,7 @@ export function parameters({ points, spacing }: Nodes): Pick<LagrangeModel, 'ts'
  * The basis and the polynomial: they read only the points and the spacing, so
  * a step, a moved t or the spline switched costs no new sampling.
  */
-const polynomial = memoOn<LagrangeState, 'points' | 'spacing', Polynomial>(
+const polynomial = memoOn<Nodes, 'points' | 'spacing', Polynomial>(
   ['points', 'spacing'],
   (fields) => {
     const { points } = fields;
@@ -99,9 +127,10 @@ const polynomial = memoOn<LagrangeState, 'points' | 'spacing', Polynomial>(
     const curves = basis.curves;
     const curve = combine(curves, points);
     const plotBounds = basisBounds(basis);
+    const note = noteFor(points, collapsed !== null);
     return {
       n: points.length - 1,
-      note: noteFor(points, collapsed !== null),
+      note,
       ts,
       collapsed,
       collapsedNote: collapsed
@@ -113,7 +142,7 @@ const polynomial = memoOn<LagrangeState, 'points' | 'spacing', Polynomial>(
       basis,
       curve,
       lebesgue: lebesgueConstant(curves),
-      curveBounds: curveBounds(points, curve, collapsed !== null),
+      curveBounds: curveBounds(points, curve, collapsed !== null || note !== null),
       plotBounds,
       basisPieces: curves.map((c) => clipToBand(c, plotBounds.minY, plotBounds.maxY)),
       basisCut: basis.lowest.value < -CLIP || basis.highest.value > CLIP,
@@ -122,11 +151,51 @@ const polynomial = memoOn<LagrangeState, 'points' | 'spacing', Polynomial>(
 );
 
 /** The natural cubic spline through the same points, when it is compared. */
-const splineThrough = memoOn<LagrangeState, 'points' | 'spline', Point[][] | null>(
-  ['points', 'spline'],
-  ({ points, spline }) =>
-    spline ? cubicSplineSegments(points, naturalCubicTangents(points)) : null,
-);
+const splineThrough = memoOn<
+  LagrangeState,
+  'points' | 'spacing' | 'spline',
+  SplineComparison | null
+>(['points', 'spacing', 'spline'], (fields) => {
+  if (!fields.spline) return null;
+  const { points } = fields;
+  const gradients = naturalCubicTangents(points);
+  const segments = cubicSplineSegments(points, gradients);
+  const n = points.length - 1;
+  const moved = movedPoint(n);
+  const nudged = points.map((p, k): Point => (k === moved ? [p[0], p[1] + NUDGE] : p));
+  const after = naturalCubicTangents(nudged);
+  const gradientChange = gradients.map((d, k) =>
+    Math.hypot(after[k][0] - d[0], after[k][1] - d[1]),
+  );
+  return {
+    segments,
+    gradients,
+    gaps: pieceGaps(polynomial(fields), segments),
+    moved,
+    nudge: NUDGE,
+    ghost: cubicSplineSegments(nudged, after),
+    gradientChange,
+    // A change below rounding is no change.
+    changed: gradientChange.filter((c) => c > 1e-9).length,
+  };
+});
+
+/**
+ * On piece k (tₖ to tₖ₊₁ of the polynomial, 0 to 1 of the spline's piece), the
+ * largest distance between the two curves at matching parameters.
+ */
+function pieceGaps({ ts, curve }: Pick<Polynomial, 'ts' | 'curve'>, segments: Point[][]): number[] {
+  return segments.map((segment, k) => {
+    let gap = 0;
+    for (let i = 0; i <= SAMPLES; i++) {
+      const t = i / SAMPLES;
+      if (t < ts[k] || t > ts[k + 1]) continue;
+      const [x, y] = bezierPoint(segment, (t - ts[k]) / (ts[k + 1] - ts[k]));
+      gap = Math.max(gap, Math.hypot(curve[2 * i] - x, curve[2 * i + 1] - y));
+    }
+    return gap;
+  });
+}
 
 export function derive(state: LagrangeState, shown: Revealed<Reveal>): LagrangeModel {
   const { points, t } = state;
@@ -139,7 +208,7 @@ export function derive(state: LagrangeState, shown: Revealed<Reveal>): LagrangeM
     weights,
     weightSum: weights.reduce((a, b) => a + b, 0),
     at: [0, 1].map((d) => weights.reduce((sum, w, k) => sum + w * points[k][d], 0)),
-    spline: splineThrough(state),
+    comparison: splineThrough(state),
   };
 }
 
@@ -156,9 +225,14 @@ function combine(basis: readonly Float64Array[], p: readonly Point[]): Float64Ar
 }
 
 function curveBounds(p: readonly Point[], curve: Float64Array, note: boolean): Bounds {
-  // A wild polynomial may leave the view, which is the lesson, but the points must stay large.
+  // The view fits the subject: the points, and the polynomial only as far as
+  // it stays near them (half the points' smaller side, or a fifth of the
+  // larger). A wild polynomial leaves the view, which is the lesson; the
+  // legend is not given room of its own, so the points stay large.
   const points = boundsOf(p);
-  const reach = 0.6 * Math.max(points.maxX - points.minX, points.maxY - points.minY, 1);
+  const width = points.maxX - points.minX;
+  const height = points.maxY - points.minY;
+  const reach = 0.3 * Math.max(Math.min(width, height), 0.25 * Math.max(width, height), 1);
   let [minX, maxX, minY, maxY] = [points.minX, points.maxX, points.minY, points.maxY];
   for (let i = 0; i < curve.length; i += 2) {
     minX = Math.min(minX, curve[i]);
@@ -172,9 +246,8 @@ function curveBounds(p: readonly Point[], curve: Float64Array, note: boolean): B
     minY: Math.max(points.minY - reach, minY),
     maxY: Math.min(points.maxY + reach, maxY),
   };
-  // Room at the top for the legend, and for the note when there is one.
-  const headroom = note ? 0.7 : 0.2;
-  return { ...bounds, maxY: bounds.maxY + headroom * (bounds.maxY - bounds.minY || 1) };
+  // A note about the points (on one line, on one spot) is read before the figure: room for it.
+  return note ? { ...bounds, maxY: bounds.maxY + 0.7 * (bounds.maxY - bounds.minY || 1) } : bounds;
 }
 
 /** From a little below 0 to a little above 1, and as far as the L_k swing, up to ±CLIP. */

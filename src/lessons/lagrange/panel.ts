@@ -6,6 +6,9 @@ import { LiveFormula, SLOT, formula, slotPoint, texNumber } from '../../render/f
 import { type LagrangeModel, basisId } from './model';
 import { interpolatedPoints } from './points';
 import { keepShownToEnd } from './script';
+import { BASIS_SLIP, NOTES_KEY, rungeText } from './text';
+import { words } from '../../kit/format';
+import { notesKey, notesSlip } from '../../kit/notes';
 import type { LagrangeState, Spacing } from './state';
 
 const SPACINGS: [Spacing, string][] = [
@@ -39,7 +42,7 @@ export function lagrangePanel(
   const tableBody = h('tbody', {});
   const table = new LiveRows(tableBody);
   const sumLine = h('p', {});
-  const rungeText = h('p', {});
+  const rungeParagraph = h('p', {});
   let hovered: string | null = null;
 
   const element = h(
@@ -54,6 +57,8 @@ export function lagrangePanel(
       'P(t) = \\sum_{k=0}^{n} L_k(t)\\,P_k,\\qquad L_k(t) = \\prod_{j \\ne k} \\frac{t - t_j}{t_k - t_j}',
       true,
     ),
+    notesSlip('continuation', BASIS_SLIP.written, BASIS_SLIP.correct),
+    notesKey(NOTES_KEY),
     h('fieldset', { class: 'choices' }, h('legend', {}, 'Parameter values tₖ'), spacing.labels),
     warning,
     spline.element,
@@ -68,7 +73,7 @@ export function lagrangePanel(
     dataTable('Weights at t', ['k', 'tₖ', 'Lₖ(t)', 'Pₖ'], tableBody),
     sumLine,
     h('h2', {}, "Runge's phenomenon"),
-    rungeText,
+    rungeParagraph,
   );
 
   /** The row of the basis curve under the pointer is marked, in whichever figure. */
@@ -103,8 +108,8 @@ export function lagrangePanel(
       );
       // Rows added for new points are marked too.
       markHovered();
-      sumLine.textContent = `The weights add up to ${fmt(m.weightSum, 6)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
-      rungeText.textContent = `With many points the weights swing far beyond 0 and 1 near the ends. Here Σ|Lₖ(t)| reaches ${fmt(lebesgue.value, 1)} at t = ${fmt(lebesgue.t, 2)}: moving the points by 0.01 can move the curve by up to ${fmt(lebesgue.value * 0.01, 2)}. Try the Runge preset (eleven equally spaced points on a bump): the polynomial wiggles ever wider between them towards the ends, while a cubic spline through the same points stays calm, because each of its pieces only listens to nearby points. That is the reason for splines.`;
+      sumLine.textContent = `The weights add up to ${words(m.weightSum)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
+      rungeParagraph.textContent = rungeText(lebesgue);
     },
     hover(id) {
       hovered = id;

@@ -30,9 +30,8 @@ describe('the named steps of Lagrange interpolation', () => {
       'basis5',
       'curve',
     ]);
-    expect(names(state({ spline: true })).slice(-2)).toEqual(['curve', 'spline1']);
     expect(interpolation.stepOf(state(), 'curve')).toBe(6);
-    expect(interpolation.stepOf(state(), 'spline')).toBe(-1);
+    expect(interpolation.stepOf(state(), 'piece')).toBe(-1);
   });
 
   it('step 0: the five points and their equally spaced t_k', () => {
@@ -67,21 +66,13 @@ describe('the named steps of Lagrange interpolation', () => {
     expect(formula(s)).toBe('P(0.40) = \\sum_{k=0}^{4} L_k(0.40)\\,P_k = (2.221,\\ 2.624)');
   });
 
-  it('the spline, compared: the largest Σ|Lₖ(t)| of five equally spaced nodes, about 2.2', () => {
-    const s = state({ spline: true, step: 7 });
-    expect(caption(s)).toBe(
-      'Compared: the natural cubic spline through the same points, each piece listening only to its neighbours',
-    );
-    expect(formula(s)).toBe('\\text{largest } \\textstyle\\sum_k |L_k(t)| = 2.2');
-  });
-
   it('a step costs no new sampling: the basis and the spline are kept while the points are', () => {
     const s = state({ spline: true, step: 2 });
     const a = derive(s);
     const b = derive({ ...s, step: 7 });
     expect(b.basis).toBe(a.basis);
     expect(b.curve).toBe(a.curve);
-    expect(b.spline).toBe(a.spline);
+    expect(b.comparison).toBe(a.comparison);
     // A new t weighs the points again, on the same basis.
     const c = derive({ ...s, t: 0.9 });
     expect(c.basis).toBe(a.basis);
