@@ -26,8 +26,15 @@ test('the lecture cubic at μ = 0.5 lists the weights 1/8, 3/8, 3/8, 1/8', async
   await expectHash(page, 'mu', (v) => v === '0.5');
   expect(await listedWeights(page)).toEqual([0.125, 0.375, 0.375, 0.125]);
   await expect(page.getByText(/centre-weighted centroid/)).toBeVisible();
-  // x(0.5) of (0,0), (1,2), (3,2), (4,0) is (2, 1.5).
-  await expect(page.getByText('Worked example: x(0.5) for the cubic')).toBeVisible();
+  // P(0.5) of (0,0), (1,2), (3,2), (4,0) is (2, 1.5).
+  await expect(page.getByText('Worked example: P(0.5) for the cubic')).toBeVisible();
+  // The weights' sum in sensible digits, and the parameter is μ throughout (the slides' u is in the key).
+  await expect(page.getByText(/Together they fill the bar: ΣW = 1\. /)).toBeVisible();
+  await expect(page.getByText(/Collect the powers of μ:/)).toBeVisible();
+  await page.getByText('Symbols here and in the notes').click();
+  await expect(
+    page.getByText(/^u in the lecture slides; t in the practical \(TP2\)/),
+  ).toBeVisible();
 });
 
 test('dragging the plot cursor changes μ, the weights and the curve figure; the weights sum to 1', async ({
@@ -123,6 +130,23 @@ test('comparing with Lagrange shows negative weights and a curve leaving the hul
   await expect(page.getByText('No value on [0, 1] is negative.')).toBeVisible();
   await page.getByLabel('Hermite H0…H3').check();
   await expect(page.getByText(/Not non-negative/)).toBeVisible();
+});
+
+test('the Compare scenes start from the Bézier picture, and the mirror steps through the symmetry', async ({
+  page,
+}) => {
+  await page.getByRole('button', { name: 'Compare: Hermite' }).click();
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText(
+    'Step 0/7: The control points P0 … P3, their Bézier curve and Bernstein weights, to compare with',
+  );
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText("Step 1/7: Hermite's data, first the end points: P0 and P3");
+  await page.goto('./#/blending?step=0');
+  await page.getByLabel('Bernstein mirrored: μ → 1 − μ').check();
+  await expectHash(page, 'b', (v) => v === 'mirror');
+  await page.keyboard.press('End');
+  await expect(status).toHaveText(/^Step 4\/4: So P\(1 − μ\) weights the points in reverse order/);
 });
 
 test('a link with a bad comparison or too many points keeps the rest and says why', async ({

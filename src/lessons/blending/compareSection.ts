@@ -6,7 +6,7 @@ import { texT } from '../../kit/format';
 import { formula } from '../../render/formula';
 import { comparedIds, comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
-import { blendingScript } from './script';
+import { keepShownToEnd } from './script';
 import type { BlendingState, Comparison } from './state';
 
 const CHOICES: { value: Comparison; label: string }[] = [
@@ -14,16 +14,19 @@ const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'hermite', label: 'Hermite H0…H3' },
   { value: 'bspline', label: 'Uniform cubic B-spline' },
   { value: 'lagrange', label: 'Lagrange, equally spaced nodes' },
+  { value: 'mirror', label: 'Bernstein mirrored: μ → 1 − μ' },
 ];
 
 const EXPLAIN: Record<Comparison, string> = {
   none: 'Pick a basis to draw it dashed on the same axes as the Bernstein functions.',
   hermite:
-    'The Hermite bases weight the two end points x0, x1 and the two end tangents x0′, x1′ of one cubic patch. H0 + H1 = 1, and H2 = μ(1−μ)² is never negative, but H3 = −μ²(1−μ) is below zero on the whole of (0, 1): H2 and H3 weight vectors, not points, so there is no convex hull to stay in. For the cubic, x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
+    'The Hermite bases weight the two end points P0, PN and the two end gradients P′0, P′N of one cubic patch (the lecture’s equation 7). H0 + H1 = 1, and H2 = μ(1−μ)² is never negative, but H3 = −μ²(1−μ) is below zero on the whole of (0, 1): H2 and H3 weight vectors, not points, so there is no convex hull to stay in. For the cubic, P′0 = 3(P1 − P0) and P′3 = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
   bspline:
     'The four blending functions of one uniform cubic B-spline segment, which weight four consecutive points. Like Bernstein’s they are never negative and sum to 1, so the curve stays in the convex hull; but none of them reaches 1, so the curve passes through no control point. Dashed in the figure: the uniform B-spline of these control points.',
   lagrange:
     'The Lagrange bases for the nodes μ = 0, 1/N, …, 1 also sum to 1, and each is 1 at its own node, so the dashed curve passes through every control point. But they are not non-negative: a negative weight pushes the point away from its control point, and the curve can leave the convex hull.',
+  mirror:
+    'The blending functions are symmetric under μ → 1 − μ: W(N, i, μ) = W(N, N − i, 1 − μ), since C(N, i) = C(N, N − i). Step through it with the clicker: the second cursor at 1 − μ, each pair of functions, and the curve traced backwards by the reversed control points.',
 };
 
 const plain = (label: string) => label.replace(/_\{?([^}]*)\}?/, '$1');
@@ -34,11 +37,8 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     name: 'compare',
     choices: CHOICES,
     get: (s) => s.comparison,
-    set: (s, comparison) => {
-      const next = { ...s, comparison };
-      // A script shown to its end stays shown to its end (with or without the comparison's step).
-      return blendingScript.keptAtEnd(s, next, 'step');
-    },
+    // A script shown to its end stays shown to its end (in the script of the new choice).
+    set: (s, comparison) => keepShownToEnd(s, { ...s, comparison }),
   });
   const explain = h('p', {});
   const body = h('tbody', {});

@@ -10,17 +10,21 @@ import {
 import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
 import type { Comparison } from './state';
 
-type Kind = Exclude<Comparison, 'none'>;
+type Kind = Exclude<Comparison, 'none' | 'mirror'>;
 
 /** Another basis beside Bernstein's, drawn for the control points alone (not yet at μ). */
 export interface ComparedShape extends Family {
   kind: Kind;
   /** The dashed curve these functions give with the control points, if they weight points. */
   curve: Point[] | null;
-  /** Hermite data of the cubic: x0 → x0 + x0′ and x1 → x1 + x1′ (for N = 3). */
+  /** Hermite data of the cubic: P0 → P0 + P′0 and P3 → P3 + P′3 (for N = 3). */
   arrows: [Point, Point][];
   /** Lagrange: the share of the curve's samples outside the control points' convex hull. */
   outside: number | null;
+  /** The convex hull of the control points, in order around it. */
+  hull: Point[];
+  /** Each function's largest value on [0, 1]. */
+  highest: number[];
 }
 
 /** Another basis beside Bernstein's, and what it makes of the same control points at μ. */
@@ -34,7 +38,7 @@ export interface Compared extends ComparedShape {
 
 /** The compared basis and its curve for these control points: it does not depend on μ. */
 export function comparedShape(p: readonly Point[], kind: Comparison): ComparedShape | null {
-  if (kind === 'none') return null;
+  if (kind === 'none' || kind === 'mirror') return null;
   const n = p.length - 1;
   const basis = family(kind, n)!;
   let curve: Point[] | null = null;
@@ -54,6 +58,12 @@ export function comparedShape(p: readonly Point[], kind: Comparison): ComparedSh
     curve,
     arrows: kind === 'hermite' && n === 3 ? hermiteArrows(p) : [],
     outside: kind === 'lagrange' && curve ? shareOutside(p, curve) : null,
+    hull: convexHull(p),
+    highest: basis.samples.curves.map((c) => {
+      let high = -Infinity;
+      for (let k = 1; k < c.length; k += 2) high = Math.max(high, c[k]);
+      return high;
+    }),
   };
 }
 
@@ -74,7 +84,7 @@ export function comparedAt(shape: ComparedShape, p: readonly Point[], mu: number
   };
 }
 
-/** The end tangents x0′ = 3(P1 − P0) and x1′ = 3(P3 − P2) at true length: the H2, H3 data. */
+/** The end gradients P′0 = 3(P1 − P0) and P′3 = 3(P3 − P2) at true length: the H2, H3 data. */
 function hermiteArrows(p: readonly Point[]): [Point, Point][] {
   const [x0, d0, x1, d1] = bezierToHermite(p);
   return [

@@ -17,23 +17,25 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   bounds: (m) => m.curveBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, n, weights, point, compared, shown } = m;
+    const { state, n, weights, point, compared, drawn } = m;
     const highlighted = highlightedIndex(info.hover);
-    const comparing = shown.has('comparison');
 
-    if (compared && comparing) {
-      if (compared.curve) {
-        painter.polyline(compared.curve, {
-          color: theme.muted,
-          width: theme.sizes.curve * 0.8,
-          dash: [10, 6],
-        });
-      }
-      drawHermiteData(painter, compared);
+    if (compared && drawn.hull)
+      painter.polygon(compared.hull, theme.muted, 0.12, {
+        color: theme.muted,
+        width: theme.sizes.thin,
+      });
+    if (compared?.curve && drawn.comparedCurve) {
+      painter.polyline(compared.curve, {
+        color: theme.muted,
+        width: theme.sizes.curve * 0.8,
+        dash: [10, 6],
+      });
     }
+    if (compared && drawn.tangents) drawHermiteData(painter, compared);
 
     painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    if (shown.has('curve')) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
+    if (drawn.curve) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
 
     // Each control point's halo grows with its weight at μ: the curve point is
     // their weighted average, so the biggest halo pulls hardest.
@@ -41,7 +43,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
     // Weights written so far: a point too close to one of them goes without (its row in the table has it).
     const placed: Point[] = [];
     state.p.forEach((control, i) => {
-      if (i >= shown.count('weight')) return;
+      if (i >= drawn.weights) return;
       const color = painter.color(i);
       const dash = seriesDash(painter, i);
       const radius = theme.sizes.handle * 1.3 + largest * weights[i];
@@ -53,7 +55,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
         color,
         lit ? 0.4 : 0.22,
       );
-      if (shown.has('point')) {
+      if (drawn.point) {
         painter.segment(control, point, {
           color,
           width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
@@ -78,7 +80,21 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
     const below = painter.view.worldLength(theme.sizes.handle + theme.sizes.small * 1.1);
     const crowd = state.p.flatMap((q) => [q, [q[0], q[1] - below]]);
 
-    const other = comparing ? compared?.point : null;
+    // Hermite's data: the patch's end points, named as the lecture names them.
+    if (drawn.data && !info.thumbnail)
+      [0, n].forEach((i) =>
+        painter.ring(state.p[i], theme.sizes.handle * 2.2, {
+          color: theme.accent,
+          width: theme.sizes.line * 1.5,
+        }),
+      );
+    // The B-spline's ends: not at P0 and PN.
+    if (compared?.curve && drawn.ends)
+      [compared.curve[0], compared.curve[compared.curve.length - 1]].forEach((end) =>
+        painter.dot(end, theme.muted, theme.sizes.point * 1.2),
+      );
+
+    const other = drawn.atMu ? compared?.point : null;
     if (other) {
       painter.ring(other.at, theme.sizes.point * 1.4, {
         color: theme.muted,
@@ -93,7 +109,16 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
       }
     }
     if (m.note && !info.thumbnail) painter.note(m.note);
-    if (!shown.has('point')) return;
+    if (drawn.reversed) {
+      painter.dot(m.mirrored, theme.muted, theme.sizes.point * 1.3);
+      if (!info.thumbnail)
+        painter.labelClear('P(1 − μ)', m.mirrored, [...crowd, point], {
+          color: theme.muted,
+          halo: true,
+          bold: true,
+        });
+    }
+    if (!drawn.point) return;
     painter.dot(point, theme.accent, theme.sizes.point * 1.5);
     if (!info.thumbnail) {
       painter.labelClear('P(μ)', point, other ? [...crowd, other.at] : crowd, {
@@ -103,17 +128,17 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
       });
     }
   },
-  trail: (m) => (m.shown.has('point') ? m.point : null),
+  trail: (m) => (m.drawn.point ? m.point : null),
   points: [controlPoints],
   addTo: controlPoints,
 };
 
-/** The Hermite data of the same cubic, x0′ and x1′ at true length, labelled. */
+/** The Hermite data of the same cubic, P′0 and P′3 at true length, labelled. */
 function drawHermiteData(painter: Painter, compared: Compared): void {
   const theme = painter.theme;
   compared.arrows.forEach(([from, tip], end) => {
     painter.arrow(from, tip, { color: theme.accent, width: theme.sizes.line });
-    painter.label(`x_${end}'`, tip, {
+    painter.label(end === 0 ? "P_0'" : "P_3'", tip, {
       dx: 6,
       dy: -theme.sizes.label * 0.7,
       color: theme.accent,

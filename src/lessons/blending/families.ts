@@ -15,7 +15,7 @@ export const SAMPLES = 400;
 export interface Family {
   /** Lecture names with subscripts, one per function: `H_0`, `W_{3,1}`, `L_{2}`. */
   labels: string[];
-  /** What each function weights: `P_{0}`, `x_1'`. */
+  /** What each function weights: `P_{0}`, `P_0'`. */
   weights: string[];
   /** Palette index of each function. */
   colors: number[];
@@ -29,7 +29,7 @@ export interface Family {
 export const equallySpacedNodes = (n: number) =>
   Array.from({ length: n + 1 }, (_, i) => (n === 0 ? 0 : i / n));
 
-/** H0 weights x0 = P0, H1 weights x1 = PN: they share those points' colours; H2, H3 follow. */
+/** H0 weights P0, H1 weights PN: they share those points' colours; H2, H3 follow. */
 const hermiteColors = (n: number) => [0, n, 1, Math.max(2, n - 1)];
 
 type FamilySpec = Omit<Family, 'samples' | 'peaks'>;
@@ -39,6 +39,7 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
   const indices = (count: number) => Array.from({ length: count }, (_, i) => i);
   switch (kind) {
     case 'none':
+    case 'mirror':
       return null;
     case 'bernstein':
       return {
@@ -48,9 +49,10 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
         values: (mu) => bernsteinBasis(n, mu),
       };
     case 'hermite':
+      // The lecture's names for the patch's data: its end points and their gradients P′.
       return {
         labels: ['H_0', 'H_1', 'H_2', 'H_3'],
-        weights: ['x_0', 'x_1', "x_0'", "x_1'"],
+        weights: ['P_0', `P_{${n}}`, "P_0'", `P_{${n}}'`],
         colors: hermiteColors(n),
         values: hermiteBasis,
       };

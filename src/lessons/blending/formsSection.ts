@@ -3,7 +3,7 @@ import { LiveFormula, formula, renderFormula } from '../../render/formula';
 import type { BlendingModel } from './model';
 import { centroidFormula, expansionTex, matrixFormTex, rowFormula } from './tex';
 
-/** The same curve written out: the expansions, the matrix form, and x(0.5) worked out. */
+/** The same curve written out: the expansions, the matrix form, and P(0.5) worked out. */
 export function formsSection() {
   // The expansions for N = 1, 2, 3 never change; the row of the current N is marked.
   const expansions = [1, 2, 3].map((k) =>
@@ -27,7 +27,7 @@ export function formsSection() {
       h(
         'p',
         {},
-        'Collect the powers of u = μ: the curve is a row of powers, times a constant matrix M, times the column of control points.',
+        'Collect the powers of μ: the curve is a row of powers of μ, times a constant matrix M, times the column of control points.',
       ),
       matrix,
       matrixAtMu.element,
@@ -44,11 +44,11 @@ export function formsSection() {
         currentExpansion.hidden = n <= 3;
         renderFormula(matrix, matrixFormTex(m.matrix), true);
         centroidTitle.textContent =
-          n === 3 ? 'Worked example: x(0.5) for the cubic' : `Worked example: x(0.5) for N = ${n}`;
+          n === 3 ? 'Worked example: P(0.5) for the cubic' : `Worked example: P(0.5) for N = ${n}`;
         centroidNote.textContent =
           n === 3
             ? 'The middle of the cubic is the centroid of its control points with weights 1, 3, 3, 1: a centre-weighted centroid. The inner points count three times as much as the ends.'
-            : `The middle of the curve is the centroid of its control points weighted by the binomial coefficients C(${n}, i): the points near the middle of the polygon count most. For the cubic this is (1/8)x0 + (3/8)x1 + (3/8)x2 + (1/8)x3.`;
+            : `The middle of the curve is the centroid of its control points weighted by the binomial coefficients C(${n}, i): the points near the middle of the polygon count most. For the cubic this is (1/8)P0 + (3/8)P1 + (3/8)P2 + (1/8)P3.`;
       }
       matrixAtMu.set(rowFormula(m.state.mu, m.weights));
       centroid.set(centroidFormula(n, m.centre));

@@ -4,7 +4,7 @@ import { curveFigure } from './curveFigure';
 import { derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
-import { blendingScript } from './script';
+import { bsplineScript, hermiteScript, lagrangeScript, lessonScript } from './script';
 import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
 
 /** A scene: its control points, μ and the basis compared with (the clicker opens it at step 0). */
@@ -24,7 +24,10 @@ export default defineLesson({
   slug: 'blending',
   schema,
   step: 'step',
-  script: blendingScript,
+  // Bernstein's steps (or the symmetry's); each Compare scene walks a script of its own.
+  script: lessonScript,
+  // The comparison chosen says which: the Compare scenes are named after theirs.
+  sceneOf: (s) => s.comparison,
   derive,
   figures: [curveFigure, plotFigure],
   layout: 'row',
@@ -70,23 +73,32 @@ export default defineLesson({
       Array.from({ length: 11 }, (_, i) => [i / 2, i % 2 === 0 ? 0 : 3]),
       0.5,
     ),
-    scene('hermite', 'Compare: Hermite', LECTURE_CUBIC, 0.3, 'hermite'),
-    scene('bspline', 'Compare: B-spline', LECTURE_CUBIC, 0.3, 'bspline'),
-    scene(
-      'lagrange',
-      'Compare: Lagrange',
-      [
-        [0, 0],
-        [1, 0],
-        [2, 0],
-        [3, 1.5],
-        [4, 3],
-        [5, 3],
-        [6, 3],
-      ],
-      0.1,
-      'lagrange',
-    ),
+    {
+      ...scene('hermite', 'Compare: Hermite', LECTURE_CUBIC, 0.3, 'hermite'),
+      script: hermiteScript,
+    },
+    {
+      ...scene('bspline', 'Compare: B-spline', LECTURE_CUBIC, 0.3, 'bspline'),
+      script: bsplineScript,
+    },
+    {
+      ...scene(
+        'lagrange',
+        'Compare: Lagrange',
+        [
+          [0, 0],
+          [1, 0],
+          [2, 0],
+          [3, 1.5],
+          [4, 3],
+          [5, 3],
+          [6, 3],
+        ],
+        0.1,
+        'lagrange',
+      ),
+      script: lagrangeScript,
+    },
   ],
   panel: blendingPanel,
 });

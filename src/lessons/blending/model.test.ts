@@ -17,12 +17,12 @@ const describeStep = (s: BlendingState, k: number) => lesson.steps!.describe(s, 
 const stepFormula = (m: BlendingModel, s: BlendingState) => lesson.steps!.formula!(m, s);
 /** What a step shows: how many weights, P(μ), the curve, the comparison. */
 const revealed = (s: BlendingState) => {
-  const { shown } = derive(s);
+  const { drawn } = derive(s);
   return {
-    weights: shown.count('weight'),
-    point: shown.has('point'),
-    curve: shown.has('curve'),
-    compared: shown.has('comparison'),
+    weights: drawn.weights,
+    point: drawn.point,
+    curve: drawn.curve,
+    compared: drawn.compared > 0,
   };
 };
 const close = (actual: readonly number[], expected: readonly number[], digits = 12) =>
@@ -119,7 +119,7 @@ describe('the script (blending)', () => {
     checkScript(lesson);
   });
 
-  it('reveals the weights one by one: N + 3 steps, one more with a comparison', () => {
+  it('reveals the weights one by one: N + 3 steps; Hermite’s comparison takes 7 of its own', () => {
     expect(stepCount(cubic)).toBe(6);
     expect(stepCount({ ...cubic, comparison: 'hermite' })).toBe(7);
     expect(revealed({ ...cubic, step: 0 })).toEqual({

@@ -10,24 +10,79 @@ import type { BlendingState } from './state';
 
 export type { Compared } from './comparison';
 
+/**
+ * What the figures draw at this step, read off the step names of whichever
+ * script the state walks (Bernstein's, a comparison's, or the symmetry's).
+ */
+export interface Drawn {
+  /** How many Bernstein functions W(N, i, μ) are drawn, and faded behind another basis. */
+  bernstein: number;
+  faded: boolean;
+  /** How many control points wear the halo of their weight at μ (with a dot on the plot). */
+  weights: number;
+  /** P(μ) and the Bézier curve. */
+  point: boolean;
+  curve: boolean;
+  /** How many of the compared functions are drawn. */
+  compared: number;
+  /** Hermite's end points named, and its end gradients drawn. */
+  data: boolean;
+  tangents: boolean;
+  /** The B-spline's ends, the compared curve, the convex hull. */
+  ends: boolean;
+  comparedCurve: boolean;
+  hull: boolean;
+  /** The compared functions' values at μ, and their point. */
+  atMu: boolean;
+  /** The second cursor at 1 − μ; the pairs W(N, i, μ) = W(N, N − i, 1 − μ) so far; P(1 − μ). */
+  mirror: boolean;
+  pairs: number;
+  reversed: boolean;
+}
+
+function drawnAt(shown: Revealed<Reveal>, n: number): Drawn {
+  const whole = shown.has('bezier');
+  const symmetry = shown.has('functions');
+  return {
+    bernstein: whole || symmetry ? n + 1 : shown.count('weight'),
+    faded: whole && shown.count('basis') > 0,
+    weights: whole ? n + 1 : shown.count('weight'),
+    point: whole || shown.has('point') || shown.has('reversed'),
+    curve: whole || shown.has('curve') || shown.has('reversed'),
+    compared: shown.count('basis'),
+    data: shown.has('data'),
+    tangents: shown.has('tangents'),
+    ends: shown.has('ends'),
+    comparedCurve: shown.has('spline'),
+    hull: shown.has('hull'),
+    atMu: shown.has('atMu'),
+    mirror: shown.has('mirror'),
+    pairs: shown.count('pair'),
+    reversed: shown.has('reversed'),
+  };
+}
+
 /** Everything the figures and the panel show, computed once per state. */
 export interface BlendingModel {
   state: BlendingState;
   /** Degree N. */
   n: number;
-  /** What the steps so far reveal: how many weights, P(μ), the curve, the comparison. */
+  /** What the steps so far reveal, and what the figures draw for it. */
   shown: Revealed<Reveal>;
+  drawn: Drawn;
   bernstein: Family;
   /** W(N, i, μ) for every i, and their sum (1 up to rounding). */
   weights: number[];
   sum: number;
   /** P(μ), and the curve sampled (interleaved x, y). */
   point: Point;
+  /** P(1 − μ): the same curve's point with the weights reversed. */
+  mirrored: Point;
   curve: Float64Array;
   compared: Compared | null;
-  /** x(0.5): the curve's middle, the binomially weighted centroid. */
+  /** P(0.5): the curve's middle, the binomially weighted centroid. */
   centre: Point;
-  /** M of x(u) = U M X. */
+  /** M of P(μ) = U M P. */
   matrix: number[][];
   /** What "fit" shows in the curve figure, and the plot's range. */
   curveBounds: Bounds;
@@ -79,7 +134,7 @@ const comparison = memoOn<
 const atMu = memoOn<
   Pick<BlendingState, 'p' | 'mu' | 'comparison'>,
   'p' | 'mu' | 'comparison',
-  Pick<BlendingModel, 'weights' | 'sum' | 'point' | 'compared'>
+  Pick<BlendingModel, 'weights' | 'sum' | 'point' | 'mirrored' | 'compared'>
 >(['p', 'mu', 'comparison'], (fields) => {
   const { p, mu } = fields;
   const weights = [...shape(fields).bernstein.values(mu)];
@@ -88,13 +143,16 @@ const atMu = memoOn<
     weights,
     sum: weights.reduce((a, b) => a + b, 0),
     point: bezierPoint(p, mu),
+    mirrored: bezierPoint(p, 1 - mu),
     compared: compared && comparedAt(compared, p, mu),
   };
 });
 
 export function derive(state: BlendingState, shown: Revealed<Reveal>): BlendingModel {
   const { curveBounds, plotBounds, handleY } = comparison(state);
-  return { ...shape(state), ...atMu(state), curveBounds, plotBounds, handleY, state, shown };
+  const common = shape(state);
+  const drawn = drawnAt(shown, common.n);
+  return { ...common, ...atMu(state), curveBounds, plotBounds, handleY, state, shown, drawn };
 }
 
 /** Coincident or collinear control points, in words: what the curve does then. */

@@ -1,6 +1,8 @@
 import { h } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { formula } from '../../render/formula';
+import { notesKey } from '../../kit/notes';
+import { NOTES_KEY } from './notesKey';
 import { compareSection } from './compareSection';
 import { formsSection } from './formsSection';
 import type { BlendingModel } from './model';
@@ -26,6 +28,7 @@ export function blendingPanel(
     ),
     formula('P(\\mu) = \\sum_{i=0}^{N} W(N,i,\\mu)\\,P_i', true),
     formula('W(N,i,\\mu) = \\binom{N}{i}\\mu^{i}(1-\\mu)^{N-i}', true),
+    notesKey(NOTES_KEY),
     h(
       'p',
       { class: 'note' },

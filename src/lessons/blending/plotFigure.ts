@@ -20,10 +20,10 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
   bounds: (m) => m.plotBounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { plotBounds: bounds, n, compared } = m;
+    const { plotBounds: bounds, n, compared, drawn } = m;
     const mu = m.state.mu;
     const highlighted = highlightedIndex(info.hover);
-    const comparing = m.shown.has('comparison');
+    const comparing = compared !== null && drawn.compared > 0;
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
       painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
@@ -32,10 +32,10 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
 
     drawFamily(painter, m.bernstein, {
       dash: undefined,
-      faded: compared !== null && comparing,
+      faded: drawn.faded,
       highlighted,
-      labels: !info.thumbnail && (!compared || !comparing) && n + 1 <= LABEL_CURVES_UP_TO,
-      count: m.shown.count('weight'),
+      labels: !info.thumbnail && !comparing && n + 1 <= LABEL_CURVES_UP_TO,
+      count: drawn.bernstein,
     });
     if (compared && comparing) {
       drawFamily(painter, compared, {
@@ -43,7 +43,7 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
         faded: false,
         highlighted: comparedIndex(info.hover),
         labels: !info.thumbnail && compared.labels.length <= LABEL_CURVES_UP_TO,
-        count: compared.labels.length,
+        count: drawn.compared,
       });
     }
 
@@ -55,14 +55,15 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
       dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
     });
     m.weights.forEach((w, i) => {
-      if (i >= m.shown.count('weight')) return;
+      if (i >= drawn.weights) return;
       painter.dot([mu, w], painter.color(i), theme.sizes.point * (highlighted === i ? 1.4 : 1));
     });
-    if (comparing) {
-      compared?.atMu.forEach((w) => {
+    if (compared && drawn.atMu) {
+      compared.atMu.forEach((w) => {
         painter.ring([mu, w], theme.sizes.point, { color: theme.ink, width: theme.sizes.thin });
       });
     }
+    if (drawn.mirror) drawMirror(painter, m);
   },
   handles: (m) => [{ id: 'mu', label: 'μ', position: [m.state.mu, m.handleY], shape: 'diamond' }],
   // The cursor moves along μ only: the height of the pointer does not matter.
@@ -77,6 +78,30 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
   },
   weight: 1,
 };
+
+/**
+ * The symmetry μ → 1 − μ: the mirrored cursor, and for each pair so far
+ * W(N, i, μ) on the first cursor joined level to W(N, N − i, 1 − μ) on the
+ * second (both ways round).
+ */
+function drawMirror(painter: Painter, m: BlendingModel): void {
+  const theme = painter.theme;
+  const { plotBounds: bounds, n, weights, drawn } = m;
+  const mu = m.state.mu;
+  painter.segment([1 - mu, bounds.minY], [1 - mu, m.handleY], {
+    color: theme.muted,
+    width: theme.sizes.line,
+    dash: [theme.sizes.line * 2, theme.sizes.line * 1.5],
+  });
+  for (let pair = 0; pair < drawn.pairs; pair++) {
+    for (const i of new Set([pair, n - pair])) {
+      const w = weights[i];
+      painter.segment([mu, w], [1 - mu, w], { color: painter.color(i), width: theme.sizes.line });
+      painter.dot([mu, w], painter.color(i), theme.sizes.point);
+      painter.dot([1 - mu, w], painter.color(n - i), theme.sizes.point);
+    }
+  }
+}
 
 interface FamilyStyle {
   dash: number[] | undefined;

@@ -1,5 +1,5 @@
 import { pointList } from '../../kit/pointList';
-import { blendingScript } from './script';
+import { keepShownToEnd } from './script';
 import { type BlendingState, MAX_POINTS } from './state';
 
 /** The control points P₀ … P_N: dragged, moved by keyboard, added and removed. */
@@ -13,5 +13,5 @@ export const controlPoints = pointList<BlendingState>({
   addLabel: 'N + 1: add a control point',
   removeLabel: 'N − 1: remove the last point',
   // A script shown to its end stays shown to its end.
-  after: (before, after) => blendingScript.keptAtEnd(before, after, 'step'),
+  after: keepShownToEnd,
 });

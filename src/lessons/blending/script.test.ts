@@ -49,16 +49,10 @@ describe('the blending script, step by named step', () => {
     ]);
   });
 
-  it('has a comparison step only when a basis is chosen: N + 3 presses, or N + 4', () => {
+  it('has no comparison step: a comparison walks a script of its own', () => {
     expect(blendingScript.stepOf(cubic, 'point')).toBe(5);
     expect(blendingScript.stepOf(cubic, 'curve')).toBe(6);
-    expect(blendingScript.stepOf(cubic, 'comparison')).toBe(-1);
-    const hermite = { ...cubic, comparison: 'hermite' as const };
-    expect(blendingScript.stepOf(hermite, 'comparison')).toBe(7);
-    expect(walk(hermite)[7]).toEqual([
-      'Compared, dashed: the Hermite functions H0 … H3; only H3 goes below zero, and they weight tangents too',
-      "x(\\mu) = H_0\\,x_0 + H_1\\,x_1 + H_2\\,x_0' + H_3\\,x_1'",
-    ]);
+    expect(blendingScript.stepOf(cubic, 'basis')).toBe(-1);
     // N = 1: P0's weight peaks at μ = 0, P1's at μ = 1.
     const line = { ...cubic, p: cubic.p.slice(0, 2) };
     expect(blendingScript.lastStep(line)).toBe(4);

@@ -2,8 +2,11 @@ import { choice, int, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
-/** A basis drawn on the same axes as the Bernstein functions, for comparison. */
-export type Comparison = 'none' | 'hermite' | 'bspline' | 'lagrange';
+/**
+ * A basis drawn on the same axes as the Bernstein functions, for comparison;
+ * or the Bernstein functions' own mirror image under μ → 1 − μ.
+ */
+export type Comparison = 'none' | 'hermite' | 'bspline' | 'lagrange' | 'mirror';
 
 /** Everything the blending lesson shows, and all of it goes in the link. */
 export interface BlendingState {
@@ -33,7 +36,10 @@ export const schema: Schema<BlendingState> = {
   p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
   mu: number({ default: 0.5, min: 0, max: 1 }),
   comparison: linkKey(
-    choice<Comparison>({ default: 'none', values: ['none', 'hermite', 'bspline', 'lagrange'] }),
+    choice<Comparison>({
+      default: 'none',
+      values: ['none', 'hermite', 'bspline', 'lagrange', 'mirror'],
+    }),
     'b',
   ),
   step: int({ default: 0, min: 0, max: MAX_POINTS + 4 }),

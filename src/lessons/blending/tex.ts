@@ -55,29 +55,29 @@ export function pointFormula(
   return tex`\begin{aligned}P(${liveMu(mu)}) &= ${joined(terms, '\\\\ &\\quad + ')}\\ &= ${livePoint(point, 4)}\end{aligned}`;
 }
 
-/** The matrix M of x(u) = U M X for degree n: it depends on n alone. */
+/** The matrix M of P(μ) = U M P for degree n (the lecture slides' matrix form, in μ): it depends on n alone. */
 export function matrixFormTex(matrix: readonly (readonly number[])[]): string {
   const n = matrix.length - 1;
   const powers = Array.from({ length: n + 1 }, (_, power) =>
-    power === 0 ? '1' : power === 1 ? 'u' : `u^{${power}}`,
+    power === 0 ? '1' : power === 1 ? '\\mu' : `\\mu^{${power}}`,
   );
-  const names = Array.from({ length: n + 1 }, (_, i) => `x_{${i}}`);
+  const names = Array.from({ length: n + 1 }, (_, i) => `P_{${i}}`);
   const rows = matrix.map((row) => row.join(' & ')).join('\\\\');
-  return `\\begin{aligned}x(u) &= U\\,M\\,X,\\qquad U = \\begin{pmatrix}${powers.join(' & ')}\\end{pmatrix},\\\\ X &= \\begin{pmatrix}${names.join(' & ')}\\end{pmatrix}^{T},\\\\ M &= \\begin{pmatrix}${rows}\\end{pmatrix}\\end{aligned}`;
+  return `\\begin{aligned}P(\\mu) &= U\\,M\\,\\mathbf{P},\\qquad U = \\begin{pmatrix}${powers.join(' & ')}\\end{pmatrix},\\\\ \\mathbf{P} &= \\begin{pmatrix}${names.join(' & ')}\\end{pmatrix}^{T},\\\\ M &= \\begin{pmatrix}${rows}\\end{pmatrix}\\end{aligned}`;
 }
 
-/** U·M at u = μ: the weights again, as a row. */
+/** U·M at μ: the weights again, as a row. */
 export const rowFormula = (mu: number, weights: readonly number[]) =>
-  tex`\text{at } u = ${liveMu(mu)}:\quad U M = \begin{pmatrix}${joined(
+  tex`\text{at } \mu = ${liveMu(mu)}:\quad U M = \begin{pmatrix}${joined(
     weights.map((w) => live(texNumber(w, 4))),
     ' & ',
   )}\end{pmatrix}`;
 
-/** x(½) = Σ C(N, i)/2ᴺ xᵢ: the "centre-weighted centroid", then its value. */
+/** P(½) = Σ C(N, i)/2ᴺ Pᵢ: the "centre-weighted centroid", then its value. */
 export function centroidFormula(n: number, centre: Point): FormulaParts {
   const terms = Array.from(
     { length: n + 1 },
-    (_, i) => `\\tfrac{${binomial(n, i)}}{${2 ** n}}x_{${i}}`,
+    (_, i) => `\\tfrac{${binomial(n, i)}}{${2 ** n}}P_{${i}}`,
   );
-  return tex`\begin{aligned}x(0.5) &= ${terms.join(' + ')}\\ &= ${livePoint(centre, 4)}\end{aligned}`;
+  return tex`\begin{aligned}P(0.5) &= ${terms.join(' + ')}\\ &= ${livePoint(centre, 4)}\end{aligned}`;
 }

@@ -1,7 +1,7 @@
 import { dataTable, fmt, h, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { texT } from '../../kit/format';
+import { texT, words } from '../../kit/format';
 import { LiveFormula } from '../../render/formula';
 import { highlightedIndex, weightIds } from './hover';
 import type { BlendingModel } from './model';
@@ -93,7 +93,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
       showLit();
       setText(
         sum,
-        `Together they fill the bar: ΣW = ${fmt(m.sum, 12)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`,
+        `Together they fill the bar: ΣW = ${words(m.sum)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`,
       );
       point.set(pointFormula(mu, weights, p, m.point));
     },

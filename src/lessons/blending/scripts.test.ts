@@ -1,0 +1,157 @@
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import { drawState } from '../../kit/scriptChecks';
+import { filled } from '../../kit/format';
+import lesson from './lesson';
+import type { BlendingModel } from './model';
+import { NOTES_KEY } from './notesKey';
+import { bsplineScript, hermiteScript, lagrangeScript, symmetryScript } from './script';
+import { type BlendingState, schema } from './state';
+import { matrixFormTex, rowFormula } from './tex';
+
+const cubic: BlendingState = defaultsOf(schema);
+const derive = (s: BlendingState) => lesson.derive(s) as BlendingModel;
+const opened = (id: string) => {
+  const scene = lesson.scenes!.find((s) => s.id === id)!;
+  return { ...(scene.apply(cubic) as BlendingState), step: 0 };
+};
+const names = (script: typeof hermiteScript, s: BlendingState) =>
+  Array.from({ length: script.lastStep(s) + 1 }, (_, k) => script.shown(s, k).name);
+const walk = (s: BlendingState) =>
+  Array.from({ length: lesson.steps!.count(s) + 1 }, (_, step) => {
+    const at = { ...s, step };
+    return [lesson.steps!.describe(at, step), lesson.steps!.formula!(derive(at), at)];
+  });
+
+describe('the Compare scenes start where their own idea starts (issue #20)', () => {
+  it('replay no Bernstein weight: the Bézier picture is step 0, then the other basis', () => {
+    expect(names(hermiteScript, opened('hermite'))).toEqual([
+      'bezier',
+      'data',
+      'tangents',
+      'basis',
+      'basis',
+      'basis',
+      'basis',
+      'atMu',
+    ]);
+    expect(names(bsplineScript, opened('bspline'))).toEqual([
+      'bezier',
+      'basis',
+      'basis',
+      'basis',
+      'basis',
+      'ends',
+      'spline',
+      'atMu',
+    ]);
+    expect(names(lagrangeScript, opened('lagrange'))).toEqual([
+      'bezier',
+      ...Array(7).fill('basis'),
+      'spline',
+      'hull',
+      'atMu',
+    ]);
+    // The recorded links' last steps (7, 7, 10) are still each scene's last step.
+    expect(['hermite', 'bspline', 'lagrange'].map((id) => lesson.steps!.count(opened(id)))).toEqual(
+      [7, 7, 10],
+    );
+  });
+
+  it('every step of every scene, and of the symmetry, draws something the step before did not', () => {
+    const states = [
+      ...lesson.scenes!.map((scene) => ({ id: scene.id, s: opened(scene.id) })),
+      { id: 'mirror', s: { ...cubic, mu: 0.3, comparison: 'mirror' as const } },
+    ];
+    for (const { id, s } of states) {
+      let before = drawState(lesson, s).svg;
+      for (let k = 1; k <= lesson.steps!.count(s); k++) {
+        const now = drawState(lesson, { ...s, step: k }).svg;
+        expect(now, `${id} step ${k}`).not.toBe(before);
+        before = now;
+      }
+    }
+  });
+
+  it('Hermite: the end gradients of the lecture cubic, 3(P1 − P0) = (3, 6) and 3(P3 − P2) = (3, −6)', () => {
+    const [, , tangents] = walk(opened('hermite'));
+    expect(tangents[1]).toBe(
+      "P_0' = 3(P_1 - P_0) = (3.00,\\ 6.00),\\quad P_3' = 3(P_3 - P_2) = (3.00,\\ -6.00)",
+    );
+  });
+
+  it('B-spline: the curve starts at (P0 + 4P1 + P2)/6 = (7/6, 10/6), not at P0', () => {
+    const steps = walk(opened('bspline'));
+    expect(steps[1][0]).toBe(
+      'B0: never negative, and at most 0.167, so it never takes a point whole',
+    );
+    expect(steps[2][0]).toBe(
+      'B1: never negative, and at most 0.667, so it never takes a point whole',
+    );
+    expect(steps[5][1]).toMatch(/^\\tfrac\{1\}\{6\}\(P_0 \+ 4P_1 \+ P_2\) = \(1\.167,\\ 1\.667\)/);
+  });
+});
+
+describe('the symmetry μ → 1 − μ, stepped with the numbers of μ (the lecture slides: symmetric under u → 1 − u)', () => {
+  const mirror = { ...cubic, mu: 0.3, comparison: 'mirror' as const };
+
+  it('walks the functions, the mirrored cursor, each pair, and the reversed curve', () => {
+    expect(names(symmetryScript, mirror)).toEqual([
+      'functions',
+      'mirror',
+      'pair',
+      'pair',
+      'reversed',
+    ]);
+    const steps = walk(mirror);
+    expect(steps[1]).toEqual([
+      'Mirror μ in ½: a second cursor at 1 − μ = 0.7',
+      '1 - \\mu = 1 - 0.3 = 0.7',
+    ]);
+    // W(3, 0, 0.3) = 0.7³ = 0.343 = W(3, 3, 0.7); W(3, 1, 0.3) = 3 · 0.3 · 0.7² = 0.441 = W(3, 2, 0.7).
+    expect(steps[2]).toEqual([
+      "W(3, 0, μ) = W(3, 3, 1 − μ) = 0.343: swapping μ and 1 − μ swaps P0's weight and P3's",
+      'W(3,0,0.3) = 1\\cdot 0.3^{0}\\,0.7^{3} = 1\\cdot 0.7^{3}\\,0.3^{0} = W(3,3,0.7) = 0.3430',
+    ]);
+    expect(steps[3][1]).toBe(
+      'W(3,1,0.3) = 3\\cdot 0.3^{1}\\,0.7^{2} = 3\\cdot 0.7^{2}\\,0.3^{1} = W(3,2,0.7) = 0.4410',
+    );
+    // P(0.7) = 0.027 P0 + 0.189 P1 + 0.441 P2 + 0.343 P3 = (0.189 + 1.323 + 1.372, 0.378 + 0.882) = (2.884, 1.26).
+    expect(steps[4][1]).toBe('P(0.7) = \\sum_{i=0}^{3} W(3,i,0.3)\\,P_{3-i} = (2.884,\\ 1.260)');
+  });
+
+  it('N = 2: the middle function is its own mirror image', () => {
+    const quadratic = {
+      ...mirror,
+      p: [
+        [0, 0],
+        [2, 3],
+        [4, 0],
+      ],
+    };
+    // W(2, 1, 0.3) = 2 · 0.3 · 0.7 = 0.42.
+    expect(walk(quadratic)[3][0]).toBe(
+      'W(2, 1, μ) = W(2, 1, 1 − μ) = 0.42: the middle function is its own mirror image',
+    );
+  });
+});
+
+describe('one letter for the parameter: μ, as the lecture notes write it (issue #20)', () => {
+  it('the matrix form and its row at μ are written in μ, not u', () => {
+    const m = derive(cubic);
+    const matrix = matrixFormTex(m.matrix);
+    expect(matrix).toMatch(/^\\begin\{aligned\}P\(\\mu\) &= U\\,M\\,\\mathbf\{P\}/);
+    expect(matrix).toMatch(
+      /\\begin\{pmatrix\}1 & \\mu & \\mu\^\{2\} & \\mu\^\{3\}\\end\{pmatrix\}/,
+    );
+    expect(matrix).not.toMatch(/\bu\b|x_\{/);
+    expect(filled(rowFormula(0.5, m.weights))).toMatch(/^\\text\{at \} \\mu = 0\.5:/);
+  });
+
+  it('the key says how the slides (u) and the practical (t) write μ', () => {
+    expect(NOTES_KEY[0]).toEqual([
+      'μ',
+      'u in the lecture slides; t in the practical (TP2) and the continuation notes',
+    ]);
+  });
+});
