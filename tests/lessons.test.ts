@@ -9,36 +9,18 @@ import type { AnyLesson } from '../src/app/lesson';
 import { normalizeState } from '../src/app/lessonState';
 import { lessons } from '../src/app/registry';
 import { defaultsOf } from '../src/app/urlState';
-import { drawHandles } from '../src/app/figureView';
-import { OrbitCamera } from '../src/render/orbitCamera';
-import { Painter } from '../src/render/painter';
-import { SvgContext } from '../src/render/svgContext';
+import { drawHeadless } from '../src/app/headless';
 import { makeTheme } from '../src/render/theme';
-import { Viewport } from '../src/render/viewport';
 
 const WIDTH = 900;
 const HEIGHT = 560;
 
 function drawAll(lesson: AnyLesson, state: unknown, presenter = true) {
   const model = lesson.derive(state);
+  const theme = makeTheme(false, presenter);
   return lesson.figures.map((figure) => {
-    const view = figure.kind === 'space' ? new OrbitCamera(figure.camera) : new Viewport();
     const height = figure.height ?? HEIGHT;
-    view.resize(WIDTH, height);
-    // As the page fits a figure (FigureView.applyFit).
-    const theme = makeTheme(false, presenter);
-    const padding =
-      figure.kind === 'plot'
-        ? theme.sizes.small * 3.2
-        : theme.sizes.handle * 2 + theme.sizes.label * 1.6;
-    view.fit(figure.bounds(model), padding, figure.kind !== 'plot');
-    const svg = new SvgContext();
-    const painter = new Painter(svg, view, theme);
-    painter.clear();
-    figure.draw(painter, model, { hover: null, thumbnail: false });
-    const handles = figure.handles?.(model) ?? [];
-    drawHandles(painter, handles);
-    figure.drawOver?.(painter, model, { hover: null, thumbnail: false });
+    const { svg, handles } = drawHeadless(figure, model, { width: WIDTH, height, theme });
     return {
       id: figure.id,
       svg: svg.toSvg(WIDTH, height),

@@ -1,3 +1,4 @@
+import { fitPadding } from './headless';
 import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/handleDrag';
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
@@ -191,13 +192,7 @@ export class FigureView<S, M> {
   }
 
   private applyFit(model: M, theme: Theme): void {
-    // Room for handles and labels at the edge, but never more than a share of
-    // a small figure (presenter view's sizes would leave it a postage stamp).
-    const room =
-      this.spec.kind === 'plot'
-        ? theme.sizes.small * 3.2
-        : theme.sizes.handle * 2 + theme.sizes.label * 1.6;
-    const padding = Math.min(room, 0.12 * Math.min(this.view.width, this.view.height));
+    const padding = fitPadding(this.spec.kind, theme, this.view.width, this.view.height);
     this.view.fit(this.spec.bounds(model), padding, this.spec.kind !== 'plot');
     this.fitted = true;
   }

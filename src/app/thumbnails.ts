@@ -5,11 +5,8 @@
  */
 import type { AnyLesson } from './lesson';
 import { lessons } from './registry';
-import { Painter } from '../render/painter';
-import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
-import { OrbitCamera } from '../render/orbitCamera';
-import { Viewport } from '../render/viewport';
+import { drawHeadless } from './headless';
 import { defaultsOf } from './urlState';
 
 const WIDTH = 320;
@@ -22,21 +19,16 @@ export function renderThumbnail(lesson: AnyLesson, dark: boolean): string {
     ...base,
     sizes: { ...base.sizes, curve: 2.5, line: 1.25, point: 3, handle: 4, label: 10, small: 9 },
   };
-  const figure = lesson.figures[0];
   const state = lesson.normalize
     ? lesson.normalize(defaultsOf(lesson.schema)).state
     : defaultsOf(lesson.schema);
   const model = lesson.derive(state);
-  const view =
-    figure.kind === 'space' ? new OrbitCamera(figure.camera) : new Viewport(WIDTH, HEIGHT);
-  view.resize(WIDTH, HEIGHT);
-  view.fit(figure.bounds(model), 18, figure.kind !== 'plot');
-  const svg = new SvgContext();
-  const painter = new Painter(svg, view, theme);
-  painter.clear();
-  figure.draw(painter, model, { hover: null, thumbnail: true });
-  for (const handle of figure.handles?.(model) ?? [])
-    painter.handle(handle.position, { color: handle.color, radius: 3.5 });
+  const { svg } = drawHeadless(lesson.figures[0], model, {
+    width: WIDTH,
+    height: HEIGHT,
+    theme,
+    thumbnail: true,
+  });
   return svg.toSvg(WIDTH, HEIGHT, theme.background);
 }
 

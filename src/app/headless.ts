@@ -1,0 +1,72 @@
+/**
+ * A lesson's figure drawn without a page: the same drawing calls as the
+ * canvas, recorded as SVG. Gallery thumbnails, handouts and the tests that
+ * walk every step draw through here, so all three see what the page shows.
+ */
+import { Painter } from '../render/painter';
+import { OrbitCamera } from '../render/orbitCamera';
+import type { Projection } from '../render/projection';
+import { SvgContext } from '../render/svgContext';
+import type { Theme } from '../render/theme';
+import { Viewport } from '../render/viewport';
+import { drawHandles } from '../render/handles';
+import type { FigureSpec, Handle } from './lesson';
+
+export interface HeadlessOptions {
+  width: number;
+  height: number;
+  theme: Theme;
+  /** A thumbnail: no grid, labels or detail, small plain handles. */
+  thumbnail?: boolean;
+  /** A space figure's camera as a link writes it (`view.<figure>`): its angles are kept, then fitted. */
+  view?: string;
+}
+
+export interface HeadlessFigure {
+  svg: SvgContext;
+  painter: Painter;
+  handles: Handle[];
+  view: Projection;
+}
+
+/** Room for handles and labels at the edge, as the page fits a figure (never more than a share of a small one). */
+export function fitPadding(
+  kind: FigureSpec<unknown>['kind'],
+  theme: Theme,
+  width: number,
+  height: number,
+): number {
+  const room =
+    kind === 'plot' ? theme.sizes.small * 3.2 : theme.sizes.handle * 2 + theme.sizes.label * 1.6;
+  return Math.min(room, 0.12 * Math.min(width, height));
+}
+
+/** Draws one figure of the model, fitted to its bounds as the page fits it, with its handles. */
+export function drawHeadless<S, M>(
+  figure: FigureSpec<S, M>,
+  model: M,
+  options: HeadlessOptions,
+): HeadlessFigure {
+  const { width, height, theme, thumbnail = false } = options;
+  const view: Projection =
+    figure.kind === 'space' ? new OrbitCamera(figure.camera) : new Viewport(width, height);
+  view.resize(width, height);
+  if (options.view && view instanceof OrbitCamera) view.decode(options.view);
+  const padding = thumbnail ? 18 : fitPadding(figure.kind, theme, width, height);
+  view.fit(figure.bounds(model), padding, figure.kind !== 'plot');
+  const svg = new SvgContext();
+  const painter = new Painter(svg, view, theme);
+  painter.clear();
+  const info = { hover: null, thumbnail };
+  if (figure.kind === 'geometry' && !thumbnail) painter.grid();
+  figure.draw(painter, model, info);
+  const handles = figure.handles?.(model) ?? [];
+  if (thumbnail) {
+    for (const handle of handles)
+      painter.handle(handle.position, { color: handle.color, radius: 3.5 });
+  } else {
+    drawHandles(painter, handles);
+    figure.drawOver?.(painter, model, info);
+  }
+  return { svg, painter, handles, view };
+}
