@@ -105,9 +105,10 @@ export class Painter {
 
   applyStroke(style: StrokeStyle, fallbackWidth: number, fallbackColor: string): void {
     const c = this.ctx;
-    c.strokeStyle = style.color ?? fallbackColor;
+    const color = style.color ?? fallbackColor;
+    c.strokeStyle = color;
     c.lineWidth = style.width ?? fallbackWidth;
-    c.setLineDash(style.dash ?? []);
+    c.setLineDash(style.dash ?? this.theme.dashOf?.(color) ?? []);
     c.globalAlpha = style.alpha ?? 1;
     c.lineCap = 'round';
     c.lineJoin = 'round';

@@ -41,6 +41,11 @@ export interface Theme {
   palette: readonly string[];
   fontFamily: string;
   sizes: Sizes;
+  /**
+   * Paper: a stroke in a series colour that sets no dash of its own gets
+   * this one, so a grey-scale copy still tells the series apart.
+   */
+  dashOf?(color: string): number[] | undefined;
 }
 
 const FONT = 'system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", sans-serif';
@@ -131,5 +136,45 @@ export function makeTheme(dark: boolean, projector: boolean): Theme {
     palette: projector ? LIGHT_STRONG : LIGHT,
     fontFamily: FONT,
     sizes,
+  };
+}
+
+/**
+ * Dashes on paper, by palette slot: the curve (ink), slot 0 and the accent
+ * (slot 1: P(t), the parameter's marks) stay solid; every other series colour
+ * has a pattern of its own.
+ */
+const PAPER_DASHES: readonly (readonly number[] | undefined)[] = [
+  undefined,
+  undefined,
+  [9, 4],
+  [2, 3],
+  [12, 3, 2, 3],
+  [6, 3],
+  [2, 2, 8, 2],
+  [14, 4, 2, 4, 2, 4],
+];
+
+/**
+ * The theme of a handout: light, with black ink and the strong palette, and
+ * every series told apart by a dash as well as by colour. Sizes are for a
+ * page read in the hand (px at 96 per inch: 13 px labels are 10 pt).
+ */
+export function makePaperTheme(): Theme {
+  const base = makeTheme(false, true);
+  const dashes = new Map(
+    LIGHT_STRONG.map((colour, i) => [colour.toLowerCase(), PAPER_DASHES[i]] as const),
+  );
+  return {
+    ...base,
+    projector: false,
+    grid: '#e2e2e2',
+    axis: '#555555',
+    curveFaint: '#8c8c8c',
+    sizes: { curve: 2.4, line: 1.5, thin: 1, handle: 5.5, point: 3.5, label: 13, small: 10.5 },
+    dashOf: (colour) => {
+      const dash = dashes.get(colour.toLowerCase());
+      return dash ? [...dash] : undefined;
+    },
   };
 }
