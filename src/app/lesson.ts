@@ -202,6 +202,19 @@ export interface LessonDefinition<S, M = S> {
    */
   figuresShown?(state: S): readonly string[] | null;
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
+  /**
+   * The tables a handout prints under a scene's last frame (de Casteljau's
+   * points, the Thomas sweep, the Cox–de Boor triangle, the net): the same
+   * numbers the panel shows, as plain text.
+   */
+  tables?(model: M, state: S): HandoutTable[];
+}
+
+/** A table of a handout: a title, column headings, and rows of plain-text cells. */
+export interface HandoutTable {
+  title: string;
+  columns: string[];
+  rows: string[][];
 }
 
 /** Keeps the types of S and M when registering a lesson in a heterogeneous list. */

@@ -5,6 +5,7 @@
  * figures only; a pan, zoom or resize redraws only its own figure; an idle
  * page does nothing.
  */
+import { parseHash } from './router';
 import { fitToWidth, refitAll } from '../render/fit';
 import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
 import type { LabelBox } from '../render/labels';
@@ -232,6 +233,9 @@ export class LessonPage<S, M> {
       button('Copy link', 'Copy a link to exactly this view', () => void this.copyLink()),
       button('PNG', 'Save the figure as a PNG image', () => void this.exportPng()),
       button('SVG', 'Save the figure as an SVG drawing', () => this.exportSvg()),
+      button('Handout', 'Print this lesson as a handout: its steps as vector pages, or a PDF', () =>
+        this.openHandout(),
+      ),
     );
   }
 
@@ -568,6 +572,13 @@ export class LessonPage<S, M> {
 
   orbit(yaw: number, pitch: number): void {
     this.figures.find((f) => f.spec.kind === 'space')?.orbit(yaw, pitch);
+  }
+
+  /** The handout of the lesson as it is now (its link carries the state and the views). */
+  openHandout(): void {
+    this.url.write();
+    const { slug, query } = parseHash(this.url.link());
+    location.hash = `#/${slug}/handout${query ? `?${query}` : ''}`;
   }
 
   async copyLink(): Promise<void> {

@@ -134,7 +134,18 @@ function showGallery(): void {
 
 async function route(): Promise<void> {
   const token = ++routeToken;
-  const { slug, query } = parseHash(location.hash);
+  const { slug: path, query } = parseHash(location.hash);
+  const handout = path?.endsWith(HANDOUT) ?? false;
+  const slug = handout && path ? path.slice(0, -HANDOUT.length) : path;
+  if (handout && slug !== null) {
+    if (routedHandout === location.hash) return;
+    page?.destroy();
+    page = null;
+    await openHandout(token, slug, query);
+    return;
+  }
+  routedHandout = null;
+  document.body.classList.remove('handout-mode');
   if (slug !== null && page && page.lesson.slug === slug) {
     // A bare link to the open lesson (“#/de-casteljau”) keeps what is on
     // screen, as opening it afresh restores the last state; a link with a
@@ -181,6 +192,61 @@ async function route(): Promise<void> {
     togglePresenter: () => toggleProjector(),
   });
   setChildren(main, page.element);
+}
+
+const HANDOUT = '/handout';
+/** The handout's own link as last written by it (an option changed): no need to build it again. */
+let routedHandout: string | null = null;
+
+/** A lesson's handout: its pages as they print, from the lesson's link and the handout's options. */
+async function openHandout(token: number, slug: string, query: string): Promise<void> {
+  notices.replaceChildren();
+  const meta = findLesson(slug);
+  if (!meta) {
+    notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
+    showGallery();
+    return;
+  }
+  document.title = `Handout: ${meta.title} · Spline Lab`;
+  setChildren(
+    main,
+    h('p', { class: 'loading', role: 'status' }, `Preparing the handout of ${meta.title}…`),
+  );
+  let loaded: [
+    Awaited<ReturnType<typeof meta.load>>,
+    typeof import('./handout/handoutPage'),
+    typeof import('./handout/plan'),
+  ];
+  try {
+    loaded = await Promise.all([
+      meta.load(),
+      import('./handout/handoutPage'),
+      import('./handout/plan'),
+    ]);
+  } catch {
+    if (token !== routeToken) return;
+    notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
+    showGallery();
+    return;
+  }
+  if (token !== routeToken) return;
+  const [lesson, { HandoutPage }, { readOptions }] = loaded;
+  const read = readOptions(
+    query,
+    (lesson.scenes ?? []).map((scene) => scene.id),
+  );
+  const state = loadState(lesson, read.lessonQuery, null);
+  for (const issue of [...read.issues, ...state.issues]) notice(issue);
+  document.body.classList.add('handout-mode');
+  const handoutPage = new HandoutPage(meta, lesson, state, read.lessonQuery, read.options, {
+    notice,
+    replaceLink: (hash) => {
+      routedHandout = hash;
+      history.replaceState(null, '', hash);
+    },
+  });
+  routedHandout = location.hash;
+  setChildren(main, handoutPage.element);
 }
 
 window.addEventListener('hashchange', () => {

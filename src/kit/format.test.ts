@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { filled, sub, texExponent, texPoint, texT, trimmed, words } from './format';
+import { filled, fixed, sub, texExponent, texPoint, texT, trimmed, words } from './format';
 
 // Exact texts: captions and formulas are compared with reviewed screenshots.
 describe('format', () => {
@@ -26,5 +26,13 @@ describe('format', () => {
     expect(filled({ shape: 'x = \\val + \\val', values: ['1.00', '2.50'] })).toBe(
       'x = 1.00 + 2.50',
     );
+  });
+});
+
+describe('fixed', () => {
+  it('writes fixed decimals with a true minus and no negative zero', () => {
+    expect(fixed(-1.5, 2)).toBe('−1.50');
+    expect(fixed(-0.00001, 4)).toBe('0.0000');
+    expect(fixed(2, 3)).toBe('2.000');
   });
 });

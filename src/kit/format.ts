@@ -6,6 +6,8 @@
 
 // The TeX number and point live with the formula renderer, which fills them
 // into live formulas; they are offered here so a lesson has one place to look.
+import { texNumber } from '../render/formula';
+
 export { filled, texNumber, texPoint } from '../render/formula';
 
 const SUBSCRIPTS = '₀₁₂₃₄₅₆₇₈₉';
@@ -21,6 +23,9 @@ export const trimmed = (value: number, digits: number) => String(Number(value.to
 
 /** A number in a caption: up to three decimals, trailing zeros dropped, a true minus sign. */
 export const words = (v: number) => trimmed(v, 3).replace('-', '−');
+
+/** A number in a table cell of plain text: fixed `digits` decimals, a true minus sign, never "−0.0000". */
+export const fixed = (v: number, digits: number) => texNumber(v, digits).replace('-', '−');
 
 /** A parameter (t, μ) as typed: up to four decimals, trailing zeros dropped. */
 export const texT = (t: number) => trimmed(t, 4);

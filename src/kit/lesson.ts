@@ -7,6 +7,7 @@
 import type {
   DrawInfo,
   FigureSpec,
+  HandoutTable,
   Handle,
   LayoutNode,
   LessonApi,
@@ -82,6 +83,8 @@ export interface KitLessonSpec<S, M extends { state: S }, N extends string> {
   parameter?: ParameterSpec<S>;
   normalize?(state: S): { state: S; issues: string[] };
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
+  /** The tables a handout prints under a scene's last frame (see LessonDefinition.tables). */
+  tables?(model: M, state: S): HandoutTable[];
 }
 
 /** The shell's lesson from the kit's. */
@@ -130,6 +133,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     normalize: spec.normalize,
     figuresShown: (state) => sceneOf(state)?.figures ?? null,
     panel: spec.panel,
+    tables: spec.tables,
   };
 }
 

@@ -23,12 +23,14 @@ export function documentName(doc: NotesDocument): string {
 /**
  * A slip in the notes, said kindly beside the correct statement:
  * `notesSlip('practical', 'the first derivative as d²/dt²', 'The first derivative is d/dt.')`
- * reads "The practical (TP2) writes the first derivative as d²/dt²; the first derivative is d/dt."
+ * reads "The practical (TP2) writes the first derivative as d²/dt². The first derivative is d/dt."
  */
 export function notesSlip(doc: NotesDocument, written: string, correct: string): HTMLElement {
   const name = documentName(doc);
   const lead = name.charAt(0).toUpperCase() + name.slice(1);
-  return h('p', { class: 'notes-aside', role: 'note' }, `${lead} writes ${written}. ${correct}`);
+  // "The lecture notes write", "the practical (TP2) writes".
+  const verb = doc === 'practical' ? 'writes' : 'write';
+  return h('p', { class: 'notes-aside', role: 'note' }, `${lead} ${verb} ${written}. ${correct}`);
 }
 
 /**

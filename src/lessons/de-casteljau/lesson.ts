@@ -4,6 +4,7 @@ import { constructionFigure } from './figure';
 import { derive } from './model';
 import { deCasteljauPanel } from './panel';
 import { construction } from './script';
+import { constructionTables } from './tables';
 import { type DeCasteljauState, LECTURE_CUBIC, schema } from './state';
 
 /** A scene: its control points and t, shown to the end (the clicker opens it at step 0). */
@@ -62,4 +63,5 @@ export default defineLesson({
     ),
   ],
   panel: deCasteljauPanel,
+  tables: constructionTables,
 });

@@ -1,3 +1,4 @@
+import { sweepTables } from './tables';
 import type { FigureSpec } from '../../app/lesson';
 import { defineLesson } from '../../kit/lesson';
 import { mapFigure } from './figure';
@@ -17,6 +18,7 @@ const lesson = defineLesson({
   normalize,
   scenes,
   panel: roadPanel,
+  tables: sweepTables,
 });
 
 /**
