@@ -18,6 +18,7 @@ import { lessonScripts, loadTimes, openGallery, type ScriptFile } from './browse
 import { launchBrowser } from './browser/page';
 import { type LessonLoad, printReport } from './browser/report';
 import { serveStatic } from './browser/server';
+import { type HandoutRow, handoutTimes, printHandouts } from './browser/handout';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /**
@@ -129,6 +130,14 @@ async function measure(browser: Browser, base: string, outDir: string): Promise<
     console.log('The gallery links to no lesson (a.card[data-slug]).');
   const drags = await timed('drags', () => measureDrags(browser, base, gallery.slugs));
   const loads = await timed('JS and loads', () => measureLoads(browser, base, gallery.slugs));
+  const handouts = await timed('handouts', async () => {
+    const rows: HandoutRow[] = [];
+    for (const slug of gallery.slugs) {
+      progress(`making the handout of ${slug}`);
+      rows.push(await handoutTimes(browser, base, slug));
+    }
+    return rows;
+  });
   const fetched = new Set(gallery.scripts.map((f) => f.path));
   const unfetched = builtScripts(outDir).filter((f) => !fetched.has(f.path));
 
@@ -143,6 +152,7 @@ async function measure(browser: Browser, base: string, outDir: string): Promise<
     loadRuns: LOAD_RUNS,
     markSeen: loads.markSeen,
   });
+  printHandouts(handouts);
 }
 
 async function main(): Promise<void> {

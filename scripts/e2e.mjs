@@ -23,17 +23,27 @@ function safe(f) {
   }
 }
 
+// The handout tests read Chromium's PDFs with poppler's pdftotext, pdfinfo and pdftoppm.
+const POPPLER = '/usr/bin/pdftotext';
+const root = typeof process.getuid === 'function' && process.getuid() === 0;
+const debian = existsSync('/etc/debian_version') && existsSync('/usr/bin/apt-get');
 let browser = findBrowser();
-if (!browser) {
-  const root = typeof process.getuid === 'function' && process.getuid() === 0;
-  const debian = existsSync('/etc/debian_version') && existsSync('/usr/bin/apt-get');
-  if (root && debian) {
-    console.log("No Chromium found: installing Debian's chromium package with apt-get…");
-    const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
-    execFileSync('apt-get', ['update', '-qq'], { stdio: 'inherit', env });
-    execFileSync('apt-get', ['install', '-y', '-qq', 'chromium'], { stdio: 'inherit', env });
-    browser = findBrowser();
-  }
+const missing = [
+  ...(browser ? [] : ['chromium']),
+  ...(existsSync(POPPLER) ? [] : ['poppler-utils']),
+];
+if (missing.length > 0 && root && debian) {
+  console.log(`Installing Debian's ${missing.join(' and ')} with apt-get…`);
+  const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
+  execFileSync('apt-get', ['update', '-qq'], { stdio: 'inherit', env });
+  execFileSync('apt-get', ['install', '-y', '-qq', ...missing], { stdio: 'inherit', env });
+  browser = findBrowser();
+}
+if (!existsSync(POPPLER)) {
+  console.error(
+    'No pdftotext for the handout tests: install poppler-utils (Debian/Ubuntu: sudo apt-get install poppler-utils).',
+  );
+  process.exit(1);
 }
 if (!browser) {
   console.error(
