@@ -3,14 +3,13 @@ import { bezierArcLength, bezierCurvature, catmullRomSegments } from '../../src/
 import { expect, expectHash, settled, snapshot, test, linkState } from './fixtures';
 
 const figure = (page: Page, id: string) => page.locator(`canvas[data-figure="${id}"]`);
-/** The value cell of a row of the panel's table, as a number. */
+/** A row of the panel's table as a number: the cell shows four decimals, the row keeps the whole number. */
 const value = async (page: Page, quantity: string) =>
   Number(
     await page
       .getByRole('table', { name: 'Values at t' })
-      .locator(`tr[data-quantity="${quantity}"] td`)
-      .nth(1)
-      .textContent(),
+      .locator(`tr[data-quantity="${quantity}"]`)
+      .getAttribute('data-value'),
   );
 const controlPoints = async (page: Page) =>
   (await linkState(page)).p.split(';').map((p) => p.split(',').map(Number));
@@ -59,6 +58,17 @@ test('on the helix the page shows κ and τ equal to a/(a² + b²) and b/(a² + 
   await check();
 });
 
+test('beside the curvature vector K = dT/ds the page says, kindly, that the continuation notes write T′(t)', async ({
+  page,
+}) => {
+  const slip = page.getByRole('note').filter({ hasText: 'The continuation notes' });
+  await expect(slip).toContainText('K(T) ≔ T′(t)');
+  await expect(slip).toContainText('K(t) = dT/ds');
+  // The arc length part has no curvature vector, and no note about it.
+  await page.getByRole('button', { name: 'Arc length against parameter' }).click();
+  await expect(slip).toBeHidden();
+});
+
 test('at a cusp and at an inflection the page says why N is undefined', async ({ page }) => {
   await page.getByRole('button', { name: 'A cusp: speed 0' }).click();
   await page.keyboard.press('End');
@@ -79,11 +89,16 @@ test('equal steps of arc length: the table’s t(sᵢ) give s = iL/n', async ({ 
   const p = await controlPoints(page);
   const length = bezierArcLength(p);
   for (const i of [1, 4, 7]) {
-    const cells = table.locator(`tr[data-quantity="row ${i}"] td`);
-    // Column 3 is s(tᵢ) at tᵢ = i/8; column 5 is t(sᵢ) with sᵢ = iL/8.
-    expect(Number(await cells.nth(2).textContent())).toBeCloseTo(bezierArcLength(p, i / 8), 9);
-    const t = Number(await cells.nth(4).textContent());
+    const row = table.locator(`tr[data-quantity="row ${i}"]`);
+    const cells = row.locator('td');
+    // Column 3 is s(tᵢ) at tᵢ = i/8; column 5 is t(sᵢ) with sᵢ = iL/8: shown to four
+    // decimals, the whole numbers kept in the row's data-s and data-equal-t.
+    const s = Number(await row.getAttribute('data-s'));
+    expect(s).toBeCloseTo(bezierArcLength(p, i / 8), 9);
+    expect(Number(await cells.nth(2).textContent())).toBeCloseTo(s, 4);
+    const t = Number(await row.getAttribute('data-equal-t'));
     expect(bezierArcLength(p, t)).toBeCloseTo((i * length) / 8, 9);
+    expect(Number(await cells.nth(4).textContent())).toBeCloseTo(t, 4);
   }
 });
 

@@ -1,16 +1,17 @@
 import { script, step } from '../../kit/script';
 import type { CurvatureModel } from './model';
 import type { CurvatureState } from './state';
-import { tex } from './tex';
+import { texNumber } from '../../kit/format';
+import { parameter, value } from './tex';
 
 /** What the steps of arc length against parameter reveal, by name. */
 export type ArcReveal = 'curve' | 'ticks' | 'arcLength' | 'table' | 'equalLength' | 'both';
 
-/** s_k = kL/n, and t read back from the table: the same at the step that shows both sets of ticks. */
+/** s_i = iL/n, and t read back from the table: the same at the step that shows both sets of ticks. */
 const equalLength = ({ state, model }: { state: CurvatureState; model: CurvatureModel }) => {
   const arc = model.arc!;
   const n = state.equalSteps;
-  return `s_k = \\frac{k L}{${n}} = k \\cdot ${tex(arc.length / n, 6)},\\quad t(s_1) = ${tex(arc.equal[1].t, 6)}`;
+  return `s_i = \\frac{i L}{${n}} = i \\cdot ${value(arc.length / n)},\\quad t(s_1) = ${texNumber(arc.equal[1].t, 4)}`;
 };
 
 /**
@@ -28,13 +29,13 @@ export const arcScript = script<CurvatureState, CurvatureModel, ArcReveal>(
     'arcLength',
     'The arc length s(t) = ∫₀ᵗ |P′(u)| du against t',
     ({ state, model }) =>
-      `s(${tex(state.t)}) = \\int_0^{${tex(state.t)}} |P'(u)|\\,du = ${tex(model.arc!.sAtT, 6)}`,
+      `s(${parameter(state.t)}) = \\int_0^{${parameter(state.t)}} |P'(u)|\\,du = ${value(model.arc!.sAtT)}`,
   ),
   step(
     'table',
     'The arc length table: s at equal steps of t',
     ({ model: { arc } }) =>
-      `L = s(1) = ${tex(arc!.length, 6)},\\quad s(t_1) = ${tex(arc!.table[1].s, 6)}`,
+      `L = s(1) = ${value(arc!.length)},\\quad s(t_1) = ${value(arc!.table[1].s)}`,
   ),
   step('equalLength', 'Equal steps of arc length: t read back from the table', equalLength),
   step('both', 'Both sets of ticks: equal t against equal s', equalLength),

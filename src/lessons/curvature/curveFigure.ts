@@ -2,7 +2,8 @@ import type { KitFigure } from '../../kit/lesson';
 import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
-import { COLOURS, arrowUnit, show, vectorArrow } from './marks';
+import { words } from '../../kit/format';
+import { COLOURS, arrowUnit, vectorArrow } from './marks';
 import type { CurvatureModel } from './model';
 import type { PlaneModel } from './planeModel';
 import { gradientHandles, gradientTips, planePoints, topViewPoints } from './points';
@@ -91,12 +92,7 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
   const unit = arrowUnit(plane.size);
   if (shown.has('inflections')) {
     for (const mark of plane.marks)
-      markPoint(
-        painter,
-        mark.point,
-        mark.kind === 'inflection' ? 'inflection: κ = 0' : cuspWords(mark.t, plane),
-        labels,
-      );
+      markPoint(painter, mark.point, markWords(mark.kind, mark.t, plane), labels);
   }
   if (shown.has('curvature') && at.circle) {
     const colour = painter.color(COLOURS.curvature);
@@ -108,15 +104,18 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
     });
     painter.dot(at.circle.centre, colour, theme.sizes.point * 0.8);
     if (labels)
-      painter.label(`R = 1/|κ| = ${show(at.circle.radius)}`, at.circle.centre, {
+      painter.label(`R = 1/|κ| = ${words(at.circle.radius)}`, at.circle.centre, {
         color: colour,
         halo: true,
         dx: 8,
         dy: 18,
       });
   }
-  if (shown.has('velocity') && at.speed > 0)
-    vectorArrow(painter, at.point, at.velocity, 1 / 3, '⅓P′(t)', theme.accent, labels);
+  if (shown.has('velocity') && at.speed > 0) {
+    // On several pieces P′ is dP/dp̄, the piece's own derivative (see planeScript).
+    const name = plane.pieces.segments.length > 1 ? '⅓P′(p̄)' : '⅓P′(t)';
+    vectorArrow(painter, at.point, at.velocity, 1 / 3, name, theme.accent, labels);
+  }
   if (shown.has('tangent') && at.tangent)
     vectorArrow(painter, at.point, at.tangent, unit, 'T', painter.color(COLOURS.tangent), labels);
   if (shown.has('normal') && at.normal)
@@ -213,8 +212,15 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
     });
 }
 
-/** Speed 0 inside the curve is a cusp; at an end (a Catmull-Rom spline's zero end gradients) the curve just starts or stops. */
-export function cuspWords(s: number, plane: PlaneModel): string {
+/**
+ * A mark's label. Speed 0 inside the curve is a cusp; at an end (a Catmull-Rom
+ * spline's zero end gradients) the curve just starts or stops. κ = 0 inside is
+ * an inflection; at an end (a natural spline's P″ = 0) the curve only ends
+ * straight, with no bend on the other side to turn to.
+ */
+export function markWords(kind: 'inflection' | 'cusp', s: number, plane: PlaneModel): string {
+  // The model puts a mark at an end exactly on 0 or on the number of pieces.
   const end = s === 0 || s === plane.pieces.segments.length;
-  return end ? 'P′ = 0 at the end' : 'cusp: P′ = 0';
+  if (kind === 'cusp') return end ? 'P′ = 0 at the end' : 'cusp: P′ = 0';
+  return end ? 'κ = 0 at the end' : 'inflection: κ = 0';
 }

@@ -31,7 +31,3 @@ export function vectorArrow(
       size: painter.theme.sizes.label,
     });
 }
-
-/** A number for a figure label: four significant digits, a true minus sign. */
-export const show = (value: number, digits = 4) =>
-  Number(value.toPrecision(digits)).toString().replace('-', '−');

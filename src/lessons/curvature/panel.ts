@@ -2,6 +2,7 @@ import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
+import { notesKey, notesSlip } from '../../kit/notes';
 import { formula } from '../../render/formula';
 import type { CurvatureModel } from './model';
 import { CURVE_SOURCES, type CurveSource } from '../../kit/lessonLinks';
@@ -18,19 +19,46 @@ const INTRO: Record<Part, string> = {
   arc: 'The parameter t is not length: equal steps of t cover short stretches where the curve is slow and long ones where it is fast. The arc length s(t) adds up the speed; a table of s at equal steps of t, read backwards, gives the parameters of equal steps of length.',
 };
 
+/** The curvature vector, as it is (the continuation notes write it as T′(t): see curvatureSlip). */
+const CURVATURE_VECTOR = "K = \\frac{dT}{ds} = \\frac{T'(t)}{|P'(t)|} = \\kappa N";
+
 const FORMULAS: Record<Part, string> = {
-  plane:
-    "\\kappa = \\frac{x'y'' - y'x''}{(x'^2 + y'^2)^{3/2}},\\qquad R = \\frac{1}{|\\kappa|},\\qquad \\text{centre} = P + \\frac{1}{\\kappa}\\,JT",
-  space:
-    "\\kappa = \\frac{|P' \\times P''|}{|P'|^3},\\quad \\tau = \\frac{(P' \\times P'') \\cdot P'''}{|P' \\times P''|^2},\\quad B = T \\times N",
-  arc: "s(t) = \\int_0^t |P'(u)|\\,du,\\qquad t_k = s^{-1}\\!\\left(\\tfrac{k}{n} L\\right)",
+  plane: `${CURVATURE_VECTOR},\\qquad \\kappa = \\frac{x'y'' - y'x''}{(x'^2 + y'^2)^{3/2}},\\qquad R = \\frac{1}{|\\kappa|},\\qquad \\text{centre} = P + R\\,N`,
+  space: `${CURVATURE_VECTOR},\\quad \\kappa = \\frac{|P' \\times P''|}{|P'|^3},\\quad \\tau = \\frac{(P' \\times P'') \\cdot P'''}{|P' \\times P''|^2},\\quad B = T \\times N`,
+  arc: "s(t) = \\int_0^t |P'(u)|\\,du,\\qquad t(s_i) = s^{-1}\\!\\left(\\tfrac{i}{n} L\\right)",
 };
+
+/**
+ * The continuation notes define the curvature vector as K(T) ≔ T′(t), the
+ * derivative of T in the parameter; the curvature is its derivative in arc
+ * length, dT/ds, which is T′(t) only at unit speed.
+ */
+const curvatureSlip = () =>
+  notesSlip(
+    'continuation',
+    'the curvature vector as K(T) ≔ T′(t), the derivative of T in the parameter t',
+    'The curvature vector is K(t) = dT/ds, the turn of T per unit of arc length s: K = T′(t)/|P′(t)| = κN. Its length is |κ|, so 1/|K| is the radius of the osculating circle, as the notes say; T′(t) itself is |P′(t)| times as long, and equals K only where the speed |P′(t)| is 1.',
+  );
+
+/** How the lesson's symbols read in the notes. */
+const notesSymbols = () =>
+  notesKey([
+    ['K = dT/ds = κN', 'K(t), the curvature vector, in the continuation notes'],
+    [
+      'κ, signed in the plane (> 0 turning left)',
+      '‖K(t)‖ in the continuation notes, never negative',
+    ],
+    ['N, towards the turn', 'N(t) = K(t)/‖K(t)‖ in the continuation notes'],
+    ['p̄ = i + p, the global and local parameter of a spline', 'p̄ and p in the lecture slides'],
+  ]);
 
 export function curvaturePanel(
   api: LessonApi<CurvatureState, CurvatureModel>,
 ): LessonPanel<CurvatureState, CurvatureModel> {
   const intro = h('p', {});
   const lectureFormula = h('div', {});
+  // Beside the curvature vector's formula, where the notes write it otherwise.
+  const slip = curvatureSlip();
   const stepTitle = h('h2', {});
   const why = h('p', { class: 'note', role: 'status' });
   const body = h('tbody', {});
@@ -98,6 +126,8 @@ export function curvaturePanel(
     { class: 'lesson-text' },
     intro,
     lectureFormula,
+    slip,
+    notesSymbols(),
     h(
       'p',
       { class: 'note' },
@@ -122,6 +152,7 @@ export function curvaturePanel(
         setText(intro, INTRO[state.part]);
         setChildren(lectureFormula, formula(FORMULAS[state.part], true));
       }
+      setHidden(slip, state.part === 'arc');
       setHidden(spaceControls, state.part !== 'space');
       setHidden(sourceControls, state.part !== 'plane');
       sourceChoice.update(state);
@@ -131,7 +162,7 @@ export function curvaturePanel(
           pieces,
           count === 1
             ? `One piece: the plot runs over t ∈ [0, 1].`
-            : `${count} pieces, joined at the dots: the plot runs over the global parameter s = ${count}·t ∈ [0, ${count}], piece i for s ∈ [i, i + 1] with local u = s − i. A C² join keeps κ continuous; at a C¹ or G¹ join κ may jump.`,
+            : `${count} pieces, joined at the dots: the plot runs over the global parameter p̄ = ${count}·t ∈ [0, ${count}], piece i for p̄ ∈ [i, i + 1] with local parameter p = p̄ − i (the lecture slides’ p̄ and p). P′ is each piece’s own dP/dp, the same as dP/dp̄. A C² join keeps κ continuous; at a C¹ or G¹ join κ may jump.`,
         );
         setText(notice, m.plane.pieces.notice ?? '');
         setHidden(notice, !m.plane.pieces.notice);

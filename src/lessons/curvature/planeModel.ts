@@ -24,7 +24,11 @@ const CURVE_SAMPLES = 160;
 /** What the plane curve has at the cursor t; null where it is undefined (`why` says why). */
 export interface PlaneAt {
   t: number;
-  /** The global parameter s = pieces·t, its piece i and local u = s − i. */
+  /**
+   * The global parameter p̄ = pieces·t (the lecture slides' p̄; `s` here), its
+   * piece i and the local parameter p = p̄ − i (`u` here). P′ and P″ are taken
+   * in p, which is the same as in p̄.
+   */
   s: number;
   piece: number;
   u: number;
@@ -55,15 +59,15 @@ export interface PlaneModel {
    */
   comb: [Point, Point][][];
   combScale: number;
-  /** κ and |P′| against the global s for the plot, cut where undefined and at every join (interleaved s, value). */
+  /** κ and |P′| against the global p̄ for the plot, cut where undefined and at every join (interleaved p̄, value). */
   kappa: Float64Array[];
   speed: Float64Array[];
   /** |κ| above which the plot and comb clip (huge near a cusp). */
   kappaCap: number;
-  /** Global s of the inflections and cusps. */
+  /** The global p̄ of the inflections (κ = 0) and cusps (P′ = 0), ends and joins exactly whole numbers. */
   inflections: number[];
   cusps: number[];
-  /** Where they are on the curve (t is the global s). */
+  /** Where they are on the curve (t is the global p̄). */
   marks: { t: number; point: Point; kind: 'inflection' | 'cusp' }[];
 }
 
@@ -103,7 +107,7 @@ function curvatureOrNull(p: readonly Point[], t: number): number | null {
   }
 }
 
-/** The piece and local parameter of the global s ∈ [0, pieces] (the lecture convention). */
+/** The global p̄ = pieces·t ∈ [0, pieces] (`s`), its piece and its local parameter p = p̄ − i (`u`), as in the lecture slides. */
 export function locate(pieces: number, t: number): { s: number; piece: number; u: number } {
   const s = pieces * t;
   const piece = Math.min(Math.floor(s), pieces - 1);
@@ -138,7 +142,11 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
       normal: null,
       curvature: 0,
       circle: null,
-      why: `Inflection: κ = 0, the curve is straight for an instant. The osculating circle's radius 1/κ is infinite and N, which points to its centre, is undefined; on either side N points to opposite sides.`,
+      // At an end (a natural spline's P″ = 0) the curve only ends straight: no far side to turn to.
+      why:
+        where.s === 0 || where.s === segments.length
+          ? `κ = 0 at the end: the curve ends straight here. The osculating circle's radius 1/κ is infinite and N, which points to its centre, is undefined.`
+          : `Inflection: κ = 0, the curve is straight for an instant. The osculating circle's radius 1/κ is infinite and N, which points to its centre, is undefined; on either side N points to opposite sides.`,
     };
   }
   const side = Math.sign(curvature);
@@ -242,8 +250,13 @@ export function deriveCurve(pieces: PiecewiseCurve): PlaneCurve {
   };
 }
 
-/** Sorted, with values closer than 1e-9 (the same join seen from both pieces) taken once. */
+/**
+ * Sorted, with values closer than 1e-9 (the same join seen from both pieces)
+ * taken once, and a value within 1e-9 of a whole number (an end or a join) put
+ * on it: a root found at 2.7·10⁻¹⁶ is the end p̄ = 0.
+ */
 function unique(values: number[]): number[] {
-  const sorted = values.sort((a, b) => a - b);
+  const snapped = values.map((v) => (Math.abs(v - Math.round(v)) <= 1e-9 ? Math.round(v) : v));
+  const sorted = snapped.sort((a, b) => a - b);
   return sorted.filter((v, i) => i === 0 || v - sorted[i - 1] > 1e-9);
 }

@@ -1,14 +1,15 @@
 import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, niceStep } from '../../render/projection';
-import { COLOURS, show } from './marks';
+import { words } from '../../kit/format';
+import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
 import type { Join } from './sources';
 import type { CurvatureState } from './state';
 
 const clampT = (t: number) => Math.min(1, Math.max(0, Number(t.toFixed(4))));
 
-/** What the plot shows now: κ(t) (or the speed first), κ and τ in space, s(t) for arc length. */
+/** What the plot shows now: κ (or the speed first) against t or p̄, κ and τ in space, s(t) for arc length. */
 function series(m: CurvatureModel): { name: string; runs: Float64Array[]; colour: number }[] {
   const { part } = m.state;
   const { shown } = m;
@@ -53,16 +54,16 @@ function plotBounds(m: CurvatureModel): Bounds {
   return { minX: 0, maxX: pieces(m), minY: low - (low < 0 ? pad : 0), maxY: high + pad };
 }
 
-/** The plane curve's pieces: the plot runs over the global s ∈ [0, pieces], s = pieces·t. */
+/** The plane curve's pieces: the plot runs over the global p̄ ∈ [0, pieces], p̄ = pieces·t. */
 const pieces = (m: CurvatureModel) =>
   m.state.part === 'plane' ? m.plane!.pieces.segments.length : 1;
 
-/** The plot's x: t for one piece; the global s = i + u across pieces (piece i, local u). */
-const axisName = (m: CurvatureModel) => (pieces(m) > 1 ? 's = i + u' : 't');
+/** The plot's x: t for one piece; the global p̄ = i + p across pieces (piece i, local p), as in the lecture slides. */
+const axisName = (m: CurvatureModel) => (pieces(m) > 1 ? 'p̄ = i + p' : 't');
 
 export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
   id: 'plot',
-  title: 'κ(t), τ(t) or s(t) plotted against t (or the global s across pieces), with a cursor at t',
+  title: 'κ(t), τ(t) or s(t) plotted against t (or the global p̄ across pieces), with a cursor at t',
   kind: 'plot',
   bounds: plotBounds,
   draw(painter, m, info) {
@@ -96,7 +97,7 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
           .filter((e) => e.y >= bounds.minY && e.y <= bounds.maxY)
           .map((e) => ({
             y: e.y,
-            text: `${e.name} = ${show(e.y)}`,
+            text: `${e.name} = ${words(e.y)}`,
             color: painter.color(e.colour),
           })),
       );
@@ -208,13 +209,14 @@ function drawJoins(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
   }
 }
 
-/** "C²", or "C¹: κ 0.52 → 0.61" where κ jumps. */
+/** "C²", or "C¹: κ 0.52 → 0.61" where κ jumps (three decimals at most: a residue reads 0). */
 export function joinLabel(join: Join): string {
   const name = join.continuity.replace('1', '¹').replace('2', '²').replace('0', '⁰');
   const { before, after } = join;
   if (before === null || after === null) return name;
-  const jumps = Math.abs(after - before) > 1e-9 * Math.max(1, Math.abs(before));
-  return jumps ? `${name}: κ ${show(before, 3)} → ${show(after, 3)}` : name;
+  const [from, to] = [words(before), words(after)];
+  const jumps = Math.abs(after - before) > 1e-9 * Math.max(1, Math.abs(before)) && from !== to;
+  return jumps ? `${name}: κ ${from} → ${to}` : name;
 }
 
 /** A y step whose tick numbers have room: about one per three text heights. */

@@ -80,16 +80,18 @@ describe('the scripts of the curvature lesson', () => {
     // The lecture cubic at t = 1/2: P = (2, 1.5), P′ = (4.5, 0), P″ = (0, −12),
     // κ = 4.5·(−12)/4.5³ = −0.5926, R = 27/16 = 1.6875.
     const half = (step: number) => formula({ ...defaults, t: 0.5, step });
-    expect(half(0)).toBe('P(0.5) = (2,\\ 1.5)');
-    expect(half(1)).toBe("P'(0.5) = (4.5,\\ 0),\\quad |P'| = 4.5");
-    expect(half(2)).toBe("T = \\frac{P'}{|P'|} = (1,\\ 0)");
+    expect(half(0)).toBe('P(0.5) = (2.00,\\ 1.50)');
+    expect(half(1)).toBe("P'(0.5) = (4.50,\\ 0.00),\\quad |P'| = 4.500");
+    expect(half(2)).toBe("T = \\frac{P'}{|P'|} = (1.000,\\ 0.000)");
+    // κ < 0: the curve turns right, so N is T turned clockwise, (0, −1).
+    expect(half(3)).toBe('\\text{turning right: } N = (T_y,\\ -T_x) = (0.000,\\ -1.000)');
     expect(half(4)).toBe(
-      "\\kappa = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{-54}{91.13} = -0.5926,\\quad R = \\frac{1}{|\\kappa|} = 1.688",
+      "\\kappa = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{-54.000}{91.125} = -0.593,\\quad R = \\frac{1}{|\\kappa|} = 1.688",
     );
-    // The helix a = 1, b = 1/4: κ = 16/17, τ = 4/17.
+    // The helix a = 1, b = 1/4: κ = 16/17, τ = 4/17, from the general formulas and the closed forms.
     const helix = (step: number) => formula({ ...scene('helix'), step });
-    expect(helix(2)).toMatch(/= 0\.9411764706 = \\frac\{a\}\{a\^2\+b\^2\}/);
-    expect(helix(3)).toMatch(/\\tau = 0\.2352941176 = \\frac\{b\}\{a\^2\+b\^2\}$/);
+    expect(helix(2)).toMatch(/= 0\.941,\\quad \\frac\{a\}\{a\^2\+b\^2\} = 0\.941,/);
+    expect(helix(3)).toMatch(/= 0\.235,\\quad \\frac\{b\}\{a\^2\+b\^2\} = 0\.235$/);
     // The cusp: T and N are undefined there, and the formula says so.
     expect(formula({ ...scene('cusp'), step: 2 })).toMatch(/\\text\{is undefined\}$/);
     // Equal steps of length: the same formula at the last two steps.

@@ -33,7 +33,7 @@ export const THROUGH_POINTS: Record<CurveSource, boolean> = {
   'b-spline': false,
 };
 
-/** Where piece i − 1 meets piece i: at global s = i, with κ just before and just after. */
+/** Where piece i − 1 meets piece i: at the global parameter p̄ = i (`s`), with κ just before and just after. */
 export interface Join {
   s: number;
   point: Point;
@@ -42,12 +42,14 @@ export interface Join {
   after: number | null;
 }
 
-/** The plane curve as polynomial Bézier pieces, on the global parameter s ∈ [0, pieces]. */
+/** The plane curve as polynomial Bézier pieces, on the global parameter p̄ ∈ [0, pieces]. */
 export interface PiecewiseCurve {
   segments: Point[][];
   joins: Join[];
   /** What was done with input the source cannot take (null when all was fine). */
   notice: string | null;
+  /** What the curve drawn is, in words for a caption: "The natural cubic spline through the 5 points". */
+  name: string;
 }
 
 const curvatureOrNull = (segment: readonly Point[], t: number) => {
@@ -71,7 +73,7 @@ export function piecewiseCurve(
   p: readonly Point[],
   d: readonly Point[],
 ): PiecewiseCurve {
-  const { segments, notice } = build(source, p, d);
+  const { segments, notice, name } = build(source, p, d);
   const joins: Join[] = [];
   for (let i = 1; i < segments.length; i++) {
     const [left, right] = [segments[i - 1], segments[i]];
@@ -83,28 +85,49 @@ export function piecewiseCurve(
       after: curvatureOrNull(right, 0),
     });
   }
-  return { segments, joins, notice };
+  return { segments, joins, notice, name };
 }
 
-function build(
-  source: CurveSource,
-  p: readonly Point[],
-  d: readonly Point[],
-): { segments: Point[][]; notice: string | null } {
-  const whole = (notice: string | null) => ({ segments: [p.map((q) => q.slice())], notice });
+type Built = { segments: Point[][]; notice: string | null; name: string };
+
+/** One Bézier curve of `count` control points, named by its degree. */
+export function bezierName(count: number): string {
+  const degree = count - 1;
+  if (degree === 1) return 'The Bézier curve of degree 1, a straight segment,';
+  if (degree === 2) return 'The quadratic Bézier curve';
+  if (degree === 3) return 'The cubic Bézier curve';
+  return `The Bézier curve of degree ${degree}`;
+}
+
+const pieceCount = (segments: readonly Point[][]) =>
+  segments.length === 1 ? '1 piece' : `${segments.length} pieces`;
+
+function build(source: CurveSource, p: readonly Point[], d: readonly Point[]): Built {
+  const whole = (notice: string | null, name = bezierName(p.length)) => ({
+    segments: [p.map((q) => q.slice())],
+    notice,
+    name,
+  });
   if (onOneSpot(p))
     return whole(
       'All the points are on one spot: the curve is that point. Its velocity is 0 everywhere, so T, N, κ and the osculating circle are undefined along all of it.',
+      'A curve that is one point',
     );
   switch (source) {
     case 'bezier':
       return whole(null);
-    case 'b-spline':
-      return p.length >= 4
-        ? { segments: uniformBSplineSegments(p), notice: null }
-        : whole(
-            `A uniform cubic B-spline needs at least 4 control points; with ${p.length} the Bézier curve of the points is shown.`,
-          );
+    case 'b-spline': {
+      if (p.length < 4)
+        return whole(
+          `A uniform cubic B-spline needs at least 4 control points; with ${p.length} the Bézier curve of the points is shown.`,
+        );
+      const segments = uniformBSplineSegments(p);
+      return {
+        segments,
+        notice: null,
+        name: `The uniform cubic B-spline of the ${p.length} control points (${pieceCount(segments)})`,
+      };
+    }
     case 'chain': {
       const pieces = Math.floor((p.length - 1) / 3);
       if (pieces === 0)
@@ -114,6 +137,8 @@ function build(
       const used = 3 * pieces + 1;
       return {
         segments: bezierChainSegments(p.slice(0, used), 3),
+        name:
+          pieces === 1 ? bezierName(4) : `The ${pieces} cubic Bézier pieces, joined end to end,`,
         notice:
           used === p.length
             ? null
@@ -125,12 +150,19 @@ function build(
   }
 }
 
+const THROUGH_NAMES = {
+  natural: 'natural cubic spline',
+  hermite: 'Hermite spline',
+  'catmull-rom': 'Catmull-Rom spline',
+} as const;
+
 /** Splines through the points: a repeated point would make a piece of length 0, so it is taken once. */
+
 function through(
   source: 'natural' | 'hermite' | 'catmull-rom',
   p: readonly Point[],
   d: readonly Point[],
-): { segments: Point[][]; notice: string | null } {
+): Built {
   const gradients = source === 'hermite' ? hermiteGradients(p, d) : [];
   const keep = p.map((q, i) => i === 0 || !same(q, p[i - 1]));
   const points = p.filter((_, i) => keep[i]);
@@ -142,6 +174,7 @@ function through(
     return {
       segments: [p.map((q) => q.slice())],
       notice: 'All the points coincide: there is no curve through them, only a point.',
+      name: 'A curve that is one point',
     };
   const segments =
     source === 'natural'
@@ -152,7 +185,8 @@ function through(
             points,
             gradients.filter((_, i) => keep[i]),
           );
-  return { segments, notice };
+  const name = `The ${THROUGH_NAMES[source]} through the ${points.length} points (${pieceCount(segments)})`;
+  return { segments, notice, name };
 }
 
 /** The Hermite gradients: the given ones, and Catmull-Rom's where none is given. */

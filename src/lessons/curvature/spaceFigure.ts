@@ -80,9 +80,11 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
       drawFrameOver(painter, frame, unit, labels);
       const why = inSpace ? at.why : null;
       if (labels && why && shown.has('tangent')) painter.note(why);
+      // B = T × N is +e_z where the curve turns left (κ > 0), −e_z where it turns right.
+      const up = at.binormal ? (at.binormal[2] > 0 ? '+e_z' : '−e_z') : '±e_z';
       if (labels && part === 'plane' && shown.has('normal'))
         painter.screenLabel(
-          'A plane curve: B = T × N = ±e_z, τ = 0',
+          `A plane curve: B = T × N = ${up}, τ = 0`,
           12,
           painter.view.height - 12,
           {

@@ -55,6 +55,11 @@ export interface SpaceModel {
   tau: Float64Array[];
   /** Parameters where κ has a near-zero minimum and B turns over: the frame flips. */
   flips: number[];
+  /**
+   * The smallest κ along the curve (the helix's own a/(a² + b²); the cubic's
+   * sampled), 0 where it is straight somewhere, null where no κ is defined.
+   */
+  least: number | null;
   /** |κ|, |τ| above which the plot clips (τ is huge where κ nearly vanishes). */
   cap: number;
   /** The closed forms (helix only). */
@@ -178,6 +183,7 @@ export function liftedSpace(plane: PlaneModel): SpaceModel {
     kappa: [],
     tau: [],
     flips: [],
+    least: null,
     cap: 1,
     closed: null,
   };
@@ -215,6 +221,7 @@ export function deriveSpaceCurve(state: SpaceCurveFields): SpaceCurveModel {
     state.spaceCurve === 'helix'
       ? { curvature: helixCurvature(a, b), torsion: helixTorsion(a, b) }
       : null;
+  const defined = kappa.filter((k): k is number => k !== null);
   return {
     curve,
     size: sizeOf(curve.filter((_, i) => i % 24 === 0)),
@@ -222,6 +229,7 @@ export function deriveSpaceCurve(state: SpaceCurveFields): SpaceCurveModel {
     kappa: runs(kappa.map(inside)),
     tau: runs(tau.map(inside)),
     flips: findFlips(state, kappa),
+    least: closed ? closed.curvature : defined.length ? Math.min(...defined) : null,
     cap,
     closed,
   };

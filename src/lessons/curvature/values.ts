@@ -1,12 +1,16 @@
+import { trimmed } from '../../kit/format';
 import type { Point } from '../../math';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
 import type { CurvatureState } from './state';
 
-/** Twelve significant digits: enough to check κ against its closed form to 1e-9. */
-export const precise = (value: number) => Number(value.toPrecision(12)).toString();
-const vector = (v: Point | null) =>
-  v ? `(${v.map((x) => Number(x.toFixed(4))).join(', ')})` : 'undefined';
+/**
+ * A number in the tables: four decimals at most (the kit's `trimmed`, so a
+ * rounding residue reads 0). The row keeps the whole number in `data-value`
+ * for whoever checks it against the maths.
+ */
+const shown = (value: number) => trimmed(value, 4);
+const vector = (v: Point | null) => (v ? `(${v.map(shown).join(', ')})` : 'undefined');
 
 interface Row {
   cells: (string | { text: string; swatch?: string })[];
@@ -20,66 +24,73 @@ export function valueRows(
   palette: readonly string[],
 ): Row[] {
   const swatch = (k: number) => palette[k % palette.length];
-  const named = (name: string, value: string, colour?: number): Row => ({
-    cells: [{ text: name, swatch: colour === undefined ? undefined : swatch(colour) }, value],
-    data: { quantity: name },
+  const named = (name: string, text: string, colour?: number): Row => ({
+    cells: [{ text: name, swatch: colour === undefined ? undefined : swatch(colour) }, text],
+    // Rows are kept by place: every row writes data-value, so none keeps another's number.
+    data: { quantity: name, value: '' },
   });
+  /** A row of one number: shown to four decimals, whole in data-value ('' where undefined: the table keeps no stale number). */
+  const number = (name: string, value: number | null, colour?: number, otherwise = 'undefined') => {
+    const row = named(name, value === null ? otherwise : shown(value), colour);
+    return { ...row, data: { quantity: name, value: value === null ? '' : String(value) } };
+  };
   if (state.part === 'plane') {
     const at = m.plane!.at;
-    const global =
-      m.plane!.pieces.segments.length > 1
-        ? [
-            named('s = pieces·t', precise(at.s)),
-            named('piece i, local u', `${at.piece}, ${precise(at.u)}`),
-          ]
-        : [];
+    // On several pieces P′ is the piece's own dP/dp̄ (see planeScript).
+    const pieced = m.plane!.pieces.segments.length > 1;
+    const x = pieced ? 'p̄' : 't';
+    const global = pieced
+      ? [number('p̄ = pieces·t', at.s), named('piece i, local p', `${at.piece}, ${shown(at.u)}`)]
+      : [];
     return [
-      named('t', precise(at.t)),
+      number('t', at.t),
       ...global,
-      named('P(t)', vector(at.point)),
-      named('P′(t)', vector(at.velocity)),
-      named('|P′(t)|', precise(at.speed)),
+      named(`P(${x})`, vector(at.point)),
+      named(`P′(${x})`, vector(at.velocity)),
+      number(`|P′(${x})|`, at.speed),
       named('T', vector(at.tangent), COLOURS.tangent),
       named('N', vector(at.normal), COLOURS.normal),
-      named('κ', at.curvature === null ? 'undefined' : precise(at.curvature), COLOURS.curvature),
-      named(
+      number('κ', at.curvature, COLOURS.curvature),
+      number(
         'R = 1/|κ|',
-        at.circle ? precise(at.circle.radius) : 'undefined (infinite or no circle)',
+        at.circle?.radius ?? null,
+        undefined,
+        'undefined (infinite or no circle)',
       ),
     ];
   }
   if (state.part === 'space') {
     const at = m.space.at;
     const out = [
-      named('t', precise(at.t)),
+      number('t', at.t),
       named('P(t)', vector(at.point)),
       named('T', vector(at.tangent), COLOURS.tangent),
       named('N', vector(at.normal), COLOURS.normal),
       named('B', vector(at.binormal), COLOURS.binormal),
-      named('κ', at.curvature === null ? 'undefined' : precise(at.curvature), COLOURS.curvature),
-      named('τ', at.torsion === null ? 'undefined' : precise(at.torsion), COLOURS.torsion),
+      number('κ', at.curvature, COLOURS.curvature),
+      number('τ', at.torsion, COLOURS.torsion),
     ];
     if (m.space.closed)
       out.push(
-        named('a/(a² + b²)', precise(m.space.closed.curvature)),
-        named('b/(a² + b²)', precise(m.space.closed.torsion)),
+        number('a/(a² + b²)', m.space.closed.curvature),
+        number('b/(a² + b²)', m.space.closed.torsion),
       );
     return out;
   }
   return [];
 }
 
-/** The arc length table: s at t = i/n, and t at s = iL/n. */
+/** The arc length table: s at t = i/n, and t at s = iL/n (whole numbers in data-t, data-s, data-equal-s, data-equal-t). */
 export function arcRows(m: CurvatureModel): Row[] {
   const arc = m.arc!;
   return arc.table.map((row, i) => ({
-    cells: [
-      String(i),
-      precise(row.t),
-      precise(row.s),
-      precise(arc.equal[i].s),
-      precise(arc.equal[i].t),
-    ],
-    data: { quantity: `row ${i}` },
+    cells: [String(i), shown(row.t), shown(row.s), shown(arc.equal[i].s), shown(arc.equal[i].t)],
+    data: {
+      quantity: `row ${i}`,
+      t: String(row.t),
+      s: String(row.s),
+      equalS: String(arc.equal[i].s),
+      equalT: String(arc.equal[i].t),
+    },
   }));
 }

@@ -1,3 +1,4 @@
+import { count } from '../../app/fields';
 import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { boundsOf, unionBounds } from '../../render/projection';
@@ -13,6 +14,7 @@ import {
 import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { controlPoints } from './points';
 import { windowOf } from './raster';
+import { zoomWords } from './zoomView';
 import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
 
 const RASTER_BOX = boundsOf([
@@ -39,23 +41,38 @@ function drawPlot(painter: Painter, m: RasterModel, labels: boolean): void {
   if (shown.has('gap')) drawGap(painter, m.uniform, m.state.zoom, labels);
 }
 
+/**
+ * Uniform sampling, on the left of the compare scene: the slider's n
+ * segments; then as many as reach the adaptive polyline's gap (measured); at
+ * the last step as many as the flatness bound plans for (not measured). The
+ * heading counts the polyline drawn, as the caption does.
+ */
 function drawCompare(painter: Painter, m: RasterModel, labels: boolean): void {
-  const sameGap = m.shown.has('sameGap');
-  const uniform = m.shown.has('uniform');
+  const { shown } = m;
   controlPolygon(painter, m);
   drawCurve(painter, m.curve);
+  if (shown.has('bound')) {
+    drawPolyline(painter, m.bound.points, painter.color(3));
+    drawGap(painter, m.bound, m.state.zoom, labels);
+    if (labels)
+      heading(painter, `Uniform, planned: ${count(m.bound.points.length - 1, 'segment')}`);
+    return;
+  }
+  const sameGap = shown.has('sameGap');
   if (sameGap && m.sameErrorBeyond) {
     // Not computed, so not drawn: the count is past the search's end.
     painter.note(`Uniform sampling needs more than ${SAME_ERROR_MAX} segments for the same gap.`);
     if (labels) heading(painter, `Uniform: more than ${SAME_ERROR_MAX} segments`);
     return;
   }
-  const shown = sameGap && m.sameError ? m.sameError : m.uniform;
+  const drawn = sameGap && m.sameError ? m.sameError : m.uniform;
+  const uniform = shown.has('uniform');
   if (uniform) {
-    drawPolyline(painter, shown.points, painter.color(sameGap ? 2 : 0));
-    drawGap(painter, shown, m.state.zoom, labels);
+    drawPolyline(painter, drawn.points, painter.color(sameGap ? 2 : 0));
+    drawGap(painter, drawn, m.state.zoom, labels);
   }
-  if (labels) heading(painter, `Uniform: ${uniform ? `${shown.points.length - 1} segments` : '?'}`);
+  if (labels)
+    heading(painter, `Uniform: ${uniform ? count(drawn.points.length - 1, 'segment') : '?'}`);
 }
 
 function drawSubdivide(painter: Painter, m: RasterModel): void {
@@ -130,7 +147,8 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
     { color: theme.accent, width: theme.sizes.line * 1.2 },
     true,
   );
-  if (labels) heading(painter, `The screen's 32 × 24 pixels at zoom ×${size.zoom}: the box`);
+  if (labels)
+    heading(painter, `The screen's 32 × 24 pixels at zoom ×${zoomWords(size.zoom)}: the box`);
 }
 
 /** What the curve figure draws in each scene. */

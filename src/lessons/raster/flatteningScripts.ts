@@ -3,7 +3,7 @@
  * against adaptive flattening, and the flattening's subdivision stepped.
  */
 import { count } from '../../app/fields';
-import { texNumber } from '../../kit/format';
+import { texNumber, trimmed } from '../../kit/format';
 import { type StepAt, repeat, script, step } from '../../kit/script';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { type Reveal, piecePresses, piecesAt } from './reveals';
@@ -20,7 +20,7 @@ export const plotScript = script<RasterState, RasterModel, Reveal>(
   step(
     'points',
     ({ model: m }) =>
-      `Given: the ${m.state.points.length} control points of a curve of degree ${m.degree}. Task: plot the curve.`,
+      `Given: the ${m.state.points.length} control points of a Bézier curve of degree ${m.degree}. Task: plot the curve.`,
   ),
   step(
     'samples',
@@ -69,7 +69,7 @@ export const compareScript = script<RasterState, RasterModel, Reveal>(
   step(
     'adaptive',
     ({ state, model: m }) =>
-      `Adaptive to τ = ${num(state.tolerance)} px: ${count(m.adaptive.points.length - 1, 'segment')}, largest gap ${num(px(m, m.adaptive.deviation.distance))} px, short ones only in the bend.`,
+      `Adaptive to τ = ${num(state.tolerance)} px: ${count(m.adaptive.points.length - 1, 'segment')}, largest gap ${num(px(m, m.adaptive.deviation.distance))} px, the short ones where the curve bends.`,
     gaps,
   ),
   step(
@@ -78,12 +78,14 @@ export const compareScript = script<RasterState, RasterModel, Reveal>(
       `For the same gap of ${num(px(m, m.adaptive.deviation.distance))} px, uniform sampling needs ${m.sameError ? count(m.sameError.points.length - 1, 'segment') : `more than ${SAME_ERROR_MAX} segments`}.`,
     gaps,
   ),
+  // The caption counts the polyline the figure draws at this step (m.bound),
+  // not the one of the step before (the same gap as adaptive: fewer segments).
   step(
     'bound',
     ({ model: m }) =>
-      `Without measuring, uniform sampling must plan for the sharpest bend: ${count(m.boundCount, 'segment')} to be sure of τ.`,
-    ({ model: m }) =>
-      `N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = ${m.boundCount}`,
+      `Without measuring, uniform sampling must plan for the sharpest bend: ${count(m.bound.points.length - 1, 'segment')} to be sure of τ; they stray ${num(px(m, m.bound.deviation.distance))} px.`,
+    ({ state, model: m }) =>
+      `N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\tfrac{${num(px(m, m.tree[0].flatness))}}{${num(state.tolerance)}}} \\right\\rceil = ${m.bound.points.length - 1}`,
   ),
 );
 
@@ -100,7 +102,7 @@ export const subdivideScript = script<RasterState, RasterModel, Reveal>(
   step(
     'question',
     ({ state }) =>
-      `Is the control polygon within τ = ${num(state.tolerance)} px of a straight line? If not, split at t = ½.`,
+      `Does the control polygon bend so little that the curve is within τ = ${num(state.tolerance)} px of its chord? If not, split at t = ½.`,
     flatness,
   ),
   repeat(
@@ -109,22 +111,26 @@ export const subdivideScript = script<RasterState, RasterModel, Reveal>(
     (at) => {
       const { model: m } = at;
       const node = visited(at);
-      const range = `t ∈ [${num(node.t0, 3)}, ${num(node.t1, 3)}]`;
+      // Halves of halves: t0 and t1 are k/2ᵈ, exact in four decimals to depth 4.
+      const range = `t ∈ [${trimmed(node.t0, 4)}, ${trimmed(node.t1, 4)}]`;
       const flatness = num(px(m, node.flatness));
-      return node.split
-        ? `Piece ${range}: flatness ${flatness} px > τ, so split it at its middle.`
-        : `Piece ${range}: flatness ${flatness} px ≤ τ, so draw it as one segment.`;
+      if (node.split)
+        return `Piece ${range}: flatness ${flatness} px > τ, so split it at its middle.`;
+      // Kept at the depth limit although not flat enough (flattenBezier stops there too).
+      if (node.cut)
+        return `Piece ${range}: flatness ${flatness} px > τ, but as deep as the flattening goes, so draw it as one segment.`;
+      return `Piece ${range}: flatness ${flatness} px ≤ τ, so draw it as one segment.`;
     },
     (at) => {
       const { state, model: m } = at;
       const node = visited(at);
-      return `\\tfrac{${m.degree}\\cdot${m.degree - 1}}{8}\\max\\|\\Delta^2 P\\| = ${num(px(m, node.flatness))}\\ ${node.split ? '>' : '\\le'}\\ ${num(state.tolerance)}`;
+      return `\\tfrac{${m.degree}\\cdot${m.degree - 1}}{8}\\max\\|\\Delta^2 P\\| = ${num(px(m, node.flatness))}\\ ${node.split || node.cut ? '>' : '\\le'}\\ ${num(state.tolerance)}`;
     },
   ),
   step(
     'done',
     ({ model: m }) =>
-      `Done: ${count(m.adaptive.points.length - 1, 'segment')} from ${count(m.tree.length, 'piece')} looked at; the tree is ${Math.max(...m.tree.map((node) => node.depth))} levels deep.`,
+      `Done: ${count(m.adaptive.points.length - 1, 'segment')} from ${count(m.tree.length, 'piece')} looked at, halved at most ${count(Math.max(...m.tree.map((node) => node.depth)), 'time')}.`,
     flatness,
   ),
 );

@@ -94,6 +94,16 @@ export const flatteningOf = memoOn<FlatteningFields, keyof FlatteningFields, Fla
   },
 );
 
+/**
+ * Uniform sampling planned without measuring (compare scene): the
+ * ⌈√(n(n−1)·max‖Δ²P‖ / (8τ))⌉ segments of the flatness bound, the polyline
+ * the figure draws and the caption counts.
+ */
+export const boundOf = memoOn<FlatteningFields, keyof FlatteningFields, Polyline>(
+  ['points', 'tolerance', 'zoom'],
+  (fields) => polyline(fields.points, uniformParameters(flatteningOf(fields).boundCount)),
+);
+
 /** Uniform sampling with the adaptive polyline's gap (compare scene). */
 export const sameGapOf = memoOn<FlatteningFields, keyof FlatteningFields, SameGap>(
   ['points', 'tolerance', 'zoom'],

@@ -4,6 +4,7 @@ import {
   type Curve,
   type Flattening,
   type SteppedSegment,
+  boundOf,
   coverageOf,
   curveOf,
   flatteningOf,
@@ -28,6 +29,8 @@ export interface RasterModel extends Curve, Flattening, SteppedSegment, SameGap 
   shown: Revealed<Reveal>;
   /** n uniform segments (the slider). */
   uniform: Polyline;
+  /** Uniform sampling planned by the flatness bound: boundCount segments, with the gap they leave. */
+  bound: Polyline;
   /** The adaptive polyline anti-aliased (coverage scene). */
   coverage: Map<string, Pixel> | null;
   /** The stepped segment's pixels with their coverage (coverage scene, magnified). */
@@ -53,6 +56,7 @@ export function derive(state: RasterState, shown: Revealed<Reveal>): RasterModel
     ...flattening,
     ...stepped,
     uniform: uniformOf(state),
+    bound: boundOf(state),
     ...(view === 'compare' ? sameGapOf(state) : { sameError: null, sameErrorBeyond: false }),
     ...(view === 'coverage' ? coverageOf(state) : { coverage: null, segmentCoverage: null }),
     // The zoom scene's zoom is its step: ×½ at the first press, doubling at each.

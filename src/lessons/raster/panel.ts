@@ -1,6 +1,7 @@
 import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
+import { notesKey, notesSlip } from '../../kit/notes';
 import { formula } from '../../render/formula';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { controlPoints } from './points';
@@ -8,6 +9,31 @@ import { HAIRPIN, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './sta
 
 const INTRO =
   'A screen cannot draw a curve. It draws straight segments between points computed on the curve, and each segment as a row of pixels. How many segments, and where? The control points are given in pixels of a coarse 32 × 24 raster (zoom 1); drag them, Tab to one and use the arrow keys, double-click to add one, right-click or Delete to remove one.';
+
+/**
+ * The “Splines” slides, where they pose the raster conversion problem, swap
+ * the two words for what a spline does with its points.
+ */
+const splineSlip = () =>
+  notesSlip(
+    'spline slides',
+    'that a spline which interpolates its control points need not pass through them, and one which approximates them does',
+    'It is the other way round: an interpolating curve passes through its points, an approximating one is only pulled towards them. The Bézier curve here approximates its control points: it passes through the first and the last only.',
+  );
+
+/** The slides' symbols beside the lesson's. */
+const slideSymbols = () =>
+  notesKey([
+    ['t, the curve’s parameter', 'u in the “Splines” slides: P(u) = (x(u), y(u))'],
+    [
+      'P₀ … Pₙ, the control points',
+      'p₀ … pₙ, pₖ = (xₖ, yₖ), in the “Splines” slides, which also call them knots',
+    ],
+    [
+      'the segments of the polyline',
+      'the “short line segments” that ink the computed points into a curve, in the “Splines” slides',
+    ],
+  ]);
 
 export function rasterPanel(
   api: LessonApi<RasterState, RasterModel>,
@@ -71,6 +97,8 @@ export function rasterPanel(
     'div',
     { class: 'lesson-text' },
     h('p', {}, INTRO),
+    splineSlip(),
+    slideSymbols(),
     h(
       'p',
       { class: 'note' },
@@ -148,15 +176,7 @@ export function rasterPanel(
               },
             ]
           : []),
-        {
-          data: { polyline: 'bound', segments: String(m.boundCount), gap: '' },
-          cells: [
-            'Uniform, planned for τ',
-            String(m.boundCount),
-            `≤ ${fmt(state.tolerance, 2)}`,
-            '—',
-          ],
-        },
+        row('Uniform, planned for τ by the bound', m.bound, 'bound'),
       ]);
 
       const pixelScene = state.view === 'pixels' || state.view === 'coverage';

@@ -85,7 +85,7 @@ export const zoomScript = script<RasterState, RasterModel, Reveal>(
         zoom.uniformFar.length === 0
           ? 'every lit pixel within 1 px of the curve'
           : `${count(zoom.uniformFar.length, 'pixel')} lit more than 1 px off the curve`;
-      return `Zoom ×${zoomWords(zoomAt(index))}, the curve on ${zoom.full.width} × ${zoom.full.height} pixels: ${segmentsOf(state)} segments stray ${num(gap)} px, ${verdict}. Adaptive to ${num(state.tolerance)} px: ${adaptive} segments.`;
+      return `Zoom ×${zoomWords(zoomAt(index))}, the curve on ${zoom.full.width} × ${zoom.full.height} pixels: ${count(segmentsOf(state), 'segment')} ${segmentsOf(state) === 1 ? 'strays' : 'stray'} ${num(gap)} px; in the 32 × 24 window, ${verdict}. Adaptive to ${num(state.tolerance)} px: ${count(adaptive, 'segment')}.`;
     },
     ({ model: m }) => {
       const zoom = m.zoom;

@@ -26,7 +26,7 @@ describe('the script of the raster lesson', () => {
     const at = (step: number) => sceneAt('plot', step);
     expect(steps(at(0))).toBe(4);
     expect(caption(at(0))).toBe(
-      'Given: the 7 control points of a curve of degree 6. Task: plot the curve.',
+      'Given: the 7 control points of a Bézier curve of degree 6. Task: plot the curve.',
     );
     expect(formula(at(0))).toBeNull();
     expect(caption(at(1))).toBe(
@@ -62,12 +62,12 @@ describe('the script of the raster lesson', () => {
       '\\tfrac{n(n-1)}{8}\\max_i \\|P_{i+2} - 2P_{i+1} + P_i\\| \\le \\tau = 0.50',
     );
     expect(caption(at(1))).toBe(
-      'Piece t ∈ [0.000, 1.000]: flatness 85.51 px > τ, so split it at its middle.',
+      'Piece t ∈ [0, 1]: flatness 85.51 px > τ, so split it at its middle.',
     );
     expect(formula(at(1))).toBe('\\tfrac{6\\cdot5}{8}\\max\\|\\Delta^2 P\\| = 85.51\\ >\\ 0.50');
     expect(derive(at(1)).piecesShown).toBe(1);
-    expect(caption(at(17))).toMatch(
-      /^Done: 9 segments from 17 pieces looked at; the tree is \d levels deep\.$/,
+    expect(caption(at(17))).toBe(
+      'Done: 9 segments from 17 pieces looked at, halved at most 4 times.',
     );
     expect(derive(at(17)).piecesShown).toBe(17);
   });
@@ -143,10 +143,10 @@ describe('the script of the raster lesson', () => {
   it('compares uniform and adaptive: the bound ⌈√(85.51 / 0.5)⌉ = 14 segments', () => {
     const at = (step: number) => sceneAt('compare', step);
     expect(caption(at(4))).toBe(
-      'Without measuring, uniform sampling must plan for the sharpest bend: 14 segments to be sure of τ.',
+      'Without measuring, uniform sampling must plan for the sharpest bend: 14 segments to be sure of τ; they stray 0.31 px.',
     );
     expect(formula(at(4))).toBe(
-      'N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = 14',
+      'N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\tfrac{85.51}{0.50}} \\right\\rceil = 14',
     );
     expect([0, 1].map((step) => formula(at(step)))).toEqual([null, null]);
   });

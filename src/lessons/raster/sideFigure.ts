@@ -1,3 +1,5 @@
+import { count } from '../../app/fields';
+import { texNumber } from '../../kit/format';
 import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
@@ -6,6 +8,7 @@ import { drawMagnifier, magnifierBounds } from './magnifier';
 import type { RasterModel } from './model';
 import { windowOf } from './raster';
 import { drawTree, treeBounds } from './tree';
+import { zoomWords } from './zoomView';
 import { RASTER_HEIGHT, RASTER_WIDTH, type RasterState } from './state';
 
 // The figure beside the curve: the gap over t (plot), the adaptive polyline
@@ -89,7 +92,7 @@ function drawAdaptive(painter: Painter, m: RasterModel, labels: boolean): void {
   if (labels)
     heading(
       painter,
-      `Adaptive, τ = ${tolerance} px: ${adaptive ? `${m.adaptive.points.length - 1} segments` : '?'}`,
+      `Adaptive, τ = ${texNumber(tolerance, 2)} px: ${adaptive ? count(m.adaptive.points.length - 1, 'segment') : '?'}`,
     );
 }
 
@@ -106,7 +109,7 @@ function drawZoomWindow(painter: Painter, m: RasterModel, labels: boolean): void
     const gap = m.uniform.deviation.distance * zoom.size.zoom;
     heading(
       painter,
-      `×${zoom.size.zoom}: ${m.uniform.points.length - 1} segments ${gap.toFixed(2)} px off, ${zoom.uniformFar.length} pixels wrong`,
+      `×${zoomWords(zoom.size.zoom)}: ${count(m.uniform.points.length - 1, 'segment')} ${gap.toFixed(2)} px off, ${count(zoom.uniformFar.length, 'pixel')} wrong`,
     );
   }
 }

@@ -77,7 +77,7 @@ export function drawTree(painter: Painter, m: RasterModel, labels: boolean): voi
       width: theme.sizes.line,
     });
     if (labels) {
-      const sign = current.split ? '>' : '≤';
+      const sign = current.split || current.cut ? '>' : '≤';
       painter.label(
         `${(current.flatness * m.state.zoom).toFixed(2)} ${sign} τ`,
         at(current.index),
