@@ -2,11 +2,15 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { expectClose, plain, point, unitParameter } from './arbitraries.test-helpers';
 import { bezierPoint } from './bezier';
+import { bezierToPowerBasis } from './powerBasis';
 import {
+  HERMITE_LECTURE_INVERSE,
+  HERMITE_LECTURE_MATRIX,
   bezierToHermite,
   hermiteBasis,
   hermiteBasisDerivatives,
   hermiteCoefficients,
+  hermiteLectureCoefficients,
   hermiteMatrix,
   hermitePoint,
   hermiteToBezier,
@@ -26,7 +30,7 @@ const hermiteData = fc
   );
 
 describe('hermiteMatrix', () => {
-  it('is the inverse of the lecture’s constraint matrix (equation 7)', () => {
+  it('is the inverse of the conditions in the order x0, x1, x0′, x1′ (not the lecture’s order)', () => {
     const constraints = [
       [1, 0, 0, 0],
       [1, 1, 1, 1],
@@ -46,6 +50,89 @@ describe('hermiteMatrix', () => {
       [-3, 3, -2, -1],
       [2, -2, 1, 1],
     ]);
+  });
+});
+
+describe('the lecture’s matrices (lecture notes, equations 6 and 7)', () => {
+  // Typed from the notes (000, "Spline Patches"), data in the order (Pi, P′i, Pi+1, P′i+1).
+  const equation6 = [
+    [1, 0, 0, 0],
+    [0, 1, 0, 0],
+    [1, 1, 1, 1],
+    [0, 1, 2, 3],
+  ];
+  const equation7 = [
+    [1, 0, 0, 0],
+    [0, 1, 0, 0],
+    [-3, -2, 3, -1],
+    [2, 1, -2, 1],
+  ];
+
+  it('reads as the notes print them', () => {
+    expect(HERMITE_LECTURE_MATRIX).toEqual(equation6);
+    expect(HERMITE_LECTURE_INVERSE).toEqual(equation7);
+  });
+
+  it('are inverses of one another', () => {
+    const identity = [
+      [1, 0, 0, 0],
+      [0, 1, 0, 0],
+      [0, 0, 1, 0],
+      [0, 0, 0, 1],
+    ];
+    const matrix = HERMITE_LECTURE_MATRIX.map((row) => [...row]);
+    const inverse = HERMITE_LECTURE_INVERSE.map((row) => [...row]);
+    expect(multiply(matrix, inverse)).toEqual(identity);
+    expect(multiply(inverse, matrix)).toEqual(identity);
+  });
+
+  it('is hermiteMatrix with its columns in the lecture’s order', () => {
+    // hermiteMatrix's columns weigh (x0, x1, x0′, x1′); the lecture's (Pi, P′i, Pi+1, P′i+1).
+    const reordered = hermiteMatrix().map((row) => [row[0], row[2], row[1], row[3]]);
+    expect(reordered).toEqual(equation7);
+  });
+});
+
+describe('hermiteLectureCoefficients', () => {
+  it('works equation 7 for the first scene’s patch by hand', () => {
+    // P0 = (0, 0), P′0 = (3, 4.5), P1 = (4, 0), P′1 = (3, −4.5):
+    // a2 = −3·0 − 2·(3, 4.5) + 3·(4, 0) − (3, −4.5) = (3, −4.5), a3 = 2·0 + (3, 4.5) − 2·(4, 0) + (3, −4.5) = (−2, 0).
+    expect(hermiteLectureCoefficients([0, 0], [3, 4.5], [4, 0], [3, -4.5])).toEqual([
+      [0, 0],
+      [3, 4.5],
+      [3, -4.5],
+      [-2, 0],
+    ]);
+  });
+
+  it('agrees with hermiteCoefficients, worked out another way', () => {
+    fc.assert(
+      fc.property(hermiteData, ([p0, d0, p1, d1]) => {
+        const lecture = hermiteLectureCoefficients(p0, d0, p1, d1);
+        hermiteCoefficients(p0, d0, p1, d1).forEach((a, k) => expectClose(lecture[k], a, 1e-12));
+      }),
+    );
+  });
+
+  it('gives a Bézier curve’s power form from P0, 3(P1 − P0), P3, 3(P3 − P2) (the lecture’s equation 11)', () => {
+    fc.assert(
+      fc.property(
+        fc
+          .constantFrom(2, 3)
+          .chain((dimension) => fc.array(point(dimension), { minLength: 4, maxLength: 4 })),
+        (bezier) => {
+          const [p0, d0, p1, d1] = bezierToHermite(bezier);
+          const lecture = hermiteLectureCoefficients(p0, d0, p1, d1);
+          bezierToPowerBasis(bezier).forEach((a, k) => expectClose(lecture[k], a, 1e-9));
+        },
+      ),
+    );
+  });
+
+  it('rejects mismatched dimensions', () => {
+    expect(() => hermiteLectureCoefficients([0, 0], [1, 1, 1], [1, 1], [0, 0])).toThrow(
+      /has 3 coordinates but 2 are expected/,
+    );
   });
 });
 

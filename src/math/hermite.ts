@@ -1,14 +1,71 @@
 import { checkInteger, checkParameter, checkPoint } from './validate';
 import type { Point } from './vec';
 
-// Cubic Hermite interpolation (lecture notes, equation 7): the cubic
-// x(μ) = a0 + a1 μ + a2 μ² + a3 μ³ with x(0) = x0, x(1) = x1, x′(0) = x0′,
-// x′(1) = x1′. Inverting [[1,0,0,0],[1,1,1,1],[0,1,0,0],[0,1,2,3]] gives
+// Cubic Hermite interpolation: the cubic x(μ) = a0 + a1 μ + a2 μ² + a3 μ³
+// with x(0) = x0, x(1) = x1, x′(0) = x0′, x′(1) = x1′ gives
 // a0 = x0, a1 = x0′, a2 = −3x0 + 3x1 − 2x0′ − x1′, a3 = 2x0 − 2x1 + x0′ + x1′.
+// The lecture notes (equations 6 and 7) order the data (Pi, P′i, Pi+1, P′i+1):
+// HERMITE_LECTURE_MATRIX and HERMITE_LECTURE_INVERSE. hermiteMatrix orders it
+// (x0, x1, x0′, x1′), as the continuation notes do, so it is not equation 7.
 
 /**
- * The Hermite matrix of the lecture: row k gives `ak` as a combination of
- * `[x0, x1, x0′, x1′]`, the inverse of `[[1,0,0,0],[1,1,1,1],[0,1,0,0],[0,1,2,3]]`.
+ * Equation 6 of the lecture notes as a matrix: row k is condition k on
+ * `[a0, a1, a2, a3]` for the data in the lecture's order `(Pi, P′i, Pi+1, P′i+1)`:
+ * `Pi = a0`, `P′i = a1`, `Pi+1 = a0 + a1 + a2 + a3`, `P′i+1 = a1 + 2a2 + 3a3`.
+ */
+export const HERMITE_LECTURE_MATRIX: readonly (readonly number[])[] = [
+  [1, 0, 0, 0],
+  [0, 1, 0, 0],
+  [1, 1, 1, 1],
+  [0, 1, 2, 3],
+];
+
+/**
+ * Equation 7 of the lecture notes: the inverse of `HERMITE_LECTURE_MATRIX`, so
+ * `[a0, a1, a2, a3] = HERMITE_LECTURE_INVERSE · [Pi, P′i, Pi+1, P′i+1]`.
+ */
+export const HERMITE_LECTURE_INVERSE: readonly (readonly number[])[] = [
+  [1, 0, 0, 0],
+  [0, 1, 0, 0],
+  [-3, -2, 3, -1],
+  [2, 1, -2, 1],
+];
+
+/**
+ * `[a0, a1, a2, a3]` of `P(μ) = a3μ³ + a2μ² + a1μ + a0` from the data in the
+ * lecture's order (point, gradient, next point, next gradient): equation 7,
+ * `HERMITE_LECTURE_INVERSE` times the data, row by row.
+ */
+export function hermiteLectureCoefficients(
+  point: Point,
+  gradient: Point,
+  nextPoint: Point,
+  nextGradient: Point,
+): [Point, Point, Point, Point] {
+  const data = [point, gradient, nextPoint, nextGradient];
+  const dimension = checkHermite(
+    'hermiteLectureCoefficients',
+    point,
+    gradient,
+    nextPoint,
+    nextGradient,
+  );
+  const [a0, a1, a2, a3] = HERMITE_LECTURE_INVERSE.map((row) => {
+    const coefficient = new Array<number>(dimension).fill(0);
+    row.forEach((entry, k) => {
+      for (let d = 0; d < dimension; d++) coefficient[d] += entry * data[k][d];
+    });
+    return coefficient;
+  });
+  return [a0, a1, a2, a3];
+}
+
+/**
+ * The inverse of `[[1,0,0,0],[1,1,1,1],[0,1,0,0],[0,1,2,3]]`: row k gives `ak`
+ * as a combination of `[x0, x1, x0′, x1′]`. That is the continuation notes'
+ * order of the data, and their inverse with its rows reversed (they write
+ * x(t) = at³ + bt² + ct + d, so their a, b, c, d are a3, a2, a1, a0). Equation 7
+ * of the lecture notes orders the data otherwise: `HERMITE_LECTURE_INVERSE`.
  */
 export function hermiteMatrix(): number[][] {
   return [

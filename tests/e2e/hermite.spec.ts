@@ -23,7 +23,7 @@ async function coefficients(page: Page): Promise<number[][]> {
   return rows;
 }
 
-/** Equation 7 read back: a0 = P_i, a1 = D_i, Σ a_k = P_i+1, a1 + 2a2 + 3a3 = D_i+1 (to the 4 decimals shown). */
+/** Equation 7's solution read back into equation 6: a0 = P_i, a1 = D_i, Σ a_k = P_i+1, a1 + 2a2 + 3a3 = D_i+1 (to the 4 decimals shown). */
 async function expectEquation7(page: Page, i: number, D: number[][]) {
   const p = list((await linkState(page)).p);
   await expect
@@ -40,9 +40,9 @@ async function expectEquation7(page: Page, i: number, D: number[][]) {
     .toBe(true);
 }
 
-// The whole construction of the lecture patch (step 5 of 5): gradients, basis, patch, P(μ).
+// The whole construction of the first scene's patch (step 7 of 7): gradients, conditions, patch, basis, P(μ).
 test.beforeEach(async ({ page }) => {
-  await page.goto('./#/hermite?step=5');
+  await page.goto('./#/hermite?step=7');
   await expect(patches(page)).toBeVisible();
 });
 
@@ -110,7 +110,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
   await page.getByRole('button', { name: 'Several points, Catmull-Rom' }).click();
   await expectHash(page, 'mode', (v) => v === 'catmull-rom');
   await page.keyboard.press('End');
-  await expectHash(page, 'step', (v) => v === '8');
+  await expectHash(page, 'step', (v) => v === '10');
   await expect(page.getByRole('heading', { name: /^Patch 2 of 4/ })).toBeVisible();
   const joins = page.getByRole('table', { name: 'Joins' });
   for (const k of [1, 2, 3]) {
@@ -159,15 +159,31 @@ test('two points in Catmull-Rom mode: zero gradients, and the figure says why', 
   await snapshot(page, 'hermite-two-points-catmull-rom');
 });
 
-test('the Bézier view lists B0…B3 at P ± D/3', async ({ page }) => {
+test('the Bézier view lists B0…B3 at P ± D/3 and walks its own steps', async ({ page }) => {
   const before = await pixels(page);
   await page.getByLabel(/Show each patch as a Bézier curve/).check();
   await expectHash(page, 'bezier', (v) => v === '1');
+  // Its own script, shown to its end: seven steps, the last P(μ) from either blend.
+  await expectHash(page, 'step', (v) => v === '6');
+  const status = page.locator('.step-status');
+  await expect(status).toHaveText('Step 6/6: P(μ) from either blend is one point');
   // P0 = (0, 0), D0 = (3, 4.5) → B1 = (1, 1.5); P1 = (4, 0), D1 = (3, −4.5) → B2 = (3, 1.5).
   const controls = page.getByRole('table', { name: 'Bézier control points' });
   await expect(controls.getByRole('row', { name: /^B1 / })).toHaveText(/B1\s*1\.0000\s*1\.5000/);
   await expect(controls.getByRole('row', { name: /^B2 / })).toHaveText(/B2\s*3\.0000\s*1\.5000/);
   expect(await pixels(page)).not.toBe(before);
+  // B1 is the tip of D0's arrow; B2 = (3, 1.5) is D1's tip (5, −1.5) mirrored through P1 = (4, 0).
+  await expect(page.getByRole('button', { name: /^D0 at \(1\.00, 1\.50\)/ })).toBeVisible();
+  await expect(page.getByRole('button', { name: /^D1 at \(5\.00, -1\.50\)/ })).toBeVisible();
+  await page.keyboard.press('Home');
+  await expect(status).toHaveText(
+    'Step 0/6: A cubic Bézier curve: its control points B₀ … B₃ and their polygon',
+  );
+  await page.keyboard.press('PageDown');
+  await page.keyboard.press('PageDown');
+  await expect(status).toHaveText(
+    "Step 2/6: The end legs are a third of the gradients: B₁ is the tip of D₀'s arrow, B₂ is D₁'s tip mirrored through P₁",
+  );
   await snapshot(page, 'hermite-bezier');
 });
 
@@ -194,29 +210,35 @@ test('the script builds the patch from its points, and every scene steps from no
   await page.goto('./#/hermite?step=0');
   const status = page.locator('.step-status');
   const captions = [
-    'The points P0 … P1: where the curve must pass',
-    'The gradients D0 … D1, set by hand (arrows drawn a third as long)',
-    'H0 and H1 weight the end points: H0 + H1 = 1',
-    'H2 and H3 weight the end gradients: H2 is never negative, H3 never positive',
-    'Patch 1 of 1, from P0 to P1: the patch matrix turns its four conditions into a0 … a3',
-    'P(μ) on patch 1: H0 P + H1 P + H2 D + H3 D',
+    'The points P₀ and P₁: where the curve must pass',
+    'The gradients D₀ and D₁, set by hand (arrows drawn a third as long)',
+    'Patch 1, from P₀ to P₁: its ends at μ = 0 and μ = 1 give four conditions on a₀ … a₃',
+    'The four conditions as one matrix, the data in the order P₀, D₀, P₁, D₁',
+    'Patch 1 of 1, from P₀ to P₁: the inverse matrix turns its data into a₀ … a₃',
+    'Read down the columns of the inverse: H₀ and H₁ weight the end points, and H₀ + H₁ = 1',
+    'H₂ and H₃ weight the end gradients: H₂ is never negative, H₃ never positive',
+    'P(μ) on patch 1: H₀P₀ + H₁P₁ + H₂D₀ + H₃D₁',
   ];
+  // The matrix step writes the conditions of the step before as a matrix: the figure stays.
+  const sameFigure = new Set([3]);
   await expect(page.getByRole('button', { name: /^D0 at/ })).toHaveCount(0);
   let previous = await pixels(page);
   for (const [k, caption] of captions.entries()) {
     if (k > 0) await page.keyboard.press('PageDown');
-    await expect(status).toHaveText(`Step ${k}/5: ${caption}`);
-    if (k > 0) await expect.poll(() => pixels(page)).not.toBe(previous);
+    await expect(status).toHaveText(`Step ${k}/7: ${caption}`);
+    if (k > 0 && !sameFigure.has(k)) await expect.poll(() => pixels(page)).not.toBe(previous);
     previous = await pixels(page);
   }
   // The gradients' tips became handles at step 1.
   await expect(page.getByRole('button', { name: /^D0 at/ })).toHaveCount(1);
-  // In presenter view the patch step's formula is the patch matrix with its numbers.
-  await page.keyboard.press('PageUp');
+  // In presenter view the patch step's formula is the lecture's inverse matrix (equation 7) with its numbers.
+  for (let k = 7; k > 4; k--) await page.keyboard.press('PageUp');
+  await expect(status).toHaveText(`Step 4/7: ${captions[4]}`);
   await page.keyboard.press('p');
   await expect(page.locator('.caption-formula .katex')).toBeVisible();
   const tex = await page.locator('.caption-formula annotation').first().textContent();
-  // a2 = 3(P1 − P0) − 2D0 − D1 = (3, −4.5) for the lecture patch, worked out by hand.
+  expect(tex).toContain('-3 & -2 & 3 & -1');
+  // a2 = −3P0 − 2D0 + 3P1 − D1 = (3, −4.5) for the first scene's patch, worked out by hand.
   expect(tex).toContain('-4.5');
   await snapshot(page, 'hermite-script-patch-projector');
   // Every scene with the clicker alone, from step 0 to its last (at most 20 steps).

@@ -1,5 +1,6 @@
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
+import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { KitFigure } from '../../kit/lesson';
 import type { Revealed } from '../../kit/script';
@@ -11,6 +12,18 @@ import type { HermiteState } from './state';
 const BOUNDS: Bounds = { minX: 0, maxX: 1, minY: -0.25, maxY: 1.1 };
 /** What each basis function weighs: H0 P_i, H1 P_i+1, H2 D_i, H3 D_i+1. */
 const WEIGHS = ['P_i', 'P_{i+1}', 'D_i', 'D_{i+1}'];
+
+/**
+ * The step between the value axis' ticks: 0.25, or coarser where the plot is
+ * too short for its numbers to stand one above another (presenter view under
+ * a tall formula).
+ */
+function valueStep(painter: Painter): number {
+  const [, top] = painter.view.toScreen([0, 1]);
+  const [, bottom] = painter.view.toScreen([0, 0]);
+  const room = painter.theme.sizes.small * 1.5;
+  return [0.25, 0.5].find((step) => Math.abs(bottom - top) * step >= room) ?? 1;
+}
 
 /** How many of H0 … H3 the plot shows: those weighting the points, then those weighting the gradients. */
 export const plottedBasis = (shown: Revealed<Reveal>) =>
@@ -25,7 +38,7 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
     const theme = painter.theme;
     const mu = m.state.mu;
     const plotted = plottedBasis(m.shown);
-    painter.plotAxes(BOUNDS, 0.1, 0.25, 'μ', '');
+    painter.plotAxes(BOUNDS, 0.1, valueStep(painter), 'μ', '');
     const top = info.thumbnail ? 0 : plotYName(painter, BOUNDS.minX, BOUNDS.maxY, 'H_k(μ)');
     m.basis.curves.forEach((curve, k) => {
       if (k >= plotted) return;

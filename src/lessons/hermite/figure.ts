@@ -11,14 +11,14 @@ export const curveFigure: KitFigure<HermiteState, HermiteModel> = {
   bounds: (m) => m.bounds,
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, segments, patch, shown } = m;
-    const built = shown.count('patch');
+    const { state, segments, patch, shown, built } = m;
     // The order the patches take, faintly: P0 to P1 to … (the points alone say little).
-    painter.polyline(state.points, {
-      color: theme.curveFaint,
-      width: theme.sizes.thin,
-      dash: [4, 6],
-    });
+    if (!state.bezier)
+      painter.polyline(state.points, {
+        color: theme.curveFaint,
+        width: theme.sizes.thin,
+        dash: [4, 6],
+      });
     if (shown.has('bezier')) {
       segments.forEach((segment, i) => {
         const strong = i === patch.index;
@@ -45,8 +45,20 @@ export const curveFigure: KitFigure<HermiteState, HermiteModel> = {
         painter.arrow(p, m.tips[i], { color: painter.color(2), width: theme.sizes.line * 1.2 }),
       );
     }
+    // The conditions are on the ends of one patch: ring them, μ = 0 and μ = 1.
+    const ends = shown.is('conditions') || shown.is('matrix') || shown.is('ends');
+    if (ends)
+      for (const q of [patch.p0, patch.p1])
+        painter.ring(q, theme.sizes.handle * 1.4, { color: theme.accent, width: theme.sizes.line });
     if (shown.has('pointAtMu')) painter.dot(patch.point, theme.accent, theme.sizes.point * 1.5);
     if (info.thumbnail) return;
+    if (ends)
+      [patch.p0, patch.p1].forEach((q, end) =>
+        painter.labelClear(`μ = ${end}`, q, [...m.marks, ...patch.bezier], {
+          color: theme.accent,
+          halo: true,
+        }),
+      );
     if (shown.has('pointAtMu'))
       painter.labelClear('P(μ)', patch.point, m.marks, { halo: true, bold: true });
     if (shown.has('bezier')) {

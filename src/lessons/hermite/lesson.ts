@@ -4,7 +4,7 @@ import { basisFigure } from './basisFigure';
 import { curveFigure } from './figure';
 import { derive } from './model';
 import { hermitePanel } from './panel';
-import { construction } from './script';
+import { bezierScript, construction } from './script';
 import {
   type GradientMode,
   type HermiteState,
@@ -29,7 +29,10 @@ const SEVERAL_GRADIENTS: Point[] = [
   [2, 2],
 ];
 
-/** A scene: its points and gradients, at μ = 0.3 (the clicker opens it at step 0). */
+/**
+ * A scene: its points and gradients, at μ = 0.3 (the clicker opens it at step
+ * 0). The Bézier view walks its own steps and shows the curve's figure alone.
+ */
 const scene = (
   id: string,
   label: string,
@@ -39,6 +42,7 @@ const scene = (
 ) => ({
   id,
   label,
+  ...(options.bezier ? { script: bezierScript, figures: ['patches'] } : { script: construction }),
   setup: (s: HermiteState): HermiteState => ({
     ...s,
     points,
@@ -55,6 +59,8 @@ export default defineLesson({
   schema,
   step: 'step',
   script: construction,
+  // The scenes of one patch or several share the construction; the Bézier view has its own steps.
+  sceneOf: (state) => (state.bezier ? 'bezier' : 'one'),
   derive,
   normalize,
   figures: [curveFigure, basisFigure],

@@ -131,7 +131,7 @@ describe('derive (Hermite)', () => {
     expect(derive(lecture).bounds).toEqual({ minX: 0, minY: -1.5, maxX: 5, maxY: 1.5 });
   });
 
-  it('fits the loop of long gradients, not their arrows', () => {
+  it('fits the loop of long gradients with both arrows, whose tips are handles', () => {
     // D0 = (15, 12), D1 = (15, −12): tips at (5, 4) and (9, −4). The curve is
     // the Bézier (0, 0), (5, 4), (−1, 4), (4, 0), between y = 0 and y(½) = 3.
     const m = derive({
@@ -141,10 +141,9 @@ describe('derive (Hermite)', () => {
         [15, -12],
       ],
     });
-    // The tip (5, 4) is near enough to keep; (9, −4) is kept only half the curve's size away.
-    expect(m.bounds.maxY).toBe(4);
-    expect(m.bounds.maxX).toBeLessThan(7);
-    expect(m.bounds.minY).toBeGreaterThan(-2.5);
+    expect(m.bounds).toEqual({ minX: 0, minY: -4, maxX: 9, maxY: 4 });
+    // The Bézier view fits its control point B2 = (−1, 4) too.
+    expect(derive({ ...m.state, bezier: true }).bounds.minX).toBe(-1);
   });
 
   it('keeps a valid patch and says when it cannot', () => {
@@ -192,17 +191,20 @@ describe('the script (Hermite)', () => {
     checkScript(lesson);
   });
 
-  it('points, gradients, H0 H1, H2 H3, then each patch solved in turn, then P(μ)', () => {
+  it('points, gradients, the conditions, the matrix, each patch solved in turn, H0 H1, H2 H3, then P(μ)', () => {
     const five = { ...several, mode: 'hand' as const };
-    expect(stepCount(five)).toBe(4 + 4);
+    expect(stepCount(five)).toBe(7 + 3);
     expect(revealed({ ...five, step: 1 })).toMatchObject({ gradients: true, basis: 0, patches: 0 });
-    expect(revealed({ ...five, step: 3 })).toMatchObject({ basis: 4, patches: 0, building: null });
-    expect(revealed({ ...five, step: 6 })).toMatchObject({ patches: 3, building: 2, point: false });
-    expect(revealed({ ...five, step: 8 })).toMatchObject({
+    expect(revealed({ ...five, step: 3 })).toMatchObject({ basis: 0, patches: 0, building: null });
+    expect(revealed({ ...five, step: 6 })).toMatchObject({ patches: 3, building: 2, basis: 0 });
+    expect(revealed({ ...five, step: 9 })).toMatchObject({ patches: 4, basis: 4, point: false });
+    expect(revealed({ ...five, step: 10 })).toMatchObject({
       patches: 4,
       building: null,
       point: true,
     });
+    // Before the patches are solved, the conditions are the chosen patch's (P1 to P2).
+    expect(derive({ ...five, step: 2 }).patch.index).toBe(1);
     // While patch 3 (index 2) is solved, the matrix is about it: a0 = P2, a1 = D2.
     const m = derive({ ...five, step: 6 });
     expect(m.patch.index).toBe(2);
@@ -210,12 +212,14 @@ describe('the script (Hermite)', () => {
       [5, 1.5],
       [2, -2],
     ]);
-    expect(derive({ ...five, step: 8 }).patch.index).toBe(1);
+    expect(derive({ ...five, step: 10 }).patch.index).toBe(1);
+    // The Bézier view walks its own seven steps, for one patch or several.
     expect(stepCount({ ...lecture, bezier: true })).toBe(6);
+    expect(stepCount({ ...five, bezier: true })).toBe(6);
   });
 
   it('writes P(μ) with the signs in the formula, never "+ −"', () => {
-    const m = derive({ ...lecture, mu: 0.5, step: 5 });
+    const m = derive({ ...lecture, mu: 0.5, step: 7 });
     const tex = stepFormula(m, m.state)!;
     expect(tex).not.toMatch(/\+\s*-/);
     expect(tex).toMatch(/0\.125\\,D_\{0\} - 0\.125\\,D_\{1\}/);

@@ -3,9 +3,11 @@ import {
   type Continuity,
   type Point,
   add,
+  bernstein,
   bezierDerivative,
   bezierPoint,
   bezierJointContinuity,
+  bezierToPowerBasis,
   catmullRomTangents,
   cubicSplineSegments,
   hermiteBasis,
@@ -17,6 +19,7 @@ import {
 import { type Bounds, boundsOf } from '../../render/projection';
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
+import type { LectureData } from './formulas';
 import { patchNote, pointsNote } from './notes';
 import type { Reveal } from './script';
 import { type HermiteState, patchCount } from './state';
@@ -34,6 +37,8 @@ export interface Patch {
   p1: Point;
   d0: Point;
   d1: Point;
+  /** The end data in the lecture's order (equation 6): Pi, Di, Pi+1, Di+1. */
+  data: LectureData;
   /** a0 … a3 of P(μ) = a3μ³ + a2μ² + a1μ + a0. */
   coefficients: Point[];
   /** P(μ) on this patch. */
@@ -42,6 +47,10 @@ export interface Patch {
   weights: readonly number[];
   /** The same cubic as a Bézier curve: B0 = Pi, B1 = Pi + Di/3, B2 = Pi+1 − Di+1/3, B3 = Pi+1. */
   bezier: readonly Point[];
+  /** The Bézier curve multiplied out (lecture notes, equation 11): a0 … a3 from B0 … B3 alone. */
+  power: Point[];
+  /** The Bernstein weights of B0 … B3 at μ. */
+  bernsteinWeights: readonly number[];
 }
 
 export interface Join {
@@ -67,8 +76,10 @@ export interface Spline {
   onlyC1: number;
   /** Every point and every tip: what the label of P(μ) keeps clear of. */
   marks: Point[];
-  /** Points, tips and Bézier control points: what "fit" shows. */
+  /** The points, the curve and every tip (each a handle once the gradients are shown). */
   bounds: Bounds;
+  /** The same with every patch's Bézier control points: what the Bézier view fits. */
+  bezierBounds: Bounds;
   /** Catmull-Rom with two points: both gradients are zero, the patch is a straight segment. */
   straight: boolean;
 }
@@ -81,6 +92,10 @@ export interface HermiteModel extends Spline {
   /** What the steps so far reveal: the gradients, the basis, how many patches, P(μ), the Bézier view. */
   shown: Revealed<Reveal>;
   patch: Patch;
+  /** How many patches the curve shows so far (from the first). */
+  built: number;
+  /** What "fit" shows: every handle of the scene at every step, the curve, and the Bézier view's points. */
+  bounds: Bounds;
   /** Why the figure shows less than one might expect, or null. */
   note: string | null;
   /** H0 … H3 over [0, 1], the same for every state. */
@@ -101,7 +116,7 @@ export const spline = memoOn<HermiteState, 'points' | 'handGradients' | 'mode', 
       joins,
       onlyC1: joins.filter((join) => join.continuity === 'C1').length,
       marks: points.flatMap((p, k) => [p, tips[k]]),
-      bounds: fitBounds(points, tips, segments),
+      ...fitBounds(points, tips, segments),
       straight: mode === 'catmull-rom' && points.length === 2,
     };
   },
@@ -109,14 +124,17 @@ export const spline = memoOn<HermiteState, 'points' | 'handGradients' | 'mode', 
 
 export function derive(state: HermiteState, shown: Revealed<Reveal>): HermiteModel {
   const curve = spline(state);
+  const m = patchCount(state);
   // While the patches are built one by one, the matrix and P(μ) are about the newest.
   const index = shown.is('patch') ? shown.index - 1 : state.patch;
   return {
     ...curve,
     state,
-    m: patchCount(state),
+    m,
     shown,
     patch: patchAt(state, index, curve),
+    built: state.bezier ? (shown.has('curve') ? m : 0) : shown.count('patch'),
+    bounds: state.bezier ? curve.bezierBounds : curve.bounds,
     note:
       patchNote(state.points, index, curve.gradients) ?? pointsNote(state.points, curve.straight),
     basis: BASIS,
@@ -131,10 +149,13 @@ function patchAt(state: HermiteState, i: number, { gradients, segments }: Spline
     p1,
     d0,
     d1,
+    data: [p0, d0, p1, d1],
     coefficients: hermiteCoefficients(p0, d0, p1, d1),
     point: hermitePoint(p0, d0, p1, d1, state.mu),
     weights: hermiteBasis(state.mu),
     bezier: segments[i],
+    power: bezierToPowerBasis(segments[i]),
+    bernsteinWeights: [0, 1, 2, 3].map((k) => bernstein(3, k, state.mu)),
   };
 }
 
@@ -152,25 +173,22 @@ function measureJoins(segments: readonly Point[][]): Join[] {
 const FIT_SAMPLES = 16;
 
 /**
- * What "fit" shows: the points and the curve, with the gradient tips only as
- * far as half their size beyond them. Long gradients (a loop) would otherwise frame
- * the arrows and shrink the curve.
+ * What "fit" shows: the points, the curve and every gradient's tip, which is
+ * a handle to drag (a tip left off the figure cannot be grabbed); for the
+ * Bézier view, every patch's control points too. The same at every step, so
+ * the figure does not jump as the clicker reveals the gradients.
  */
 function fitBounds(
   p: readonly Point[],
   tips: readonly Point[],
   segments: readonly Point[][],
-): Bounds {
-  const curve: Point[] = [...p];
+): { bounds: Bounds; bezierBounds: Bounds } {
+  const shown: Point[] = [...p, ...tips];
   for (const segment of segments)
     for (let sample = 1; sample < FIT_SAMPLES; sample++)
-      curve.push(bezierPoint(segment, sample / FIT_SAMPLES));
-  const box = boundsOf(curve);
-  const grow = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1) / 2;
-  const clamp = (v: number, low: number, high: number) => Math.min(high, Math.max(low, v));
-  const near = tips.map((q): Point => [
-    clamp(q[0], box.minX - grow, box.maxX + grow),
-    clamp(q[1], box.minY - grow, box.maxY + grow),
-  ]);
-  return boundsOf([...curve, ...near]);
+      shown.push(bezierPoint(segment, sample / FIT_SAMPLES));
+  return {
+    bounds: boundsOf(shown),
+    bezierBounds: boundsOf([...shown, ...segments.flatMap((segment) => segment.slice(1, 3))]),
+  };
 }

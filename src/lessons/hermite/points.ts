@@ -1,7 +1,7 @@
 import type { Point } from '../../math';
 import { type PointList, pointList } from '../../kit/pointList';
 import { ARROW_SCALE, spline } from './model';
-import { construction } from './script';
+import { keptAtEnd, shownAt } from './script';
 import { type HermiteState, MAX_POINTS } from './state';
 
 /**
@@ -18,7 +18,7 @@ function followPoints(before: HermiteState, after: HermiteState): HermiteState {
       ? [...before.handGradients, [points[n - 1][0] - last[0], points[n - 1][1] - last[1]]]
       : before.handGradients.slice(0, n);
   const next = { ...after, handGradients, patch: Math.min(before.patch, n - 2) };
-  return construction.keptAtEnd(before, next, 'step');
+  return keptAtEnd(before, next);
 }
 
 const chain = pointList<HermiteState>({
@@ -59,7 +59,7 @@ const same = (a: Point, b: Point) => a[0] === b[0] && a[1] === b[1];
  */
 export const gradientTips = pointList<HermiteState>({
   id: 'd',
-  get: (s) => (construction.shown(s, s.step).has('gradients') ? spline(s).tips : []),
+  get: (s) => (shownAt(s).has('gradients') ? spline(s).tips : []),
   set(s, tips) {
     const { gradients, tips: before } = spline(s);
     const handGradients = gradients.map((d, k): Point => {

@@ -17,15 +17,15 @@ export interface HermiteState {
   mu: number;
   /** Which patch the matrix, the basis and P(μ) are about: 0 … m − 1. */
   patch: number;
-  /** Draw each patch's Bézier control polygon (and add its step to the script). */
+  /** The Bézier view: each patch's control polygon, and the "bezier" scene's steps (bezierScript). */
   bezier: boolean;
-  /** The step of the script (see `construction` in script.ts for what each reveals). */
+  /** The step of the script (`construction`, or `bezierScript` in the Bézier view: script.ts). */
   step: number;
 }
 
 export const MAX_POINTS = 10;
 
-/** The lecture's one patch: P0 = (0, 0) to P1 = (4, 0), leaving up and arriving down. */
+/** The first scene's one patch: P0 = (0, 0) to P1 = (4, 0), leaving up and arriving down. */
 export const ONE_PATCH: Point[] = [
   [0, 0],
   [4, 0],
@@ -43,7 +43,8 @@ export const schema: Schema<HermiteState> = {
   mu: number({ default: 0.3, min: 0, max: 1 }),
   patch: int({ default: 0, min: 0, max: MAX_POINTS - 2 }),
   bezier: bool({ default: false }),
-  step: int({ default: 0, min: 0, max: MAX_POINTS + 4 }),
+  // The construction's last step: seven steps and one per patch, 0-based.
+  step: int({ default: 0, min: 0, max: MAX_POINTS + 5 }),
 };
 
 /** Number of patches, m. */
