@@ -69,6 +69,8 @@ describe('every lesson draws what it says', () => {
       expect(lesson.scenes?.length ?? 0, `${meta.slug} has scenes`).toBeGreaterThan(0);
       const steps = lesson.steps!;
       const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
+      // Every lesson opens at its first scene's step 0: the first press is the first step (#19).
+      expect(defaults[steps.key], `${meta.slug} opens at step 0`).toBe(0);
       for (const scene of lesson.scenes!) {
         const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
         const count = steps.count(opened);

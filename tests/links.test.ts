@@ -4,6 +4,10 @@
  * (November 2026). Each must still open the same state (read back and written
  * again, it is the same link, with nothing ignored), and each scene must still
  * set up exactly that state. A renamed field or a moved default fails here.
+ * One change since, on purpose (#19): de-casteljau, quadratic and
+ * bezier-properties open at their first scene's step 0 (they opened at its
+ * last step), so the first clicker press is the first step; their scene links
+ * are unchanged.
  */
 import { describe, expect, it } from 'vitest';
 import { normalizeState } from '../src/app/lessonState';

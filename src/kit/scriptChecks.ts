@@ -58,9 +58,14 @@ export function checkScript(lesson: AnyLesson): void {
   const steps = lesson.steps!;
   const scenes = sceneStates(lesson);
   expect(scenes.length, 'scenes').toBeGreaterThan(1);
-  // The first scene is what the lesson opens with.
+  // The first scene is what the lesson opens with, at its step 0 (as the
+  // shell opens every scene), so a lecturer's first press is the first step.
   const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
-  expect(lesson.scenes![0].apply(defaults), 'the first scene is the defaults').toEqual(defaults);
+  expect(defaults[steps.key], 'the lesson opens at step 0').toBe(0);
+  expect(
+    { ...lesson.scenes![0].apply(defaults), [steps.key]: 0 },
+    'the first scene is the defaults',
+  ).toEqual(defaults);
   for (const { id, count, at } of scenes) {
     expect(count, `${id}: steps`).toBeGreaterThan(1);
     expect(count, `${id}: steps`).toBeLessThanOrEqual(20);

@@ -20,12 +20,13 @@ describe('the script of the Bézier properties', () => {
   it('every experiment steps from little to all, in at most 20 steps, with plain captions', () =>
     checkScript(lesson));
 
-  it('gives every one of the twelve scenes steps, and opens on the first one whole', () => {
+  it('gives every one of the twelve scenes steps, and opens on the first one at step 0', () => {
     const scenes = sceneStates(lesson);
     expect(scenes).toHaveLength(12);
     for (const { id, count } of scenes) expect(count, id).toBeGreaterThanOrEqual(4);
     const defaults = defaultsOf(schema);
-    expect(lesson.scenes![0].apply(defaults)).toEqual(defaults);
+    expect(defaults.step).toBe(0);
+    expect({ ...lesson.scenes![0].apply(defaults), step: 0 }).toEqual(defaults);
     // Step 0 of every scene draws nothing but the handles the shell adds.
     for (const { id, at } of scenes) expect(drawState(lesson, at(0)).elements, id).toBe(0);
   });

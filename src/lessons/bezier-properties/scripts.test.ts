@@ -70,9 +70,10 @@ describe('the scripts of the nine experiments', () => {
     expect(names(opened('elevate', 0))).toHaveLength(14);
   });
 
-  it('opens the lesson on the first experiment whole, and finds every experiment its scene', () => {
+  it('opens the lesson on the first experiment at step 0, and finds every experiment its scene', () => {
     const defaults = defaultsOf(schema);
-    expect(defaults.step).toBe(endsScript.lastStep(defaults));
+    expect(defaults.step).toBe(0);
+    expect(endsScript.lastStep(defaults)).toBe(5);
     for (const experiment of EXPERIMENT_IDS) {
       const scene = SCENES.find((s) => s.id === sceneOf({ ...defaults, experiment }))!;
       expect(scene.experiment).toBe(experiment);

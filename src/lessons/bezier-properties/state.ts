@@ -66,16 +66,14 @@ export const EXPERIMENT_IDS: readonly ExperimentId[] = [
 
 export const MAP_KINDS: readonly MapKind[] = ['rotate', 'scale', 'shear', 'perspective'];
 
-/** The last step of the end-tangents experiment, the first scene: the P(t) step (ends/script.ts). */
-const ENDS_WHOLE = 5;
 
 export const schema: Schema<PropertiesState> = {
   experiment: linkKey(choice({ default: 'ends', values: EXPERIMENT_IDS }), 'x'),
   points: linkKey(points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }), 'p'),
   before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.3, min: 0, max: 1 }),
-  // A student who opens the link sees the first experiment whole: its last step.
-  step: linkKey(int({ default: ENDS_WHOLE, min: 0, max: 1 + MAX_ELEVATIONS }), 'k'),
+  // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
+  step: linkKey(int({ default: 0, min: 0, max: 1 + MAX_ELEVATIONS }), 'k'),
   repeated: linkKey(int({ default: 1, min: 0, max: MAX_POINTS - 1 }), 'r'),
   map: linkKey(choice({ default: 'shear', values: MAP_KINDS }), 'm'),
 };

@@ -32,12 +32,12 @@ describe('the script of the de Casteljau construction', () => {
   it('every scene steps from little to all, in at most 20 steps, with plain captions', () =>
     checkScript(lesson));
 
-  it('opens on the whole construction of the lecture cubic: 3 levels and the curve', () => {
+  it('opens on the lecture cubic at step 0, so the first press is the first step', () => {
     const defaults = defaultsOf(schema);
     // Step 0 the points, 1 the polygon, 2–4 the levels, 5 the curve.
     expect(lesson.steps!.count(defaults)).toBe(5);
-    expect(defaults.step).toBe(5);
-    expect(lesson.scenes![0].apply(defaults)).toEqual(defaults);
+    expect(defaults.step).toBe(0);
+    expect({ ...lesson.scenes![0].apply(defaults), step: 0 }).toEqual(defaults);
   });
 
   it('step 0 shows only the control points: no polygon, no level, no curve', () => {

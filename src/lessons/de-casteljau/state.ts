@@ -26,8 +26,8 @@ export const LECTURE_CUBIC: Point[] = [
 export const schema: Schema<DeCasteljauState> = {
   p: points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }),
   t: number({ default: 0.4, min: 0, max: 1 }),
-  // A student who opens the link sees the whole construction (the last step).
-  step: int({ default: LECTURE_CUBIC.length + 1, min: 0, max: MAX_POINTS + 1 }),
+  // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
+  step: int({ default: 0, min: 0, max: MAX_POINTS + 1 }),
   split: bool({ default: false }),
 };
 

