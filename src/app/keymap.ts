@@ -29,6 +29,8 @@ export interface KeyTarget {
   orbit(yaw: number, pitch: number): void;
   presenter(): void;
   sidePanel(): void;
+  /** Presenter view: shows or hides the lecturer's controls (toolbar, slider, steps, tools). */
+  lecturerControls(): void;
   blank(): void;
   /** The screen is blanked: a clicker key only brings it back. */
   readonly blanked: boolean;
@@ -158,6 +160,12 @@ export const KEYS: readonly Binding[] = [
     app: true,
     help: ['P', 'Presenter view: the figure fills the screen, large captions'],
     run: (t) => t.presenter(),
+  },
+  {
+    keys: ['m', 'M'],
+    owner: 'unlessTyping',
+    help: ['M', "Presenter view: show or hide the lecturer's controls (tools, slider, steps)"],
+    run: (t) => t.lecturerControls(),
   },
   {
     keys: ['s', 'S'],

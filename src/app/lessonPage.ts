@@ -160,6 +160,7 @@ export class LessonPage<S, M> {
     const stage = h(
       'section',
       { class: 'stage', 'aria-label': 'Figure' },
+      this.controlsToggle,
       this.presenter.caption,
       figures,
       h(
@@ -537,6 +538,33 @@ export class LessonPage<S, M> {
 
   playSpeed(delta: 1 | -1): void {
     this.parameter?.changeSpeed(delta);
+  }
+
+  /**
+   * Presenter view projects the figure, the caption and the formula; the
+   * lecturer's toolbar, slider, steps and tools stay off the room's screen
+   * until asked for (M, or the small corner button).
+   */
+  private readonly controlsToggle = h(
+    'button',
+    {
+      type: 'button',
+      class: 'controls-toggle',
+      'aria-label': "Lecturer's controls",
+      'aria-expanded': 'false',
+      title: "Show the lecturer's controls (M)",
+      onclick: () => this.lecturerControls(),
+    },
+    '☰',
+  );
+
+  lecturerControls(): void {
+    const shown = this.element.classList.toggle('controls-shown');
+    this.controlsToggle.setAttribute('aria-expanded', String(shown));
+    this.controlsToggle.title = shown
+      ? "Hide the lecturer's controls (M)"
+      : "Show the lecturer's controls (M)";
+    this.refresh();
   }
 
   /** Shows or folds the side panel (folded by default in presenter view). */

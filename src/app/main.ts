@@ -265,6 +265,7 @@ const keyTarget: KeyTarget = {
   orbit: (yaw, pitch) => page?.orbit(yaw, pitch),
   presenter: () => toggleProjector(),
   sidePanel: () => page?.sidePanel(),
+  lecturerControls: () => page?.lecturerControls(),
   blank: () => page?.blank(),
   get blanked() {
     return page?.blanked ?? false;

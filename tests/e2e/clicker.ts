@@ -127,6 +127,16 @@ export async function legibleFromTheBackRow(page: Page, slug: string): Promise<v
   await settled(page);
   // The side panel is folded away and the caption is on screen.
   await expect(page.getByRole('complementary', { name: 'Explanation' })).toBeHidden();
+  // The lecturer's toolbar, slider and steps are off the room's screen until M.
+  const tools = page.getByRole('toolbar', { name: 'Lesson tools' });
+  const next = page.getByRole('button', { name: 'Next ▶', includeHidden: true });
+  await expect(tools).toBeHidden();
+  await expect(next).toBeHidden();
+  await page.keyboard.press('m');
+  await expect(tools).toBeVisible();
+  await expect(next).toBeVisible();
+  await page.keyboard.press('m');
+  await expect(tools).toBeHidden();
   const caption = page.locator('[data-caption]');
   await expect(caption).toBeInViewport({ ratio: 1 });
   await expect(caption).not.toHaveText('');

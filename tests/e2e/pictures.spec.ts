@@ -93,6 +93,18 @@ for (const slug of slugs) {
           });
           if (cut > 1)
             problems.push(`${id}: the caption's formula is cut ${Math.round(cut)} px short`);
+          // The room's screen is the figure (#19): its canvases take at least
+          // three quarters of the 1920 × 1080 screen, read from their boxes.
+          const share = await page.evaluate(() => {
+            const boxes = [...document.querySelectorAll('.stage-figures canvas')]
+              .filter((c) => c.checkVisibility())
+              .map((c) => c.getBoundingClientRect());
+            const w = Math.max(...boxes.map((b) => b.right)) - Math.min(...boxes.map((b) => b.left));
+            const h = Math.max(...boxes.map((b) => b.bottom)) - Math.min(...boxes.map((b) => b.top));
+            return (w * h) / (window.innerWidth * window.innerHeight);
+          });
+          if (share < 0.75)
+            problems.push(`${id}: the figure takes ${(share * 100).toFixed(0)}% of the screen`);
         }
         // The drawing, without the labels whose glyphs depend on the machine's fonts.
         await page.keyboard.press('a');
