@@ -170,6 +170,49 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
   await expect(stepFormula).toContainText((13 / 6).toFixed(3));
 });
 
+test('the notes: a key to their symbols, and beside the closed scene’s three wrapped points the slides’ x₀ = xₘ, said kindly', async ({
+  page,
+}) => {
+  const key = page.locator('details.notes-key');
+  await expect(key.locator('summary')).toHaveText('Symbols here and in the notes');
+  await key.locator('summary').click();
+  await expect(key).toContainText('cᵢ in the lecture slides (c3 … cm)');
+  await expect(key).toContainText('degree is n, and order is n + 1');
+  const slip = page.getByRole('note').filter({ hasText: 'x₀ = xₘ' });
+  await expect(slip).toBeHidden();
+  await openScene(page, 'Closed B-spline', 'closed');
+  await expect(slip).toBeVisible();
+  await expect(slip).toContainText(
+    'closing it takes three, x(m+1) = x0, x(m+2) = x1 and x(m+3) = x2',
+  );
+  await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '1');
+  await expect(page.locator('.step-status')).toContainText(
+    'Closed: after x5 come x0, x1, x2 again (x6 = x0, x7 = x1, x8 = x2)',
+  );
+  await openScene(page, 'Knots and Cox–de Boor', 'knots');
+  await expect(slip).toBeHidden();
+  await expect(page.locator('.step-status')).toContainText('The m + 1 = 7 control points x0 … x6');
+});
+
+test('the uniform cubic bases, derived row by row on the equally spaced knots: their values are the triangle’s', async ({
+  page,
+}) => {
+  await openScene(page, 'Knots and Cox–de Boor', 'knots');
+  for (let k = 1; k <= 5; k++) await page.keyboard.press('PageDown');
+  await expectHash(page, 'k', (v) => v === '5');
+  const stepFormula = page.locator('.step-formulas .katex-html');
+  await expect(stepFormula).toContainText('t=u−u4=0.600');
+  const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
+    name: /^N\(i,3\)/,
+  });
+  const cells = (await lastRow.locator('td').allInnerTexts()).slice(1).map(Number);
+  const nonZero = cells.filter((v) => v > 0);
+  expect(nonZero).toHaveLength(4);
+  const text = (await stepFormula.innerText()).replace(/\s+/g, '');
+  for (const value of nonZero) expect(text).toContain(value.toFixed(3));
+});
+
 test('every scene at its last step, in presenter view (screenshots)', async ({ page }) => {
   const scenes: [string, number][] = [
     ['uniform', 4],

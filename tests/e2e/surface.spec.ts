@@ -143,6 +143,39 @@ test('the clicker walks every scene from its first step to its last, in presente
   await expect(page.getByText(new RegExp(`scene ${scenes}/${scenes}`))).toBeVisible();
 });
 
+test('each net worth seeing opens with its own idea; a net edited away from it walks the patch’s steps', async ({
+  page,
+}) => {
+  const caption = page.locator('.step-status');
+  await page.getByRole('button', { name: 'Flat', exact: true }).click();
+  await expect(caption).toContainText(
+    'A flat net: all 16 points in the plane z = 0, evenly spaced',
+  );
+  await page.keyboard.press('End');
+  await expect(caption).toContainText('Its tangents are the same everywhere, so is its normal');
+  await page.getByRole('button', { name: 'Bump', exact: true }).click();
+  await expect(caption).toContainText('A bump: the twelve border points at height 0');
+  await page.keyboard.press('End');
+  await expectHash(page, 'k', (v) => v === '5');
+  // Lift a border point: no longer the bump, a patch like any other, at the same step.
+  await page.getByRole('button', { name: /^x0,1 at/ }).focus();
+  await page.keyboard.press('Control+ArrowUp');
+  await expectHash(page, 'x', (v) => netOf(v)[0][1][2] > 0);
+  await expect(caption).toContainText('The patch, and the point x(0.5, 0.5) on it');
+});
+
+test('beside the scene that builds the curve in u, the slides’ “for 0 ≤ v ≤ 1”, said kindly', async ({
+  page,
+}) => {
+  const slip = page.getByRole('note').filter({ hasText: 'for 0 ≤ v ≤ 1' });
+  await expect(slip).toBeHidden();
+  await page.getByRole('button', { name: 'Choose v, then u' }).click();
+  await expect(slip).toBeVisible();
+  await expect(slip).toContainText('runs in u, for 0 ≤ u ≤ 1');
+  await page.getByRole('button', { name: 'Matrix form' }).click();
+  await expect(slip).toBeHidden();
+});
+
 test('two patches: moving a point next to the edge breaks C¹', async ({ page }) => {
   await page.getByRole('button', { name: 'Two patches, C¹' }).click();
   await page.keyboard.press('End');
@@ -164,7 +197,7 @@ test('presenter view at 1920 × 1080: the patch has a frame its box fits, and th
     (await page.locator(`canvas[data-figure="${id}"]`).boundingBox())!;
   const patch = await box('patch');
   const weights = await box('weights');
-  // The lecture's net seen from the starting camera is 4.1 wide and 4.43 tall
+  // The leaning hill's net seen from the starting camera is 4.1 wide and 4.43 tall
   // (its box's corners projected), so it takes the frame's height: a frame
   // twice as wide as tall (the 2.4 : 1 row gave 2.0 here) leaves most of it empty.
   expect(patch.width / patch.height).toBeLessThan(1.8);

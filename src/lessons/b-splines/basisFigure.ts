@@ -30,7 +30,7 @@ export function shownRow(m: BSplineModel): number | null {
   }
 }
 
-/** Grey where the curve is not defined: outside [u_p, u_{n}]. */
+/** Grey where the curve is not defined: outside [u_p, u_{m+1}]. */
 function shadeOutside(painter: Painter, m: BSplineModel, bounds = basisBounds(m)): void {
   const [a, b] = m.domain;
   const { minX, maxX, minY, maxY } = bounds;
@@ -59,6 +59,61 @@ function shadeOutside(painter: Painter, m: BSplineModel, bounds = basisBounds(m)
     );
 }
 
+/**
+ * The segment whose four bases alone the plot shows (the uniform cubic's
+ * step on one segment), else null.
+ */
+export function segmentShown(m: BSplineModel): number | null {
+  return m.kind === 'uniform' && m.shown.is('segment') ? m.segment : null;
+}
+
+/** The samples of one basis function within [from, to] (interleaved u, N). */
+function within(samples: Float64Array, from: number, to: number): Float64Array {
+  const kept: number[] = [];
+  for (let k = 0; k + 1 < samples.length; k += 2) {
+    if (samples[k] >= from - 1e-9 && samples[k] <= to + 1e-9) kept.push(samples[k], samples[k + 1]);
+  }
+  return Float64Array.from(kept);
+}
+
+/**
+ * The segment's step: the four basis functions that act on it, only over its
+ * interval, where they are B0(t) … B3(t) of its local t, with their values at the cursor.
+ */
+function drawSegmentBases(painter: Painter, m: BSplineModel, i: number, info: DrawInfo): void {
+  const theme = painter.theme;
+  const { from, to } = m.segments[i];
+  const color = painter.color(i);
+  painter.polygon(
+    [
+      [from, 0],
+      [to, 0],
+      [to, 1],
+      [from, 1],
+    ],
+    color,
+    0.12,
+  );
+  const entries = [0, 1, 2, 3].map((k) => {
+    const j = i + k;
+    painter.polylineFlat(within(m.rows[m.degree][j], from, to), {
+      color: painter.color(m.owner[j]),
+      width: theme.sizes.curve,
+    });
+    return {
+      y: m.basis[j],
+      text: `B_${k}(t) = ${m.basis[j].toFixed(3)}`,
+      color: painter.color(m.owner[j]),
+    };
+  });
+  painter.segment([m.u, basisBounds(m).minY], [m.u, basisBounds(m).maxY], {
+    color: theme.accent,
+    width: theme.sizes.line,
+  });
+  for (const e of entries) painter.dot([m.u, e.y], e.color, theme.sizes.point);
+  if (!info.thumbnail) painter.cursorLabels(m.u, entries);
+}
+
 function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   const theme = painter.theme;
   const bounds = basisBounds(m);
@@ -79,10 +134,10 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
       0.15,
     );
   }
-  if (r === null) {
-    if (!info.thumbnail) painter.note('The basis functions appear as the steps go on');
-    return;
-  }
+  const segment = segmentShown(m);
+  if (segment !== null) return drawSegmentBases(painter, m, segment, info);
+  // Before its step shows them, the plot is only its axes.
+  if (r === null) return;
   // A hovered control point (not its halo): its basis function drawn bold.
   const hovered = hoveredPoint(info.hover, false);
   const owner = (i: number) => (r === m.degree ? (m.owner[i] ?? i) : i);

@@ -19,9 +19,9 @@ export function facts(m: BSplineModel): RowSpec[] {
   rows.push(row(uniform ? 'parameter s' : 'parameter u', num(m.u)));
   rows.push(row(uniform ? 'P(s)' : 'C(u)', point(m.point)));
   if (!uniform) {
-    rows.push(row('curve start C(u_p)', point(m.start)));
+    rows.push(row('curve start C(u(p))', point(m.start)));
     rows.push(row('x0', point(s.points[0])));
-    rows.push(row('curve end C(u_n)', point(m.end)));
+    rows.push(row('curve end C(u(m+1))', point(m.end)));
     rows.push(row(`x${n - 1}`, point(s.points[n - 1])));
     for (const join of m.joins) {
       const through =

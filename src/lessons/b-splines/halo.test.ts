@@ -14,7 +14,7 @@ const nurbs = (step: number) =>
   normalize({ ...SCENES.find((s) => s.id === 'nurbs')!.setup(defaults), step }).state;
 
 describe('the weight halo', () => {
-  it('one unit is 6% of the diagonal of the points’ box: the lecture’s 10 × 4 gives 0.06·√116', () => {
+  it('one unit is 6% of the diagonal of the points’ box: the seven points’ 10 × 4 gives 0.06·√116', () => {
     expect(haloUnit(nurbs(2).points)).toBeCloseTo(0.06 * Math.sqrt(116), 14);
     // All points on one spot: a unit of 0.06, not 0.
     expect(haloUnit([[2, 2]])).toBe(0.06);

@@ -7,7 +7,7 @@ import { plotRange, uStep } from './plotRange';
 import { type BSplineState, isUniformPart } from './state';
 
 /**
- * Knots are editable where the lesson is about them (not the lecture's fixed
+ * Knots are editable where the lesson is about them (not the matrix form's fixed
  * uniform cubic), once the step shows more than the points.
  */
 const editable = (m: BSplineModel) => !isUniformPart(m.state.part) && !m.shown.is('points');
@@ -63,7 +63,7 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
       });
     }
     if (!info.thumbnail && uStep(m) > 0 && uniform) {
-      painter.screenLabel('uniform knots (the lecture’s matrix form)', 8, 14, {
+      painter.screenLabel('uniform knots (the slides’ matrix form)', 8, 14, {
         color: theme.muted,
         size: theme.sizes.label * 0.75,
       });
@@ -102,7 +102,7 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
     if (high - v < snap) v = high;
     v = Math.min(high, Math.max(low, v));
     const next = u.map((knot, k) => (k === j ? v : knot));
-    // The curve lives on [u_p, u_n]: that interval must not close up.
+    // The curve lives on [u_p, u_{m+1}]: that interval must not close up.
     if (!(next[state.degree] < next[state.points.length])) return state;
     return { ...state, knots: next };
   },

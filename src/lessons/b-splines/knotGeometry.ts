@@ -57,7 +57,7 @@ export const knotCurve = memoOn<KnotFields, keyof KnotFields, KnotCurve>(KNOT_FI
   return { curve, at };
 });
 
-/** The cursor at t: u = u_p + t·(u_n − u_p), its segment, the Cox–de Boor triangle there. */
+/** The cursor at t: u = u_p + t·(u_{m+1} − u_p), its segment, the Cox–de Boor triangle there. */
 export function knotCursor({ curve, at }: KnotCurve, t: number): Cursor {
   const { domain, knots, degree, segments } = curve;
   const u = domain[0] + t * (domain[1] - domain[0]);

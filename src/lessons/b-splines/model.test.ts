@@ -6,7 +6,7 @@ import { knotFigure } from './knotFigure';
 import lesson from './lesson';
 import type { BSplineModel } from './model';
 import { SCENES } from './scenes';
-import { type BSplineState, LECTURE_POINTS, normalize, schema } from './state';
+import { type BSplineState, SEVEN_POINTS, normalize, schema } from './state';
 
 /** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
 const derive = (s: BSplineState) => lesson.derive(s) as BSplineModel;
@@ -27,7 +27,7 @@ const sceneState = (id: string, changes: Partial<BSplineState> = {}): BSplineSta
 };
 const gap = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 
-describe('the uniform cubic B-spline of the lecture', () => {
+describe('the uniform cubic B-spline in the slides’ matrix form', () => {
   it('m + 1 = 7 points give m − 2 = 4 segments; open at (x0 + 4x1 + x2)/6, closed gives m + 1', () => {
     const m = derive(sceneState('uniform'));
     expect(m.segments).toHaveLength(4);
@@ -46,7 +46,7 @@ describe('the uniform cubic B-spline of the lecture', () => {
     expect(m.basis.slice(1, 5).map((b) => b * 48)).toEqual(
       [1, 23, 23, 1].map((v) => expect.closeTo(v, 12)),
     );
-    const [x1, x2, x3, x4] = LECTURE_POINTS.slice(1, 5);
+    const [x1, x2, x3, x4] = SEVEN_POINTS.slice(1, 5);
     const expected = [0, 1].map((d) => (x1[d] + 23 * x2[d] + 23 * x3[d] + x4[d]) / 48);
     expect(gap(m.point, expected)).toBeLessThan(1e-12);
   });
@@ -106,11 +106,11 @@ describe('knots and Cox–de Boor', () => {
 
   it('clamped knots: the curve starts at x0 and ends at the last point', () => {
     const m = derive(sceneState('clamped'));
-    expect(gap(m.start, LECTURE_POINTS[0])).toBeLessThan(1e-12);
-    expect(gap(m.end, LECTURE_POINTS[6])).toBeLessThan(1e-12);
+    expect(gap(m.start, SEVEN_POINTS[0])).toBeLessThan(1e-12);
+    expect(gap(m.end, SEVEN_POINTS[6])).toBeLessThan(1e-12);
     // Uniform (unclamped) knots pass through neither.
     const open = derive(sceneState('knots'));
-    expect(gap(open.start, LECTURE_POINTS[0])).toBeGreaterThan(0.5);
+    expect(gap(open.start, SEVEN_POINTS[0])).toBeGreaterThan(0.5);
   });
 
   it('a knot of multiplicity p makes the curve C⁰ there and pass through a control point', () => {
@@ -119,7 +119,7 @@ describe('knots and Cox–de Boor', () => {
     expect(m.joins).toHaveLength(1);
     const [join] = m.joins;
     expect(join).toMatchObject({ u: 1, multiplicity: 3, continuity: 0, through: 3 });
-    expect(gap(join.at, LECTURE_POINTS[3])).toBeLessThan(1e-12);
+    expect(gap(join.at, SEVEN_POINTS[3])).toBeLessThan(1e-12);
     // Multiplicity 2 instead: C¹ there, and no longer through x3.
     const double = derive(sceneState('repeated', { knots: [0, 0, 0, 0, 1, 1, 1.5, 2, 2, 2, 2] }));
     expect(double.joins[0]).toMatchObject({ multiplicity: 2, continuity: 1, through: null });
@@ -130,14 +130,14 @@ describe('knots and Cox–de Boor', () => {
     const m = derive(state);
     const stacked = knotFigure.moveHandle!(state, 'u5', [4.05, 0], m);
     expect(stacked.knots[5]).toBe(4);
-    // u3 up to u7 would leave [u_p, u_n] = [u3, u7] empty: refused.
+    // u3 up to u7 would leave [u_p, u_{m+1}] = [u3, u7] empty: refused.
     const tight = { ...state, knots: [0, 1, 2, 3, 7, 7, 7, 7, 8, 9, 10] };
     expect(knotFigure.moveHandle!(tight, 'u3', [7, 0], derive(tight)).knots[3]).toBe(3);
   });
 });
 
 describe('properties', () => {
-  it('variation diminishing: the line y = 1.5 crosses the lecture polygon 3 times and the curve twice', () => {
+  it('variation diminishing: the line y = 1.5 crosses the seven points’ polygon 3 times and the curve twice', () => {
     // Polygon heights 0, 3, 4, 1, 0, 3, 3.5: three sign changes. Joints 8/3, 10/3, 4/3, 2/3, 31/12: two.
     const m = modelOf(
       'properties',
@@ -169,9 +169,9 @@ describe('NURBS', () => {
   });
 
   it('raising a weight pulls the curve towards its point', () => {
-    const plain = derive(sceneState('nurbs', { weights: LECTURE_POINTS.map(() => 1), t: 0.3 }));
+    const plain = derive(sceneState('nurbs', { weights: SEVEN_POINTS.map(() => 1), t: 0.3 }));
     const heavy = derive(sceneState('nurbs', { t: 0.3 }));
-    expect(gap(heavy.point, LECTURE_POINTS[2])).toBeLessThan(gap(plain.point, LECTURE_POINTS[2]));
+    expect(gap(heavy.point, SEVEN_POINTS[2])).toBeLessThan(gap(plain.point, SEVEN_POINTS[2]));
   });
 
   it('a projective map of the points with their weights keeps the curve; the old weights do not', () => {

@@ -63,7 +63,7 @@ export interface Curve {
 export interface Cursor {
   u: number;
   segment: number;
-  /** Local parameter in the segment, 0 … 1 (uniform cubic: the lecture's t). */
+  /** Local parameter in the segment, 0 … 1 (uniform cubic: the t of B0(t) … B3(t)). */
   local: number;
   point: Point;
   /** The Cox–de Boor triangle at u: table[r][i] = N_{i,r}(u). */
@@ -79,7 +79,7 @@ interface SceneModel<F, N extends string> extends Curve, Cursor {
   shown: Revealed<N>;
 }
 
-/** The lecture's uniform cubic, with each segment as its Bézier curve. */
+/** The uniform cubic, with each segment as its Bézier curve. */
 interface CubicModel<F, N extends string> extends SceneModel<F, N> {
   beziers: Point[][];
 }

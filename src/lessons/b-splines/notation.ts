@@ -10,7 +10,7 @@ const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 export const superscript = (n: number) =>
   [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
 
-/** The lecture names a segment after its last control point: Q_i blends x_{i−3} … x_i. */
+/** A segment is named after its last control point, as the slides' c_i: Q_i blends x_{i−3} … x_i. */
 export const segmentName = (first: number) => `Q${first + 3}`;
 /** The same name with its subscript, for labels and TeX (`Q_{4}`). */
 export const segmentLabel = (first: number) => segmentName(first).replace(/(\d+)/, '_{$1}');

@@ -5,6 +5,7 @@ import { type Point, pointsShape } from '../../math';
 import { LiveFormula, formula } from '../../render/formula';
 import { curvatureLink } from '../../kit/lessonLinks';
 import { facts } from './facts';
+import { closedSlip, notesSymbols } from './notes';
 import { knotControls } from './knotControls';
 import { slotNumbers } from '../../render/formulaParts';
 import type { BSplineModel } from './model';
@@ -37,6 +38,8 @@ export function bsplinePanel(
 ): LessonPanel<BSplineState, BSplineModel> {
   const title = h('h2', {});
   const text = h('p', {});
+  // The slides' closed spline, beside the lesson's (the closed scene only).
+  const slip = closedSlip();
   const stepLine = h('p', { class: 'note' });
   // Degenerate control points, said in words (the figure alone shows a dot or a line).
   const shapeNote = h('p', { class: 'note' });
@@ -62,11 +65,13 @@ export function bsplinePanel(
     { class: 'lesson-text' },
     title,
     text,
+    slip,
     h(
       'p',
       { class: 'note' },
-      'The slider t moves the cursor along the whole curve, from its start (0) to its end (1).',
+      'The slider t moves the cursor along the whole curve, from its start (0) to its end (1): s = (m − 2)·t in the uniform cubic, u = u(p) + t·(u(m+1) − u(p)) on a knot vector.',
     ),
+    notesSymbols(),
     stepLine,
     shapeNote,
     stepBox,
@@ -93,6 +98,7 @@ export function bsplinePanel(
         shownPart = part;
         setText(title, TEXTS[part].title);
         setText(text, TEXTS[part].text);
+        setHidden(slip, part !== 'closed');
         setHidden(matrix, !isUniformPart(part));
         setHidden(recursion, isUniformPart(part));
         setHidden(localTools, part !== 'local');

@@ -3,10 +3,11 @@ import { clampedUniformKnots, nurbsCircle, type Point } from '../../math';
 import type { BSplineModel } from './model';
 import { CIRCLE } from './nurbsGeometry';
 import { type Reveal, partScript } from './scripts';
-import { type BSplineState, DEFAULT_LINE, LECTURE_POINTS, type Part } from './state';
+import { type BSplineState, DEFAULT_LINE, SEVEN_POINTS, type Part } from './state';
 
 const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
 
+/** Six points around a loop: closed, they give six segments. */
 const CLOSED: Point[] = [
   [0, 0],
   [4, -1.5],
@@ -31,15 +32,15 @@ const LONG: Point[] = [
 ];
 const MOVED: Point[] = LONG.map((point, i) => (i === 4 ? [6.5, 3.5] : [...point]));
 
-const n = LECTURE_POINTS.length;
-const ones = LECTURE_POINTS.map(() => 1);
+const n = SEVEN_POINTS.length;
+const ones = SEVEN_POINTS.map(() => 1);
 
 type Scene = ScriptedScene<BSplineState, BSplineModel, Reveal>;
 
-/** A scene of one part, with the fields it sets (the rest: the lecture's points, cubic, clamped). */
+/** A scene of one part, with the fields it sets (the rest: the seven points, cubic, clamped). */
 function scene(part: Part, label: string, fields: Partial<BSplineState> = {}): Scene {
   const setup = (s: BSplineState): BSplineState => {
-    const points = fields.points ?? copy(LECTURE_POINTS);
+    const points = fields.points ?? copy(SEVEN_POINTS);
     const degree = fields.degree ?? 3;
     return {
       ...s,
@@ -66,7 +67,7 @@ const circleFields: Partial<BSplineState> = {
   t: 0.1,
 };
 
-/** The lesson's scenes, in the lecture's order. */
+/** The lesson's scenes, in teaching order. */
 export const SCENES: Scene[] = [
   scene('uniform', 'Uniform cubic B-spline'),
   scene('closed', 'Closed B-spline', { points: CLOSED, t: 0.1 }),

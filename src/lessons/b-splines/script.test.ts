@@ -9,7 +9,10 @@ import type { BSplineModel } from './model';
 import { controlPoints } from './points';
 import { SCENES } from './scenes';
 import { partScript } from './scripts';
-import { type BSplineState, normalize, schema } from './state';
+import { CLOSED_SLIP, NOTES_SYMBOLS } from './notes';
+import { type BSplineState, isUniformPart, normalize, schema } from './state';
+import { TEXTS } from './texts';
+import { basisFigure } from './basisFigure';
 
 const derive = (s: BSplineState) => lesson.derive(s) as BSplineModel;
 const defaults = normalize(defaultsOf(schema)).state;
@@ -26,7 +29,7 @@ const names = (id: string) => {
 
 describe('the scenes and their named steps', () => {
   // The kit's checkScript, but for two rules the lesson's reviewed texts predate: a caption
-  // may name a matrix as the lecture does (G_Bez), and a residual is written 3.6e-16.
+  // may name a matrix as the notes do (G_Bez), and a residual is written 3.6e-16.
   it('every scene steps from little to all, in at most 20 steps, drawing finite numbers', () => {
     expect(lesson.scenes![0].apply(defaults)).toEqual(defaults);
     for (const { id, count, at } of sceneStates(lesson)) {
@@ -72,7 +75,7 @@ describe('the scenes and their named steps', () => {
   it('captions and formulas come from the step declared with them', () => {
     const s = sceneState('uniform');
     expect(lesson.steps!.describe(s, 2)).toBe(
-      'Segment Q4 blends x1, x2, x3, x4 with the 1/6 matrix',
+      'Segment Q4 blends x1, x2, x3, x4 with the four bases B0(t) … B3(t)',
     );
     const knots = sceneState('knots', { step: 2 });
     expect(lesson.steps!.describe(knots, 2)).toBe(
@@ -202,5 +205,178 @@ describe('the link', () => {
       t: 0.3,
     });
     expect(decodeState(schema, link).issues).toEqual([]);
+  });
+});
+
+/** Every caption of every scene, at every step. */
+const allCaptions = () =>
+  SCENES.flatMap((scene) => {
+    const s = sceneState(scene.id);
+    return Array.from({ length: lesson.steps!.count(s) + 1 }, (_, k) =>
+      lesson.steps!.describe({ ...s, step: k }, k),
+    );
+  });
+
+describe('one notation, as the slides write it: m + 1 control points x0 … xm', () => {
+  it('every scene counts its seven points as m + 1 = 7, the knot scenes too', () => {
+    expect(lesson.steps!.describe(sceneState('uniform'), 0)).toBe(
+      'The m + 1 = 7 control points x0 … x6',
+    );
+    for (const id of ['knots', 'clamped', 'repeated']) {
+      const s = sceneState(id);
+      expect(lesson.steps!.describe(s, 0)).toMatch(/^The m \+ 1 = 7 control points x0 … x6/);
+      expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
+        'The knot vector u0 … u10: m + p + 2 = 11 knots on the strip',
+      );
+    }
+  });
+
+  it('no caption or panel text counts the points as n', () => {
+    const texts = [...allCaptions(), ...Object.values(TEXTS).map((t) => t.text)];
+    for (const text of texts) expect(text).not.toMatch(/\bn = \d|\bn \+ p|\(n\+p\)|\bun\]|N\(n−1/);
+    expect(TEXTS.knots.text).toMatch(/m \+ 1 control points x0 … xm/);
+    expect(TEXTS.knots.text).toMatch(/u\(m\+p\+1\) of m \+ p \+ 2 numbers/);
+  });
+
+  it('says once what order means: degree p, order p + 1', () => {
+    const saying = Object.values(TEXTS).filter((t) => /\border\b/.test(t.text));
+    expect(saying.map((t) => t.title)).toEqual([TEXTS.knots.title]);
+    expect(TEXTS.knots.text).toMatch(
+      /degree p — of order p \+ 1: the cubic has degree 3 and order 4/,
+    );
+    expect(allCaptions().filter((c) => /\border\b/.test(c))).toEqual([]);
+  });
+
+  it('keys its symbols to the notes’: B(k,n), cᵢ, “knots”, order', () => {
+    const notes = NOTES_SYMBOLS.map(([, there]) => there).join(' | ');
+    expect(notes).toMatch(/B\(k,n\) of the “Splines” slides is a Bézier/);
+    expect(notes).toMatch(/cᵢ in the lecture slides \(c3 … cm\)/);
+    expect(notes).toMatch(/say “knots” for the control points themselves/);
+    expect(notes).toMatch(/degree is n, and order is n \+ 1/);
+  });
+
+  it('names its data after what it shows, not after a lecture that gives no numbers', () => {
+    const { issues } = normalize({
+      ...defaults,
+      points: [
+        [0, 0],
+        [1, 1],
+        [2, 0],
+      ],
+    });
+    expect(issues[0]).toMatch(/the seven default points are shown$/);
+    const texts = [...allCaptions(), ...Object.values(TEXTS).map((t) => t.text), ...issues];
+    for (const text of texts) expect(text).not.toMatch(/lecture(’|')s/);
+  });
+});
+
+describe('the basis plot shows what its step shows', () => {
+  const basisTexts = (s: BSplineState) => {
+    const { texts } = drawState({ ...lesson, figures: [lesson.figures[1]] }, s);
+    return texts;
+  };
+
+  it('never writes a placeholder: before its step the plot is its axes alone', () => {
+    for (const scene of SCENES) {
+      const s = sceneState(scene.id);
+      for (let k = 0; k <= lesson.steps!.count(s); k++) {
+        for (const text of basisTexts({ ...s, step: k }))
+          expect(text, `${scene.id} step ${k}`).not.toMatch(/appear|as the steps go on/);
+      }
+    }
+    expect(basisFigure.id).toBe('basis');
+  });
+
+  it('at the segment’s step: the four bases of that segment, B0(t) … B3(t), with their values', () => {
+    const s = { ...sceneState('uniform'), step: 2 };
+    const m = derive(s);
+    const texts = basisTexts(s);
+    // Labels are written in parts (base, subscript): B, 0, (t) = 0.036.
+    const written = texts.join('');
+    [0, 1, 2, 3].forEach((k) =>
+      expect(written).toContain(`B${k}(t) = ${m.basis[m.segment + k].toFixed(3)}`),
+    );
+    // One step earlier, nothing but the axes' numbers.
+    expect(basisTexts({ ...s, step: 1 }).join('')).not.toMatch(/B\d\(t\)/);
+  });
+});
+
+describe('the uniform cubic bases, written out and derived', () => {
+  const numberAfter = (tex: string, head: string) => {
+    const at = tex.indexOf(head);
+    expect(at, head).toBeGreaterThanOrEqual(0);
+    const rest = tex.slice(at + head.length);
+    return Number(/= (-?[\d.]+)(?=\s*(?:&|\\\\|\\end|$))/.exec(rest)![1]);
+  };
+
+  it('the segment’s step writes B0(t) … B3(t) as the notes do, with their values at the local t', () => {
+    const s = { ...sceneState('uniform'), step: 2 };
+    const m = derive(s);
+    const tex = lesson.steps!.formula!(m, s)!;
+    const heads = [
+      'B_0(t) &= \\tfrac{1}{6}(1 - t)^{3}',
+      'B_1(t) &= \\tfrac{1}{6}(3t^{3} - 6t^{2} + 4)',
+      'B_2(t) &= \\tfrac{1}{6}(-3t^{3} + 3t^{2} + 3t + 1)',
+      'B_3(t) &= \\tfrac{1}{6}t^{3}',
+    ];
+    heads.forEach((head, k) =>
+      expect(numberAfter(tex, head)).toBeCloseTo(m.basis[m.segment + k], 3),
+    );
+  });
+
+  it('the knot scene derives them row by row on its equally spaced knots, each value the triangle’s', () => {
+    const s = sceneState('knots');
+    for (let r = 0; r <= 3; r++) {
+      const at = { ...s, step: 2 + r };
+      const m = derive(at);
+      const tex = lesson.steps!.formula!(m, at)!;
+      // u = 4.6 in the span [u4, u5): t = 0.6.
+      expect(tex, `row ${r}`).toContain('t = u - u_{4} = 0.600');
+      for (let k = 0; k <= r && r > 0; k++) {
+        const i = 4 - r + k;
+        const value = numberAfter(tex, `N_{${i},${r}} &= `);
+        expect(value, `N(${i},${r})`).toBeCloseTo(m.table[r][i], 3);
+      }
+    }
+    const last = { ...s, step: 5 };
+    expect(lesson.steps!.describe(last, 5)).toBe(
+      'Row 3 on equally spaced knots: its four pieces are the uniform cubic bases B0(t) … B3(t)',
+    );
+    const tex = lesson.steps!.formula!(derive(last), last)!;
+    expect(tex).toContain('N_{1,3} &= \\tfrac{1}{6}(1 - t)^{3} = 0.011');
+    expect(tex).toContain('N_{4,3} &= \\tfrac{1}{6}t^{3} = 0.036');
+  });
+
+  it('on knots not equally spaced the rows stay the triangle of numbers', () => {
+    const s = { ...sceneState('clamped'), step: 5 };
+    const tex = lesson.steps!.formula!(derive(s), s)!;
+    expect(tex).toMatch(/\\begin\{array\}/);
+    expect(tex).not.toMatch(/tfrac/);
+    expect(lesson.steps!.describe(s, 5)).toBe('Row 3: each N(i,3) blends N(i,2) and N(i+1,2)');
+  });
+});
+
+describe('the closed uniform B-spline needs three points wrapped', () => {
+  it('says so in its caption, and the slides’ x₀ = xₘ kindly beside it', () => {
+    const s = sceneState('closed');
+    expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
+      'Closed: after x5 come x0, x1, x2 again (x6 = x0, x7 = x1, x8 = x2)',
+    );
+    expect(CLOSED_SLIP.written).toMatch(/x₀ = xₘ/);
+    expect(CLOSED_SLIP.correct).toMatch(/x\(m\+1\) = x0, x\(m\+2\) = x1 and x\(m\+3\) = x2/);
+    expect(TEXTS.closed.text).toMatch(/x\(m\+1\) = x0, x\(m\+2\) = x1, x\(m\+3\) = x2/);
+  });
+
+  it('the curve closes with three points wrapped, and not with the last point on the first alone', () => {
+    const closed = derive(sceneState('closed'));
+    expect(closed.control.slice(-3)).toEqual(closed.control.slice(0, 3));
+    expect(
+      Math.hypot(closed.start[0] - closed.end[0], closed.start[1] - closed.end[1]),
+    ).toBeLessThan(1e-12);
+    // The slides' x0 = xm read as an open curve whose last point is its first: the ends do not meet.
+    const points = sceneState('closed').points;
+    const open = derive({ ...sceneState('uniform'), points: [...points, points[0]] });
+    expect(isUniformPart(open.state.part)).toBe(true);
+    expect(Math.hypot(open.start[0] - open.end[0], open.start[1] - open.end[1])).toBeGreaterThan(1);
   });
 });

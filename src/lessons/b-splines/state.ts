@@ -4,8 +4,8 @@ import type { Schema } from '../../app/urlState';
 import { clampedUniformKnots } from '../../math';
 
 /**
- * The parts of the lesson, one per scene (`x=knots` in the link). The first
- * five are the lecture's uniform cubic B-spline; the others a general knot
+ * The parts of the lesson, one per scene (`x=knots` in the link). Five are the
+ * uniform cubic B-spline in the slides' matrix form; the others a general knot
  * vector of degree p, with weights from `nurbs` on.
  */
 export type Part =
@@ -46,13 +46,16 @@ export interface BSplineState {
   points: Point[];
   /** The control points before the last change, for local control's "before" curve (`q`). */
   before: Point[];
-  /** Where the cursor is along the whole curve, 0 … 1 (u = u_p + t·(u_{n} − u_p)). */
+  /**
+   * Where the cursor is along the whole curve, 0 … 1: s = (m − 2)·t in the uniform
+   * cubic, u = u_p + t·(u_{m+1} − u_p) on a knot vector (`t`).
+   */
   t: number;
   /** The step of the scene (`k`). */
   step: number;
   /** Degree p of the general B-spline, in the knot scenes (`d`). */
   degree: number;
-  /** The knot vector u_0 … u_{m+p+1}, in the knot scenes (`u`). */
+  /** The knot vector u_0 … u_{m+p+1} (m + p + 2 knots), in the knot scenes (`u`). */
   knots: number[];
   /** One weight per control point, in the NURBS scenes (`w`). */
   weights: number[];
@@ -63,8 +66,11 @@ export interface BSplineState {
 export const MAX_POINTS = 12;
 export const MAX_DEGREE = 5;
 
-/** The lecture's open curve: m + 1 = 7 points, m − 2 = 4 segments. */
-export const LECTURE_POINTS: Point[] = [
+/**
+ * Seven control points that rise, fall and rise again (m + 1 = 7, so m − 2 = 4
+ * segments): the open curve most scenes start from. The notes give no numbers.
+ */
+export const SEVEN_POINTS: Point[] = [
   [0, 0],
   [1, 3],
   [3, 4],
@@ -105,18 +111,18 @@ const partUses = {
   weights: new Set<Part>(['nurbs', 'circle', 'projective']),
 };
 
-/** The lecture's uniform cubic (matrix form): no knot vector or weights of its own. */
+/** The uniform cubic in the slides' matrix form: no knot vector or weights of its own. */
 export const isUniformPart = (part: Part) => partUses.uniform.has(part);
 /** Parts whose weights are not all 1 in general. */
 export const isRationalPart = (part: Part) => partUses.weights.has(part);
 
-/** Most knots a link may give: n + p + 1 for the most points and the highest degree. */
+/** Most knots a link may give: m + p + 2 for the most points (m + 1) and the highest degree. */
 export const MAX_KNOTS = MAX_POINTS + MAX_DEGREE + 1;
 
 // The link's keys come in this order, the order they always had.
 export const schema: Schema<BSplineState> = {
   part: linkKey(choice({ default: 'uniform', values: PARTS }), 'x'),
-  points: linkKey(points({ default: LECTURE_POINTS, min: 3, max: MAX_POINTS }), 'p'),
+  points: linkKey(points({ default: SEVEN_POINTS, min: 3, max: MAX_POINTS }), 'p'),
   before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.35, min: 0, max: 1 }),
   step: linkKey(int({ default: 0, min: 0, max: 20 }), 'k'),
@@ -128,7 +134,7 @@ export const schema: Schema<BSplineState> = {
 
 const copy = (list: readonly Point[]): Point[] => list.map((point) => [...point]);
 
-/** Knots that fit n points of degree p and leave a non-empty domain [u_p, u_n]. */
+/** Knots that fit n = m + 1 points of degree p and leave a non-empty domain [u_p, u_{m+1}]. */
 export function knotsFit(u: readonly number[], n: number, p: number): boolean {
   return u.length === n + p + 1 && u[p] < u[n];
 }
@@ -158,9 +164,9 @@ export function normalize(state: BSplineState): { state: BSplineState; issues: s
   const n = next.points.length;
   if (n < 4 && next.part !== 'closed') {
     issues.push(
-      `a cubic B-spline needs at least 4 control points, not ${n}; the lecture's are shown`,
+      `a cubic B-spline needs at least 4 control points, not ${n}; the seven default points are shown`,
     );
-    next = { ...next, points: copy(LECTURE_POINTS) };
+    next = { ...next, points: copy(SEVEN_POINTS) };
   }
   const count = next.points.length;
   if (next.degree > count - 1) {

@@ -4,11 +4,11 @@ import type { Part } from './state';
 export const TEXTS: Record<Part, { title: string; text: string }> = {
   uniform: {
     title: 'The uniform cubic B-spline',
-    text: 'm + 1 control points x0 … xm give m − 2 cubic segments. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]. The four weights are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. Hover a segment (or tab to its button) to see its four points; hover a point to see the segments it moves.',
+    text: 'm + 1 control points x0 … xm (m ≥ 3) give m − 2 cubic segments Q3 … Qm. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]: the four weights are the columns of the matrix, the bases B0(t) = (1 − t)³/6, B1(t) = (3t³ − 6t² + 4)/6, B2(t) = (−3t³ + 3t² + 3t + 1)/6 and B3(t) = t³/6. They are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. The slider t runs along the whole curve: s = (m − 2)·t counts segments, Qi being s from i − 3 to i − 2. Hover a segment (or tab to its button) to see its four points; hover a point to see the segments it moves.',
   },
   closed: {
     title: 'The closed uniform B-spline',
-    text: 'Repeat the first three points after the last (x0 = x(m+1), x1, x2): the same matrix then gives m + 1 segments, and the curve closes on itself with C² continuity everywhere — there is no special end.',
+    text: 'Use the first three points again after the last: x(m+1) = x0, x(m+2) = x1, x(m+3) = x2. Every segment reads four points, so three repeated points are what closing takes: the same matrix then gives m + 1 segments, one for each point, and the curve closes on itself with C² continuity everywhere — there is no special end.',
   },
   local: {
     title: 'Local control',
@@ -24,11 +24,11 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   knots: {
     title: 'Knots and the Cox–de Boor recursion',
-    text: 'In general a B-spline of degree p has n control points and a knot vector u0 ≤ u1 ≤ … ≤ u(n+p) of n + p + 1 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). The curve lives on [up, un] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
+    text: 'In general a B-spline of degree p — of order p + 1: the cubic has degree 3 and order 4 — has m + 1 control points x0 … xm and a knot vector u0 ≤ u1 ≤ … ≤ u(m+p+1) of m + p + 2 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). On equally spaced knots every span gets the same pieces in its local t, and row 3 derives the uniform cubic bases B0(t) … B3(t) of the matrix form. The curve lives on [up, u(m+1)] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
   },
   clamped: {
     title: 'Clamped ends',
-    text: 'With p + 1 equal knots at each end, only N(0,p) is non-zero at the start and only N(n−1,p) at the end: the curve starts at x0 and ends at the last point, tangent to the polygon there. This is how “open” splines interpolate their end control points.',
+    text: 'With p + 1 equal knots at each end, only N(0,p) is non-zero at the start and only N(m,p) at the end: the curve starts at x0 and ends at xm, tangent to the polygon there. This is how “open” splines interpolate their end control points, as the slides say the matrices can be modified at the curve ends to do.',
   },
   repeated: {
     title: 'Repeated knots',

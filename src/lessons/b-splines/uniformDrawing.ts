@@ -4,7 +4,7 @@ import { drawCursor, drawMarks, drawPolygon, drawSegments, hint, ringHovered } f
 import type { ConvertModel, LocalModel, PropertiesModel, UniformModel } from './model';
 import { segmentLabel } from './notation';
 
-/** The lecture's uniform cubic, open or closed: points, polygon, one segment, all, joints. */
+/** The uniform cubic, open or closed: points, polygon, one segment, all, joints. */
 export function drawUniform(painter: Painter, m: UniformModel, info: DrawInfo): void {
   const { shown } = m;
   const closed = m.state.part === 'closed';
@@ -39,7 +39,7 @@ export function drawUniform(painter: Painter, m: UniformModel, info: DrawInfo): 
     const joints = m.beziers.map((bezier) => bezier[0]);
     if (!closed) joints.push(m.end);
     drawMarks(painter, joints, painter.theme.ink, null, info);
-    drawCursor(painter, m.point, 'P(t)', info);
+    drawCursor(painter, m.point, 'P(s)', info);
   }
   ringHovered(painter, m, info);
 }

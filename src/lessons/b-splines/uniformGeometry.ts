@@ -16,7 +16,7 @@ import type { Curve, Cursor, LocalControl, Properties } from './model';
 import { SAMPLES } from './sampling';
 import type { BSplineState } from './state';
 
-/** The lecture's affine map of the properties scene: a rotation with shear, moved to the right. */
+/** The affine map of the properties scene: a rotation with shear, moved to the right. */
 export const AFFINE: number[][] = [
   [0.9, 0.5, 13],
   [-0.3, 1, 1],
@@ -29,7 +29,7 @@ export type UniformCurve = Curve & { beziers: Point[][] };
 type CurveFields = Pick<BSplineState, 'part' | 'points'>;
 
 /**
- * The lecture's uniform cubic: segment i blends x_i … x_{i+3} with the 1/6
+ * The uniform cubic in the slides' matrix form: segment i (Q_{i+3}) blends x_i … x_{i+3} with the 1/6
  * matrix. It reads only the points and whether the curve is closed.
  */
 export const uniformCurve = memoOn<CurveFields, keyof CurveFields, UniformCurve>(
@@ -47,7 +47,8 @@ export const uniformCurve = memoOn<CurveFields, keyof CurveFields, UniformCurve>
       samples: sampleBezier(bezier, SAMPLES),
       bezier,
     }));
-    // The lecture's s ∈ [0, m − 2] is u on the knots −3, −2, …: segment i is [i, i + 1].
+    // s ∈ [0, m − 2] is u on the knots −3, −2, …: segment i is [i, i + 1] (the continuation
+    // notes' t, whose segment changes where it is a whole number).
     const knots = Array.from({ length: control.length + 4 }, (_, j) => j - 3);
     return {
       control,

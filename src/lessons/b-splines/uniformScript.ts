@@ -2,14 +2,23 @@ import { script, step } from '../../kit/script';
 import type { UniformModel } from './model';
 import { blend, n3, pt, segmentLabel, segmentName } from './notation';
 import type { BSplineState } from './state';
+import { pieceAt, pieceTex, uniformPieces } from './uniformPieces';
 
 /** What the steps of the uniform cubic (open or closed) reveal, by name. */
 export type UniformReveal = 'points' | 'polygon' | 'segment' | 'segments' | 'joints';
 
 const closed = (state: BSplineState) => state.part === 'closed';
 
+/** B0(t) … B3(t) of the continuation notes written out, with their values at the local t: two rows of an aligned block. */
+export function basesTex(t: number): string {
+  const [b0, b1, b2, b3] = uniformPieces(3).map(
+    (piece, k) => `B_${k}(t) &= ${pieceTex(piece)} = ${n3(pieceAt(piece, t))}`,
+  );
+  return `${b0} & ${b1} \\\\ ${b2} & ${b3}`;
+}
+
 /**
- * The lecture's uniform cubic, open or closed: the points, the polygon, the
+ * The uniform cubic, open or closed: the points, the polygon, the
  * segment under the cursor alone, all segments, their joints.
  */
 export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
@@ -18,17 +27,18 @@ export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
     ({ state }) =>
       `The m + 1 = ${state.points.length} control points x0 … x${state.points.length - 1}`,
   ),
-  step('polygon', ({ state }) =>
-    closed(state)
-      ? `The closed control polygon: x${state.points.length - 1} joins x0 again`
-      : 'The control polygon: the curve will follow it, but pass through none of its points',
-  ),
+  step('polygon', ({ state }) => {
+    const n = state.points.length;
+    return closed(state)
+      ? `Closed: after x${n - 1} come x0, x1, x2 again (x${n} = x0, x${n + 1} = x1, x${n + 2} = x2)`
+      : 'The control polygon: the curve will follow it, but pass through none of its points';
+  }),
   step(
     'segment',
     ({ model: m }) =>
-      `Segment ${segmentName(m.segment)} blends ${m.segments[m.segment].points.map((j) => `x${j}`).join(', ')} with the 1/6 matrix`,
+      `Segment ${segmentName(m.segment)} blends ${m.segments[m.segment].points.map((j) => `x${j}`).join(', ')} with the four bases B0(t) … B3(t)`,
     ({ model: m }) =>
-      `${segmentLabel(m.segment)}(${n3(m.local)}) = ${blend(m.basis, (j) => `x_{${m.owner[j]}}`)} = ${pt(m.point)}`,
+      `\\begin{aligned}${basesTex(m.local)} \\\\ ${segmentLabel(m.segment)}(${n3(m.local)}) &= ${blend(m.basis, (j) => `x_{${m.owner[j]}}`)} = ${pt(m.point)}\\end{aligned}`,
   ),
   step(
     'segments',
@@ -45,7 +55,7 @@ export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
   ),
   step(
     'joints',
-    'Each joint is (x(i−1) + 4x(i) + x(i+1))/6; P(t) runs along the whole curve',
+    'Each joint is (x(i−1) + 4x(i) + x(i+1))/6; P(s) runs along the whole curve as t moves',
     ({ model: m }) => {
       const i = m.segment;
       const [a, b, c] = [0, 1, 2].map((k) => `x_{${m.owner[i + k]}}`);

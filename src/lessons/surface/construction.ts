@@ -4,8 +4,8 @@ import type { SpaceScene } from '../../render/space';
 import type { SurfaceModel } from './model';
 import { coordinateIndex } from './state';
 import { continuityName } from './notation';
-
-type Lift = (p: readonly number[]) => Point;
+import { drawPresetMarks, tangentPlane } from './presetMarks';
+import { type Lift, drawPoints, scaled } from './spaceMarks';
 
 // Each scene's own construction over the patch, revealed step by step.
 
@@ -22,28 +22,6 @@ function drawLevels(
     for (const p of levels[r])
       scene.dot(p, color, theme.sizes.point * (r === levels.length - 1 ? 1.2 : 0.6));
   }
-}
-
-function drawPoints(
-  scene: SpaceScene,
-  painter: Painter,
-  points: readonly Point[],
-  name: string,
-  info: DrawInfo,
-  color: (i: number) => string,
-) {
-  const theme = painter.theme;
-  points.forEach((p, i) => {
-    scene.dot(p, color(i), theme.sizes.point * 1.3);
-    if (!info.thumbnail)
-      scene.label(`${name}_{${i}}`, p, {
-        dx: 10,
-        dy: -10,
-        color: color(i),
-        halo: true,
-        bold: true,
-      });
-  });
 }
 
 export function drawConstruction(
@@ -147,21 +125,14 @@ export function drawConstruction(
     case 'normal': {
       if (shown.has('uTangent')) scene.polyline(m.isoV.map(up), curve);
       if (shown.has('vTangent')) scene.polyline(m.isoU.map(up), { ...curve, color: color(1) });
-      if (shown.has('tangentPlane')) {
-        const a = scaled(m.du, 1 / 3);
-        const b = scaled(m.dv, 1 / 3);
-        const p = m.point;
-        const corner = (s: number, t: number) => p.map((x, i) => x + s * a[i] + t * b[i]);
-        scene.quad([corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)], painter.color(4), {
-          alpha: 0.45,
-        });
-      }
+      if (shown.has('tangentPlane')) tangentPlane(scene, painter, m);
       break;
     }
     case 'join':
       drawJoin(scene, painter, m, info, up);
       break;
     case 'patch':
+      drawPresetMarks(scene, painter, m, info, up);
       break;
   }
 }
@@ -194,8 +165,6 @@ function drawJoin(scene: SpaceScene, painter: Painter, m: SurfaceModel, info: Dr
     });
 }
 
-const scaled = (p: readonly number[], s: number): Point => p.map((x) => x * s);
-
 /** Marks above the handles: the tangent arrows and the normal, the first order's point to compare. */
 export function drawOverConstruction(painter: Painter, m: SurfaceModel, info: DrawInfo): void {
   const theme = painter.theme;
@@ -204,6 +173,14 @@ export function drawOverConstruction(painter: Painter, m: SurfaceModel, info: Dr
   const label = (text: string, at: Point, color: string) => {
     if (!info.thumbnail) painter.label(text, at, { dx: 8, dy: -8, color, halo: true, bold: true });
   };
+  // The normal of a net worth seeing, at its step (with the tangent plane, or alone).
+  if (state.mode === 'patch' && (shown.has('normal') || shown.has('tangentPlane')) && m.normal) {
+    const b = m.bounds;
+    const size = Math.max(b.maxX - b.minX, b.maxY - b.minY) * 0.3;
+    const end = p.map((x, i) => x + size * m.normal![i]);
+    painter.arrow(p, end, { color: painter.color(2), width: theme.sizes.line * 1.3 });
+    label('n', end, painter.color(2));
+  }
   if (state.mode === 'normal') {
     const arrow = (v: readonly number[], text: string, color: string) => {
       const end = p.map((x, i) => x + v[i]);

@@ -66,7 +66,7 @@ export const rowsScript = script<SurfaceState, SurfaceModel, RowsReveal>(
   step(
     'isoV',
     ({ state }) =>
-      `r₀ … r₃ are the control points of a curve in u: the iso-curve v = ${num(state.v)}`,
+      `r₀ … r₃ are the control points of a curve in u, 0 ≤ u ≤ 1: the iso-curve v = ${num(state.v)}`,
     () => '\\mathbf{x}(u,v)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{r}_m(v)',
   ),
   step(

@@ -6,7 +6,8 @@ import { SpaceScene } from '../../render/space';
 import { type PatchSamples, type SurfaceModel } from './model';
 import { type SurfaceState } from './state';
 import { drawConstruction, drawOverConstruction } from './construction';
-import { netPoints, secondNetPoints } from './points';
+import { placeNetLabels } from './netLabels';
+import { namedPoints, netPoints, secondNetPoints } from './points';
 
 /** What a scene shows of the patch itself at its step. */
 export interface PatchShown {
@@ -17,21 +18,33 @@ export interface PatchShown {
   edges: boolean;
   /** Iso-lines, or the shaded patch (per the look), and how strongly. */
   patch: 'none' | 'faint' | 'full';
+  /** The iso-curves u, v = 0, ⅛, …, 1 alone, before the patch is shaded. */
+  isoCurves: boolean;
   /** The point x(u, v). */
   point: boolean;
 }
 
 /** The patch part of each scene's step, before the scene's own construction is drawn. */
 export function patchShown({ state, shown }: SurfaceModel): PatchShown {
-  const none: PatchShown = { net: true, corners: false, edges: false, patch: 'none', point: false };
+  const none: PatchShown = {
+    net: true,
+    corners: false,
+    edges: false,
+    patch: 'none',
+    isoCurves: false,
+    point: false,
+  };
   switch (state.mode) {
+    // The patch and the nets worth seeing: each step by its name ('surface' is
+    // the patch without its point, which a step of its own then adds).
     case 'patch':
       return {
         net: shown.has('net'),
-        corners: shown.has('corners'),
+        corners: shown.has('corners') || shown.has('cornerQuad'),
         edges: shown.has('edges'),
-        patch: shown.has('patch') ? 'full' : 'none',
-        point: shown.has('patch'),
+        isoCurves: shown.has('isoCurves'),
+        patch: shown.has('patch') || shown.has('surface') ? 'full' : 'none',
+        point: shown.has('patch') || shown.has('point'),
       };
     case 'rows':
       return { ...none, patch: shown.has('isoU') ? 'faint' : 'none', point: shown.has('point') };
@@ -157,6 +170,14 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
       drawNet(scene, state.net, netStyle);
       if (state.mode === 'join') drawNet(scene, state.secondNet, netStyle);
     }
+    if (shown.isoCurves && shown.patch === 'none') {
+      for (const line of [...m.patch.uLines, ...m.patch.vLines])
+        scene.polyline(line.map(up), {
+          color: theme.curve,
+          width: theme.sizes.line,
+          role: 'curve',
+        });
+    }
     if (shown.edges && state.mode !== 'join') {
       const g = m.patch;
       for (const edge of [
@@ -196,6 +217,7 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
   },
   drawOver(painter, m, info) {
     drawOverConstruction(painter, m, info);
+    if (!info.thumbnail) placeNetLabels(painter, m.state.net, namedPoints(m.state));
   },
   points: [netPoints, secondNetPoints],
   trail: (m) => (patchShown(m).point ? m.point : null),

@@ -20,7 +20,7 @@ const tripleText = (p: readonly number[]) => p.map(formatNumber).join(', ');
 
 /**
  * The control net as an editable 4 × 4 table: one cell per point, "x, y, z",
- * m down and n across as in the lecture's x(m,n). Enter or leaving the cell applies it.
+ * m down and n across as the slides' x(m,n). Enter or leaving the cell applies it.
  * A cell that is not three numbers is put back and says so under the table, not in
  * the page's notices: a notice would push the figures down and change their size.
  */

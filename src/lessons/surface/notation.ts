@@ -20,10 +20,10 @@ export const matrix = (rows: readonly (readonly number[])[], digits = 4) =>
 /** x(u, v) with its parameters, in TeX. */
 export const pointAt = (state: { u: number; v: number }) =>
   `\\mathbf{x}(${num(state.u)},${num(state.v)})`;
-/** The patch as the lecture's double sum. */
+/** The patch as the slides' double sum. */
 export const DOUBLE_SUM = '\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{x}_{m,n}';
 
-/** A continuity class as the lecture writes it. */
+/** A continuity class as the notes write it. */
 export const continuityName = (c: Continuity): string =>
   ({ none: 'gap', C0: 'C⁰', G1: 'G¹', C1: 'C¹', G2: 'G²', C2: 'C²' })[c];
 

@@ -5,6 +5,7 @@ import { radioGroup } from '../../app/panelControls';
 import { LiveFormula, SLOT, formula, slotPoint } from '../../render/formula';
 import type { SurfaceModel } from './model';
 import { netTable } from './netTable';
+import { notesSymbols, rowsSlip } from './notes';
 import type { Coordinate, SurfaceLook, SurfaceState } from './state';
 import { continuityName, joinVerdict } from './notation';
 import './surface.css';
@@ -64,6 +65,8 @@ export function surfacePanel(
   const weightRows = new LiveRows(weightBody);
   const weightSum = h('output', { 'aria-label': 'Sum of the 16 weights' });
   const joinText = h('p', {});
+  // The slides' “for 0 ≤ v ≤ 1” of the curve in u: beside the scene that builds it.
+  const slip = rowsSlip();
   const firstNet = netTable(api, 'x');
   const secondNet = netTable(api, 'y');
   const joinSection = h(
@@ -91,6 +94,8 @@ export function surfacePanel(
       '\\mathbf{x}(u,v)=\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{x}_{m,n},\\qquad 0\\le u,v\\le 1',
       true,
     ),
+    slip,
+    notesSymbols(),
     h(
       'p',
       { class: 'note' },
@@ -151,6 +156,7 @@ export function surfacePanel(
   return {
     element,
     update(m, state) {
+      setHidden(slip, state.mode !== 'rows');
       look.update(state);
       coordinate.update(state);
       if (vSlider.value !== String(state.v)) vSlider.value = String(state.v);

@@ -1,7 +1,7 @@
 import type { Handle } from '../../app/lesson';
 import { type PointList, pointList } from '../../kit/pointList';
 import type { Point } from '../../math';
-import { shownIn } from './scripts';
+import { sceneOf, shownIn } from './scenes';
 import type { SurfaceState } from './state';
 
 // The movable points: the 16 control points of the net x, and in the scene of
@@ -44,7 +44,20 @@ const isCorner = (i: number) => {
   return (row === 0 || row === 3) && (column === 0 || column === 3);
 };
 
-/** The control points xₘ,ₙ: labelled all while the net is the subject, then at the corners. */
+/**
+ * Which points of the net are named: every one while the net itself is the
+ * subject (the patch's first steps), then its four corners (none beside a
+ * second patch). The figure places the names (netLabels.ts) clear of one
+ * another and of the points: names at one fixed offset beside each handle ran
+ * together where a row's points crowd, seen from the side.
+ */
+export function namedPoints(state: SurfaceState): (i: number) => boolean {
+  if (state.mode === 'join') return () => false;
+  if (sceneOf(state) === 'patch' && !shownIn(state).has('corners')) return () => true;
+  return isCorner;
+}
+
+/** The control points xₘ,ₙ (their names are placed by the figure). */
 export const netPoints = netHandles(
   pointList<SurfaceState>({
     id: 'x',
@@ -56,9 +69,7 @@ export const netPoints = netHandles(
     style: () => ({ small: true }),
   }),
   netLabel,
-  (state, i) =>
-    (state.mode === 'patch' && !shownIn(state).has('corners')) ||
-    (isCorner(i) && state.mode !== 'join'),
+  () => false,
 );
 
 const secondLabel = (i: number) => `y_{${place(i).row + 1},${place(i).column}}`;

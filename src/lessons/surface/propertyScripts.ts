@@ -68,7 +68,7 @@ export const weightsScript = script<SurfaceState, SurfaceModel, WeightsReveal>(
 
 export type NormalReveal = 'point' | 'uTangent' | 'vTangent' | 'normal' | 'tangentPlane';
 
-const crossFormula = ({ model }: { model: SurfaceModel }) =>
+export const crossFormula = ({ model }: { model: SurfaceModel }) =>
   `\\frac{\\partial\\mathbf{x}}{\\partial u}\\times\\frac{\\partial\\mathbf{x}}{\\partial v} = ${point(model.crossProduct)}${model.normal ? `,\\quad \\mathbf{n} = ${point(model.normal)}` : ''}`;
 
 /** The two tangents at x(u, v), their cross product, the tangent plane. */

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { defaultsOf, encodeState } from '../../app/urlState';
+import { decodeState, defaultsOf, encodeState } from '../../app/urlState';
+import { cross } from '../../math';
 import { sceneStates } from '../../kit/scriptChecks';
 import { OrbitCamera } from '../../render/orbitCamera';
 import { Painter } from '../../render/painter';
@@ -9,10 +10,41 @@ import { Viewport } from '../../render/viewport';
 import lesson from './lesson';
 import type { SurfaceModel } from './model';
 import { JOIN_NEXT_C0 } from './presets';
-import { SCENES } from './scenes';
+import { SCENES, sceneOf } from './scenes';
+import { NOTES_SYMBOLS, ROWS_SLIP } from './notes';
+import { cornerVolume } from './presetScripts';
 import { SCRIPTS } from './scripts';
-import { type SurfaceState, schema } from './state';
+import { LEANING_HILL_NET, type SurfaceState, schema } from './state';
 import { weightsShown } from './weightsFigure';
+import { drawHandles } from '../../render/handles';
+import type { LabelBox } from '../../render/painter';
+import { namedPoints } from './points';
+
+/**
+ * The patch figure as the shell draws it (figure, handles, then the marks
+ * above them), fitted as the shell fits it: the labels it placed, where the
+ * net's points are on screen, and a small handle's radius.
+ */
+function placed(state: SurfaceState, width: number, height: number, projector = false) {
+  const figure = lesson.figures[0];
+  const model = lesson.derive(state);
+  const view = new OrbitCamera(figure.camera);
+  view.resize(width, height);
+  view.fit(figure.bounds(model), 0.12 * Math.min(width, height));
+  const theme = makeTheme(false, projector);
+  const painter = new Painter(new SvgContext(), view, theme);
+  const info = { hover: null, thumbnail: false };
+  figure.draw(painter, model, info);
+  drawHandles(painter, figure.handles!(model));
+  figure.drawOver?.(painter, model, info);
+  return {
+    labels: painter.labels as readonly LabelBox[],
+    points: state.net.flat().map((p) => view.toScreen(p)),
+    radius: theme.sizes.handle * 0.5,
+  };
+}
+const placedLabels = (state: SurfaceState, width: number, height: number) =>
+  placed(state, width, height).labels;
 
 const derive = (s: SurfaceState) => lesson.derive(s) as SurfaceModel;
 
@@ -74,10 +106,13 @@ describe('the scenes and their named steps', () => {
     }
   });
 
-  it('each kind of scene has its own steps, named after what they reveal', () => {
-    const patch = ['points', 'net', 'corners', 'edges', 'isoCurves', 'patch'];
-    for (const id of ['patch', 'flat', 'saddle', 'bump', 'wave', 'twisted'])
-      expect(names(id)).toEqual(patch);
+  it('each scene has its own steps, named after what they reveal', () => {
+    expect(names('patch')).toEqual(['points', 'net', 'corners', 'edges', 'isoCurves', 'patch']);
+    expect(names('flat')).toEqual(['net', 'plane', 'isoCurves', 'surface', 'point', 'normal']);
+    expect(names('saddle')).toEqual(['net', 'corners', 'isoU', 'isoV', 'isoCurves', 'point']);
+    expect(names('bump')).toEqual(['net', 'edges', 'surface', 'point', 'shares', 'tangentPlane']);
+    expect(names('wave')).toEqual(['net', 'columnCurves', 'rowCurves', 'surface', 'isoV', 'point']);
+    expect(names('twisted')).toEqual(['cornerQuad', 'net', 'edges', 'surface', 'point', 'normal']);
     expect(names('rows')).toEqual(['net', 'rowCurves', 'rowPoints', 'isoV', 'point', 'isoU']);
     expect(names('casteljau')).toEqual([
       'net',
@@ -137,19 +172,64 @@ describe('the control points', () => {
   const shellFigure = lesson.figures[0];
   const handles = (s: SurfaceState) => shellFigure.handles!(derive(s));
 
-  it('labels every point of the net while it is the subject, then only its corners', () => {
-    const labelled = (s: SurfaceState) =>
+  it('names every point of the net while it is the subject, then only its corners (placed by the figure)', () => {
+    const named = (s: SurfaceState) =>
       handles(s)
-        .filter((h) => h.showLabel)
+        .filter((_, i) => i < 16 && namedPoints(s)(i))
         .map((h) => h.label);
-    expect(handles(defaults).map((h) => h.label)).toEqual(
-      [0, 1, 2, 3].flatMap((m) => [0, 1, 2, 3].map((n) => `x_{${m},${n}}`)),
-    );
-    expect(labelled(sceneState('patch', { step: 1 }))).toHaveLength(16);
+    const names = (s: SurfaceState) =>
+      placedLabels(s, 900, 560)
+        .map((b) => b.text)
+        .filter((t) => /^x_\{\d,\d\}$/.test(t))
+        .sort();
+    const all = [0, 1, 2, 3].flatMap((m) => [0, 1, 2, 3].map((n) => `x_{${m},${n}}`));
+    expect(handles(defaults).map((h) => h.label)).toEqual(all);
+    // The handles name no point themselves: the figure places every name.
+    expect(handles(defaults).some((h) => h.showLabel)).toBe(false);
+    for (const step of [0, 1]) {
+      const s = sceneState('patch', { step });
+      expect(named(s)).toEqual(all);
+      expect(names(s)).toEqual(all);
+    }
     const corners = ['x_{0,0}', 'x_{0,3}', 'x_{3,0}', 'x_{3,3}'];
-    expect(labelled(sceneState('patch', { step: 2 }))).toEqual(corners);
-    expect(labelled(sceneState('rows'))).toEqual(corners);
-    expect(labelled(sceneState('c1'))).toEqual([]);
+    expect(named(sceneState('patch', { step: 2 }))).toEqual(corners);
+    expect(names(sceneState('patch', { step: 2 }))).toEqual(corners);
+    expect(named(sceneState('rows'))).toEqual(corners);
+    for (const id of ['flat', 'saddle', 'bump', 'wave', 'twisted'])
+      expect(named(sceneState(id)), id).toEqual(corners);
+    expect(named(sceneState('c1'))).toEqual([]);
+  });
+
+  it('step 0: no name covers another or a point of the net, on a laptop and on the projector', () => {
+    for (const id of SCENES.map((scene) => scene.id)) {
+      const s = sceneState(id);
+      for (const [width, height, projector] of [
+        [540, 700, false],
+        [900, 560, false],
+        [1104, 677, true],
+        [840, 520, true],
+      ] as const) {
+        const where = `${id} at ${width} × ${height}${projector ? ', projector' : ''}`;
+        const { labels, points, radius } = placed(s, width, height, projector);
+        for (let i = 0; i < labels.length; i++)
+          for (let j = i + 1; j < labels.length; j++) {
+            const a = labels[i];
+            const b = labels[j];
+            const w = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
+            const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
+            expect(w > 1 && h > 1, `${where}: “${a.text}” on “${b.text}”`).toBe(false);
+          }
+        for (const b of labels.filter((l) => /^x_/.test(l.text)))
+          points.forEach(([x, y], k) => {
+            const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
+            const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
+            expect(
+              Math.hypot(dx, dy),
+              `${where}: “${b.text}” on point ${k}`,
+            ).toBeGreaterThanOrEqual(radius);
+          });
+      }
+    }
   });
 
   it('gives the second net’s rows y₁ … y₃ handles only in the scene of two patches', () => {
@@ -180,5 +260,122 @@ describe('the control points', () => {
     // A net of 16 fixed points: nothing to add, nothing to delete.
     expect(shellFigure.addPoint).toBeUndefined();
     expect(shellFigure.removeHandle).toBeUndefined();
+  });
+});
+
+describe('each net worth seeing is a scene of its own idea', () => {
+  const presets = ['flat', 'saddle', 'bump', 'wave', 'twisted'];
+  const captions = (id: string) => {
+    const s = sceneState(id);
+    return Array.from({ length: lesson.steps!.count(s) + 1 }, (_, k) =>
+      lesson.steps!.describe({ ...s, step: k }, k),
+    );
+  };
+
+  it('starts where its own idea starts: no two scenes open with the same words', () => {
+    // The two joined pairs share their steps on purpose: the same walk, a crease or not at its end.
+    const own = SCENES.filter((scene) => scene.id !== 'c1');
+    const openings = own.map((scene) => captions(scene.id)[0]);
+    expect(new Set(openings).size).toBe(own.length);
+    const patch = captions('patch');
+    for (const id of presets)
+      for (const caption of captions(id)) expect(patch, id).not.toContain(caption);
+    expect(captions('flat')[0]).toBe('A flat net: all 16 points in the plane z = 0, evenly spaced');
+    expect(captions('twisted')[0]).toMatch(/^Not even the four corners are in one plane/);
+  });
+
+  it('every press changes what is drawn, in every scene', () => {
+    for (const scene of SCENES) {
+      const s = sceneState(scene.id);
+      const count = lesson.steps!.count(s);
+      for (let k = 1; k <= count; k++)
+        expect(drawn({ ...s, step: k }).svg, `${scene.id}: step ${k}`).not.toBe(
+          drawn({ ...s, step: k - 1 }).svg,
+        );
+    }
+  });
+
+  it('opens with its own u, v and look, whatever scene came before', () => {
+    const afterBump = SCENES.find((s) => s.id === 'bump')!.setup(defaults);
+    const afterSaddle = SCENES.find((s) => s.id === 'saddle')!.setup(afterBump);
+    for (const id of ['flat', 'wave', 'twisted']) {
+      const s = SCENES.find((scene) => scene.id === id)!.setup(afterSaddle);
+      expect(s, id).toMatchObject({ u: 0.3, v: 0.6, look: 'shaded', mode: 'patch' });
+    }
+    expect(afterBump).toMatchObject({ u: 0.5, v: 0.5 });
+    expect(afterSaddle).toMatchObject({ look: 'lines', u: 0.3, v: 0.6 });
+  });
+
+  it('is told apart by its net; edited away from it, the net is a patch like any other', () => {
+    for (const id of presets) expect(sceneOf(sceneState(id))).toBe(id);
+    expect(sceneOf(defaults)).toBe('patch');
+    const flat = sceneState('flat', { step: 3 });
+    const lifted = flat.net.map((row, m) =>
+      row.map((p, n) => (m === 1 && n === 1 ? [p[0], p[1], 1] : p)),
+    );
+    const edited = { ...flat, net: lifted };
+    expect(sceneOf(edited)).toBe('patch');
+    expect(derive(edited).shown.name).toBe('edges');
+    // The link says the same: the net is in it.
+    const back = decodeState(schema, encodeState(schema, sceneState('bump', { step: 4 }))).state;
+    expect(sceneOf(back)).toBe('bump');
+    expect(lesson.steps!.describe(back, 4)).toMatch(/^Why: the four inner points/);
+  });
+
+  it('says what is true of its net, in numbers the model agrees with', () => {
+    // Flat: Σ m fm(u) = 3u, so x(u, v) = (3u, 3v, 0).
+    const flat = derive(sceneState('flat', { step: 4 }));
+    expect(flat.point.map((v) => Number(v.toFixed(12)))).toEqual([0.9, 1.8, 0]);
+    expect(flat.normal).toEqual([0, 0, 1]);
+    // Saddle: z = 9(u − ½)(v − ½)/2 = −0.09 at (0.3, 0.6); the iso-curve's control points on a line.
+    const saddle = sceneState('saddle', { step: 5 });
+    expect(derive(saddle).point[2]).toBeCloseTo(-0.09, 14);
+    expect(lesson.steps!.describe(saddle, 5)).toBe(
+      'At x(0.3, 0.6) the height is −0.090: up one way, down the other',
+    );
+    const [c0, c1, , c3] = derive(saddle).columnPoints;
+    const along = (p: readonly number[]) => p.map((v, d) => v - c0[d]);
+    const crossed = cross(along(c1), along(c3));
+    expect(Math.hypot(...crossed)).toBeLessThan(1e-12);
+    // Bump: z = 2(f1 + f2)(u)·(f1 + f2)(v) = 2·(3/4)² = 9/8 at the top.
+    const bump = sceneState('bump', { step: 3 });
+    expect(lesson.steps!.describe(bump, 3)).toBe('At x(0.5, 0.5) it is 1.125 high, not 2');
+    expect(lesson.steps!.formula!(derive(bump), bump)).toMatch(
+      /= 2 \\cdot 0\.7500 \\cdot 0\.7500 = 1\.1250$/,
+    );
+    // Wave: z = 4.5 u(1 − u)(1 − 2u) g(v), g = ½f0 + f1 + f2 + ½f3.
+    const wave = derive(sceneState('wave', { step: 5 }));
+    const [f0, f1, f2, f3] = wave.columnShares;
+    const g = f0 / 2 + f1 + f2 + f3 / 2;
+    expect(wave.point[2]).toBeCloseTo(4.5 * 0.3 * 0.7 * 0.4 * g, 13);
+    // Not planar: the corners span a volume, 33.3 ≠ 0.
+    expect(cornerVolume(sceneState('twisted').net)).toBeCloseTo(33.3, 12);
+    expect(cornerVolume(sceneState('flat').net)).toBe(0);
+  });
+});
+
+describe('the notes', () => {
+  it('where the slides build the curve in u “for 0 ≤ v ≤ 1”, the rows scene says u, and kindly why', () => {
+    const s = sceneState('rows', { step: 3 });
+    expect(lesson.steps!.describe(s, 3)).toBe(
+      'r₀ … r₃ are the control points of a curve in u, 0 ≤ u ≤ 1: the iso-curve v = 0.6',
+    );
+    expect(ROWS_SLIP.written).toMatch(/for 0 ≤ v ≤ 1/);
+    expect(ROWS_SLIP.correct).toMatch(/runs in u, for 0 ≤ u ≤ 1/);
+  });
+
+  it('keys the lesson’s symbols to the notes’', () => {
+    const there = NOTES_SYMBOLS.map(([, notes]) => notes).join(' | ');
+    expect(there).toMatch(/pᵢⱼ in the continuation notes/);
+    expect(there).toMatch(/Bᵢ\(u\) in the continuation notes/);
+  });
+
+  it('names its data after what it shows: the net the construction scenes start from is a leaning hill', () => {
+    expect(defaults.net).toEqual(LEANING_HILL_NET);
+    for (const scene of SCENES) {
+      const s = sceneState(scene.id);
+      for (let k = 0; k <= lesson.steps!.count(s); k++)
+        expect(lesson.steps!.describe({ ...s, step: k }, k)).not.toMatch(/lecture/i);
+    }
   });
 });

@@ -18,7 +18,22 @@ import {
   normalScript,
   weightsScript,
 } from './propertyScripts';
+import {
+  type BumpReveal,
+  type FlatReveal,
+  type SaddleReveal,
+  type TwistedReveal,
+  type WaveReveal,
+  bumpScript,
+  flatScript,
+  saddleScript,
+  twistedScript,
+  waveScript,
+} from './presetScripts';
 import type { SurfaceMode, SurfaceState } from './state';
+
+/** The nets worth seeing, each a scene with steps of its own. */
+export type Preset = 'flat' | 'saddle' | 'bump' | 'wave' | 'twisted';
 
 /** Every name a step of the lesson reveals, over all its scenes. */
 export type Reveal =
@@ -28,11 +43,16 @@ export type Reveal =
   | MatrixReveal
   | WeightsReveal
   | NormalReveal
-  | JoinReveal;
+  | JoinReveal
+  | FlatReveal
+  | SaddleReveal
+  | BumpReveal
+  | WaveReveal
+  | TwistedReveal;
 
 export type SurfaceScript = Script<SurfaceState, SurfaceModel, Reveal>;
 
-/** The steps of each kind of scene (the state's `mode`). */
+/** The steps of each kind of scene (the state's `mode`); the nets worth seeing have their own (PRESET_SCRIPTS). */
 export const SCRIPTS: Readonly<Record<SurfaceMode, SurfaceScript>> = {
   patch: patchScript,
   rows: rowsScript,
@@ -43,5 +63,11 @@ export const SCRIPTS: Readonly<Record<SurfaceMode, SurfaceScript>> = {
   join: joinScript,
 };
 
-/** What the steps so far reveal in this state. */
-export const shownIn = (state: SurfaceState) => SCRIPTS[state.mode].shown(state, state.step);
+/** The steps of the nets worth seeing, each its own idea (mode `patch`, told apart by the net). */
+export const PRESET_SCRIPTS: Readonly<Record<Preset, SurfaceScript>> = {
+  flat: flatScript,
+  saddle: saddleScript,
+  bump: bumpScript,
+  wave: waveScript,
+  twisted: twistedScript,
+};

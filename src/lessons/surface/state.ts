@@ -42,15 +42,18 @@ export const MODES: readonly SurfaceMode[] = [
 export const heights = (z: readonly (readonly number[])[]): Point[][] =>
   z.map((row, m) => row.map((height, n) => [m, n, height]));
 
-/** The lecture's patch: a hill that leans towards one corner, so no two rows are alike. */
-export const LECTURE_NET = heights([
+/**
+ * A hill that leans towards one corner, so no two rows are alike: the net the
+ * construction scenes start from (the notes draw a patch but give no numbers).
+ */
+export const LEANING_HILL_NET = heights([
   [0, 0.5, 0.5, 0],
   [0.5, 2, 1.5, 0.5],
   [0.5, 1.5, 1, 0],
   [0, 0.5, 0, -0.5],
 ]);
 
-/** The second patch of the joined pair, continuing `JOIN_NET` across x = 3 with matching slopes (C¹). */
+/** The first patch of the joined pair: a ridge along x that ends at x = 3, where the second patch goes on. */
 export const JOIN_NET = heights([
   [0, 0, 0, 0],
   [0, 1, 1, 0],
@@ -90,9 +93,9 @@ export const JOIN_NEXT_C1: Point[][] = [
   ],
 ];
 
-/** Whole words in code, the lecture's short keys in the link (in this order). */
+/** Whole words in code, short keys in the link (in this order). */
 export const schema: Schema<SurfaceState> = {
-  net: linkKey(pointGrid({ default: LECTURE_NET, rows: 4, columns: 4, dimension: 3 }), 'x'),
+  net: linkKey(pointGrid({ default: LEANING_HILL_NET, rows: 4, columns: 4, dimension: 3 }), 'x'),
   secondNet: linkKey(pointGrid({ default: JOIN_NEXT_C1, rows: 4, columns: 4, dimension: 3 }), 'y'),
   u: number({ default: 0.3, min: 0, max: 1 }),
   v: number({ default: 0.6, min: 0, max: 1 }),

@@ -1,0 +1,47 @@
+import { notesKey, notesSlip } from '../../kit/notes';
+
+// Where the course notes write the lesson's things another way, or slip.
+
+/** How the lesson's symbols read in the notes: (here, in the notes). */
+export const NOTES_SYMBOLS: readonly (readonly [string, string])[] = [
+  [
+    'x0 … xm: m + 1 control points, m ≥ 3',
+    'the same in the lecture slides (“Example – a cubic B-spline”); p0, p1, … in the continuation notes',
+  ],
+  [
+    'Qi: the segment of x(i−3) … xi, i = 3 … m',
+    'cᵢ in the lecture slides (c3 … cm), each written there as xᵢ(u); P(t) in the continuation notes',
+  ],
+  [
+    'B0(t) … B3(t): the weights of a segment’s four points',
+    'the continuation notes’ uniform cubic B-spline bases, the same four cubics; the columns of the slides’ matrix B',
+  ],
+  [
+    'N(i,p): the basis function of xᵢ over the whole curve',
+    'not named in the notes; the B(k,n) of the “Splines” slides is a Bézier (Bernstein) blending function of degree n, not a B-spline basis function',
+  ],
+  [
+    'knots u0 ≤ u1 ≤ …: parameter values where segments meet',
+    'as in the continuation notes (“knots are equally spaced”); the lecture notes and the “Splines” slides say “knots” for the control points themselves',
+  ],
+  [
+    'degree p, order p + 1 (the cubic: degree 3, order 4)',
+    'as in the continuation notes (“degree is n, and order is n + 1”); the lecture slides and notes say “order” for the degree (“for order 3” of the cubic Bézier matrix)',
+  ],
+  [
+    't: the slider, 0 … 1 along the whole curve; s = (m − 2)·t',
+    'the continuation notes’ t, “changed when t becomes an integer”, is s here',
+  ],
+];
+
+/** The lesson's key to the notes' symbols. */
+export const notesSymbols = () => notesKey(NOTES_SYMBOLS);
+
+/** The slides' closed spline, said kindly beside the lesson's three repeated points. */
+export const CLOSED_SLIP = {
+  written: 'that a closed spline has the same matrix B for all segments and x₀ = xₘ',
+  correct:
+    'The matrix is the same everywhere, but one repeated point does not close the curve: a segment reads four points, so closing it takes three, x(m+1) = x0, x(m+2) = x1 and x(m+3) = x2. With only the last point on the first, the curve’s ends (x0 + 4x1 + x2)/6 and (x(m−2) + 4x(m−1) + xm)/6 do not meet.',
+} as const;
+
+export const closedSlip = () => notesSlip('slides', CLOSED_SLIP.written, CLOSED_SLIP.correct);
