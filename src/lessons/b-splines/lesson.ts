@@ -1,3 +1,4 @@
+import { triangleTables } from './tables';
 import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './curveFigure';
@@ -22,4 +23,5 @@ export default defineLesson({
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.005 },
   scenes: SCENES,
   panel: bsplinePanel,
+  tables: triangleTables,
 });

@@ -1,3 +1,4 @@
+import { netTables } from './tables';
 import { defineLesson } from '../../kit/lesson';
 import { PATCH_WEIGHT, spaceFigure } from './figure';
 import { derive } from './model';
@@ -22,4 +23,5 @@ export default defineLesson({
   parameter: { key: 'u', label: 'u', min: 0, max: 1, step: 0.01 },
   scenes: SCENES,
   panel: surfacePanel,
+  tables: netTables,
 });
