@@ -16,6 +16,9 @@ test.beforeEach(async ({ page }) => {
 });
 
 test('a point is dragged, added and removed, and undo brings each back', async ({ page }) => {
+  // The whole construction (the lesson opens at step 0, #19).
+  await page.goto('./#/de-casteljau?step=5');
+  await expect(figure(page)).toBeVisible();
   await expectHash(page, 'p', (v) => v === '0,0;1,2;3,2;4,0');
   const before = await pixels(page);
   const box = (await page.getByRole('button', { name: /^P1 at \(1\.00, 2\.00\)/ }).boundingBox())!;
@@ -87,6 +90,8 @@ test('the clicker builds the construction from the points up, then opens the nex
 });
 
 test('the slider and the number field move t', async ({ page }) => {
+  await page.goto('./#/de-casteljau?step=5');
+  await expect(figure(page)).toBeVisible();
   const slider = page.getByRole('slider', { name: 't' });
   await slider.focus();
   await page.keyboard.press('ArrowRight');

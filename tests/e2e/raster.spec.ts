@@ -102,6 +102,8 @@ test('the clicker walks every scene from its first step to its last, in presente
   page,
 }) => {
   await page.keyboard.press('p');
+  // The lecturer's controls (Next) are off the projected picture until M.
+  await page.keyboard.press('m');
   const scenes = await page
     .locator('[data-scene]')
     .evaluateAll((buttons) => buttons.map((b) => (b as HTMLElement).dataset.scene!));

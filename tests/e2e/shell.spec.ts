@@ -52,6 +52,8 @@ test('presenter view and the dark theme toggle by key and by button', async ({ p
   await snapshot(page, 'de-casteljau-presenter-dark');
   await page.keyboard.press('d');
   await expect(root).toHaveAttribute('data-theme', 'light');
+  // The presenter's tools are off the projected picture until M (or the corner ☰).
+  await page.getByRole('button', { name: "Lecturer's controls" }).click();
   await page
     .getByRole('toolbar', { name: 'Presenter tools' })
     .getByRole('button', { name: 'Exit' })
@@ -71,13 +73,14 @@ test('the key help opens with ? and closes with Escape', async ({ page }) => {
   await page.keyboard.press('?');
   const dialog = page.getByRole('dialog', { name: 'Keys and gestures' });
   await expect(dialog).toBeVisible();
-  await expect(dialog.getByText(/Presenter view/)).toBeVisible();
+  await expect(dialog.getByText(/^Presenter view: the figure/)).toBeVisible();
   await page.keyboard.press('Escape');
   await expect(dialog).toBeHidden();
 });
 
 test('PNG and SVG export produce real files of the figure', async ({ page }) => {
-  await page.goto('./#/de-casteljau');
+  // The whole construction (the lesson opens at step 0).
+  await page.goto('./#/de-casteljau?step=5');
   const [png] = await Promise.all([
     page.waitForEvent('download'),
     page.getByRole('button', { name: 'PNG' }).click(),

@@ -137,7 +137,7 @@ function drawPatch(
 }
 
 /** The patch's share of the figures' row, against the heat map's 1. */
-export const PATCH_WEIGHT = 1.4;
+export const PATCH_WEIGHT = 1.2;
 
 export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
   id: 'patch',
