@@ -2,6 +2,7 @@ import '../styles.css';
 import { h, setChildren } from './dom';
 import { buildGallery } from './gallery';
 import type { LessonPage } from './lessonPage';
+import type { LessonMeta } from './meta';
 import { loadState } from './lessonState';
 import { findLesson, lessons } from './registry';
 import { parseHash } from './router';
@@ -132,6 +133,26 @@ function showGallery(): void {
   setChildren(main, buildGallery(lessons, settings.dark));
 }
 
+/**
+ * A lesson's code and the chunks its page needs, or null when they could not
+ * be loaded (said in a notice, the gallery shown) or another navigation came first.
+ */
+async function loadFor<T>(
+  token: number,
+  meta: LessonMeta,
+  load: () => Promise<T>,
+): Promise<T | null> {
+  try {
+    const value = await load();
+    return token === routeToken ? value : null;
+  } catch {
+    if (token !== routeToken) return null;
+    notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
+    showGallery();
+    return null;
+  }
+}
+
 async function route(): Promise<void> {
   const token = ++routeToken;
   const { slug: path, query } = parseHash(location.hash);
@@ -168,16 +189,10 @@ async function route(): Promise<void> {
   document.title = `${meta.title} · Spline Lab`;
   setChildren(main, h('p', { class: 'loading', role: 'status' }, `Opening ${meta.title}…`));
   // The lesson's own code and the page shell are chunks of their own, loaded now.
-  let loaded: [Awaited<ReturnType<typeof meta.load>>, typeof import('./lessonPage')];
-  try {
-    loaded = await Promise.all([meta.load(), import('./lessonPage')]);
-  } catch {
-    if (token !== routeToken) return;
-    notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
-    showGallery();
-    return;
-  }
-  if (token !== routeToken) return;
+  const loaded = await loadFor(token, meta, () =>
+    Promise.all([meta.load(), import('./lessonPage')]),
+  );
+  if (!loaded) return;
   const [lesson, { LessonPage }] = loaded;
   let storage: Storage | null = null;
   try {
@@ -212,24 +227,10 @@ async function openHandout(token: number, slug: string, query: string): Promise<
     main,
     h('p', { class: 'loading', role: 'status' }, `Preparing the handout of ${meta.title}…`),
   );
-  let loaded: [
-    Awaited<ReturnType<typeof meta.load>>,
-    typeof import('./handout/handoutPage'),
-    typeof import('./handout/plan'),
-  ];
-  try {
-    loaded = await Promise.all([
-      meta.load(),
-      import('./handout/handoutPage'),
-      import('./handout/plan'),
-    ]);
-  } catch {
-    if (token !== routeToken) return;
-    notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
-    showGallery();
-    return;
-  }
-  if (token !== routeToken) return;
+  const loaded = await loadFor(token, meta, () =>
+    Promise.all([meta.load(), import('./handout/handoutPage'), import('./handout/plan')]),
+  );
+  if (!loaded) return;
   const [lesson, { HandoutPage }, { readOptions }] = loaded;
   const read = readOptions(
     query,
