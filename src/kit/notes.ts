@@ -26,11 +26,15 @@ export function documentName(doc: NotesDocument): string {
  * reads "The practical (TP2) writes the first derivative as d²/dt². The first derivative is d/dt."
  */
 export function notesSlip(doc: NotesDocument, written: string, correct: string): HTMLElement {
+  return h('p', { class: 'notes-aside', role: 'note' }, slipText(doc, written, correct));
+}
+
+/** The words of `notesSlip`: "The lecture notes write …", "The practical (TP2) writes …". */
+export function slipText(doc: NotesDocument, written: string, correct: string): string {
   const name = documentName(doc);
   const lead = name.charAt(0).toUpperCase() + name.slice(1);
-  // "The lecture notes write", "the practical (TP2) writes".
   const verb = doc === 'practical' ? 'writes' : 'write';
-  return h('p', { class: 'notes-aside', role: 'note' }, `${lead} ${verb} ${written}. ${correct}`);
+  return `${lead} ${verb} ${written}. ${correct}`;
 }
 
 /**
