@@ -99,8 +99,10 @@ for (const slug of slugs) {
             const boxes = [...document.querySelectorAll('.stage-figures canvas')]
               .filter((c) => c.checkVisibility())
               .map((c) => c.getBoundingClientRect());
-            const w = Math.max(...boxes.map((b) => b.right)) - Math.min(...boxes.map((b) => b.left));
-            const h = Math.max(...boxes.map((b) => b.bottom)) - Math.min(...boxes.map((b) => b.top));
+            const w =
+              Math.max(...boxes.map((b) => b.right)) - Math.min(...boxes.map((b) => b.left));
+            const h =
+              Math.max(...boxes.map((b) => b.bottom)) - Math.min(...boxes.map((b) => b.top));
             return (w * h) / (window.innerWidth * window.innerHeight);
           });
           if (share < 0.75)

@@ -66,7 +66,6 @@ export const EXPERIMENT_IDS: readonly ExperimentId[] = [
 
 export const MAP_KINDS: readonly MapKind[] = ['rotate', 'scale', 'shear', 'perspective'];
 
-
 export const schema: Schema<PropertiesState> = {
   experiment: linkKey(choice({ default: 'ends', values: EXPERIMENT_IDS }), 'x'),
   points: linkKey(points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }), 'p'),
