@@ -9,6 +9,7 @@ import type { Painter } from '../render/painter';
 import type { Bounds } from '../render/projection';
 import type { Theme } from '../render/theme';
 import type { HistoryOptions } from './history';
+import type { ExerciseSpec } from '../kit/exercise';
 import type { Schema } from './urlState';
 
 export type { Point } from '../math';
@@ -208,6 +209,8 @@ export interface LessonDefinition<S, M = S> {
    * numbers the panel shows, as plain text.
    */
   tables?(model: M, state: S): HandoutTable[];
+  /** The lesson's exercises (see kit/exercise.ts), in the order the practice card lists them. */
+  exercises?: readonly ExerciseSpec<S>[];
 }
 
 /** A table of a handout: a title, column headings, and rows of plain-text cells. */

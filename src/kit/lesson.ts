@@ -18,6 +18,7 @@ import type {
 } from '../app/lesson';
 import type { Schema } from '../app/urlState';
 import type { Point } from '../math';
+import type { ExerciseSpec } from './exercise';
 import type { Painter } from '../render/painter';
 import type { PointList } from './pointList';
 import type { Script, Revealed } from './script';
@@ -85,6 +86,8 @@ export interface KitLessonSpec<S, M extends { state: S }, N extends string> {
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
   /** The tables a handout prints under a scene's last frame (see LessonDefinition.tables). */
   tables?(model: M, state: S): HandoutTable[];
+  /** At least three exercises, written for this lesson's ideas (see exercise.ts). */
+  exercises?: readonly ExerciseSpec<S>[];
 }
 
 /** The shell's lesson from the kit's. */
@@ -134,6 +137,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     figuresShown: (state) => sceneOf(state)?.figures ?? null,
     panel: spec.panel,
     tables: spec.tables,
+    exercises: spec.exercises,
   };
 }
 
