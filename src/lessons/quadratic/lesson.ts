@@ -1,5 +1,6 @@
 import type { Point } from '../../math';
 import { defineLesson } from '../../kit/lesson';
+import { exercises } from './exercises';
 import { quadraticFigure } from './figure';
 import { derive } from './model';
 import { quadraticPanel } from './panel';
@@ -49,4 +50,5 @@ export default defineLesson({
     ]),
   ],
   panel: quadraticPanel,
+  exercises,
 });
