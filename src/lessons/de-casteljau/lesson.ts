@@ -1,5 +1,6 @@
 import type { Point } from '../../math';
 import { defineLesson } from '../../kit/lesson';
+import { exercises } from './exercises';
 import { constructionFigure } from './figure';
 import { derive } from './model';
 import { deCasteljauPanel } from './panel';
@@ -64,4 +65,5 @@ export default defineLesson({
   ],
   panel: deCasteljauPanel,
   tables: constructionTables,
+  exercises,
 });

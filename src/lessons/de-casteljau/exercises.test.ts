@@ -1,0 +1,233 @@
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { defaultsOf } from '../../app/urlState';
+import type { ConstructTask, NumberTask, PointTask, Posed } from '../../kit/exercise';
+import { exercises } from './exercises';
+import lesson from './lesson';
+import type { DeCasteljauModel } from './model';
+import { type DeCasteljauState, schema } from './state';
+
+const defaults = defaultsOf(schema);
+const derive = (s: DeCasteljauState) => lesson.derive(s) as DeCasteljauModel;
+const pose = (id: string, seed: number): Posed<DeCasteljauState> =>
+  exercises.find((e) => e.id === id)!.pose(seed, defaults);
+const numberTask = (posed: Posed<DeCasteljauState>) => posed.task as NumberTask;
+const pointTask = (posed: Posed<DeCasteljauState>) => posed.task as PointTask;
+const constructTask = (posed: Posed<DeCasteljauState>) =>
+  posed.task as ConstructTask<DeCasteljauState>;
+const seeds = fc.integer({ min: 1, max: 999_999 });
+/** One cut of an edge: (1 − t)·a + t·b, written out again so the tests do not lean on src/math. */
+const cut = (a: readonly number[], b: readonly number[], t: number) =>
+  a.map((v, d) => (1 - t) * v + t * b[d]);
+/** Plain words: no TeX, at most two sentences. */
+const plain = (prompt: string) =>
+  !/[\\$]/.test(prompt) && prompt.split(/[.?!](?:\s|$)/).filter((s) => s.trim()).length <= 2;
+
+describe('the de Casteljau exercises', () => {
+  it('are the lesson’s, at least one of each kind', () => {
+    expect(lesson.exercises).toBe(exercises);
+    expect(new Set(exercises.map((e) => e.kind))).toEqual(
+      new Set(['point', 'number', 'construct']),
+    );
+    expect(new Set(exercises.map((e) => e.id)).size).toBe(exercises.length);
+  });
+
+  it('pose the same exercise for the same seed', () => {
+    for (const exercise of exercises)
+      expect(JSON.stringify(exercise.pose(77, defaults))).toBe(
+        JSON.stringify(exercise.pose(77, defaults)),
+      );
+  });
+});
+
+describe('where is P(t)?', () => {
+  it('seed 2: P(0.75) of (0, 0), (0, 3), (5, 3), (5, 0) is (4.21875, 1.6875), worked by hand', () => {
+    const posed = pose('where-is-p', 2);
+    expect(posed.state.p).toEqual([
+      [0, 0],
+      [0, 3],
+      [5, 3],
+      [5, 0],
+    ]);
+    expect(posed.state.t).toBe(0.75);
+    expect(posed.prompt).toContain('P(0.75)');
+    // Weights at 0.75: (1/4)³ = 1/64, 3·(3/4)(1/4)² = 9/64, 3·(3/4)²(1/4) = 27/64, (3/4)³ = 27/64.
+    // x = (27·5 + 27·5)/64 = 270/64 = 4.21875; y = (9·3 + 27·3)/64 = 108/64 = 1.6875.
+    const task = pointTask(posed);
+    expect(task.figure).toBe('construction');
+    expect(task.answer[0]).toBeCloseTo(4.21875, 12);
+    expect(task.answer[1]).toBeCloseTo(1.6875, 12);
+    expect(task.check([4.2, 1.7]).correct).toBe(true);
+    const far = task.check([3, 2.5]);
+    expect(far.correct).toBe(false);
+    expect(far.message).toContain('Level 1 cuts every edge at t = 0.75');
+  });
+
+  it('opens at the polygon (no level, no curve), and its working ends on P(t)', () => {
+    const posed = pose('where-is-p', 2);
+    const shown = derive(posed.state).shown;
+    expect(shown.count('level')).toBe(0);
+    expect(shown.has('curve')).toBe(false);
+    expect(shown.has('polygon')).toBe(true);
+    const working = derive(posed.working);
+    expect(working.shown.last).toBe(true);
+    expect(working.levels[3][0][0]).toBeCloseTo(4.21875, 12);
+  });
+
+  it('every seed: the answer is inside the polygon’s box, right within the tolerance, wrong at 3×', () =>
+    fc.assert(
+      fc.property(seeds, fc.double({ min: 0, max: 2 * Math.PI, noNaN: true }), (seed, angle) => {
+        const posed = pose('where-is-p', seed);
+        const task = pointTask(posed);
+        const xs = posed.state.p.map((q) => q[0]);
+        const ys = posed.state.p.map((q) => q[1]);
+        expect(task.answer[0]).toBeGreaterThanOrEqual(Math.min(...xs));
+        expect(task.answer[0]).toBeLessThanOrEqual(Math.max(...xs));
+        expect(task.answer[1]).toBeGreaterThanOrEqual(Math.min(...ys));
+        expect(task.answer[1]).toBeLessThanOrEqual(Math.max(...ys));
+        expect(task.check(task.answer).correct).toBe(true);
+        const away = [0, 1].map(
+          (d) =>
+            task.answer[d] + 3 * task.tolerance * (d === 0 ? Math.cos(angle) : Math.sin(angle)),
+        );
+        expect(task.check(away).correct).toBe(false);
+        expect(derive(posed.state).shown.count('level')).toBe(0);
+        expect(plain(posed.prompt)).toBe(true);
+      }),
+      { numRuns: 300 },
+    ));
+});
+
+describe('a point of the construction', () => {
+  it('seed 2: P₂,₀ at t = 0.3 is (0.36, 1.69), worked by hand', () => {
+    const posed = pose('level-point', 2);
+    expect(posed.prompt).toBe(
+      'For P₀ = (0, 1), P₁ = (0, 2), P₂ = (4, 4), P₃ = (6, 0) and t = 0.3, compute the de Casteljau point P₂,₀ (x and y, to 2 decimals).',
+    );
+    // Level 1: P₁,₀ = 0.7·(0, 1) + 0.3·(0, 2) = (0, 1.3); P₁,₁ = 0.7·(0, 2) + 0.3·(4, 4) = (1.2, 2.6).
+    // Level 2: P₂,₀ = 0.7·(0, 1.3) + 0.3·(1.2, 2.6) = (0.36, 0.91 + 0.78) = (0.36, 1.69).
+    const task = numberTask(posed);
+    expect(task.tolerance).toBe(0.01);
+    expect(task.answer[0]).toBeCloseTo(0.36, 12);
+    expect(task.answer[1]).toBeCloseTo(1.69, 12);
+    expect(task.check([0.36, 1.69])).toEqual({ correct: true, message: 'Correct.' });
+    expect(task.check([0.4, 1.7]).correct).toBe(false);
+    // t and 1 − t swapped: P₁,₀ = 0.3·(0, 1) + 0.7·(0, 2) = (0, 1.7), P₁,₁ = 0.3·(0, 2) + 0.7·(4, 4) = (2.8, 3.4),
+    // P₂,₀ = 0.3·(0, 1.7) + 0.7·(2.8, 3.4) = (1.96, 2.89).
+    expect(task.check([1.96, 2.89]).message).toContain('you swapped t and 1 − t');
+    // Stopped a level early: P₁,₁ = (1.2, 2.6).
+    expect(task.check([1.2, 2.6]).message).toContain('That is P₁,₁, a point of level 1');
+    // Cut in the middle: P₁,₀ = (0, 1.5), P₁,₁ = (2, 3), P₂,₀ = (1, 2.25).
+    expect(task.check([1, 2.25]).message).toContain('cuts every edge in the middle');
+    expect(task.check([Number.NaN, 1]).message).toBe('Type every number.');
+  });
+
+  it('a neighbour on the same level gets its own hint', () => {
+    // Seed 1: P₂,₁ of (0, 1), (0, 3), (5, 4), (5, 1) at t = 0.7. Its neighbour P₂,₀:
+    // P₁,₀ = (0, 2.4), P₁,₁ = (3.5, 3.7), P₂,₀ = 0.3·(0, 2.4) + 0.7·(3.5, 3.7) = (2.45, 3.31).
+    const task = numberTask(pose('level-point', 1));
+    expect(task.check([2.45, 3.31]).message).toContain('That is P₂,₀, its neighbour on level 2');
+  });
+
+  it('opens at the polygon, and its working walks every level', () => {
+    const posed = pose('level-point', 2);
+    expect(derive(posed.state).shown.count('level')).toBe(0);
+    const working = derive(posed.working);
+    expect(working.shown.count('level')).toBe(3);
+    expect(working.levels[2][0][1]).toBeCloseTo(1.69, 12);
+  });
+
+  it('every seed: a finite answer the checker takes, one level cut by hand agreeing', () =>
+    fc.assert(
+      fc.property(seeds, (seed) => {
+        const posed = pose('level-point', seed);
+        const task = numberTask(posed);
+        expect(task.answer.every(Number.isFinite)).toBe(true);
+        expect(task.check(task.answer).correct).toBe(true);
+        expect(task.check(task.answer.map((v) => v + 3 * task.tolerance)).correct).toBe(false);
+        // The named point, cut level by level from the posed points.
+        const [, r, i] = /P([₁₂]),([₀₁₂])/.exec(posed.prompt)!.map((c) => '₀₁₂'.indexOf(c));
+        let level = posed.state.p;
+        for (let k = 0; k < r; k++)
+          level = level.slice(1).map((q, j) => cut(level[j], q, posed.state.t));
+        expect(task.answer[0]).toBeCloseTo(level[i][0], 10);
+        expect(task.answer[1]).toBeCloseTo(level[i][1], 10);
+        expect(plain(posed.prompt)).toBe(true);
+      }),
+      { numRuns: 300 },
+    ));
+});
+
+describe('make the curve pass through X', () => {
+  it('seed 5: P₂ = (5.8667, 2.1333) puts P(0.5) on X = (3.7, 1.8), worked by hand', () => {
+    const posed = pose('through-point', 5);
+    expect(posed.prompt).toBe(
+      'Move only P₂ so that the curve passes through X = (3.7, 1.8) at t = 0.5, within 0.08.',
+    );
+    expect(posed.state.p).toEqual([
+      [0, 1],
+      [2, 2],
+      [4, 2],
+      [6, 1],
+    ]);
+    // Now P(0.5) = (P₀ + 3P₁ + 3P₂ + P₃)/8 = ((0 + 6 + 12 + 6)/8, (1 + 6 + 6 + 1)/8) = (3, 1.75).
+    // X − P(0.5) = (0.7, 0.05), and P(0.5) follows P₂ by W(3, 2, 0.5) = 3/8:
+    // P₂ moves by (0.7, 0.05)·8/3 = (1.8667, 0.1333), to (5.8667, 2.1333).
+    const task = constructTask(posed);
+    const moved = task.solution.p[2];
+    expect(moved[0]).toBeCloseTo(4 + (0.7 * 8) / 3, 10);
+    expect(moved[1]).toBeCloseTo(2 + (0.05 * 8) / 3, 10);
+    expect(task.check(task.solution).correct).toBe(true);
+    const before = task.check(posed.state);
+    expect(before.correct).toBe(false);
+    expect(before.message).toContain('P(0.5) is at (3, 1.75), 0.702 from X = (3.7, 1.8)');
+    expect(before.message).toContain('move P₂ by about (1.867, 0.133)');
+  });
+
+  it('says what else is off: another point moved, a point added', () => {
+    const posed = pose('through-point', 5);
+    const task = constructTask(posed);
+    const shifted = task.solution.p.map((q, i) => (i === 1 ? [q[0], q[1] + 1] : q));
+    expect(task.check({ ...task.solution, p: shifted }).message).toBe(
+      'Move only P₂: P₁ belongs at (2, 2).',
+    );
+    expect(task.check({ ...task.solution, p: [...task.solution.p, [7, 0]] }).message).toContain(
+      'Keep the four control points',
+    );
+    // The slider is not the question: P(0.5) is checked whatever t shows.
+    expect(task.check({ ...task.solution, t: 0.2 }).correct).toBe(true);
+    // Half-way there is not there: P(0.5) is 0.35 from X.
+    const half = posed.state.p.map((q, i) => (i === 2 ? [q[0] + 0.9333, q[1] + 0.0667] : q));
+    expect(task.check({ ...posed.state, p: half }).correct).toBe(false);
+  });
+
+  it('opens with the whole construction shown, and the solution is in reach of a finger', () => {
+    const posed = pose('through-point', 5);
+    expect(derive(posed.state).shown.last).toBe(true);
+    const task = constructTask(posed);
+    // 0.08 is 1.3% of the polygon's 6 units; P₂ may be off by 0.08/W(3, 2, 0.5) = 0.21 either way.
+    const near = task.solution.p.map((q, i) => (i === 2 ? [q[0] + 0.15, q[1] - 0.1] : q));
+    expect(task.check({ ...task.solution, p: near }).correct).toBe(true);
+  });
+
+  it('every seed: the solution passes, the posed state does not, the point moved stays near the figure', () =>
+    fc.assert(
+      fc.property(seeds, (seed) => {
+        const posed = pose('through-point', seed);
+        const task = constructTask(posed);
+        expect(task.check(task.solution).correct).toBe(true);
+        expect(task.check(posed.state).correct).toBe(false);
+        const xs = posed.state.p.map((q) => q[0]);
+        const ys = posed.state.p.map((q) => q[1]);
+        for (const q of task.solution.p) {
+          expect(q[0]).toBeGreaterThanOrEqual(Math.min(...xs) - 0.3);
+          expect(q[0]).toBeLessThanOrEqual(Math.max(...xs) + 0.3);
+          expect(q[1]).toBeGreaterThanOrEqual(Math.min(...ys) - 0.3);
+          expect(q[1]).toBeLessThanOrEqual(Math.max(...ys) + 0.3);
+        }
+        expect(posed.working).toEqual(task.solution);
+        expect(plain(posed.prompt)).toBe(true);
+      }),
+      { numRuns: 300 },
+    ));
+});
