@@ -1,6 +1,7 @@
 import type { Point } from '../../math';
 import { defineLesson } from '../../kit/lesson';
 import { curveFigure } from './curveFigure';
+import { exercises } from './exercises';
 import { derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
@@ -101,4 +102,5 @@ export default defineLesson({
     },
   ],
   panel: blendingPanel,
+  exercises,
 });
