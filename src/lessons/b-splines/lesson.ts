@@ -3,6 +3,7 @@ import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
 import { curveFigure } from './curveFigure';
 import { knotFigure } from './knotFigure';
+import { exercises } from './exercises';
 import { derive } from './model';
 import { bsplinePanel } from './panel';
 import { SCENES } from './scenes';
@@ -24,4 +25,5 @@ export default defineLesson({
   scenes: SCENES,
   panel: bsplinePanel,
   tables: triangleTables,
+  exercises,
 });
