@@ -1,4 +1,5 @@
 import { defineLesson } from '../../kit/lesson';
+import { exercises } from './exercises';
 import { propertiesFigure } from './figure';
 import { derive } from './model';
 import { propertiesPanel } from './panel';
@@ -17,4 +18,5 @@ export default defineLesson({
   scenes: SCENES,
   normalize,
   panel: propertiesPanel,
+  exercises,
 });
