@@ -1,6 +1,7 @@
 import type { Point } from '../../math';
 import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
+import { exercises } from './exercises';
 import { curveFigure } from './figure';
 import { derive } from './model';
 import { lagrangePanel } from './panel';
@@ -66,4 +67,5 @@ export default defineLesson({
     ),
   ],
   panel: lagrangePanel,
+  exercises,
 });

@@ -1,5 +1,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
+import data from '../../../tests/e2e/practice/quadratic';
+import type { PracticeCase } from '../../../tests/e2e/practice/types';
 import { defaultsOf } from '../../app/urlState';
 import { type ExerciseSpec, MAX_SEED, type Posed } from '../../kit/exercise';
 import { degenerate } from '../../kit/degenerate';
@@ -21,6 +23,7 @@ const inside = (p: Point, b: Bounds, e = 1e-9) =>
   p[0] >= b.minX - e && p[0] <= b.maxX + e && p[1] >= b.minY - e && p[1] <= b.maxY + e;
 const closeTo = (actual: readonly number[], expected: readonly number[]) =>
   expected.forEach((v, d) => expect(actual[d]).toBeCloseTo(v, 9));
+const practice: readonly PracticeCase[] = data;
 const seeds = fc.integer({ min: 1, max: MAX_SEED });
 /** Sentences end in '.', '?' or '!' before a space or the end (0.5 is no end). */
 const sentences = (text: string) => text.match(/[.?!](?=\s|$)/g)?.length ?? 0;
@@ -130,6 +133,30 @@ describe('the quadratic lesson’s exercises', () => {
     );
     // The posed figure draws the curve and its dots, with the dot at μ = 0.7 off the target.
     expect(derive(posed.state).shown.name).toBe('ticks');
+  });
+
+  it('agrees with the browser test’s practice data, dragging the handles it names', () => {
+    for (const { id, seed, prompt, answer } of practice) {
+      const posed = pose(id, seed);
+      for (const text of prompt) expect(posed.prompt).toContain(text);
+      const { task } = posed;
+      if ('point' in answer && task.kind === 'point') {
+        expect(task.check(answer.point).correct).toBe(true);
+      } else if ('numbers' in answer && task.kind === 'number') {
+        expect(task.check(answer.numbers).correct).toBe(true);
+        expect(task.check(answer.wrong).correct).toBe(false);
+      } else if ('moves' in answer && task.kind === 'construct') {
+        const end = answer.moves.reduce((s: QuadraticState, { figure, handle, to }) => {
+          const spec = lesson.figures.find((f) => f.id === figure)!;
+          expect(spec.handles!(derive(s)).map((h) => h.id)).toContain(handle);
+          return spec.moveHandle!(s, handle, [...to], derive(s));
+        }, posed.state);
+        expect(task.check(end).correct).toBe(true);
+      } else {
+        throw new Error(`${id}: the answer's kind is not the task's (${task.kind})`);
+      }
+    }
+    expect(new Set(practice.map((c) => c.id))).toEqual(new Set(exercises.map((e) => e.id)));
   });
 
   it('poses the same exercise for the same seed', () => {
