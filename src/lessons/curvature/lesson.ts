@@ -1,5 +1,6 @@
 import { defineLesson } from '../../kit/lesson';
 import { curveFigure } from './curveFigure';
+import { exercises } from './exercises';
 import { derive } from './model';
 import { curvaturePanel } from './panel';
 import { plotFigure } from './plotFigure';
@@ -39,4 +40,5 @@ export default defineLesson({
   scenes: SCENES,
   normalize,
   panel: curvaturePanel,
+  exercises,
 });
