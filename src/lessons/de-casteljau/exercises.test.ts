@@ -158,6 +158,65 @@ describe('a point of the construction', () => {
     ));
 });
 
+describe('split the curve in two', () => {
+  it('seed 2: the right half at t = 0.3 runs P₃,₀, P₂,₁, …; its second point P₂,₁ = (2.22, 2.66), worked by hand', () => {
+    const posed = pose('split-half', 2);
+    expect(posed.prompt).toBe(
+      'Split the curve of P₀ = (0, 1), P₁ = (0, 2), P₂ = (4, 4), P₃ = (6, 0) at t = 0.3: what is the second control point of the right half, from P(t) to P₃? Give x and y to 2 decimals.',
+    );
+    // Level 1: P₁,₀ = (0, 1.3), P₁,₁ = (1.2, 2.6), P₁,₂ = 0.7·(4, 4) + 0.3·(6, 0) = (4.6, 2.8).
+    // Level 2: P₂,₁ = 0.7·(1.2, 2.6) + 0.3·(4.6, 2.8) = (0.84 + 1.38, 1.82 + 0.84) = (2.22, 2.66).
+    const task = numberTask(posed);
+    expect(task.answer[0]).toBeCloseTo(2.22, 12);
+    expect(task.answer[1]).toBeCloseTo(2.66, 12);
+    expect(task.check([2.22, 2.66]).correct).toBe(true);
+    expect(task.check([2.3, 2.66]).correct).toBe(false);
+    // The left half's second point, P₁,₀.
+    expect(task.check([0, 1.3]).message).toContain('That is the second point of the left half');
+    // Counted from P₃: P₁,₂.
+    expect(task.check([4.6, 2.8]).message).toContain('That counts from the wrong end');
+    // P₁ itself.
+    expect(task.check([0, 2]).message).toContain('That is P₁ itself');
+    // t and 1 − t swapped: P₁,₁ = (2.8, 3.4), P₁,₂ = (5.4, 1.2), P₂,₁ = 0.3·(2.8, 3.4) + 0.7·(5.4, 1.2) = (4.62, 1.86).
+    expect(task.check([4.62, 1.86]).message).toContain('you swapped t and 1 − t');
+    expect(task.check([1, 1]).message).toContain('this one is P₂,₁, a point of level 2');
+  });
+
+  it('opens at the polygon unsplit; its working shows the two halves', () => {
+    const posed = pose('split-half', 2);
+    expect(posed.state.split).toBe(false);
+    expect(derive(posed.state).shown.count('level')).toBe(0);
+    const working = derive(posed.working);
+    expect(posed.working.split).toBe(true);
+    expect(working.shown.last).toBe(true);
+    expect(working.right[1][0]).toBeCloseTo(2.22, 12);
+  });
+
+  it('every seed: the point is the level’s first (left) or last (right) point, cut again by hand', () =>
+    fc.assert(
+      fc.property(seeds, (seed) => {
+        const posed = pose('split-half', seed);
+        const task = numberTask(posed);
+        const j = posed.prompt.includes('second control point') ? 1 : 2;
+        const right = posed.prompt.includes('right half');
+        let level = posed.state.p;
+        const levels = [level];
+        while (level.length > 1) {
+          level = level.slice(1).map((q, k) => cut(level[k], q, posed.state.t));
+          levels.push(level);
+        }
+        // Left: the first point of level j; right: the last point of level 3 − j.
+        const expected = right ? levels[3 - j][j] : levels[j][0];
+        expect(task.answer[0]).toBeCloseTo(expected[0], 10);
+        expect(task.answer[1]).toBeCloseTo(expected[1], 10);
+        expect(task.check(task.answer).correct).toBe(true);
+        expect(task.check(task.answer.map((v) => v - 3 * task.tolerance)).correct).toBe(false);
+        expect(plain(posed.prompt)).toBe(true);
+      }),
+      { numRuns: 300 },
+    ));
+});
+
 describe('make the curve pass through X', () => {
   it('seed 5: P₂ = (5.8667, 2.1333) puts P(0.5) on X = (3.7, 1.8), worked by hand', () => {
     const posed = pose('through-point', 5);

@@ -42,6 +42,16 @@ export default [
     answer: { numbers: [0.36, 1.69], wrong: [1.96, 2.89] },
   },
   {
+    // Split at t = 0.3; the right half runs P₃,₀, P₂,₁, P₁,₂, P₃, so its second point is P₂,₁.
+    // Level 1: P₁,₁ = 0.7·(0, 2) + 0.3·(4, 4) = (1.2, 2.6), P₁,₂ = 0.7·(4, 4) + 0.3·(6, 0) = (4.6, 2.8).
+    // Level 2: P₂,₁ = 0.7·(1.2, 2.6) + 0.3·(4.6, 2.8) = (2.22, 2.66).
+    // Wrong: P₁ itself, (0, 2).
+    id: 'split-half',
+    seed: 2,
+    prompt: ['at t = 0.3', 'second control point of the right half', 'to 2 decimals'],
+    answer: { numbers: [2.22, 2.66], wrong: [0, 2] },
+  },
+  {
     // P0 = (0, 1), P1 = (2, 2), P2 = (4, 2), P3 = (6, 1): P(0.5) = (P0 + 3P1 + 3P2 + P3)/8 = (3, 1.75).
     // X = (3.7, 1.8) is (0.7, 0.05) away, and P(0.5) moves by W(3, 2, 0.5) = 3/8 of P2's move:
     // P2 goes to (4 + 0.7·8/3, 2 + 0.05·8/3) = (5.8667, 2.1333).
