@@ -1,6 +1,7 @@
 import { netTables } from './tables';
 import { defineLesson } from '../../kit/lesson';
 import { PATCH_WEIGHT, spaceFigure } from './figure';
+import { exercises } from './exercises';
 import { derive } from './model';
 import { surfacePanel } from './panel';
 import { SCENES, sceneOf } from './scenes';
@@ -24,4 +25,5 @@ export default defineLesson({
   scenes: SCENES,
   panel: surfacePanel,
   tables: netTables,
+  exercises,
 });
