@@ -1,6 +1,7 @@
 import type { Point } from '../../math';
 import { defineLesson } from '../../kit/lesson';
 import { basisFigure } from './basisFigure';
+import { exercises } from './exercises';
 import { curveFigure } from './figure';
 import { derive } from './model';
 import { hermitePanel } from './panel';
@@ -80,4 +81,5 @@ export default defineLesson({
     scene('bezier', 'As a Bézier curve', ONE_PATCH, ONE_PATCH_GRADIENTS, { bezier: true }),
   ],
   panel: hermitePanel,
+  exercises,
 });

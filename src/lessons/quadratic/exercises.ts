@@ -182,7 +182,7 @@ const steer: ExerciseSpec<QuadraticState> = {
         ? { correct: true, message: `Correct: ${there}.` }
         : {
             correct: false,
-            message: `${there}. It moves ${words(weight)} times as far as P₁ does (P₁'s weight at μ = ${mu}).`,
+            message: `${there}. It moves ${words(weight)} times as far as P₁ does (P₁’s weight at μ = ${mu}).`,
           };
     };
     const solution = { ...state, points: goal };
