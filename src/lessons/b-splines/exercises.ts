@@ -238,7 +238,7 @@ const throughPoint: ExerciseSpec<BSplineState> = {
           }
         : {
             correct: false,
-            message: `Not yet: the curve comes within ${words(gap)} of ${name(k)} (at u = ${words(at)}), more than ${tolerance}. A knot repeated p = 3 times makes the curve pass through a control point: stack three of the knots where N(${k},3) lives, u${k} … u${k + 4}.`,
+            message: `Not yet: the curve comes within ${words(gap)} of ${name(k)} (at u = ${words(at)}), more than ${tolerance}. A knot repeated p = 3 times makes the curve pass through a control point: stack the three knots strictly inside the span of N(${k},3), between u${k} and u${k + 4}.`,
           };
     };
     return {
