@@ -1,4 +1,5 @@
 import { sweepTables } from './tables';
+import { exercises } from './exercises';
 import type { FigureSpec } from '../../app/lesson';
 import { defineLesson } from '../../kit/lesson';
 import { mapFigure } from './figure';
@@ -19,6 +20,7 @@ const lesson = defineLesson({
   scenes,
   panel: roadPanel,
   tables: sweepTables,
+  exercises,
 });
 
 /**
