@@ -170,6 +170,92 @@ describe('a point of the closed curve', () => {
     ));
 });
 
+describe('close the curve without a corner', () => {
+  it('seed 5: P₁ from (5, 2) to (5, 0) makes P′(0) = 4(P₁ − P₀) equal P′(1) = 4(P₀ − P₃) = (8, 0)', () => {
+    const posed = pose('closed-smooth', 5);
+    expect(posed.prompt).toBe(
+      'Move only P₁ so that the closed curve is C¹ at P₀ = P₄: it leaves P₀ with the very velocity it arrives with, P′(0) = P′(1), within 0.4.',
+    );
+    expect(posed.state.points).toEqual([
+      [3, 0],
+      [5, 2],
+      [2, 4],
+      [1, 0],
+    ]);
+    const task = constructTask(posed);
+    // Posed: P′(0) = 4·((5, 2) − (3, 0)) = (8, 8), P′(1) = 4·((3, 0) − (1, 0)) = (8, 0): 45° apart.
+    expect(task.check(posed.state)).toEqual({
+      correct: false,
+      message:
+        'Not yet: P′(0) = (8, 8) and P′(1) = (8, 0) meet at a corner of 45.0°; C¹ at P₀ needs P₁ − P₀ = P₀ − P₃.',
+    });
+    // P₁ = 2P₀ − P₃ = (5, 0).
+    expect(task.solution.points[1]).toEqual([5, 0]);
+    expect(task.check(task.solution)).toEqual({
+      correct: true,
+      message: 'Correct: P′(0) = (8, 0) and P′(1) = (8, 0), so the curve is C¹ at P₀.',
+    });
+    const withP1 = (p1: number[]) => ({
+      ...posed.state,
+      points: posed.state.points.map((q, i) => (i === 1 ? p1 : q)),
+    });
+    // In line but too far: P′(0) = (12, 0), smooth to the eye (G¹) and not C¹.
+    expect(task.check(withP1([6, 0])).message).toContain('point the same way (smooth to the eye)');
+    // 4·0.09 = 0.36 is within 0.4; 4·0.11 = 0.44 is not.
+    expect(task.check(withP1([5.09, 0])).correct).toBe(true);
+    expect(task.check(withP1([5, 0.11])).correct).toBe(false);
+    expect(
+      task.check({
+        ...task.solution,
+        points: task.solution.points.map((q, i) => (i === 3 ? [1, 1] : q)),
+      }).message,
+    ).toBe('Move only P₁: P₃ belongs at (1, 0).');
+    expect(task.check({ ...task.solution, points: task.solution.points.slice(0, 3) }).message).toBe(
+      'Keep the 4 control points P₀ … P₃ (there are 3 now).',
+    );
+  });
+
+  it('opens on the whole experiment, the corner shown; the working is smooth', () => {
+    const posed = pose('closed-smooth', 5);
+    settled(posed.state);
+    const m = modelOf('closed', posed.state);
+    expect(m.shown.has('tangents')).toBe(true);
+    expect(m.smooth).toBe(false);
+    expect(modelOf('closed', posed.working).smooth).toBe(true);
+  });
+
+  it('every seed: the mirror of the last point through P₀ passes, inside the figure; the posed P₁ does not', () =>
+    fc.assert(
+      fc.property(seeds, fc.double({ min: 0, max: 2 * Math.PI, noNaN: true }), (seed, angle) => {
+        const posed = pose('closed-smooth', seed);
+        const task = constructTask(posed);
+        const [p0, , , last] = posed.state.points;
+        // P₁ − P₀ = P₀ − P₃.
+        expect(task.solution.points[1]).toEqual([2 * p0[0] - last[0], 2 * p0[1] - last[1]]);
+        expect(task.check(task.solution).correct).toBe(true);
+        expect(task.check(posed.state).correct).toBe(false);
+        const [x, y] = task.solution.points[1];
+        const slipped = (by: number) => ({
+          ...task.solution,
+          points: task.solution.points.map((q, i) =>
+            i === 1 ? [x + by * Math.cos(angle), y + by * Math.sin(angle)] : q,
+          ),
+        });
+        // A finger's 0.09 off still passes (1.5% of the figure); 0.3 off does not.
+        expect(task.check(slipped(0.09)).correct).toBe(true);
+        expect(task.check(slipped(0.3)).correct).toBe(false);
+        for (const d of [0, 1]) {
+          const values = posed.state.points.map((q) => q[d]);
+          expect(task.solution.points[1][d]).toBeGreaterThanOrEqual(Math.min(...values));
+          expect(task.solution.points[1][d]).toBeLessThanOrEqual(Math.max(...values));
+        }
+        settled(posed.state);
+        expect(plain(posed.prompt)).toBe(true);
+      }),
+      { numRuns: 300 },
+    ));
+});
+
 describe('make the cubic turn both ways', () => {
   it('seed 4: P₂ from (3, 2) to (2, 1) gives an inflection at t = √0.4 = 0.63, worked by hand', () => {
     const posed = pose('inflection', 4);

@@ -11,11 +11,13 @@ import {
   type Point,
   bernstein,
   bernsteinBasis,
+  bezierDerivative,
   bezierPoint,
   binomial,
   cubicInflections,
   cubicSelfIntersection,
   distance,
+  signedAngle,
 } from '../../math';
 import { SCRIPTS } from './scripts';
 import { type ExperimentId, type PropertiesState, copy } from './state';
@@ -153,6 +155,70 @@ const closedPoint: ExerciseSpec<PropertiesState> = {
   },
 };
 
+/** How far P′(0) and P′(1) may differ: N times a tenth of a unit of P₁'s position. */
+const C1_SLACK = 0.1;
+
+/**
+ * Property 4 again: the closed curve is smooth at P₀ only if it arrives as it
+ * leaves. Move P₁ until P′(0) = N(P₁ − P₀) equals P′(1) = N(P₀ − Pₙ₋₁): C¹.
+ */
+const closedSmooth: ExerciseSpec<PropertiesState> = {
+  id: 'closed-smooth',
+  title: 'Close the curve without a corner',
+  kind: 'construct',
+  pose(seed, defaults) {
+    const r = random(seed);
+    // P₀ at the bottom, the last point level with it on the left: P₁ belongs level on the right.
+    const p0: Point = [r.int(2, 3), 0];
+    const last: Point = [r.int(0, 1), 0];
+    const mirror: Point = [2 * p0[0] - last[0], 0];
+    const points: Point[] = [
+      p0,
+      [mirror[0] + r.int(0, 1), r.int(1, 2)],
+      [r.int(2, 4), r.int(3, 4)],
+      last,
+    ];
+    const n = points.length;
+    const tolerance = n * C1_SLACK;
+    const check = (s: PropertiesState): Verdict => {
+      if (s.points.length !== n)
+        return {
+          correct: false,
+          message: `Keep the ${n} control points P₀ … P${sub(n - 1)} (there are ${s.points.length} now).`,
+        };
+      const strayed = s.points.findIndex((q, i) => i !== 1 && distance(q, points[i]) > 1e-9);
+      if (strayed >= 0)
+        return {
+          correct: false,
+          message: `Move only P₁: P${sub(strayed)} belongs at ${pointText(points[strayed])}.`,
+        };
+      const hodograph = bezierDerivative([...s.points, s.points[0]]);
+      const leaving = hodograph[0];
+      const arriving = hodograph[hodograph.length - 1];
+      const tangents = `P′(0) = ${pointText(leaving)} and P′(1) = ${pointText(arriving)}`;
+      if (distance(leaving, arriving) <= tolerance)
+        return { correct: true, message: `Correct: ${tangents}, so the curve is C¹ at P₀.` };
+      const corner = Math.abs((signedAngle(arriving, leaving) * 180) / Math.PI);
+      const need = `C¹ at P₀ needs P₁ − P₀ = P₀ − P${sub(n - 1)}`;
+      return {
+        correct: false,
+        message:
+          corner < 1
+            ? `Not yet: ${tangents} point the same way (smooth to the eye), but their lengths differ; ${need}.`
+            : `Not yet: ${tangents} meet at a corner of ${corner.toFixed(1)}°; ${need}.`,
+      };
+    };
+    const state = opened(defaults, 'closed', { points }, 'last');
+    const solution = { ...state, points: points.map((q, i) => (i === 1 ? mirror : q)) };
+    return {
+      state,
+      prompt: `Move only P₁ so that the closed curve is C¹ at P₀ = P${sub(n)}: it leaves P₀ with the very velocity it arrives with, P′(0) = P′(1), within ${words(tolerance)}.`,
+      task: { kind: 'construct', check, solution },
+      working: solution,
+    };
+  },
+};
+
 /** An inflection this close to an end of the curve is too small to see. */
 const END_MARGIN = 0.05;
 /** A solution still holds this far away in every direction: a finger's slip does not undo it. */
@@ -272,5 +338,6 @@ const inflection: ExerciseSpec<PropertiesState> = {
 export const exercises: readonly ExerciseSpec<PropertiesState>[] = [
   localMove,
   closedPoint,
+  closedSmooth,
   inflection,
 ];

@@ -19,6 +19,14 @@ export default [
     answer: { point: [2.25, 2.25] },
   },
   {
+    // (3, 0), (5, 2), (2, 4), (1, 0), closed by P4 = P0: P′(0) = 4(P1 − P0) = (8, 8), P′(1) = 4(P0 − P3) = (8, 0).
+    // C¹ needs P1 − P0 = P0 − P3 = (2, 0): P1 = (5, 0), and then both are (8, 0).
+    id: 'closed-smooth',
+    seed: 5,
+    prompt: ['Move only P₁', 'C¹ at P₀ = P₄', 'within 0.4'],
+    answer: { moves: [{ figure: 'experiment', handle: 'p1', to: [5, 0] }] },
+  },
+  {
     // P0 = (0, 1), P1 = (0, 3), P2 = (3, 2), P3 = (6, 0) turns one way only. With P2 at (2, 1):
     // a1 = 3(P1 − P0) = (0, 6), a2 = 3(P2 − 2P1 + P0) = (6, −12), a3 = P3 − 3P2 + 3P1 − P0 = (0, 5),
     // and P′ × P″ = 2(a1×a2) + 6(a1×a3)t + 6(a2×a3)t² = −72 + 180t² changes sign at t = √0.4 = 0.63.
