@@ -1,4 +1,5 @@
 import { defineLesson } from '../../kit/lesson';
+import { exercises } from './exercises';
 import { mainFigure } from './figure';
 import { gridFigures, gridLayout } from './gridFigures';
 import { derive } from './model';
@@ -18,4 +19,5 @@ export default defineLesson({
   layout: { column: ['main', gridLayout] },
   normalize,
   panel: bezierSplinesPanel,
+  exercises,
 });
