@@ -1,4 +1,5 @@
 import { defineLesson } from '../../kit/lesson';
+import { exercises } from './exercises';
 import type { Script } from '../../kit/script';
 import { curveFigure } from './curveFigure';
 import { compareScript, plotScript, subdivideScript } from './flatteningScripts';
@@ -59,4 +60,5 @@ export default defineLesson({
     return { state: next, issues: [] };
   },
   panel: rasterPanel,
+  exercises,
 });
