@@ -79,7 +79,7 @@ const where: ExerciseSpec<QuadraticState> = {
     // Step 0 draws the points alone; the panel's P(μ₁) is P₁, not the answer.
     const state = { ...defaults, points, mu: mu1, step: 0 };
     const [from, to] = mu < mu1 ? ['P₀', 'P₁'] : ['P₁', 'P₂'];
-    const hint = `μ = ${mu} comes ${mu < mu1 ? 'before' : 'after'} μ₁ = ${mu1}, so P(${mu}) lies on the curve between ${from} and ${to}; the panel's a₀, a₁, a₂ give it exactly: P(μ) = a₂μ² + a₁μ + a₀.`;
+    const hint = `μ = ${mu} comes ${mu < mu1 ? 'before' : 'after'} μ₁ = ${mu1}, so P(${mu}) lies on the curve between ${from} and ${to}; for the exact place, solve equations 2 and 3 for a₀, a₁, a₂ and take P(μ) = a₂μ² + a₁μ + a₀.`;
     return {
       state,
       prompt: `${passes(points, mu1)}. Where is P(${mu})?`,
@@ -113,7 +113,7 @@ const compute: ExerciseSpec<QuadraticState> = {
       {
         // a2 with the wrong sign changes a1 = P2 − P0 − a2 by 2a2: P(μ) moves by 2a2(μ − μ²).
         values: shifted(a2.map((v) => -2 * v * (mu * mu - mu))),
-        hint: 'Check the sign of a₂: equation 3 divides by μ₁(μ₁ − 1) = −0.25, a negative number.',
+        hint: 'Check the sign of a₂: solving equations 2 and 3 divides by μ₁(μ₁ − 1) = −0.25, a negative number.',
       },
       {
         values: clean(at(points, mu1, 1 - mu)),
