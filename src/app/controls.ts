@@ -192,12 +192,13 @@ export class StepControl {
   }
 
   /** Shows where the script is: `first`/`last` say whether there is anything before/after. */
-  update(text: string, first: boolean, last: boolean): void {
-    const key = `${text}/${first}/${last}`;
+  update(text: string, first: boolean, last: boolean, nextLabel = 'Next ▶'): void {
+    const key = `${text}/${first}/${last}/${nextLabel}`;
     if (key === this.shown) return;
     this.shown = key;
     this.back.disabled = first;
     this.forward.disabled = last;
     this.status.textContent = text;
+    this.forward.textContent = nextLabel;
   }
 }

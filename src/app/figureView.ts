@@ -16,6 +16,13 @@ import { SpokenNames } from './spokenNames';
 
 export { drawHandles, plainLabel } from '../render/handles';
 
+/** A point marked over a figure: a guess (a cross) or the answer (a ring), with a short label. */
+export interface FigureMark {
+  kind: 'guess' | 'answer';
+  at: Point;
+  label: string;
+}
+
 /** What a figure needs from the page that hosts it. */
 export interface FigureHost<S, M> {
   get(): S;
@@ -39,6 +46,10 @@ export interface FigureHost<S, M> {
   ghost(): M | null;
   /** The trail of this figure's moving point (presenter tool), or null. */
   trail(figure: string): readonly Point[] | null;
+  /** Marks drawn over this figure (an exercise's guess and answer). */
+  marks(figure: string): readonly FigureMark[];
+  /** A tap or click on empty space, in the figure's coordinates: true if it was taken (a guess). */
+  tap(figure: string, at: Point): boolean;
 }
 
 let dragSerial = 0;
@@ -57,6 +68,9 @@ export class FigureView<S, M> {
   private names: string[] = [];
   private readonly spokenNames = new SpokenNames();
   private dragging: { drag: HandleDrag; key: string } | null = null;
+  /** The handle a finger tapped: its delete button is shown. */
+  private chosen: string | null = null;
+  private readonly deleteButton: HTMLButtonElement;
   private focused: string | null = null;
   private fitted = false;
   /** The user moved the view: keep it (and put it in the link), unless asked to fit. */
@@ -107,7 +121,22 @@ export class FigureView<S, M> {
       zoom: movable ? (at, factor) => this.zoom(at, factor) : undefined,
       add: spec.addPoint ? (at) => this.add(at) : undefined,
       remove: spec.removeHandle ? (id) => this.remove(id) : undefined,
+      tap: (at) => {
+        this.choose(null);
+        if (this.spec.kind !== 'space') host.tap(spec.id, this.view.toWorld(at));
+      },
+      tapHandle: (id, type) => this.choose(type === 'mouse' ? null : id),
     });
+    // A finger has no right-click or Delete key: a tapped point offers its own delete button.
+    this.deleteButton = document.createElement('button');
+    this.deleteButton.type = 'button';
+    this.deleteButton.className = 'delete-point';
+    this.deleteButton.hidden = true;
+    this.deleteButton.addEventListener('click', () => {
+      if (this.chosen) this.remove(this.chosen);
+      this.choose(null);
+    });
+    if (spec.removeHandle) this.element.append(this.deleteButton);
     this.resizeObserver = new ResizeObserver(([entry]) => {
       // The size is read here, once per change, never while drawing a frame.
       this.box = { width: entry.contentRect.width, height: entry.contentRect.height };
@@ -282,6 +311,7 @@ export class FigureView<S, M> {
     const trail = info.thumbnail ? null : this.host.trail(this.spec.id);
     if (trail && trail.length > 1)
       painter.polyline(trail, { color: theme.accent, width: theme.sizes.line, alpha: 0.8 });
+    if (!info.thumbnail) drawMarks(painter, this.host.marks(this.spec.id), theme);
     const handles = this.handlesFor(model);
     if (info.thumbnail) return painter;
     drawHandles(painter, handles, (handle) =>
@@ -321,6 +351,7 @@ export class FigureView<S, M> {
   }
 
   private dragStart(id: string, at: Screen): void {
+    if (id !== this.chosen) this.choose(null);
     this.host.hold();
     this.dragging = {
       drag: new HandleDrag(this.view, this.handles, id, at),
@@ -376,6 +407,15 @@ export class FigureView<S, M> {
     if (moved) this.host.announce(`${plainLabel(moved.label)} at ${fmtPoint(moved.position)}`);
   }
 
+  /** Shows the delete button of the handle a finger tapped (null hides it). */
+  private choose(id: string | null): void {
+    const handle = id === null ? undefined : this.handles.find((h) => h.id === id);
+    const removable = handle !== undefined && this.spec.removeHandle !== undefined;
+    this.chosen = removable ? handle.id : null;
+    this.deleteButton.hidden = !removable;
+    if (removable) this.deleteButton.textContent = `Delete ${plainLabel(handle.label)}`;
+  }
+
   private add(at: Screen): void {
     if (!this.spec.addPoint) return;
     const next = this.spec.addPoint(this.host.get(), this.view.toWorld(at), this.host.model());
@@ -393,4 +433,22 @@ export class FigureView<S, M> {
       this.host.announce('Point removed');
     } else this.host.announce('This point cannot be removed: the lesson needs it');
   }
+}
+
+/** An exercise's marks: the guess as a cross, the answer as a ring, a dashed line from one to the other. */
+function drawMarks(painter: Painter, marks: readonly FigureMark[], theme: Theme): void {
+  const guess = marks.find((m) => m.kind === 'guess');
+  const answer = marks.find((m) => m.kind === 'answer');
+  const size = painter.sizes.handle;
+  if (guess && answer)
+    painter.segment(guess.at, answer.at, {
+      color: theme.accent,
+      width: theme.sizes.line,
+      dash: [6, 5],
+    });
+  if (answer)
+    painter.ring(answer.at, size * 1.3, { color: theme.ink, width: theme.sizes.line * 1.4 });
+  if (guess)
+    painter.cross(guess.at, size * 1.2, { color: theme.accent, width: theme.sizes.line * 1.6 });
+  for (const mark of marks) painter.labelClear(mark.label, mark.at, []);
 }

@@ -1,5 +1,20 @@
 import { h } from './dom';
 import { GROUP_ORDER, GROUP_TITLES, type LessonMeta } from './meta';
+import { lessonProgress, readProgress } from './progress';
+
+/** "Practice: 2 of 3 solved", once the lesson's practice has been opened on this device. */
+function practiceBadge(
+  slug: string,
+  progress: ReturnType<typeof readProgress>,
+): HTMLElement | null {
+  const { done, total } = lessonProgress(slug, progress);
+  if (total === 0) return null;
+  return h(
+    'span',
+    { class: `card-progress${done >= total ? ' complete' : ''}` },
+    done >= total ? `Practice: all ${total} solved ✓` : `Practice: ${done} of ${total} solved`,
+  );
+}
 
 /** The file a lesson's thumbnail is drawn to at build time (see scripts/plugins.ts). */
 export const thumbnailPath = (slug: string, dark: boolean) =>
@@ -11,6 +26,7 @@ export const thumbnailPath = (slug: string, dark: boolean) =>
  * lesson code.
  */
 export function buildGallery(lessons: readonly LessonMeta[], dark: boolean): HTMLElement {
+  const progress = readProgress();
   const sections = GROUP_ORDER.filter((group) => lessons.some((l) => l.group === group)).map(
     (group) =>
       h(
@@ -39,6 +55,7 @@ export function buildGallery(lessons: readonly LessonMeta[], dark: boolean): HTM
                   }),
                   h('span', { class: 'card-title' }, lesson.title),
                   h('span', { class: 'card-summary' }, lesson.summary),
+                  practiceBadge(lesson.slug, progress),
                 ),
               ),
             ),
@@ -55,7 +72,7 @@ export function buildGallery(lessons: readonly LessonMeta[], dark: boolean): HTM
       h(
         'p',
         {},
-        'Interactive constructions for the splines chapter of a computer-graphics course. Drag the points, step through each construction, and share exactly what you see with a link.',
+        'Interactive constructions for the splines chapter of a computer-graphics course. Drag the points, step through each construction, practise with exercises the app checks, and share exactly what you see with a link.',
       ),
     ),
     ...sections,

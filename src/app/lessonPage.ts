@@ -18,12 +18,15 @@ import { FigureView } from './figureView';
 import type { PresenterTool } from './keymap';
 import { buildLayout } from './layout';
 import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
-import { LessonStore, type Loaded } from './lessonState';
+import { LessonStore, normalizeState, type Loaded } from './lessonState';
 import type { LessonMeta } from './meta';
 import { Presenter } from './presenter';
 import { ScriptWalker } from './scriptWalker';
 import { Trails } from './trails';
 import { UrlSync } from './urlSync';
+import type { ExerciseSpec } from '../kit/exercise';
+import { Practice } from './practice';
+import { defaultsOf, practiceQuery, type Schema } from './urlState';
 
 /** What the app shell offers a lesson page. */
 export interface Shell {
@@ -56,6 +59,12 @@ export class LessonPage<S, M> {
   private readonly parameter?: ParameterControl<S>;
   /** The clicker's walk through the script: steps, scenes, their buttons and status. */
   readonly walker: ScriptWalker<S>;
+  /** The lesson's exercises (absent for a lesson without any). */
+  private readonly practice?: Practice<S>;
+  /** The button that opens practice, at the top of the panel. */
+  private practiceEntry: HTMLElement | null = null;
+  /** The working being walked step by step ("Show me"), or 0. */
+  private walking = 0;
   private readonly undoButton: HTMLButtonElement;
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
@@ -75,6 +84,7 @@ export class LessonPage<S, M> {
   private readonly dirtyFigures = new Set<FigureView<S, M>>();
   private readonly unsubscribe: () => void;
   private readonly panelResize: ResizeObserver;
+  private readonly aboveStage: ResizeObserver;
   private panelWidth = -1;
   private panelWidthChanged = false;
   /** The panel changed: fit its wide content at the start of the next frame. */
@@ -117,6 +127,8 @@ export class LessonPage<S, M> {
           shown: () => this.presenter.shown(),
           ghost: () => this.ghostModel,
           trail: (figure) => this.trails.of(figure),
+          marks: (figure) => this.practice?.marks(figure) ?? [],
+          tap: (figure, at) => this.practice?.tap(figure, at) ?? false,
         }),
     );
     this.panel = lesson.panel({
@@ -127,14 +139,20 @@ export class LessonPage<S, M> {
       setHover: (id) => this.setHover(id),
       theme: () => shell.theme(),
     });
-    this.url = new UrlSync(lesson.slug, () => this.store.query(this.views()));
+    this.url = new UrlSync(lesson.slug, () => {
+      // An exercise's link is its id and seed: they pose everything it shows.
+      const practice = this.practice?.link();
+      return practice ? practiceQuery(practice) : this.store.query(this.views());
+    });
 
     const host = { get: () => this.store.state, set, settle: () => this.url.write() };
     if (lesson.parameter) this.parameter = new ParameterControl<S>(lesson.parameter, host);
     this.walker = new ScriptWalker<S>(lesson, this.store, {
       fit: () => this.fit(),
       announce: (text) => shell.announce(text),
+      pauseAtSceneEnd: () => !document.documentElement.classList.contains('projector'),
     });
+    this.practice = this.buildPractice(loaded);
     this.undoButton = h(
       'button',
       { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.undo() },
@@ -174,6 +192,8 @@ export class LessonPage<S, M> {
     const aside = h(
       'aside',
       { class: 'panel', 'aria-label': 'Explanation' },
+      this.practiceEntry,
+      this.practice?.element,
       this.walker.sceneGroup,
       this.panel.element,
     );
@@ -208,6 +228,14 @@ export class LessonPage<S, M> {
       }
     });
     this.panelResize.observe(aside);
+    // On a phone the stage fills the first screen under whatever stands above it.
+    this.aboveStage = new ResizeObserver(() => {
+      const top = Math.round(stage.getBoundingClientRect().top + window.scrollY);
+      if (top > 0) this.element.style.setProperty('--stage-top', `${top}px`);
+    });
+    for (const el of [document.querySelector('.top-bar'), document.querySelector('.notices')])
+      if (el) this.aboveStage.observe(el);
+    this.aboveStage.observe(this.element.querySelector('.lesson-head') as Element);
     this.panel.element.classList.add('panel-pending');
     // Formula fonts arriving late change widths measured before them: fit again.
     document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
@@ -222,14 +250,112 @@ export class LessonPage<S, M> {
     this.url.write();
   }
 
+  private buildPractice(loaded: Loaded<S>): Practice<S> | undefined {
+    const exercises = this.lesson.exercises as readonly ExerciseSpec<S>[] | undefined;
+    if (!exercises?.length) return undefined;
+    const practice = new Practice<S>(exercises, {
+      slug: this.lesson.slug,
+      defaults: defaultsOf(this.lesson.schema as Schema<S>),
+      get: () => this.store.state,
+      open: (state, scene) => {
+        this.stopWalk();
+        this.enterScene(scene);
+        this.store.set(normalizeState(this.lesson, state).state);
+        this.fit();
+      },
+      walk: (state, scene) => this.walk(state, scene),
+      redraw: () => {
+        this.refreshAll = true;
+        this.requestFrame();
+      },
+      linkChanged: () => this.url.schedule(0),
+      toggled: (open) => {
+        if (this.practiceEntry) this.practiceEntry.hidden = open;
+        this.element.classList.toggle('practising', open);
+        // A phone: the figure shares the first screen with the question.
+        if (open && window.matchMedia?.('(max-width: 820px)').matches)
+          requestAnimationFrame(() => this.figureBox.scrollIntoView({ block: 'start' }));
+      },
+      figureTitle: (id) => {
+        const shown = this.figures.filter((f) => !f.element.hidden);
+        const title = this.lesson.figures.find((f) => f.id === id)?.title;
+        return shown.length > 1 && title ? `the figure “${title}”` : 'the figure';
+      },
+    });
+    this.practiceEntry = h(
+      'div',
+      { class: 'practice-entry' },
+      h(
+        'button',
+        {
+          type: 'button',
+          class: 'primary',
+          onclick: () => practice.start(exercises[0].id, loaded.practice?.seed ?? 1),
+        },
+        'Practice',
+      ),
+      h(
+        'span',
+        {},
+        ` ${exercises.length} exercises: predict a point, compute a number, make a curve. Checked as you go.`,
+      ),
+    );
+    if (loaded.practice) {
+      const { id, seed } = loaded.practice;
+      // After the page is built: the exercise sets the state and the scene.
+      queueMicrotask(() => practice.start(id, seed));
+    }
+    return practice;
+  }
+
+  /**
+   * "Show me": opens the working at step 0 and walks its steps, one a second
+   * (at once with reduced motion). Any other change of state stops the walk.
+   */
+  private walk(state: S, scene: string | undefined): void {
+    this.stopWalk();
+    this.enterScene(scene);
+    const key = this.lesson.steps?.key as keyof S | undefined;
+    const start = key === undefined ? state : ({ ...state, [key]: 0 } as S);
+    this.store.set(normalizeState(this.lesson, start).state);
+    this.fit();
+    const reduced = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
+    let walked = this.store.state;
+    const tick = () => {
+      const { k, count } = this.walker.stepOf(this.store.state);
+      // Done, or the student took over (moved a point, pressed Back): stop.
+      if (k >= count || this.store.state !== walked) {
+        this.walking = 0;
+        return;
+      }
+      this.store.set({ ...this.store.state, [key as keyof S]: reduced ? count : k + 1 } as S, {
+        record: false,
+      });
+      walked = this.store.state;
+      this.walking = window.setTimeout(tick, 900);
+    };
+    if (key !== undefined) this.walking = window.setTimeout(tick, reduced ? 0 : 700);
+  }
+
+  /** The scene an exercise is set in (by id; the first without one) becomes the walker's. */
+  private enterScene(id: string | undefined): void {
+    const index = (this.lesson.scenes ?? []).findIndex((scene) => scene.id === id);
+    this.walker.restart(Math.max(0, index));
+  }
+
+  private stopWalk(): void {
+    window.clearTimeout(this.walking);
+    this.walking = 0;
+  }
+
   private toolbar(): HTMLElement {
     const button = (label: string, title: string, action: () => void) =>
       h('button', { type: 'button', title, onclick: action }, label);
-    return h(
+    // On a phone the tools past Undo and Redo fold under one button, so the
+    // lesson's name and the figure keep the first screen.
+    const more = h(
       'div',
-      { class: 'lesson-tools', role: 'toolbar', 'aria-label': 'Lesson tools' },
-      this.undoButton,
-      this.redoButton,
+      { class: 'tools-more', id: `tools-${this.lesson.slug}` },
       button('Fit view', 'Fit the view to the figure (0)', () => this.fit()),
       button('Copy link', 'Copy a link to exactly this view', () => void this.copyLink()),
       button('PNG', 'Save the figure as a PNG image', () => void this.exportPng()),
@@ -237,6 +363,29 @@ export class LessonPage<S, M> {
       button('Handout', 'Print this lesson as a handout: its steps as vector pages, or a PDF', () =>
         this.openHandout(),
       ),
+    );
+    const toggle = h(
+      'button',
+      {
+        type: 'button',
+        class: 'tools-toggle',
+        'aria-expanded': 'false',
+        'aria-controls': more.id,
+        title: 'More tools: fit, link, PNG, SVG, handout',
+        onclick: () => {
+          const open = more.classList.toggle('open');
+          toggle.setAttribute('aria-expanded', String(open));
+        },
+      },
+      'More',
+    );
+    return h(
+      'div',
+      { class: 'lesson-tools', role: 'toolbar', 'aria-label': 'Lesson tools' },
+      this.undoButton,
+      this.redoButton,
+      toggle,
+      more,
     );
   }
 
@@ -512,6 +661,13 @@ export class LessonPage<S, M> {
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();
+    if (loaded.practice && this.practice) {
+      const { id, seed } = loaded.practice;
+      const now = this.practice.link();
+      if (now?.id !== id || now.seed !== seed) this.practice.start(id, seed);
+      return;
+    }
+    if (this.practice?.active) this.practice.close();
     this.walker.restart(loaded.scene);
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
@@ -633,12 +789,14 @@ export class LessonPage<S, M> {
   }
 
   destroy(): void {
+    this.stopWalk();
     // By now the address bar may already show another page: only remember
     // (and a write still pending sees the new address and leaves it alone).
     this.url.close();
     this.parameter?.stop();
     this.unsubscribe();
     this.panelResize.disconnect();
+    this.aboveStage.disconnect();
     document.fonts?.removeEventListener('loadingdone', this.fontsLoaded);
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();

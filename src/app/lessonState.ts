@@ -1,6 +1,6 @@
 import { History, type HistoryOptions } from './history';
 import type { AnyLesson } from './lesson';
-import { decodeState, defaultsOf, encodeState, keyOf } from './urlState';
+import { decodeState, defaultsOf, encodeState, keyOf, type PracticeLink } from './urlState';
 
 /** Key under which the last state of a lesson is kept in localStorage. */
 export const storageKey = (slug: string) => `spline-lab:lesson:${slug}`;
@@ -12,6 +12,8 @@ export interface Loaded<S> {
   views: Record<string, string>;
   /** The scene of the lesson's script it is in (an index into `lesson.scenes`). */
   scene: number;
+  /** The exercise the link opens, or null. */
+  practice?: PracticeLink | null;
 }
 
 /** Applies the lesson's own cross-field rules and the shell's step clamp. */
@@ -46,26 +48,29 @@ export function normalizeState<S>(lesson: AnyLesson, state: S): { state: S; issu
 export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage | null): Loaded<S> {
   const figures = lesson.figures.map((f) => f.id);
   const scenes = (lesson.scenes ?? []).map((scene) => scene.id);
+  const exercises = (lesson.exercises ?? []).map((exercise) => exercise.id);
   if (query !== '') {
-    const decoded = decodeState<S>(lesson.schema, query, figures, scenes);
+    const decoded = decodeState<S>(lesson.schema, query, figures, scenes, exercises);
     const normalized = normalizeState(lesson, decoded.state);
     return {
       state: normalized.state as S,
       issues: [...decoded.issues, ...normalized.issues],
       views: decoded.views,
       scene: decoded.scene,
+      practice: decoded.practice,
     };
   }
   const stored = readStorage(storage, storageKey(lesson.slug));
   let issues: string[] = [];
   if (stored) {
-    const decoded = decodeState<S>(lesson.schema, stored, figures, scenes);
+    const decoded = decodeState<S>(lesson.schema, stored, figures, scenes, exercises);
     if (decoded.issues.length === 0)
       return {
         state: normalizeState(lesson, decoded.state).state as S,
         issues: [],
         views: decoded.views,
         scene: decoded.scene,
+        practice: decoded.practice,
       };
     // Kept by an older version, or damaged: say so rather than lose it quietly.
     issues = [

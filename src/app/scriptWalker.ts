@@ -13,6 +13,11 @@ export interface WalkerHost {
   /** Fits every figure to the new scene. */
   fit(): void;
   announce(message: string): void;
+  /**
+   * Past a scene's last step, does Next first say "Scene done. Next: …"? (A
+   * student learning alone is told; the lecturer's clicker goes straight on.)
+   */
+  pauseAtSceneEnd(): boolean;
 }
 
 export class ScriptWalker<S> {
@@ -23,6 +28,8 @@ export class ScriptWalker<S> {
   private sceneButtons: HTMLButtonElement[] = [];
   /** The state each scene was left in, so the clicker going back finds it as it was. */
   private readonly memory = new Map<number, S>();
+  /** The state at which Next said "Scene done": the next press opens the next scene. */
+  private doneAt: S | null = null;
 
   constructor(
     private readonly lesson: AnyLesson,
@@ -110,9 +117,17 @@ export class ScriptWalker<S> {
       return;
     }
     const scene = this.store.scene + delta;
-    if (scene >= 0 && scene < (this.lesson.scenes?.length ?? 0))
+    const scenes = this.lesson.scenes ?? [];
+    if (scene >= 0 && scene < scenes.length) {
+      if (delta > 0 && this.doneAt !== this.store.state && this.host.pauseAtSceneEnd()) {
+        this.doneAt = this.store.state;
+        this.update(this.store.state);
+        this.host.announce(`Scene done. Next: ${scenes[scene].label}`);
+        return;
+      }
+      this.doneAt = null;
       this.openScene(scene, delta > 0 ? 'first' : 'last', false);
-    else this.host.announce(delta > 0 ? 'The end of the lesson' : 'The start of the lesson');
+    } else this.host.announce(delta > 0 ? 'The end of the lesson' : 'The start of the lesson');
   }
 
   /** Home / End: the first or last step of this scene. */
@@ -127,13 +142,19 @@ export class ScriptWalker<S> {
     if (!this.steps) return;
     const { k, count } = this.stepOf(state);
     const scenes = this.lesson.scenes?.length ?? 0;
-    const text = this.lesson.steps
-      ? `${count > 0 ? `Step ${k}/${count}: ` : ''}${this.lesson.steps.describe(state, k)}`
-      : `Scene ${this.store.scene + 1} of ${scenes}`;
+    const next = this.lesson.scenes?.[this.store.scene + 1];
+    if (this.doneAt !== state) this.doneAt = null;
+    const text =
+      this.doneAt !== null && next
+        ? `Scene done. Next: ${next.label}.`
+        : this.lesson.steps
+          ? `${count > 0 ? `Step ${k}/${count}: ` : ''}${this.lesson.steps.describe(state, k)}`
+          : `Scene ${this.store.scene + 1} of ${scenes}`;
     this.steps.update(
       text,
       k === 0 && this.store.scene === 0,
       k === count && this.store.scene >= scenes - 1,
+      this.doneAt !== null ? 'Next scene ▶' : 'Next ▶',
     );
   }
 }

@@ -1,7 +1,14 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { bool, choice, formatNumber, int, linkKey, number, numbers, points } from './fields';
-import { MAX_QUERY_LENGTH, type Schema, decodeState, defaultsOf, encodeState } from './urlState';
+import {
+  MAX_QUERY_LENGTH,
+  type Schema,
+  decodeState,
+  defaultsOf,
+  encodeState,
+  practiceQuery,
+} from './urlState';
 
 type Point2 = readonly number[];
 
@@ -85,6 +92,7 @@ describe('URL state', () => {
       issues: [],
       views: {},
       scene: 0,
+      practice: null,
     });
   });
 
@@ -204,5 +212,34 @@ describe('link keys apart from field names', () => {
     const twice = decodeState(schema, 't=0.1&mu=0.9');
     expect(twice.state.parameter).toBe(0.1);
     expect(twice.issues).toEqual(['"mu" given twice; the first was kept']);
+  });
+});
+
+describe("an exercise's link (ex and seed)", () => {
+  const exercises = ['where', 'weight'];
+  it('reads the exercise and its seed, and writes them back', () => {
+    const decoded = decodeState(schema, 'ex=weight&seed=4242', [], [], exercises);
+    expect(decoded.issues).toEqual([]);
+    expect(decoded.practice).toEqual({ id: 'weight', seed: 4242 });
+    expect(practiceQuery({ id: 'weight', seed: 4242 })).toBe('ex=weight&seed=4242');
+  });
+  it('an exercise without a seed opens with seed 1', () => {
+    expect(decodeState(schema, 'ex=where', [], [], exercises).practice).toEqual({
+      id: 'where',
+      seed: 1,
+    });
+  });
+  it('an unknown exercise or a bad seed is named, and the lesson opens as usual', () => {
+    const unknown = decodeState(schema, 'ex=nope&seed=3', [], [], exercises);
+    expect(unknown.practice).toBeNull();
+    expect(unknown.issues.join(' ')).toMatch(/"nope" is not an exercise/);
+    const bad = decodeState(schema, 'ex=where&seed=-5', [], [], exercises);
+    expect(bad.practice).toEqual({ id: 'where', seed: 1 });
+    expect(bad.issues.join(' ')).toMatch(/seed: "-5" is not a whole number/);
+    const big = decodeState(schema, 'ex=where&seed=1234567', [], [], exercises);
+    expect(big.issues.join(' ')).toMatch(/not a whole number from 1 to 999999/);
+  });
+  it('a lesson without exercises calls ex an unknown setting', () => {
+    expect(decodeState(schema, 'ex=where').issues.join(' ')).toMatch(/unknown setting "ex"/);
   });
 });

@@ -24,7 +24,23 @@ export interface Decoded<S> {
   views: Record<string, string>;
   /** The scene the link names (`scene=<id>`), as an index into the lesson's scenes; 0 without one. */
   scene: number;
+  /** The exercise the link opens (`ex=<id>&seed=<n>`), or null. */
+  practice: PracticeLink | null;
 }
+
+/** An exercise and the seed of its numbers, as a link carries them. */
+export interface PracticeLink {
+  id: string;
+  seed: number;
+}
+
+/** The keys of an exercise's link (owned by the shell, like the scene). */
+export const EXERCISE_KEY = 'ex';
+export const SEED_KEY = 'seed';
+
+/** The link of an exercise: its id and seed say everything it shows. */
+export const practiceQuery = (practice: PracticeLink) =>
+  `${EXERCISE_KEY}=${encodeURIComponent(practice.id)}&${SEED_KEY}=${practice.seed}`;
 
 /** Longest query string we read at all: a real state is far shorter. */
 export const MAX_QUERY_LENGTH = 20_000;
@@ -91,16 +107,19 @@ export function decodeState<S>(
   query: string,
   figures: readonly string[] = [],
   scenes: readonly string[] = [],
+  exercises: readonly string[] = [],
 ): Decoded<S> {
   const state = defaultsOf(schema) as Record<string, unknown>;
   const issues: string[] = [];
   const views: Record<string, string> = {};
   let scene = 0;
+  let exercise: string | null = null;
+  let seed: number | null = null;
   if (query.length > MAX_QUERY_LENGTH) {
     issues.push(
       `the link's state is ${query.length} characters long (at most ${MAX_QUERY_LENGTH}), so all of it was ignored`,
     );
-    return { state: state as S, issues, views, scene };
+    return { state: state as S, issues, views, scene, practice: null };
   }
   const seen = new Set<string>();
   const byKey = fieldsByKey(schema);
@@ -139,6 +158,19 @@ export function decodeState<S>(
         );
       continue;
     }
+    if (key === EXERCISE_KEY && exercises.length > 0) {
+      seen.add(key);
+      if (exercises.includes(raw)) exercise = raw;
+      else issues.push(`${EXERCISE_KEY}: ${quote(raw)} is not an exercise of this lesson`);
+      continue;
+    }
+    if (key === SEED_KEY && exercises.length > 0) {
+      seen.add(key);
+      const n = Number(raw);
+      if (/^[0-9]{1,6}$/.test(raw) && n >= 1) seed = n;
+      else issues.push(`${SEED_KEY}: ${quote(raw)} is not a whole number from 1 to 999999`);
+      continue;
+    }
     const name = byKey.get(key);
     if (name === undefined) {
       issues.push(`unknown setting ${quote(key)}`);
@@ -159,5 +191,8 @@ export function decodeState<S>(
     if (result.ok) state[name] = result.value;
     else issues.push(`${key}: ${result.why}; the default was used`);
   }
-  return { state: state as S, issues, views, scene };
+  if (seed !== null && exercise === null && !issues.some((i) => i.startsWith(EXERCISE_KEY)))
+    issues.push(`${SEED_KEY}: a seed without an exercise (ex=…) was ignored`);
+  const practice = exercise === null ? null : { id: exercise, seed: seed ?? 1 };
+  return { state: state as S, issues, views, scene, practice };
 }

@@ -20,6 +20,10 @@ export interface PointerCallbacks {
   zoom?(at: Screen, factor: number): void;
   add?(at: Screen): void;
   remove?(id: string): void;
+  /** A press and release on empty space without moving (a tap or a click). */
+  tap?(at: Screen): void;
+  /** A handle pressed and released without moving it, with the pointer's type. */
+  tapHandle?(id: string, pointerType: string): void;
 }
 
 /** Slack for a finger versus a mouse: a fingertip is about 9 mm wide. */
@@ -35,6 +39,8 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
   let dragging: { id: string; pointer: number } | null = null;
   let pinchStart: { distance: number; mid: Screen } | null = null;
   let longPress: { timer: number; at: Screen; pointer: number } | null = null;
+  /** Where the one pointer went down, on what, and whether it has moved since: a tap is neither dragged nor pinched. */
+  let press: { at: Screen; pointer: number; id: string | null; moved: boolean } | null = null;
 
   const local = (e: PointerEvent | MouseEvent | WheelEvent): Screen => {
     const r = canvas.getBoundingClientRect();
@@ -58,6 +64,7 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     if (pointers.size === 2) {
       // A second finger: pinch instead of whatever the first one started.
       cancelLongPress();
+      press = null;
       if (dragging) {
         cb.dragEnd(dragging.id);
         dragging = null;
@@ -70,6 +77,7 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
       return;
     }
     const id = cb.pick(at, e.pointerType);
+    press = pointers.size === 1 ? { at, pointer: e.pointerId, id, moved: false } : null;
     if (id !== null) {
       e.preventDefault();
       dragging = { id, pointer: e.pointerId };
@@ -98,6 +106,8 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     pointers.set(e.pointerId, at);
     if (longPress && Math.hypot(at[0] - longPress.at[0], at[1] - longPress.at[1]) > MOVE_SLOP)
       cancelLongPress();
+    if (press && Math.hypot(at[0] - press.at[0], at[1] - press.at[1]) > MOVE_SLOP)
+      press.moved = true;
     if (dragging && dragging.pointer === e.pointerId) {
       cb.dragMove(dragging.id, at, e.shiftKey);
       return;
@@ -135,6 +145,12 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
 
   const onUp = (e: PointerEvent) => {
     pointers.delete(e.pointerId);
+    // Not moved, not taken over by the browser (a scroll cancels the pointer),
+    // and on empty space not held long enough to add a point.
+    let tap =
+      press?.pointer === e.pointerId && !press.moved && e.type === 'pointerup' ? press : null;
+    if (tap?.id === null && e.pointerType !== 'mouse' && cb.add && longPress === null) tap = null;
+    press = null;
     if (longPress?.pointer === e.pointerId) cancelLongPress();
     if (dragging && dragging.pointer === e.pointerId) {
       cb.dragEnd(dragging.id);
@@ -142,6 +158,8 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     }
     if (pointers.size < 2) pinchStart = null;
     if (e.pointerType !== 'mouse') cb.hover(null);
+    if (tap && tap.id === null) cb.tap?.(tap.at);
+    else if (tap?.id) cb.tapHandle?.(tap.id, e.pointerType);
   };
 
   const onLeave = () => {

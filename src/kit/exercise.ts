@@ -63,6 +63,8 @@ export interface Posed<S> {
   task: Task<S>;
   /** "Show me": the state whose steps show the working, walked from step 0 to its last. */
   working: S;
+  /** The id of the scene the exercise is set in (the scene buttons show it), if not the first. */
+  scene?: string;
 }
 
 export interface ExerciseSpec<S> {
@@ -152,8 +154,8 @@ export function checkNumbers(
 export function checkPoint(guess: Point, answer: Point, tolerance: number, hint: string): Verdict {
   if (!guess.every(Number.isFinite)) return { correct: false, message: 'Place a guess first.' };
   const off = Math.hypot(...answer.map((a, i) => (guess[i] ?? 0) - a));
-  const where = `Your guess is ${words(off)} from the point (${answer.map((a) => words(a)).join(', ')}).`;
+  const where = `our guess is ${words(off)} from the point (${answer.map((a) => words(a)).join(', ')}).`;
   return off <= tolerance
-    ? { correct: true, message: `Correct. ${where}` }
-    : { correct: false, message: `Not yet: ${where} ${hint}` };
+    ? { correct: true, message: `Correct. Y${where}` }
+    : { correct: false, message: `Not yet: y${where} ${hint}` };
 }

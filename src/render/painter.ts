@@ -313,6 +313,22 @@ export class Painter {
     c.restore();
   }
 
+  /** A cross of half-width `size` pixels, e.g. a guess placed on the figure. */
+  cross(p: P, size: number, style: StrokeStyle = {}): void {
+    const [x, y] = this.view.toScreen(p);
+    if (!circleVisible(x, y, size + 4, this.clip)) return;
+    const c = this.ctx;
+    c.save();
+    this.applyStroke(style, this.sizes.line, this.theme.ink);
+    c.beginPath();
+    c.moveTo(x - size, y - size);
+    c.lineTo(x + size, y + size);
+    c.moveTo(x + size, y - size);
+    c.lineTo(x - size, y + size);
+    c.stroke();
+    c.restore();
+  }
+
   /**
    * A circle of world radius `radius` about `center` (2D), e.g. an osculating
    * circle. A circle far larger than the screen is drawn as the arc that shows.

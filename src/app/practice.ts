@@ -1,0 +1,310 @@
+/**
+ * The practice card of a lesson page: its exercises, one at a time, posed
+ * from the seed in the link. A guess is placed with a tap on the figure or
+ * typed; numbers are typed; a construction is made on the figure itself.
+ * Check says right or wrong with a hint, "Show me" walks the working, "New
+ * numbers" draws a new seed. Results are announced politely; progress is kept
+ * on this device.
+ */
+import type { ExerciseSpec, Posed, Verdict } from '../kit/exercise';
+import { newSeed } from '../kit/exercise';
+import type { Point } from '../math';
+import { fmt, h, setChildren } from './dom';
+import type { FigureMark } from './figureView';
+import { lessonProgress, readProgress, recordTotal, recordTry } from './progress';
+import type { PracticeLink } from './urlState';
+
+/** What the card needs from the page. */
+export interface PracticeHost<S> {
+  slug: string;
+  defaults: S;
+  /** The current state (a construction is checked on it). */
+  get(): S;
+  /** Opens the exercise's figure: its state, in its scene. */
+  open(state: S, scene: string | undefined): void;
+  /** Shows the working: the state at step 0, then its steps one by one. */
+  walk(state: S, scene: string | undefined): void;
+  /** The marks changed: redraw the figures. */
+  redraw(): void;
+  /** The exercise or its seed changed: write the link. */
+  linkChanged(): void;
+  /** The card opened or closed (the page makes room for it). */
+  toggled(open: boolean): void;
+  /** The title of a figure, to say where to tap. */
+  figureTitle(id: string): string;
+}
+
+/** Reads a typed number: a minus sign or a decimal comma is accepted. */
+export function readNumber(text: string): number {
+  const cleaned = text.trim().replace(/[−–]/g, '-').replace(',', '.');
+  return cleaned === '' ? NaN : Number(cleaned);
+}
+
+export class Practice<S> {
+  readonly element: HTMLElement;
+  private readonly list: HTMLElement;
+  private readonly prompt: HTMLElement;
+  private readonly fields: HTMLElement;
+  private readonly result: HTMLElement;
+  private readonly tally: HTMLElement;
+  private readonly showButton: HTMLButtonElement;
+  private inputs: HTMLInputElement[] = [];
+  private current: { spec: ExerciseSpec<S>; seed: number; posed: Posed<S> } | null = null;
+  private guess: Point | null = null;
+  private revealed = false;
+
+  constructor(
+    private readonly exercises: readonly ExerciseSpec<S>[],
+    private readonly host: PracticeHost<S>,
+  ) {
+    recordTotal(host.slug, exercises.length);
+    this.list = h('div', { class: 'practice-list', role: 'group', 'aria-label': 'Exercises' });
+    this.prompt = h('p', { class: 'practice-prompt' });
+    this.fields = h('div', { class: 'practice-fields' });
+    this.result = h('p', { class: 'practice-result', role: 'status', 'aria-live': 'polite' });
+    this.tally = h('p', { class: 'practice-tally' });
+    this.showButton = h('button', { type: 'button', onclick: () => this.showMe() }, 'Show me');
+    const form = h(
+      'form',
+      {
+        class: 'practice-form',
+        onsubmit: (e: Event) => {
+          e.preventDefault();
+          this.check();
+        },
+      },
+      this.fields,
+      h(
+        'div',
+        { class: 'practice-actions' },
+        h('button', { type: 'submit', class: 'primary' }, 'Check'),
+        this.showButton,
+        h(
+          'button',
+          {
+            type: 'button',
+            title: 'The same exercise with numbers of your own',
+            onclick: () =>
+              this.start(
+                this.current?.spec.id ?? exercises[0].id,
+                newSeed(this.current?.seed ?? 0),
+              ),
+          },
+          'New numbers',
+        ),
+      ),
+    );
+    this.element = h(
+      'section',
+      { class: 'practice', 'aria-label': 'Practice', hidden: true },
+      h(
+        'div',
+        { class: 'practice-head' },
+        h('h2', {}, 'Practice'),
+        h(
+          'button',
+          { type: 'button', class: 'practice-close', onclick: () => this.close() },
+          'Close practice',
+        ),
+      ),
+      this.prompt,
+      form,
+      this.result,
+      this.list,
+      this.tally,
+    );
+  }
+
+  get active(): boolean {
+    return this.current !== null;
+  }
+
+  /** The exercise's part of the link, or null when not practising. */
+  link(): PracticeLink | null {
+    return this.current ? { id: this.current.spec.id, seed: this.current.seed } : null;
+  }
+
+  /** Opens an exercise with a seed (from a link, a button, or New numbers). */
+  start(id: string, seed: number): void {
+    const spec = this.exercises.find((e) => e.id === id) ?? this.exercises[0];
+    const posed = spec.pose(seed, this.host.defaults);
+    this.current = { spec, seed, posed };
+    this.guess = null;
+    this.revealed = false;
+    this.element.hidden = false;
+    this.host.toggled(true);
+    this.host.open(posed.state, posed.scene);
+    this.renderList();
+    this.prompt.textContent = posed.prompt;
+    this.renderFields(posed);
+    this.result.textContent = '';
+    this.result.className = 'practice-result';
+    this.showButton.disabled = false;
+    this.renderTally();
+    this.host.redraw();
+    this.host.linkChanged();
+  }
+
+  close(): void {
+    this.current = null;
+    this.guess = null;
+    this.element.hidden = true;
+    this.host.toggled(false);
+    this.host.redraw();
+    this.host.linkChanged();
+  }
+
+  /** The marks on a figure: the guess, and after the check the answer. */
+  marks(figure: string): FigureMark[] {
+    const task = this.current?.posed.task;
+    if (task?.kind !== 'point' || task.figure !== figure) return [];
+    const marks: FigureMark[] = [];
+    if (this.guess) marks.push({ kind: 'guess', at: this.guess, label: 'guess' });
+    if (this.revealed) marks.push({ kind: 'answer', at: task.answer, label: 'answer' });
+    return marks;
+  }
+
+  /** A tap on a figure: places the guess if this exercise asks for a point there. */
+  tap(figure: string, at: Point): boolean {
+    const task = this.current?.posed.task;
+    if (task?.kind !== 'point' || task.figure !== figure || this.revealed) return false;
+    this.setGuess([at[0], at[1]]);
+    this.inputs[0].value = fmt(at[0]);
+    this.inputs[1].value = fmt(at[1]);
+    return true;
+  }
+
+  private setGuess(point: Point | null): void {
+    this.guess = point;
+    this.host.redraw();
+  }
+
+  private renderList(): void {
+    const progress = readProgress();
+    setChildren(
+      this.list,
+      this.exercises.map((spec, i) => {
+        const done = progress.exercises[`${this.host.slug}/${spec.id}`]?.done ?? false;
+        return h(
+          'button',
+          {
+            type: 'button',
+            class: 'practice-pick',
+            'aria-pressed': String(spec === this.current?.spec),
+            'data-exercise': spec.id,
+            onclick: () => this.start(spec.id, this.current?.seed ?? 1),
+          },
+          `${i + 1}. ${spec.title}`,
+          done ? h('span', { class: 'practice-done', 'aria-label': ' (solved)' }, ' ✓') : null,
+        );
+      }),
+    );
+  }
+
+  private renderFields(posed: Posed<S>): void {
+    const task = posed.task;
+    const input = (label: string, i: number) => {
+      const el = h('input', {
+        type: 'text',
+        inputmode: 'decimal',
+        autocomplete: 'off',
+        spellcheck: 'false',
+        'data-field': i,
+      });
+      if (task.kind === 'point')
+        el.addEventListener('input', () => {
+          if (this.revealed) return;
+          const [x, y] = this.inputs.map((e) => readNumber(e.value));
+          this.setGuess(Number.isFinite(x) && Number.isFinite(y) ? [x, y] : null);
+        });
+      return h('label', { class: 'practice-field' }, h('span', {}, label), el);
+    };
+    let help: string;
+    let labels: readonly string[];
+    if (task.kind === 'number') {
+      labels = task.fields;
+      help = `Work it out, type ${labels.length === 1 ? 'it' : 'each number'}, then Check.`;
+    } else if (task.kind === 'point') {
+      labels = ['x', 'y'];
+      help = `Tap ${this.host.figureTitle(task.figure)} where you think it is (or type x and y), then Check.`;
+    } else {
+      labels = [];
+      help = 'Move the points on the figure, then Check.';
+    }
+    const rows = labels.map(input);
+    this.inputs = rows.map((row) => row.querySelector('input') as HTMLInputElement);
+    setChildren(this.fields, h('p', { class: 'practice-help' }, help), rows);
+  }
+
+  private check(): void {
+    const current = this.current;
+    if (!current) return;
+    const task = current.posed.task;
+    let verdict: Verdict;
+    if (task.kind === 'number') verdict = task.check(this.inputs.map((e) => readNumber(e.value)));
+    else if (task.kind === 'point') {
+      if (this.revealed) return;
+      const [x, y] = this.inputs.map((e) => readNumber(e.value));
+      if (!Number.isFinite(x) || !Number.isFinite(y)) {
+        this.say({
+          correct: false,
+          message: 'Place a guess first: tap the figure, or type x and y.',
+        });
+        return;
+      }
+      this.guess = [x, y];
+      verdict = task.check([x, y]);
+      // The guess is final: the construction runs to the answer, and both stay marked.
+      this.revealed = true;
+      this.host.walk(current.posed.working, current.posed.scene);
+    } else verdict = task.check(this.host.get());
+    recordTry(this.host.slug, current.spec.id, verdict.correct);
+    this.say(verdict);
+    this.renderList();
+    this.renderTally();
+  }
+
+  private say(verdict: Verdict): void {
+    this.result.textContent = verdict.message;
+    this.result.className = `practice-result ${verdict.correct ? 'right' : 'wrong'}`;
+  }
+
+  private showMe(): void {
+    const current = this.current;
+    if (!current) return;
+    const task = current.posed.task;
+    if (task.kind === 'construct') {
+      this.host.open(task.solution, current.posed.scene);
+      this.say({ correct: true, message: 'This is one way to do it: compare it with yours.' });
+      return;
+    }
+    this.host.walk(current.posed.working, current.posed.scene);
+    if (task.kind === 'number') {
+      const answer = task.answer.map((v) => fmtAnswer(v)).join(', ');
+      this.result.textContent = `The working is on the figure, step by step. The answer: ${answer}.`;
+    } else {
+      this.revealed = true;
+      this.result.textContent = `The construction runs to the point (${task.answer.map((v) => fmtAnswer(v)).join(', ')}).`;
+      this.host.redraw();
+    }
+    this.result.className = 'practice-result';
+  }
+
+  private renderTally(): void {
+    const { done, total } = lessonProgress(this.host.slug);
+    const mine = this.current
+      ? readProgress().exercises[`${this.host.slug}/${this.current.spec.id}`]
+      : undefined;
+    const here = mine
+      ? mine.done
+        ? ` This one is solved (${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'}).`
+        : ` ${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'} on this one so far.`
+      : '';
+    this.tally.textContent = `Solved ${done} of ${total} in this lesson.${here}`;
+  }
+}
+
+/** An answer as shown: up to four decimals, no trailing zeros, a true minus sign. */
+function fmtAnswer(v: number): string {
+  return String(Number(v.toFixed(4))).replace('-', '−');
+}
