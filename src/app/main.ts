@@ -32,11 +32,13 @@ function button(
   title: string,
   action: () => void,
   pressed?: boolean,
+  className?: string,
 ): HTMLButtonElement {
   return h(
     'button',
     {
       type: 'button',
+      class: className,
       title,
       'aria-pressed': pressed === undefined ? undefined : String(pressed),
       onclick: action,
@@ -50,6 +52,7 @@ const projectorButton = button(
   'Presenter view: the figure fills the screen, large captions and strokes, high contrast (P)',
   () => toggleProjector(),
   settings.projector,
+  'for-projector',
 );
 const darkButton = button('Dark', 'Dark theme (D)', () => toggleDark(), settings.dark);
 const topBar = h(
@@ -61,8 +64,8 @@ const topBar = h(
     { class: 'app-tools', 'aria-label': 'Display' },
     projectorButton,
     darkButton,
-    button('Full screen', 'Full screen (F)', () => toggleFullscreen()),
-    button('?', 'Keyboard shortcuts (?)', () => openHelp(help)),
+    button('Full screen', 'Full screen (F)', () => toggleFullscreen(), undefined, 'for-projector'),
+    button('?', 'Help: touch, mouse, keyboard and clicker (?)', () => openHelp(help)),
   ),
 );
 document.body.append(

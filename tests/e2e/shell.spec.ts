@@ -71,7 +71,7 @@ test('presenter view and the dark theme toggle by key and by button', async ({ p
 test('the key help opens with ? and closes with Escape', async ({ page }) => {
   await page.goto('./#/de-casteljau');
   await page.keyboard.press('?');
-  const dialog = page.getByRole('dialog', { name: 'Keys and gestures' });
+  const dialog = page.getByRole('dialog', { name: 'Help' });
   await expect(dialog).toBeVisible();
   await expect(dialog.getByText(/^Presenter view: the figure/)).toBeVisible();
   await page.keyboard.press('Escape');

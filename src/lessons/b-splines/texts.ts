@@ -1,10 +1,13 @@
 import type { Part } from './state';
+import { capital, gestures } from '../../kit/gestures';
 
 /** The panel's words for each part of the lesson: a heading and what to look at. */
 export const TEXTS: Record<Part, { title: string; text: string }> = {
   uniform: {
     title: 'The uniform cubic B-spline',
-    text: 'm + 1 control points x0 … xm (m ≥ 3) give m − 2 cubic segments Q3 … Qm. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]: the four weights are the columns of the matrix, the bases B0(t) = (1 − t)³/6, B1(t) = (3t³ − 6t² + 4)/6, B2(t) = (−3t³ + 3t² + 3t + 1)/6 and B3(t) = t³/6. They are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. The slider t runs along the whole curve: s = (m − 2)·t counts segments, Qi being s from i − 3 to i − 2. Hover a segment (or tab to its button) to see its four points; hover a point to see the segments it moves.',
+    text:
+      'm + 1 control points x0 … xm (m ≥ 3) give m − 2 cubic segments Q3 … Qm. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]: the four weights are the columns of the matrix, the bases B0(t) = (1 − t)³/6, B1(t) = (3t³ − 6t² + 4)/6, B2(t) = (−3t³ + 3t² + 3t + 1)/6 and B3(t) = t³/6. They are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. The slider t runs along the whole curve: s = (m − 2)·t counts segments, Qi being s from i − 3 to i − 2. ' +
+      `${capital(gestures().point)} a segment (or Tab to its button) to see its four points; ${gestures().point} a point to see the segments it moves.`,
   },
   closed: {
     title: 'The closed uniform B-spline',

@@ -14,6 +14,7 @@ import { repeatPanel } from './repeat/details';
 import { splitPanel } from './split/details';
 import type { ExperimentId, PropertiesState } from './state';
 import { experimentTools } from './tools';
+import { gestures } from '../../kit/gestures';
 
 /** What the panel says about each experiment, in the order of the lesson's list of properties. */
 const PANELS: { [X in ExperimentId]: ExperimentPanel<ModelOf<X>> } = {
@@ -54,7 +55,7 @@ export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, Pro
     h(
       'p',
       { class: 'note' },
-      'Each preset sets up one experiment. Drag the control points (or Tab to them and use the arrow keys); t moves the point P(t) and, in subdivision, where the curve is split.',
+      `Each preset sets up one experiment. To move a control point, ${gestures().move}; t moves the point P(t) and, in subdivision, where the curve is split.`,
     ),
   );
 

@@ -9,6 +9,7 @@ import { scripts } from './script';
 import { introductions } from './sections';
 import { type BezierSplinesState, PARTS, type Part, handTangents } from './state';
 import { systemTools } from './systemTools';
+import { gestures } from '../../kit/gestures';
 
 type Api = LessonApi<BezierSplinesState, BezierSplinesModel>;
 
@@ -91,7 +92,7 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
     h(
       'p',
       { class: 'note' },
-      'Step through each part with the buttons or a clicker; drag any point, Tab to a point and move it with the arrow keys; double-click adds a point, Delete removes one.',
+      `Step through each part with Back and Next (or a clicker). To move a point, ${gestures().move}; to add one, ${gestures().add}; to remove one, ${gestures().remove}.`,
     ),
   );
   let tex = '';

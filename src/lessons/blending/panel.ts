@@ -9,6 +9,7 @@ import type { BlendingModel } from './model';
 import { controlPoints } from './points';
 import type { BlendingState } from './state';
 import { weightsSection } from './weightsSection';
+import { capital, gestures } from '../../kit/gestures';
 
 export function blendingPanel(
   api: LessonApi<BlendingState, BlendingModel>,
@@ -32,7 +33,7 @@ export function blendingPanel(
     h(
       'p',
       { class: 'note' },
-      'Drag the cursor on the plot (or Tab to μ and use the arrow keys), or the μ slider. Hover a curve of the plot or a row of the table to find its control point. Double-click the figure to add a point, Delete to remove one.',
+      `Drag the cursor on the plot, or the μ slider. ${capital(gestures().point)} a curve of the plot or a row of the table to find its control point. To add a point, ${gestures().add}; to remove one, ${gestures().remove}.`,
     ),
     pointCount.element,
     ...weights.elements,

@@ -10,12 +10,15 @@ import { SOURCE_NAMES } from './sources';
 import { PART_SCRIPTS } from './scripts';
 import { type CurvatureState, type Part, type SpaceCurve, schema } from './state';
 import { arcRows, valueRows } from './values';
+import { gestures } from '../../kit/gestures';
 
 const INTRO: Record<Part, string> = {
   plane:
     'Drag the points P0, P1, … and move t. The velocity P′(t) has the curve’s direction; divided by the speed |P′| it is the unit tangent T. The normal N is perpendicular to T, on the side the curve turns to, and the curvature κ says how fast T turns per unit of length: the osculating circle, of radius 1/|κ|, bends exactly as the curve does at P(t).',
   space:
-    'In space T turns towards the principal normal N, and the binormal B = T × N completes a right-handed frame. The curvature κ measures how fast T turns, the torsion τ how fast the osculating plane (spanned by T and N) turns about T. Drag the control points Q0 … Q3 in space (Shift: along one axis) or in the top view; orbit the space figure by dragging empty space.',
+    'In space T turns towards the principal normal N, and the binormal B = T × N completes a right-handed frame. The curvature κ measures how fast T turns, the torsion τ how fast the osculating plane (spanned by T and N) turns about T. Move the control points Q0 … Q3 in space or in the top view. To turn the space figure, ' +
+    gestures().orbit +
+    '.',
   arc: 'The parameter t is not length: equal steps of t cover short stretches where the curve is slow and long ones where it is fast. The arc length s(t) adds up the speed; a table of s at equal steps of t, read backwards, gives the parameters of equal steps of length.',
 };
 

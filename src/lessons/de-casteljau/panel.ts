@@ -10,6 +10,7 @@ import type { DeCasteljauModel } from './model';
 import { controlPoints } from './points';
 import { construction } from './script';
 import type { DeCasteljauState } from './state';
+import { gestures } from '../../kit/gestures';
 
 const coords = (p: readonly number[]) => p.map((v) => texNumber(v, 3));
 
@@ -62,7 +63,7 @@ export function deCasteljauPanel(
     h(
       'p',
       { class: 'note' },
-      'Drag a control point, move it with Tab and the arrow keys, double-click to add one, right-click or Delete to remove one. Step through the construction with the buttons or a clicker.',
+      `To move a control point, ${gestures().move}; to add one, ${gestures().add}; to remove one, ${gestures().remove}. Step through the construction with Back and Next, or a clicker.`,
     ),
     stepTitle,
     stepText,

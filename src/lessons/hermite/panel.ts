@@ -19,6 +19,7 @@ import type { HermiteModel } from './model';
 import { controlPoints } from './points';
 import { scriptOf } from './script';
 import type { GradientMode, HermiteState } from './state';
+import { gestures } from '../../kit/gestures';
 
 /** How this lesson's symbols read in the course's documents. */
 const SYMBOLS: [string, string][] = [
@@ -112,7 +113,7 @@ export function hermitePanel(
     h(
       'p',
       { class: 'note' },
-      'Each arrow is drawn a third as long as its gradient: its tip is at P + D/3. Drag a tip (or Tab to it and use the arrow keys) to set D; dragging one in Catmull-Rom mode switches to gradients by hand. Double-click adds a point after the last one, Delete removes one. Drag the cursor in the lower plot to move μ.',
+      `Each arrow is drawn a third as long as its gradient: its tip is at P + D/3. To set D, take a tip and ${gestures().move}; moving one in Catmull-Rom mode switches to gradients by hand. To add a point after the last, ${gestures().add}; to remove one, ${gestures().remove}. Drag the cursor in the lower plot to move μ.`,
     ),
     bezier.element,
     warning,

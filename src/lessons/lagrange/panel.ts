@@ -10,6 +10,7 @@ import { BASIS_SLIP, NOTES_KEY, rungeText } from './text';
 import { words } from '../../kit/format';
 import { notesKey, notesSlip } from '../../kit/notes';
 import type { LagrangeState, Spacing } from './state';
+import { gestures } from '../../kit/gestures';
 
 const SPACINGS: [Spacing, string][] = [
   ['uniform', 'Equally spaced: tₖ = k / n'],
@@ -66,7 +67,7 @@ export function lagrangePanel(
     h(
       'p',
       { class: 'note' },
-      'Drag a point or move it with Tab and the arrow keys; double-click to add one after the last, Delete to remove one. Drag the cursor in the lower plot (or Tab to it) to move t.',
+      `To move a point, ${gestures().move}; to add one after the last, ${gestures().add}; to remove one, ${gestures().remove}. Drag the cursor in the lower plot to move t.`,
     ),
     heading,
     pointFormula.element,

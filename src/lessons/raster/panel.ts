@@ -6,9 +6,9 @@ import { formula } from '../../render/formula';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
 import { controlPoints } from './points';
 import { HAIRPIN, type RasterState, ZOOM_MAX, ZOOM_MIN, segmentsOf } from './state';
+import { gestures } from '../../kit/gestures';
 
-const INTRO =
-  'A screen cannot draw a curve. It draws straight segments between points computed on the curve, and each segment as a row of pixels. How many segments, and where? The control points are given in pixels of a coarse 32 × 24 raster (zoom 1); drag them, Tab to one and use the arrow keys, double-click to add one, right-click or Delete to remove one.';
+const INTRO = `A screen cannot draw a curve. It draws straight segments between points computed on the curve, and each segment as a row of pixels. How many segments, and where? The control points are given in pixels of a coarse 32 × 24 raster (zoom 1); to move one, ${gestures().move}; to add one, ${gestures().add}; to remove one, ${gestures().remove}.`;
 
 /**
  * The “Splines” slides, where they pose the raster conversion problem, swap

@@ -10,6 +10,7 @@ import { solveSection } from './solvePanel';
 import { villagePoints } from './points';
 import { type RoadState, segmentCount } from './state';
 import './road.css';
+import { gestures } from '../../kit/gestures';
 
 export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<RoadState, RoadModel> {
   const method = methodSection(api);
@@ -45,7 +46,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
     h(
       'p',
       {},
-      'How should one specify the path of a road through a number of villages? Drag the villages (or Tab to one and use the arrow keys), double-click or long-press to add one, right-click or Delete to remove one. Choose how the road is built below, or compare several at once.',
+      `How should one specify the path of a road through a number of villages? To move a village, ${gestures().move}; to add one, ${gestures().add}; to remove one, ${gestures().remove}. Choose how the road is built below, or compare several at once.`,
     ),
     notes,
     method.element,

@@ -5,6 +5,7 @@ import { joined, live, tex } from '../../render/formulaParts';
 import { setHidden, setText } from '../../app/dom';
 import { LiveFormula } from '../../render/formula';
 import type { RoadModel } from './model';
+import { capital, gestures } from '../../kit/gestures';
 
 const LETTERS = ['a', 'b', 'c', 'd'];
 const power = (degree: number) => (degree === 0 ? '' : degree === 1 ? '\\,p' : `\\,p^{${degree}}`);
@@ -52,7 +53,7 @@ export function segmentSection() {
       );
       setText(
         text,
-        'Hover over the road, or move p̄, to choose a segment. Its coefficients, with the local parameter p from 0 to 1:',
+        `${capital(gestures().point)} the road, or move p̄, to choose a segment. Its coefficients, with the local parameter p from 0 to 1:`,
       );
       const names = coefficients
         .map((_, degree) => `${LETTERS[degree]}_{${index}}${power(degree)}`)

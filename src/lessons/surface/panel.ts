@@ -9,6 +9,7 @@ import { notesSymbols, rowsSlip } from './notes';
 import type { Coordinate, SurfaceLook, SurfaceState } from './state';
 import { continuityName, joinVerdict } from './notation';
 import './surface.css';
+import { gestures } from '../../kit/gestures';
 
 /** Digits of the check table: enough to see that three ways agree to the last digit shown. */
 const DIGITS = 10;
@@ -99,7 +100,7 @@ export function surfacePanel(
     h(
       'p',
       { class: 'note' },
-      'u is the lesson’s parameter (the slider with Play above); v is the slider below. Drag the view to orbit, wheel or pinch to zoom. Drag a control point in the plane facing you, or hold Shift to move it along one axis; Tab to a point and use the arrow keys (Ctrl+↑/↓ for z).',
+      `u is the lesson’s parameter (the slider with Play above); v is the slider below. To turn the patch, ${gestures().orbit}; to zoom, ${gestures().zoom}. A control point moves in the plane facing you: ${gestures().move}${gestures().move.includes('Tab') ? ' (Shift: along one axis; Ctrl+↑/↓: along z)' : ''}.`,
     ),
     h('div', { class: 'lesson-tools surface-v' }, h('label', {}, 'v ', vSlider), vField),
     h('div', { class: 'lesson-tools' }, ...look.labels),

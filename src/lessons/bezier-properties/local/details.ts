@@ -2,6 +2,7 @@ import { h } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
 import { type ExperimentPanel, arrangements } from '../experimentPanel';
 import type { ModelOf } from '../model';
+import { gestures } from '../../../kit/gestures';
 
 /** Only Pi moved, so the curve moved by W(N, i, t)·ΔPi: largest at t = i/N. */
 const boundShape = (n: number, i: number) =>
@@ -16,7 +17,7 @@ export const localPanel: ExperimentPanel<ModelOf<'local'>> = {
     const unmoved = h(
       'p',
       {},
-      'The dashed "before" curve is the current one. Drag an inner control point (or Tab to it and use the arrow keys) and compare.',
+      `The dashed "before" curve is the current one. Take an inner control point, ${gestures().move}, and compare.`,
     );
     const displacement = h('p', {});
     const bound = new LiveFormula(true);
