@@ -10,6 +10,8 @@
 
 /** Smallest size content is shrunk to before it scrolls instead. */
 const SMALLEST = 0.5;
+/** Nor is any text shrunk below this many CSS pixels (a laptop's panel, a phone): it scrolls. */
+const SMALLEST_PX = 12;
 
 /** Marks `el` to be fitted at the next fitToWidth. */
 export function markForFit(el: HTMLElement): HTMLElement {
@@ -30,15 +32,17 @@ export function fitToWidth(root: ParentNode): void {
     box: el.clientWidth,
     scroll: el.scrollWidth,
     width: contentWidth(el),
+    font: parseFloat(getComputedStyle(el).fontSize) || 16,
   }));
   pending.forEach((el, i) => {
-    const { box, scroll, width } = sizes[i];
+    const { box, scroll, width, font } = sizes[i];
     // Not laid out yet (hidden, or not in the page): try again next time.
     if (box <= 0) return;
     el.dataset.fit = 'done';
     const scale = Number(el.dataset.scale ?? '1');
     const natural = Math.max(width, scroll > box + 1 ? scroll : 0) / scale;
-    const fitted = natural > box + 1 ? Math.max(SMALLEST, (box / natural) * 0.98) : 1;
+    const smallest = Math.min(1, Math.max(SMALLEST, SMALLEST_PX / (font / scale)));
+    const fitted = natural > box + 1 ? Math.max(smallest, (box / natural) * 0.98) : 1;
     // Still too wide at the smallest size: it scrolls, so the keyboard must reach it.
     const scrolls = natural * fitted > box + 1;
     if (scrolls !== el.hasAttribute('tabindex')) {
