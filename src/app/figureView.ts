@@ -16,9 +16,9 @@ import { SpokenNames } from './spokenNames';
 
 export { drawHandles, plainLabel } from '../render/handles';
 
-/** A point marked over a figure: a guess (a cross) or the answer (a ring), with a short label. */
+/** A point marked over a figure: a guess (a cross), the answer (a ring) or a target (a ring with a dot), with a short label. */
 export interface FigureMark {
-  kind: 'guess' | 'answer';
+  kind: 'guess' | 'answer' | 'target';
   at: Point;
   label: string;
 }
@@ -125,7 +125,11 @@ export class FigureView<S, M> {
         this.choose(null);
         if (this.spec.kind !== 'space') host.tap(spec.id, this.view.toWorld(at));
       },
-      tapHandle: (id, type) => this.choose(type === 'mouse' ? null : id),
+      // A guess may be right next to a point: the tap is the guess, if one is asked for.
+      tapHandle: (id, type, at) => {
+        const guessed = this.spec.kind !== 'space' && host.tap(spec.id, this.view.toWorld(at));
+        this.choose(guessed || type === 'mouse' ? null : id);
+      },
     });
     // A finger has no right-click or Delete key: a tapped point offers its own delete button.
     this.deleteButton = document.createElement('button');
@@ -405,6 +409,11 @@ export class FigureView<S, M> {
     });
     const moved = this.handlesFor(this.host.model()).find((h) => h.id === id);
     if (moved) this.host.announce(`${plainLabel(moved.label)} at ${fmtPoint(moved.position)}`);
+  }
+
+  /** Where handle `id` is now, in the figure's coordinates, or null. */
+  handlePosition(id: string): Point | null {
+    return this.handlesFor(this.host.model()).find((h) => h.id === id)?.position ?? null;
   }
 
   /** Shows the delete button of the handle a finger tapped (null hides it). */

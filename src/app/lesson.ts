@@ -202,6 +202,8 @@ export interface LessonDefinition<S, M = S> {
    * and not drawn); null or absent: all of them.
    */
   figuresShown?(state: S): readonly string[] | null;
+  /** The id of the scene a state is in, where a field of the state says so (an exercise opens there). */
+  sceneOf?(state: S): string | undefined;
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
   /**
    * The tables a handout prints under a scene's last frame (de Casteljau's

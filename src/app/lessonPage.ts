@@ -17,7 +17,7 @@ import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
 import type { PresenterTool } from './keymap';
 import { buildLayout } from './layout';
-import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
+import type { AnyLesson, DrawInfo, LessonPanel, Point } from './lesson';
 import { LessonStore, normalizeState, type Loaded } from './lessonState';
 import type { LessonMeta } from './meta';
 import { Presenter } from './presenter';
@@ -259,7 +259,7 @@ export class LessonPage<S, M> {
       get: () => this.store.state,
       open: (state, scene) => {
         this.stopWalk();
-        this.enterScene(scene);
+        this.enterScene(scene, state);
         this.store.set(normalizeState(this.lesson, state).state);
         this.fit();
       },
@@ -276,6 +276,8 @@ export class LessonPage<S, M> {
         if (open && window.matchMedia?.('(max-width: 820px)').matches)
           requestAnimationFrame(() => this.figureBox.scrollIntoView({ block: 'start' }));
       },
+      tappable: (id) => this.lesson.figures.find((f) => f.id === id)?.kind !== 'space',
+      quiet: (on) => this.element.classList.toggle('practice-quiet', on),
       figureTitle: (id) => {
         const shown = this.figures.filter((f) => !f.element.hidden);
         const title = this.lesson.figures.find((f) => f.id === id)?.title;
@@ -314,7 +316,7 @@ export class LessonPage<S, M> {
    */
   private walk(state: S, scene: string | undefined): void {
     this.stopWalk();
-    this.enterScene(scene);
+    this.enterScene(scene, state);
     const key = this.lesson.steps?.key as keyof S | undefined;
     const start = key === undefined ? state : ({ ...state, [key]: 0 } as S);
     this.store.set(normalizeState(this.lesson, start).state);
@@ -337,9 +339,14 @@ export class LessonPage<S, M> {
     if (key !== undefined) this.walking = window.setTimeout(tick, reduced ? 0 : 700);
   }
 
-  /** The scene an exercise is set in (by id; the first without one) becomes the walker's. */
-  private enterScene(id: string | undefined): void {
-    const index = (this.lesson.scenes ?? []).findIndex((scene) => scene.id === id);
+  /**
+   * The scene an exercise is set in becomes the walker's: the one it names,
+   * else the one its state is in, else the first.
+   */
+  private enterScene(id: string | undefined, state: S): void {
+    const wanted =
+      id ?? (this.lesson.sceneOf as ((s: S) => string | undefined) | undefined)?.(state);
+    const index = (this.lesson.scenes ?? []).findIndex((scene) => scene.id === wanted);
     this.walker.restart(Math.max(0, index));
   }
 
@@ -631,6 +638,23 @@ export class LessonPage<S, M> {
       if (!drawing) return;
       await frame();
     }
+  }
+
+  /**
+   * Where a figure's point is on the screen (client pixels), and where its
+   * handle `id` is in the figure's coordinates: for tests that drag a point
+   * to a place worked out by hand.
+   */
+  probe(figure: string, point: readonly number[] | null, id: string | null) {
+    const view = this.figures.find((f) => f.spec.id === figure);
+    if (!view) return null;
+    const box = view.canvas.getBoundingClientRect();
+    const screen = point ? view.view.toScreen(point as Point) : null;
+    const handle = id ? view.handlePosition(id) : null;
+    return {
+      screen: screen ? [box.left + screen[0], box.top + screen[1]] : null,
+      handle,
+    };
   }
 
   /** Each figure's labels as last drawn, with its size: for the overlap check. */

@@ -315,6 +315,8 @@ Object.defineProperty(window, 'splineLab', {
       await page?.settled();
     },
     labels: () => page?.labelBoxes() ?? [],
+    probe: (figure: string, point: number[] | null, id: string | null) =>
+      page?.probe(figure, point, id) ?? null,
   }),
 });
 routing = route();

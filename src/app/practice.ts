@@ -30,8 +30,15 @@ export interface PracticeHost<S> {
   linkChanged(): void;
   /** The card opened or closed (the page makes room for it). */
   toggled(open: boolean): void;
+  /**
+   * Hides the lesson's own text while a question is open (its tables would
+   * give the answer away), and shows it again once it is answered.
+   */
+  quiet(on: boolean): void;
   /** The title of a figure, to say where to tap. */
   figureTitle(id: string): string;
+  /** Can a guess be placed on this figure with a tap (not a figure in space, turned by the finger)? */
+  tappable(id: string): boolean;
 }
 
 /** Reads a typed number: a minus sign or a decimal comma is accepted. */
@@ -108,6 +115,11 @@ export class Practice<S> {
         ),
       ),
       this.prompt,
+      h(
+        'p',
+        { class: 'practice-quiet-note' },
+        'The lesson’s text is folded away until you have answered, or asked Show me: its numbers would give the answer away.',
+      ),
       form,
       this.result,
       this.list,
@@ -140,12 +152,15 @@ export class Practice<S> {
     this.result.textContent = '';
     this.result.className = 'practice-result';
     this.showButton.disabled = false;
+    // A construction is helped by the lesson's live numbers; a question would be given away.
+    this.host.quiet(posed.task.kind !== 'construct');
     this.renderTally();
     this.host.redraw();
     this.host.linkChanged();
   }
 
   close(): void {
+    this.host.quiet(false);
     this.current = null;
     this.guess = null;
     this.element.hidden = true;
@@ -156,9 +171,12 @@ export class Practice<S> {
 
   /** The marks on a figure: the guess, and after the check the answer. */
   marks(figure: string): FigureMark[] {
-    const task = this.current?.posed.task;
-    if (task?.kind !== 'point' || task.figure !== figure) return [];
-    const marks: FigureMark[] = [];
+    const posed = this.current?.posed;
+    const marks: FigureMark[] = (posed?.marks ?? [])
+      .filter((mark) => mark.figure === figure)
+      .map((mark) => ({ kind: 'target', at: mark.at, label: mark.label }));
+    const task = posed?.task;
+    if (task?.kind !== 'point' || task.figure !== figure) return marks;
     if (this.guess) marks.push({ kind: 'guess', at: this.guess, label: 'guess' });
     if (this.revealed) marks.push({ kind: 'answer', at: task.answer, label: 'answer' });
     return marks;
@@ -226,7 +244,9 @@ export class Practice<S> {
       help = `Work it out, type ${labels.length === 1 ? 'it' : 'each number'}, then Check.`;
     } else if (task.kind === 'point') {
       labels = ['x', 'y'];
-      help = `Tap ${this.host.figureTitle(task.figure)} where you think it is (or type x and y), then Check.`;
+      help = this.host.tappable(task.figure)
+        ? `Tap ${this.host.figureTitle(task.figure)} where you think it is (or type x and y), then Check.`
+        : `Type x and y of your guess, then Check: it is marked on ${this.host.figureTitle(task.figure)}.`;
     } else {
       labels = [];
       help = 'Move the points on the figure, then Check.';
@@ -234,6 +254,8 @@ export class Practice<S> {
     const rows = labels.map(input);
     this.inputs = rows.map((row) => row.querySelector('input') as HTMLInputElement);
     setChildren(this.fields, h('p', { class: 'practice-help' }, help), rows);
+    if (task.kind === 'point') this.fields.dataset.figure = task.figure;
+    else delete this.fields.dataset.figure;
   }
 
   private check(): void {
@@ -259,6 +281,7 @@ export class Practice<S> {
       this.host.walk(current.posed.working, current.posed.scene);
     } else verdict = task.check(this.host.get());
     recordTry(this.host.slug, current.spec.id, verdict.correct);
+    if (verdict.correct || task.kind === 'point') this.host.quiet(false);
     this.say(verdict);
     this.renderList();
     this.renderTally();
@@ -272,6 +295,7 @@ export class Practice<S> {
   private showMe(): void {
     const current = this.current;
     if (!current) return;
+    this.host.quiet(false);
     const task = current.posed.task;
     if (task.kind === 'construct') {
       this.host.open(task.solution, current.posed.scene);

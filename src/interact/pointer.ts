@@ -22,8 +22,8 @@ export interface PointerCallbacks {
   remove?(id: string): void;
   /** A press and release on empty space without moving (a tap or a click). */
   tap?(at: Screen): void;
-  /** A handle pressed and released without moving it, with the pointer's type. */
-  tapHandle?(id: string, pointerType: string): void;
+  /** A handle pressed and released without moving it, with the pointer's type and where. */
+  tapHandle?(id: string, pointerType: string, at: Screen): void;
 }
 
 /** Slack for a finger versus a mouse: a fingertip is about 9 mm wide. */
@@ -159,7 +159,7 @@ export function attachPointer(canvas: HTMLElement, cb: PointerCallbacks): () => 
     if (pointers.size < 2) pinchStart = null;
     if (e.pointerType !== 'mouse') cb.hover(null);
     if (tap && tap.id === null) cb.tap?.(tap.at);
-    else if (tap?.id) cb.tapHandle?.(tap.id, e.pointerType);
+    else if (tap?.id) cb.tapHandle?.(tap.id, e.pointerType, tap.at);
   };
 
   const onLeave = () => {

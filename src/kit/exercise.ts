@@ -63,8 +63,17 @@ export interface Posed<S> {
   task: Task<S>;
   /** "Show me": the state whose steps show the working, walked from step 0 to its last. */
   working: S;
-  /** The id of the scene the exercise is set in (the scene buttons show it), if not the first. */
+  /** The id of the scene the exercise is set in, where the state alone does not say. */
   scene?: string;
+  /** Points the question names, marked on the figure (a target X to pass through). */
+  marks?: readonly ExerciseMark[];
+}
+
+/** A point a question names, drawn on its figure with its label. */
+export interface ExerciseMark {
+  figure: string;
+  at: Point;
+  label: string;
 }
 
 export interface ExerciseSpec<S> {

@@ -135,6 +135,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     })),
     normalize: spec.normalize,
     figuresShown: (state) => sceneOf(state)?.figures ?? null,
+    sceneOf: (state) => sceneOf(state)?.id,
     panel: spec.panel,
     tables: spec.tables,
     exercises: spec.exercises,

@@ -290,6 +290,7 @@ const throughPoint: ExerciseSpec<DeCasteljauState> = {
       prompt: `Move only ${name} so that the curve passes through X = ${pointText(target)} at t = ${words(t)}, within ${words(tolerance)}.`,
       task: { kind: 'construct', check, solution: walked(defaults, moved, t) },
       working: walked(defaults, moved, t),
+      marks: [{ figure: 'construction', at: target, label: 'X' }],
     };
   },
 };

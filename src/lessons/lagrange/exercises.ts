@@ -220,6 +220,7 @@ function steerAt(
     // The goal's P(t) is the target to rounding (under 0.01).
     task: { kind: 'construct', check, solution: { ...opened, points: goal } },
     working: { ...opened, points: goal },
+    marks: [{ figure: 'curve', at: target, label: 'target' }],
   };
 }
 

@@ -191,6 +191,7 @@ const steer: ExerciseSpec<QuadraticState> = {
       prompt: `With μ₁ = 0.5, drag P₁ until the dot for μ = ${mu} sits at ${pointWords(target)}, within ${STEER_TOLERANCE}.`,
       task: { kind: 'construct', check, solution },
       working: { ...solution, step: LAST_STEP },
+      marks: [{ figure: 'quadratic', at: target, label: 'target' }],
     };
   },
 };
