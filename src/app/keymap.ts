@@ -31,6 +31,8 @@ export interface KeyTarget {
   sidePanel(): void;
   /** Presenter view: shows or hides the lecturer's controls (toolbar, slider, steps, tools). */
   lecturerControls(): void;
+  /** Poses the next step as a question to the room; the next press reveals it. */
+  ask(): void;
   blank(): void;
   /** The screen is blanked: a clicker key only brings it back. */
   readonly blanked: boolean;
@@ -194,6 +196,12 @@ export const KEYS: readonly Binding[] = [
   },
   { keys: ['n', 'N'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.tool('hideNumbers') },
   { keys: ['a', 'A'], owner: 'unlessTyping', help: ['', ''], run: (t) => t.tool('hideLabels') },
+  {
+    keys: ['q', 'Q'],
+    owner: 'unlessTyping',
+    help: ['Q', 'Ask the room: pose the next step as a question; the next press reveals it'],
+    run: (t) => t.ask(),
+  },
   {
     keys: ['o', 'O'],
     owner: 'unlessTyping',

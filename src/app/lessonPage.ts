@@ -63,6 +63,10 @@ export class LessonPage<S, M> {
   private readonly practice?: Practice<S>;
   /** The button that opens practice, at the top of the panel. */
   private practiceEntry: HTMLElement | null = null;
+  /** The room is asked to predict the next step (presenter's Q). */
+  private asking = false;
+  /** The step the question was asked at: any other step answers it. */
+  private askedAt = '';
   /** The working being walked step by step ("Show me"), or 0. */
   private walking = 0;
   private readonly undoButton: HTMLButtonElement;
@@ -85,6 +89,7 @@ export class LessonPage<S, M> {
   private readonly unsubscribe: () => void;
   private readonly panelResize: ResizeObserver;
   private readonly aboveStage: ResizeObserver;
+
   private panelWidth = -1;
   private panelWidthChanged = false;
   /** The panel changed: fit its wide content at the start of the next frame. */
@@ -186,6 +191,7 @@ export class LessonPage<S, M> {
         { class: 'controls' },
         this.parameter?.element,
         this.walker.steps?.element,
+        this.textToggle,
         this.presenter.toolbar,
       ),
     );
@@ -236,6 +242,7 @@ export class LessonPage<S, M> {
     for (const el of [document.querySelector('.top-bar'), document.querySelector('.notices')])
       if (el) this.aboveStage.observe(el);
     this.aboveStage.observe(this.element.querySelector('.lesson-head') as Element);
+
     this.panel.element.classList.add('panel-pending');
     // Formula fonts arriving late change widths measured before them: fit again.
     document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
@@ -407,6 +414,25 @@ export class LessonPage<S, M> {
     this.walker.advance(delta);
   }
 
+  /**
+   * Predict, then show: the caption asks the room what the next step will
+   * show (nothing of it is drawn yet); the next press reveals it. Pressed
+   * again, the question is withdrawn.
+   */
+  ask(): void {
+    const { k, count } = this.walker.stepOf(this.store.state);
+    if (!this.asking && k >= count) {
+      this.shell.announce('The last step of this scene: nothing further to predict');
+      return;
+    }
+    this.asking = !this.asking;
+    this.askedAt = `${this.store.scene}/${k}`;
+    this.presenter.asking(this.asking);
+    this.shownStep = '';
+    this.panelState = null;
+    this.requestFrame();
+  }
+
   stepTo(end: 'first' | 'last'): void {
     this.walker.stepTo(end);
   }
@@ -440,6 +466,18 @@ export class LessonPage<S, M> {
     const sceneText = scene
       ? `${scene.label} · ${scenes.length > 1 ? `scene ${this.store.scene + 1}/${scenes.length}, ` : ''}step ${k}/${count}`
       : '';
+    if (this.asking && key !== this.askedAt) {
+      this.asking = false;
+      this.presenter.asking(false);
+    }
+    if (this.asking) {
+      this.presenter.setCaption(
+        sceneText,
+        `Predict before the next press: what will step ${k + 1} show, and why?`,
+        null,
+      );
+      return;
+    }
     this.presenter.setCaption(
       sceneText,
       steps ? steps.describe(state, k) : '',
@@ -737,6 +775,36 @@ export class LessonPage<S, M> {
     },
     '☰',
   );
+
+  /**
+   * A phone: the lesson's text (the step's numbers, its table) opens under
+   * the figure in one tap, with the figure kept in sight above it; a second
+   * tap goes back to the figure alone.
+   */
+  private readonly textToggle = h(
+    'button',
+    {
+      type: 'button',
+      class: 'text-toggle',
+      'aria-expanded': 'false',
+      onclick: () => this.toggleText(),
+    },
+    'Text and numbers ▾',
+  );
+
+  private toggleText(): void {
+    const open = this.element.classList.toggle('reading');
+    this.textToggle.setAttribute('aria-expanded', String(open));
+    this.textToggle.textContent = open ? 'Figure only ▴' : 'Text and numbers ▾';
+    const aside = this.element.querySelector('.panel');
+    requestAnimationFrame(() => {
+      if (!open || !aside) window.scrollTo({ top: 0 });
+      else {
+        const stage = this.figureBox.closest('.stage')!.getBoundingClientRect().height;
+        window.scrollTo({ top: aside.getBoundingClientRect().top + window.scrollY - stage });
+      }
+    });
+  }
 
   lecturerControls(): void {
     const shown = this.element.classList.toggle('controls-shown');

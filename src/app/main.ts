@@ -270,6 +270,7 @@ const keyTarget: KeyTarget = {
   presenter: () => toggleProjector(),
   sidePanel: () => page?.sidePanel(),
   lecturerControls: () => page?.lecturerControls(),
+  ask: () => page?.ask(),
   blank: () => page?.blank(),
   get blanked() {
     return page?.blanked ?? false;

@@ -155,6 +155,11 @@ export class Presenter {
    * The caption of the current step. Its formula is typeset again only when
    * its shape changes: a drag that changes its numbers rewrites their text.
    */
+  /** The caption is a question to the room (styled apart, so the room sees it is one). */
+  asking(on: boolean): void {
+    this.caption.classList.toggle('asking', on);
+  }
+
   setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
     setText(this.sceneText, scene);
     setText(this.stepText, step);

@@ -37,7 +37,7 @@ export class ScriptWalker<S> {
     private readonly host: WalkerHost,
   ) {
     if (lesson.steps || lesson.scenes?.length)
-      this.steps = new StepControl((delta) => this.advance(delta));
+      this.steps = new StepControl((delta) => this.advance(delta, true));
     this.sceneGroup = this.buildSceneGroup();
   }
 
@@ -108,8 +108,12 @@ export class ScriptWalker<S> {
     this.markScene(scene);
   }
 
-  /** The clicker: the next (or previous) step, and past the last (first) one the next (previous) scene. */
-  advance(delta: 1 | -1): void {
+  /**
+   * The clicker: the next (or previous) step, and past the last (first) one
+   * the next (previous) scene. A student's Next button (`button`) says
+   * "Scene done" first; a clicker's key goes straight on.
+   */
+  advance(delta: 1 | -1, button = false): void {
     const { k, count } = this.stepOf(this.store.state);
     const next = k + delta;
     if (next >= 0 && next <= count) {
@@ -119,7 +123,7 @@ export class ScriptWalker<S> {
     const scene = this.store.scene + delta;
     const scenes = this.lesson.scenes ?? [];
     if (scene >= 0 && scene < scenes.length) {
-      if (delta > 0 && this.doneAt !== this.store.state && this.host.pauseAtSceneEnd()) {
+      if (button && delta > 0 && this.doneAt !== this.store.state && this.host.pauseAtSceneEnd()) {
         this.doneAt = this.store.state;
         this.update(this.store.state);
         this.host.announce(`Scene done. Next: ${scenes[scene].label}`);

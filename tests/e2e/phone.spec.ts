@@ -99,3 +99,77 @@ for (const phone of PHONES) {
     }
   });
 }
+
+test.describe('a student with a phone in hand', () => {
+  test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+
+  test('past a scene’s last step, Next says “Scene done” before the next scene opens', async ({
+    page,
+  }) => {
+    await page.goto('./#/de-casteljau?scene=cubic&step=5');
+    const status = page.locator('.step-status');
+    await expect(status).toHaveText(/^Step 5\/5/);
+    await page.getByRole('button', { name: 'Next ▶' }).tap();
+    await expect(status).toHaveText('Scene done. Next: Quadratic.');
+    await page.getByRole('button', { name: 'Next scene ▶' }).tap();
+    await expect(status).toHaveText(/^Step 0\/4/);
+    await expect(page.locator('[data-scene="quadratic"]')).toHaveAttribute('aria-pressed', 'true');
+  });
+
+  test('a tapped point offers its Delete button, and the point goes', async ({ page }) => {
+    await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&step=0');
+    const proxy = page.locator('[data-handle="p1"]');
+    const box = (await proxy.boundingBox())!;
+    await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
+    const remove = page.getByRole('button', { name: 'Delete P1' });
+    await expect(remove).toBeVisible();
+    const size = (await remove.boundingBox())!;
+    expect(size.height).toBeGreaterThanOrEqual(44);
+    await remove.tap();
+    await expect(page).toHaveURL(/p=0,0;3,2;4,0&/);
+  });
+
+  test('the text opens under the figure in one tap, with the figure kept in sight', async ({
+    page,
+  }) => {
+    await page.goto('./#/road');
+    await settled(page);
+    await page.getByRole('button', { name: 'Text and numbers ▾' }).tap();
+    const figure = page.locator('.figure:not([hidden])').first();
+    const panel = page.locator('aside.panel');
+    await expect
+      .poll(async () => {
+        const [f, p] = [(await figure.boundingBox())!, (await panel.boundingBox())!];
+        // The figure is on screen at the top, the text starts right under it.
+        return f.y >= -1 && f.y + f.height <= 844 && Math.abs(p.y - (f.y + f.height)) < 200;
+      })
+      .toBe(true);
+    await page.getByRole('button', { name: 'Figure only ▴' }).tap();
+    await expect.poll(() => page.evaluate(() => window.scrollY)).toBe(0);
+  });
+
+  test('turning the phone keeps the reading position', async ({ page }) => {
+    await page.goto('./#/road');
+    await settled(page);
+    const heading = page.locator('aside.panel h2').nth(1);
+    await heading.evaluate((el) => window.scrollTo(0, el.getBoundingClientRect().top + scrollY));
+    // Let the page note what is at the top (it does so once per frame of scrolling).
+    await page.evaluate(
+      () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))),
+    );
+    await page.setViewportSize({ width: 844, height: 390 });
+    await expect.poll(async () => Math.abs((await heading.boundingBox())!.y)).toBeLessThan(40);
+  });
+
+  test('help starts with the finger', async ({ page }) => {
+    await page.goto('./#/de-casteljau');
+    await page.getByRole('button', { name: '?' }).tap();
+    const dialog = page.getByRole('dialog', { name: 'Help' });
+    await expect(dialog.locator('h3').first()).toHaveText('With a finger');
+    const box = (await dialog.boundingBox())!;
+    expect(box.width).toBeLessThanOrEqual(390);
+    await expect(page.locator('.panel .note').first()).not.toContainText(
+      /double-click|right-click/,
+    );
+  });
+});
