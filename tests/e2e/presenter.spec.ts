@@ -151,3 +151,21 @@ test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by t
   await settled(page);
   expect(await inked()).toBe(0);
 });
+
+test('Q asks the room to predict the next step; the next press reveals it', async ({ page }) => {
+  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&t=0.5&step=1');
+  await settled(page);
+  await page.keyboard.press('p');
+  const caption = page.locator('.caption');
+  const step = caption.locator('.caption-step');
+  await expect(step).toHaveText(/^Join them in order/);
+  await page.keyboard.press('q');
+  await expect(step).toHaveText('Predict before the next press: what will step 2 show, and why?');
+  await expect(caption).toHaveClass(/asking/);
+  // Asking changes no step: the figure still shows step 1.
+  expect((await linkState(page)).step).toBe('1');
+  await page.keyboard.press('PageDown');
+  await expect(step).toHaveText(/^Level 1/);
+  await expect(caption).not.toHaveClass(/asking/);
+  expect((await linkState(page)).step).toBe('2');
+});
