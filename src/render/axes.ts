@@ -60,6 +60,13 @@ export function drawGrid(painter: Painter): void {
   c.restore();
 }
 
+/** Label every k-th tick (k = 1, 2, 4, 5, 10, …) so that labelled ticks are `room` pixels apart. */
+export function labelEvery(spacing: number, room: number): number {
+  if (!(spacing > 0)) return 1;
+  for (const k of [1, 2, 4, 5, 10, 20, 50, 100]) if (spacing * k >= room) return k;
+  return 100;
+}
+
 export function drawPlotAxes(
   painter: Painter,
   bounds: Bounds,
@@ -109,11 +116,23 @@ export function drawPlotAxes(
   c.restore();
   const fmt = (n: number) => String(Number(n.toFixed(6)));
   const muted = { size: small, color: theme.muted };
+  // A short plot (a phone's strip) keeps every grid line but labels every
+  // k-th tick, so no two numbers overlap: each label at its own tick still.
+  const xEvery = labelEvery(
+    Math.abs(v.toScreen([xStep, 0])[0] - v.toScreen([0, 0])[0]),
+    small * (0.62 * Math.max(...xs.map((x) => fmt(x).length), 1) + 0.8),
+  );
+  const yEvery = labelEvery(
+    Math.abs(v.toScreen([0, yStep])[1] - v.toScreen([0, 0])[1]),
+    small * 1.4,
+  );
   for (const x of xs) {
+    if (Math.round(x / xStep) % xEvery !== 0) continue;
     const [sx, sy] = v.toScreen([x, bounds.minY]);
     painter.screenLabel(fmt(x), sx, sy + small * 0.9, { ...muted, align: 'center' });
   }
   for (const y of ys) {
+    if (Math.round(y / yStep) % yEvery !== 0) continue;
     const [sx, sy] = v.toScreen([bounds.minX, y]);
     painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...muted, align: 'right' });
   }
