@@ -24,6 +24,9 @@ export const trimmed = (value: number, digits: number) => String(Number(value.to
 /** A number in a caption: up to three decimals, trailing zeros dropped, a true minus sign. */
 export const words = (v: number) => trimmed(v, 3).replace('-', '−');
 
+/** A point in words: (2, −1.5). */
+export const pointWords = (p: readonly number[]) => `(${p.map(words).join(', ')})`;
+
 /** A number in a table cell of plain text: fixed `digits` decimals, a true minus sign, never "−0.0000". */
 export const fixed = (v: number, digits: number) => texNumber(v, digits).replace('-', '−');
 

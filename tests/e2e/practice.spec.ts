@@ -153,3 +153,38 @@ for (const [slug, cases] of Object.entries(LESSONS)) {
     );
   });
 }
+
+test('Show me walks the working to its last step and gives the answer; New numbers gives another seed; the card works by keyboard', async ({
+  page,
+}) => {
+  // de Casteljau, seed 2: P₂,₀ at t = 0.3 is (0.36, 1.69) (worked in practice/de-casteljau.ts).
+  await page.goto('./#/de-casteljau?ex=level-point&seed=2');
+  await expect(card(page)).toBeVisible();
+  // The question folds the lesson's text away (its tables would give the answer).
+  await expect(page.locator('aside.panel .presets')).toBeHidden();
+  await card(page).getByRole('button', { name: 'Show me' }).tap();
+  await expect(result(page)).toHaveText(/The answer: 0\.36, 1\.69\.$/);
+  await expect(page.locator('.step-status')).toHaveText(/^Step 5\/5/);
+  await expect(page.locator('aside.panel .presets')).toBeVisible();
+  // By keyboard: Tab into the fields, type, Enter checks.
+  await card(page).locator('.practice-fields input').first().focus();
+  await page.keyboard.type('0.36');
+  await page.keyboard.press('Tab');
+  await page.keyboard.type('1,69');
+  await page.keyboard.press('Enter');
+  await expect(result(page)).toHaveText(/^Correct/);
+  await expect(result(page)).toHaveAttribute('aria-live', 'polite');
+  await card(page).getByRole('button', { name: 'New numbers' }).tap();
+  await expect(page).not.toHaveURL(/seed=2$/);
+  await expect(page).toHaveURL(/ex=level-point&seed=\d+$/);
+  await expect(result(page)).toHaveText('');
+});
+
+test('a link to an exercise that does not exist opens the lesson with a notice', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau?ex=nope&seed=4');
+  await expect(page.locator('.notice')).toContainText('"nope" is not an exercise of this lesson');
+  await expect(card(page)).toBeHidden();
+  await expect(page.getByRole('button', { name: 'Practice' })).toBeVisible();
+});
