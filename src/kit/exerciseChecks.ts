@@ -6,6 +6,7 @@
  */
 import fc from 'fast-check';
 import { expect } from 'vitest';
+import type { FigureSpec } from '../app/lesson';
 import type { Point } from '../math';
 import type { PracticeCase } from '../../tests/e2e/practice/types';
 import { MAX_SEED, type ExerciseSpec } from './exercise';
@@ -24,11 +25,12 @@ export interface ExerciseCheckOptions<S> {
 }
 
 /**
- * Over seeds: the same seed poses the same exercise; the prompt is plain
- * words of at most two sentences; a number answer is finite and accepted, and
- * 3× the tolerance off is not; a point answer is accepted, and a guess 3× the
- * tolerance away is not; a construction's solution passes and the opening
- * figure does not.
+ * Over seeds: the same seed poses the same exercise (its state, its working
+ * and its task's answer, to the letter); the prompt is plain words of at most
+ * two sentences; a number answer is finite and accepted, and 3× the tolerance
+ * off is not (one off, where the answer is exact); a point answer is
+ * accepted, and a guess 3× the tolerance away is not; a construction's
+ * solution passes and the opening figure does not.
  */
 export function checkExercises<S>(
   exercises: readonly ExerciseSpec<S>[],
@@ -45,6 +47,9 @@ export function checkExercises<S>(
         const again = exercise.pose(seed, defaults);
         expect(again.prompt).toBe(posed.prompt);
         expect(again.state).toEqual(posed.state);
+        expect(again.working).toEqual(posed.working);
+        // The rest a link and "Show me" rely on (the answer, the solution, the marks).
+        expect(JSON.stringify(again)).toBe(JSON.stringify(posed));
         expect(posed.prompt).not.toMatch(/[\\$]/);
         expect(sentences(posed.prompt)).toBeLessThanOrEqual(2);
         const task = posed.task;
@@ -53,7 +58,8 @@ export function checkExercises<S>(
           expect(task.answer.every(Number.isFinite)).toBe(true);
           expect(task.fields.length).toBe(task.answer.length);
           expect(task.check(task.answer).correct).toBe(true);
-          expect(task.check(task.answer.map((v) => v + 3 * task.tolerance)).correct).toBe(false);
+          const off = 3 * task.tolerance || 1;
+          expect(task.check(task.answer.map((v) => v + off)).correct).toBe(false);
         } else if (task.kind === 'point') {
           expect(task.check(task.answer).correct).toBe(true);
           const off = [Math.cos(angle), Math.sin(angle)].map(
@@ -102,4 +108,25 @@ export function checkPracticeData<S>(
       expect(task.check(end).correct).toBe(true);
     } else throw new Error(`${id}: the case's answer is not of the task's kind (${task.kind})`);
   }
+}
+
+/**
+ * The browser test's drag, made with the lesson's own figures (for
+ * `checkPracticeData`): the handle is on its figure and moves to `to`; in
+ * space (a handle at [x, y, z]) along x and y only, its height kept, as the
+ * test's arrow keys move it.
+ */
+export function dragOnFigures<S, M>(lesson: {
+  figures: readonly FigureSpec<S, M>[];
+  derive(state: S): M;
+}): (state: S, figure: string, handle: string, to: Point) => S {
+  return (state, figure, handle, to) => {
+    const spec = lesson.figures.find((f) => f.id === figure);
+    expect(spec?.moveHandle, `figure ${figure} moves its handles`).toBeDefined();
+    const model = lesson.derive(state);
+    const at = spec!.handles?.(model).find((h) => h.id === handle);
+    expect(at, `handle ${handle} on figure ${figure}`).toBeDefined();
+    const target = at!.position.length === 3 ? [to[0], to[1], at!.position[2]] : to;
+    return spec!.moveHandle!(state, handle, target, model);
+  };
 }

@@ -6,7 +6,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import {
   type Point,
   bernstein,
@@ -21,8 +21,6 @@ import {
 } from '../../math';
 import { SCRIPTS } from './scripts';
 import { type ExperimentId, type PropertiesState, copy } from './state';
-
-const pointText = (p: Point) => `(${p.map((v) => words(v)).join(', ')})`;
 
 /** The experiment's figure as it opens at `step` (a step name of its script). */
 function opened(
@@ -190,12 +188,12 @@ const closedSmooth: ExerciseSpec<PropertiesState> = {
       if (strayed >= 0)
         return {
           correct: false,
-          message: `Move only P₁: P${sub(strayed)} belongs at ${pointText(points[strayed])}.`,
+          message: `Move only P₁: P${sub(strayed)} belongs at ${pointWords(points[strayed])}.`,
         };
       const hodograph = bezierDerivative([...s.points, s.points[0]]);
       const leaving = hodograph[0];
       const arriving = hodograph[hodograph.length - 1];
-      const tangents = `P′(0) = ${pointText(leaving)} and P′(1) = ${pointText(arriving)}`;
+      const tangents = `P′(0) = ${pointWords(leaving)} and P′(1) = ${pointWords(arriving)}`;
       if (distance(leaving, arriving) <= tolerance)
         return { correct: true, message: `Correct: ${tangents}, so the curve is C¹ at P₀.` };
       const corner = Math.abs((signedAngle(arriving, leaving) * 180) / Math.PI);
@@ -298,7 +296,7 @@ const inflection: ExerciseSpec<PropertiesState> = {
       if (strayed >= 0)
         return {
           correct: false,
-          message: `Move only ${name}: P${sub(strayed)} belongs at ${pointText(p[strayed])}.`,
+          message: `Move only ${name}: P${sub(strayed)} belongs at ${pointWords(p[strayed])}.`,
         };
       const seen = visibleInflections(s.points);
       if (seen.length > 0)

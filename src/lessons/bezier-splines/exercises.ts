@@ -12,7 +12,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import {
   type Point,
   bezierJointReport,
@@ -26,11 +26,9 @@ import { type BezierSplinesState, handTangents } from './state';
 
 type State = BezierSplinesState;
 
-const pt = (p: readonly number[]) => `(${words(p[0])}, ${words(p[1])})`;
-
 /** "p₀ (0, 1), p₁ (2, 0) and p₂ (4, 2)": the points as the prompt lists them. */
 function listed(points: readonly Point[]): string {
-  const names = points.map((p, i) => `p${sub(i)} ${pt(p)}`);
+  const names = points.map((p, i) => `p${sub(i)} ${pointWords(p)}`);
   return `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`;
 }
 
@@ -76,7 +74,7 @@ const mirrorControl: ExerciseSpec<State> = {
       `Reflect one point at a time: b₁ = 2p₁ − b₀, then b₂ = 2p₂ − b₁${k === 3 ? ', then b₃ = 2p₃ − b₂' : ''}.`;
     return {
       state,
-      prompt: `The C¹ quadratic spline through ${listed(points)} starts with b₀ = ${pt(b0)}. Where is b${i}, the middle control point of the piece from p${i} to p${sub(k + 1)} (within ${MIRROR_TOLERANCE})?`,
+      prompt: `The C¹ quadratic spline through ${listed(points)} starts with b₀ = ${pointWords(b0)}. Where is b${i}, the middle control point of the piece from p${i} to p${sub(k + 1)} (within ${MIRROR_TOLERANCE})?`,
       task: {
         kind: 'point',
         figure: 'main',
@@ -214,7 +212,7 @@ const c2Joint: ExerciseSpec<State> = {
       const joint = bezierJointReport(left, right);
       const velocity = distance(joint.leftVelocity, joint.rightVelocity);
       const second = distance(joint.leftSecond, joint.rightSecond);
-      const numbers = `At c₃, P′ is ${pt(joint.leftVelocity)} on the left and ${pt(joint.rightVelocity)} on the right; P″ is ${pt(joint.leftSecond)} and ${pt(joint.rightSecond)}.`;
+      const numbers = `At c₃, P′ is ${pointWords(joint.leftVelocity)} on the left and ${pointWords(joint.rightVelocity)} on the right; P″ is ${pointWords(joint.leftSecond)} and ${pointWords(joint.rightSecond)}.`;
       if (velocity > VELOCITY_TOLERANCE)
         return {
           correct: false,
@@ -232,7 +230,7 @@ const c2Joint: ExerciseSpec<State> = {
     };
     return {
       state: chain(beyond(r, c4, centre), beyond(r, c5, centre)),
-      prompt: `Keep c₁ ${pt(fixed[1])}, c₂ ${pt(fixed[2])}, c₃ ${pt(fixed[3])} and the other points where they are, and drag c₄ and c₅ until the joint at c₃ is C². P′ must agree there within ${VELOCITY_TOLERANCE} and P″ within ${SECOND_TOLERANCE}.`,
+      prompt: `Keep c₁ ${pointWords(fixed[1])}, c₂ ${pointWords(fixed[2])}, c₃ ${pointWords(fixed[3])} and the other points where they are, and drag c₄ and c₅ until the joint at c₃ is C². P′ must agree there within ${VELOCITY_TOLERANCE} and P″ within ${SECOND_TOLERANCE}.`,
       task: { kind: 'construct', check, solution },
       // The C² chain from the joints up: its pieces, the verdict C², tangents, curvature, comb.
       working: { ...solution, step: 0 },

@@ -6,7 +6,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import {
   type Point,
   bezierChainSegments,
@@ -53,9 +53,8 @@ function arch(r: Random): Point[] {
 }
 
 const pointName = (i: number) => `P${sub(i)}`;
-const pointText = (p: Point) => `(${p.map(words).join(', ')})`;
 const pointsText = (points: readonly Point[]) =>
-  points.map((p, i) => `${pointName(i)} = ${pointText(p)}`).join(', ');
+  points.map((p, i) => `${pointName(i)} = ${pointWords(p)}`).join(', ');
 
 /** Where is the centre of the osculating circle at P(t)? */
 const circleCentre: ExerciseSpec<CurvatureState> = {

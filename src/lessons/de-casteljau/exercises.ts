@@ -6,7 +6,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import {
   type Point,
   bernstein,
@@ -22,12 +22,9 @@ import type { DeCasteljauState } from './state';
 /** Values of t a student can multiply by hand. */
 const FRIENDLY_T = [0.2, 0.25, 0.3, 0.4, 0.6, 0.7, 0.75, 0.8];
 
-/** "(2, −1.5)": a point as the prompt and the hints write it. */
-const pointText = (p: Point) => `(${p.map((v) => words(v)).join(', ')})`;
-
 /** "P₀ = (0, 1), P₁ = (2, 3), …": the control points, to work with by hand. */
 const listText = (p: readonly Point[]) =>
-  p.map((q, i) => `P${sub(i)} = ${pointText(q)}`).join(', ');
+  p.map((q, i) => `P${sub(i)} = ${pointWords(q)}`).join(', ');
 
 /** P_{r,i} in Unicode, as the lesson's labels write it: P₂,₀. */
 const levelName = (r: number, i: number) => `P${sub(r)},${sub(i)}`;
@@ -269,11 +266,11 @@ const throughPoint: ExerciseSpec<DeCasteljauState> = {
       if (strayed >= 0)
         return {
           correct: false,
-          message: `Move only ${name}: P${sub(strayed)} belongs at ${pointText(p[strayed])}.`,
+          message: `Move only ${name}: P${sub(strayed)} belongs at ${pointWords(p[strayed])}.`,
         };
       const at = bezierPoint(state.p, t);
       const off = distance(at, target);
-      const where = `P(${words(t)}) is at ${pointText(at)}, ${words(off)} from X = ${pointText(target)}`;
+      const where = `P(${words(t)}) is at ${pointWords(at)}, ${words(off)} from X = ${pointWords(target)}`;
       if (off <= tolerance) return { correct: true, message: `Correct: ${where}.` };
       const needed = subtract(target, at).map((v) => v / weight);
       const slider =
@@ -282,12 +279,12 @@ const throughPoint: ExerciseSpec<DeCasteljauState> = {
           : ` (the check reads t = ${words(t)}; the slider is at ${words(state.t)})`;
       return {
         correct: false,
-        message: `Not yet: ${where}${slider}. P(${words(t)}) follows ${name} with the weight W(3, ${k}, ${words(t)}) = ${words(weight)}, so move ${name} by about ${pointText(needed)}.`,
+        message: `Not yet: ${where}${slider}. P(${words(t)}) follows ${name} with the weight W(3, ${k}, ${words(t)}) = ${words(weight)}, so move ${name} by about ${pointWords(needed)}.`,
       };
     };
     return {
       state: walked(defaults, p, t),
-      prompt: `Move only ${name} so that the curve passes through X = ${pointText(target)} at t = ${words(t)}, within ${words(tolerance)}.`,
+      prompt: `Move only ${name} so that the curve passes through X = ${pointWords(target)} at t = ${words(t)}, within ${words(tolerance)}.`,
       task: { kind: 'construct', check, solution: walked(defaults, moved, t) },
       working: walked(defaults, moved, t),
       marks: [{ figure: 'construction', at: target, label: 'X' }],

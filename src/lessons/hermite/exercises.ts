@@ -7,7 +7,7 @@ import {
   random,
 } from '../../kit/exercise';
 import { degenerate } from '../../kit/degenerate';
-import { words } from '../../kit/format';
+import { pointWords, words } from '../../kit/format';
 import {
   distance,
   hermiteCoefficients,
@@ -30,7 +30,6 @@ export const GUESS_TOLERANCE = 0.2;
 /** How close B₁ and B₂ must come: about 1.5% of the figure (some 10 units across), a finger's reach. */
 export const BEZIER_TOLERANCE = 0.15;
 
-const pointWords = (p: readonly number[]) => `(${p.map(words).join(', ')})`;
 /** Printed digits only: 1.8750000000000002 is shown, and checked, as 1.875. */
 const clean = (p: readonly number[]) => p.map((v) => Number(v.toPrecision(12)));
 

@@ -1,10 +1,10 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import data from '../../../tests/e2e/practice/lagrange';
-import type { PracticeCase } from '../../../tests/e2e/practice/types';
 import { defaultsOf } from '../../app/urlState';
 import { degenerate } from '../../kit/degenerate';
-import { type ExerciseSpec, MAX_SEED, type Posed } from '../../kit/exercise';
+import type { ExerciseSpec, Posed } from '../../kit/exercise';
+import { checkExercises, checkPracticeData, dragOnFigures, seeds } from '../../kit/exerciseChecks';
 import type { Point } from '../../math';
 import type { Bounds } from '../../render/projection';
 import { GUESS_TOLERANCE, STEER_TOLERANCE, exercises } from './exercises';
@@ -24,10 +24,6 @@ const inside = (p: Point, b: Bounds) =>
   p[0] >= b.minX && p[0] <= b.maxX && p[1] >= b.minY && p[1] <= b.maxY;
 const closeTo = (actual: readonly number[], expected: readonly number[]) =>
   expected.forEach((v, d) => expect(actual[d]).toBeCloseTo(v, 9));
-const practice: readonly PracticeCase[] = data;
-const seeds = fc.integer({ min: 1, max: MAX_SEED });
-/** Sentences end in '.', '?' or '!' before a space or the end (0.5 is no end). */
-const sentences = (text: string) => text.match(/[.?!](?=\s|$)/g)?.length ?? 0;
 
 function task<K extends 'point' | 'number' | 'construct'>(posed: Posed<LagrangeState>, kind: K) {
   expect(posed.task.kind).toBe(kind);
@@ -41,12 +37,11 @@ function task<K extends 'point' | 'number' | 'construct'>(posed: Posed<LagrangeS
 // e.g. L3(0.4) = (0.4)(0.15)(−0.1)(−0.6) / ((0.75)(0.5)(0.25)(−0.25)) = 0.0036 / −0.0234375.
 
 describe('the Lagrange lesson’s exercises', () => {
-  it('are the lesson’s, one of each kind at least', () => {
+  it('are the lesson’s, and pass the kit’s checks, the point to guess inside the figure’s frame', () => {
     expect(lesson.exercises).toBe(exercises);
-    expect(new Set(exercises.map((e) => e.kind))).toEqual(
-      new Set(['point', 'number', 'construct']),
-    );
-    expect(new Set(exercises.map((e) => e.id)).size).toBe(exercises.length);
+    checkExercises(exercises, defaults, {
+      inFigure: (state, answer) => answer.every(Number.isFinite) && inside(answer, frame(state)),
+    });
   });
 
   it('where: P(0.7) through five points, seed 1, worked by hand', () => {
@@ -152,45 +147,14 @@ describe('the Lagrange lesson’s exercises', () => {
   });
 
   it('agrees with the browser test’s practice data, dragging the handles it names', () => {
-    for (const { id, seed, prompt, answer } of practice) {
-      const posed = pose(id, seed);
-      for (const text of prompt) expect(posed.prompt).toContain(text);
-      const { task } = posed;
-      if ('point' in answer && task.kind === 'point') {
-        expect(task.check(answer.point).correct).toBe(true);
-      } else if ('numbers' in answer && task.kind === 'number') {
-        expect(task.check(answer.numbers).correct).toBe(true);
-        expect(task.check(answer.wrong).correct).toBe(false);
-      } else if ('moves' in answer && task.kind === 'construct') {
-        const end = answer.moves.reduce((s: LagrangeState, { figure, handle, to }) => {
-          const spec = lesson.figures.find((f) => f.id === figure)!;
-          expect(spec.handles!(derive(s)).map((h) => h.id)).toContain(handle);
-          return spec.moveHandle!(s, handle, [...to], derive(s));
-        }, posed.state);
-        expect(task.check(end).correct).toBe(true);
-      } else {
-        throw new Error(`${id}: the answer's kind is not the task's (${task.kind})`);
-      }
-    }
-    expect(new Set(practice.map((c) => c.id))).toEqual(new Set(exercises.map((e) => e.id)));
+    checkPracticeData(exercises, defaults, data, dragOnFigures(lesson));
   });
 
-  it('poses the same exercise for the same seed', () => {
-    for (const e of exercises) {
-      const [a, b] = [e.pose(4242, defaults), e.pose(4242, defaults)];
-      expect(a.prompt).toBe(b.prompt);
-      expect(a.state).toEqual(b.state);
-      expect(a.working).toEqual(b.working);
-    }
-  });
-
-  it('every seed: plain prompts of at most two sentences, five points in order, never on one line', () => {
+  it('every seed: five points in order, never on one line, workings walked to their end', () => {
     fc.assert(
       fc.property(seeds, (seed) => {
         for (const e of exercises) {
           const posed = e.pose(seed, defaults);
-          expect(posed.prompt).not.toMatch(/[\\$]/);
-          expect(sentences(posed.prompt)).toBeLessThanOrEqual(2);
           expect(posed.working.step).toBe(lastStep(posed.working));
           for (const s of [posed.state, posed.working]) {
             expect(s.points).toHaveLength(5);
@@ -202,40 +166,30 @@ describe('the Lagrange lesson’s exercises', () => {
     );
   });
 
-  it('every seed: where has its answer in the figure, hidden at step 0, and a strict tolerance', () => {
+  it('every seed: where is hidden at step 0, with a strict tolerance', () => {
     fc.assert(
       fc.property(seeds, (seed) => {
         const posed = pose('where', seed);
-        const { answer, tolerance, check } = task(posed, 'point');
-        expect(answer.every(Number.isFinite)).toBe(true);
-        expect(inside(answer, frame(posed.state))).toBe(true);
+        expect(task(posed, 'point').tolerance).toBe(GUESS_TOLERANCE);
         expect(derive(posed.state).shown.has('curve')).toBe(false);
-        expect(tolerance).toBe(GUESS_TOLERANCE);
-        expect(check(answer).correct).toBe(true);
-        expect(check([answer[0] - 3 * tolerance, answer[1]]).correct).toBe(false);
-        expect(check([answer[0], answer[1] + 3 * tolerance]).correct).toBe(false);
       }),
     );
   });
 
-  it('every seed: weight has a finite answer that passes, and a wrong one that does not', () => {
+  it('every seed: weight refuses an answer 2 tolerances off', () => {
     fc.assert(
       fc.property(seeds, (seed) => {
         const number = task(pose('weight', seed), 'number');
-        expect(number.answer.every(Number.isFinite)).toBe(true);
-        expect(number.check(number.answer).correct).toBe(true);
         expect(number.check([number.answer[0] + 2 * number.tolerance]).correct).toBe(false);
       }),
     );
   });
 
-  it('every seed: steer opens unsolved, its solution passes, both within the figure', () => {
+  it('every seed: steer’s target and solution are on the figure, its tolerance a finger’s reach', () => {
     fc.assert(
       fc.property(seeds, (seed) => {
         const posed = pose('steer', seed);
-        const { check, solution } = task(posed, 'construct');
-        expect(check(posed.state).correct).toBe(false);
-        expect(check(solution).correct).toBe(true);
+        const { solution } = task(posed, 'construct');
         const view = frame(posed.state);
         const target = posed.prompt.match(/sits at \((−?[\d.]+), (−?[\d.]+)\)/)!;
         const [x, y] = [target[1], target[2]].map((v) => Number(v.replace('−', '-')));

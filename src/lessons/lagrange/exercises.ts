@@ -7,7 +7,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import { distance, lagrangeBasis, lagrangePoint, parameterValues, type Point } from '../../math';
 import { derive } from './model';
 import { interpolation } from './script';
@@ -26,7 +26,6 @@ export const GUESS_TOLERANCE = 0.2;
 /** How close the steered P(t) must come: about 1.5% of the figure, a finger's reach. */
 export const STEER_TOLERANCE = 0.1;
 
-const pointWords = (p: readonly number[]) => `(${p.map(words).join(', ')})`;
 /** Printed digits only: 0.37440000000000007 is shown, and checked, as 0.3744. */
 const clean = (v: number) => Number(v.toPrecision(12));
 const nodesWords = NODES.join(', ');

@@ -5,7 +5,7 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { words } from '../../kit/format';
+import { pointWords, words } from '../../kit/format';
 import {
   distance,
   parametricQuadratic,
@@ -25,7 +25,6 @@ export const GUESS_TOLERANCE = 0.2;
 /** How close the steered dot must come: about 1.5% of the figure, a finger's reach. */
 export const STEER_TOLERANCE = 0.1;
 
-const pointWords = (p: readonly number[]) => `(${p.map(words).join(', ')})`;
 /** Printed digits only: 1.6800000000000002 is shown, and checked, as 1.68. */
 const clean = (p: readonly number[]) => p.map((v) => Number(v.toPrecision(12)));
 

@@ -13,17 +13,15 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import { type Point, bezierPoint, distance, flatteningTree } from '../../math';
 import { flatteningOf } from './geometry';
 import { lineSteps } from './raster';
 import type { RasterState, View } from './state';
 
-const pt = (p: readonly number[]) => `(${words(p[0])}, ${words(p[1])})`;
-
 /** "P₀ (3, 4), P₁ (14, 20) and P₂ (28, 6)": the control points as the prompt lists them. */
 function listed(points: readonly Point[]): string {
-  const names = points.map((p, i) => `P${sub(i)} ${pt(p)}`);
+  const names = points.map((p, i) => `P${sub(i)} ${pointWords(p)}`);
   return `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`;
 }
 
@@ -170,7 +168,7 @@ const nextPixel: ExerciseSpec<RasterState> = {
     ].filter((m) => m.values.some((v, d) => v !== answer[d]));
     return {
       state,
-      prompt: `A line rasteriser draws the segment from pixel ${pt(first)} to pixel ${pt(last)}, one pixel per step. Which pixel does it light after ${pt(now)} (exact whole numbers)?`,
+      prompt: `A line rasteriser draws the segment from pixel ${pointWords(first)} to pixel ${pointWords(last)}, one pixel per step. Which pixel does it light after ${pointWords(now)} (exact whole numbers)?`,
       task: {
         kind: 'number',
         fields: ['x', 'y'],
@@ -349,7 +347,7 @@ const twoSegments: ExerciseSpec<RasterState> = {
     };
     return {
       state: shaped(at(far)),
-      prompt: `Keep P₀ ${pt(p0)} and P₂ ${pt(p2)}, and drag P₁ so that adaptive flattening to τ = ${SPLIT_TOLERANCE} px draws the quadratic with exactly two segments. The whole curve must be split at t = ½, and both halves must then be flat enough.`,
+      prompt: `Keep P₀ ${pointWords(p0)} and P₂ ${pointWords(p2)}, and drag P₁ so that adaptive flattening to τ = ${SPLIT_TOLERANCE} px draws the quadratic with exactly two segments. The whole curve must be split at t = ½, and both halves must then be flat enough.`,
       task: { kind: 'construct', check, solution },
       // The test on the whole curve, the split, both halves flat: two segments.
       working: solution,

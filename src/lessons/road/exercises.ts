@@ -12,18 +12,16 @@ import {
   checkPoint,
   random,
 } from '../../kit/exercise';
-import { sub, words } from '../../kit/format';
+import { pointWords, sub, words } from '../../kit/format';
 import { type Point, bezierDerivative, bezierPoint, distance } from '../../math';
 import { type Road, buildRoad } from './roads';
 import { roadScript } from './script';
 import { buildSolve } from './solve';
 import type { RoadState } from './state';
 
-const pt = (p: readonly number[]) => `(${words(p[0])}, ${words(p[1])})`;
-
 /** "P₀ (0, 4), P₁ (22, 14) and P₂ (40, 6)": the villages as the prompt lists them. */
 function listed(villages: readonly Point[]): string {
-  const names = villages.map((p, i) => `P${sub(i)} ${pt(p)}`);
+  const names = villages.map((p, i) => `P${sub(i)} ${pointWords(p)}`);
   return `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`;
 }
 
@@ -249,7 +247,7 @@ const quadraticArrival: ExerciseSpec<RoadState> = {
         return { correct: false, message: 'Show the quadratic road again: this is about its B₀.' };
       const arrival = arrivalGradient(s);
       const off = distance(arrival, target);
-      const now = `The road arrives at P${sub(m)} with D${sub(m)} = 2(P${sub(m)} − B${sub(m - 1)}) = ${pt(arrival)}, ${words(off)} from ${pt(target)}.`;
+      const now = `The road arrives at P${sub(m)} with D${sub(m)} = 2(P${sub(m)} − B${sub(m - 1)}) = ${pointWords(arrival)}, ${words(off)} from ${pointWords(target)}.`;
       return off <= ARRIVAL_TOLERANCE
         ? { correct: true, message: `Correct. ${now}` }
         : {
@@ -259,7 +257,7 @@ const quadraticArrival: ExerciseSpec<RoadState> = {
     };
     return {
       state: built(start),
-      prompt: `The villages are ${listed(villages)}. Drag B₀ so that the quadratic road arrives at P${sub(m)} with gradient D${sub(m)} = ${pt(target)}, within ${ARRIVAL_TOLERANCE}.`,
+      prompt: `The villages are ${listed(villages)}. Drag B₀ so that the quadratic road arrives at P${sub(m)} with gradient D${sub(m)} = ${pointWords(target)}, within ${ARRIVAL_TOLERANCE}.`,
       task: { kind: 'construct', check, solution },
       // From B₀, each control point the reflection of the one before: B₁, B₂, and the end.
       working: { ...solution, step: 0 },
