@@ -26,7 +26,7 @@ import { Trails } from './trails';
 import { UrlSync } from './urlSync';
 import type { ExerciseSpec } from '../kit/exercise';
 import { Practice } from './practice';
-import { defaultsOf, practiceQuery, type Schema } from './urlState';
+import { defaultsOf, type Schema, withPractice } from './urlState';
 
 /** What the app shell offers a lesson page. */
 export interface Shell {
@@ -145,9 +145,8 @@ export class LessonPage<S, M> {
       theme: () => shell.theme(),
     });
     this.url = new UrlSync(lesson.slug, () => {
-      // An exercise's link is its id and seed: they pose everything it shows.
-      const practice = this.practice?.link();
-      return practice ? practiceQuery(practice) : this.store.query(this.views());
+      // An exercise's link: its id and seed, then the figure as the student has it now.
+      return withPractice(this.practice?.link() ?? null, this.store.query(this.views()));
     });
 
     const host = { get: () => this.store.state, set, settle: () => this.url.write() };
@@ -310,9 +309,10 @@ export class LessonPage<S, M> {
       ),
     );
     if (loaded.practice) {
-      const { id, seed } = loaded.practice;
-      // After the page is built: the exercise sets the state and the scene.
-      queueMicrotask(() => practice.start(id, seed));
+      const { id, seed, kept } = loaded.practice;
+      // After the page is built: the exercise sets the state and the scene
+      // (the figure the link kept, if it kept one: the student's own work).
+      queueMicrotask(() => practice.start(id, seed, kept ? loaded.state : undefined));
     }
     return practice;
   }
@@ -724,9 +724,11 @@ export class LessonPage<S, M> {
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();
     if (loaded.practice && this.practice) {
-      const { id, seed } = loaded.practice;
+      const { id, seed, kept } = loaded.practice;
       const now = this.practice.link();
-      if (now?.id !== id || now.seed !== seed) this.practice.start(id, seed);
+      if (now?.id !== id || now.seed !== seed)
+        this.practice.start(id, seed, kept ? loaded.state : undefined);
+      else if (kept) this.store.set(loaded.state);
       return;
     }
     if (this.practice?.active) this.practice.close();

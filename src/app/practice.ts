@@ -136,8 +136,11 @@ export class Practice<S> {
     return this.current ? { id: this.current.spec.id, seed: this.current.seed } : null;
   }
 
-  /** Opens an exercise with a seed (from a link, a button, or New numbers). */
-  start(id: string, seed: number): void {
+  /**
+   * Opens an exercise with a seed (from a link, a button, or New numbers),
+   * on its own figure or on the one a link kept (`kept`).
+   */
+  start(id: string, seed: number, kept?: S): void {
     const spec = this.exercises.find((e) => e.id === id) ?? this.exercises[0];
     const posed = spec.pose(seed, this.host.defaults);
     this.current = { spec, seed, posed };
@@ -145,7 +148,7 @@ export class Practice<S> {
     this.revealed = false;
     this.element.hidden = false;
     this.host.toggled(true);
-    this.host.open(posed.state, posed.scene);
+    this.host.open(kept ?? posed.state, posed.scene);
     this.renderList();
     this.prompt.textContent = posed.prompt;
     this.renderFields(posed);

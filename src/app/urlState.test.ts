@@ -8,6 +8,7 @@ import {
   defaultsOf,
   encodeState,
   practiceQuery,
+  withPractice,
 } from './urlState';
 
 type Point2 = readonly number[];
@@ -220,13 +221,21 @@ describe("an exercise's link (ex and seed)", () => {
   it('reads the exercise and its seed, and writes them back', () => {
     const decoded = decodeState(schema, 'ex=weight&seed=4242', [], [], exercises);
     expect(decoded.issues).toEqual([]);
-    expect(decoded.practice).toEqual({ id: 'weight', seed: 4242 });
+    expect(decoded.practice).toEqual({ id: 'weight', seed: 4242, kept: false });
     expect(practiceQuery({ id: 'weight', seed: 4242 })).toBe('ex=weight&seed=4242');
+    expect(withPractice({ id: 'weight', seed: 4242 }, 't=0.3')).toBe('ex=weight&seed=4242&t=0.3');
+    expect(withPractice(null, 't=0.3')).toBe('t=0.3');
+  });
+  it('a link that also carries the figure keeps it (the student’s own work)', () => {
+    const decoded = decodeState(schema, 'ex=weight&seed=7&t=0.25', [], [], exercises);
+    expect(decoded.practice).toEqual({ id: 'weight', seed: 7, kept: true });
+    expect(decoded.state.t).toBe(0.25);
   });
   it('an exercise without a seed opens with seed 1', () => {
     expect(decodeState(schema, 'ex=where', [], [], exercises).practice).toEqual({
       id: 'where',
       seed: 1,
+      kept: false,
     });
   });
   it('an unknown exercise or a bad seed is named, and the lesson opens as usual', () => {
@@ -234,7 +243,7 @@ describe("an exercise's link (ex and seed)", () => {
     expect(unknown.practice).toBeNull();
     expect(unknown.issues.join(' ')).toMatch(/"nope" is not an exercise/);
     const bad = decodeState(schema, 'ex=where&seed=-5', [], [], exercises);
-    expect(bad.practice).toEqual({ id: 'where', seed: 1 });
+    expect(bad.practice).toEqual({ id: 'where', seed: 1, kept: false });
     expect(bad.issues.join(' ')).toMatch(/seed: "-5" is not a whole number/);
     const big = decodeState(schema, 'ex=where&seed=1234567', [], [], exercises);
     expect(big.issues.join(' ')).toMatch(/not a whole number from 1 to 999999/);

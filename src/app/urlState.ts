@@ -32,6 +32,8 @@ export interface Decoded<S> {
 export interface PracticeLink {
   id: string;
   seed: number;
+  /** The link also carries the figure as the student left it (fields of the state). */
+  kept?: boolean;
 }
 
 /** The keys of an exercise's link (owned by the shell, like the scene). */
@@ -41,6 +43,10 @@ export const SEED_KEY = 'seed';
 /** The link of an exercise: its id and seed say everything it shows. */
 export const practiceQuery = (practice: PracticeLink) =>
   `${EXERCISE_KEY}=${encodeURIComponent(practice.id)}&${SEED_KEY}=${practice.seed}`;
+
+/** Where in a link the exercise's keys go: first, before the state they were posed with. */
+export const withPractice = (practice: PracticeLink | null, query: string) =>
+  practice ? `${practiceQuery(practice)}${query ? `&${query}` : ''}` : query;
 
 /** Longest query string we read at all: a real state is far shorter. */
 export const MAX_QUERY_LENGTH = 20_000;
@@ -193,6 +199,7 @@ export function decodeState<S>(
   }
   if (seed !== null && exercise === null && !issues.some((i) => i.startsWith(EXERCISE_KEY)))
     issues.push(`${SEED_KEY}: a seed without an exercise (ex=…) was ignored`);
-  const practice = exercise === null ? null : { id: exercise, seed: seed ?? 1 };
+  const practice =
+    exercise === null ? null : { id: exercise, seed: seed ?? 1, kept: given.size > 0 };
   return { state: state as S, issues, views, scene, practice };
 }
