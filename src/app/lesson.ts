@@ -7,6 +7,7 @@ import type { Point } from '../math';
 import type { CameraSettings } from '../render/orbitCamera';
 import type { Painter } from '../render/painter';
 import type { Bounds } from '../render/projection';
+import type { Letter } from '../render/notation';
 import type { Theme } from '../render/theme';
 import type { HistoryOptions } from './history';
 import type { ExerciseSpec } from '../kit/exercise';
@@ -191,6 +192,12 @@ export interface LessonDefinition<S, M = S> {
   /** Side by side on a wide screen (default), stacked, or a tree of rows, columns and grids. */
   layout?: 'row' | 'column' | LayoutNode;
   parameter?: ParameterSpec<S>;
+  /**
+   * The letter the lesson's text writes its curve parameter with ('t' or
+   * 'mu'); the reader's chosen letter replaces it in everything shown. Absent
+   * for a lesson whose letters are all its own (a surface's u and v).
+   */
+  letter?: Letter;
   /** The construction's steps (the clicker's unit). */
   steps?: StepsSpec<S, M>;
   /** The lesson's script: its scenes in teaching order (the first is what the lesson opens with). */

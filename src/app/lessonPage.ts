@@ -26,7 +26,8 @@ import { Trails } from './trails';
 import { UrlSync } from './urlSync';
 import type { ExerciseSpec } from '../kit/exercise';
 import { Practice } from './practice';
-import { defaultsOf, type Schema, withPractice } from './urlState';
+import { defaultsOf, type Schema, withLetter, withPractice } from './urlState';
+import { chosenLetter } from '../render/notation';
 
 /** What the app shell offers a lesson page. */
 export interface Shell {
@@ -146,7 +147,11 @@ export class LessonPage<S, M> {
     });
     this.url = new UrlSync(lesson.slug, () => {
       // An exercise's link: its id and seed, then the figure as the student has it now.
-      return withPractice(this.practice?.link() ?? null, this.store.query(this.views()));
+      // The reader's letter for the parameter goes first, when it is not the usual t.
+      return withLetter(
+        chosenLetter(),
+        withPractice(this.practice?.link() ?? null, this.store.query(this.views())),
+      );
     });
 
     const host = { get: () => this.store.state, set, settle: () => this.url.write() };

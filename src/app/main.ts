@@ -8,11 +8,16 @@ import { findLesson, lessons } from './registry';
 import { parseHash } from './router';
 import { applySettings, loadSettings, saveSettings } from './settings';
 import { helpDialog, openHelp } from './help';
+import { watchNotation } from './notationDom';
+import { takeLetter, withLetter } from './urlState';
+import { LETTERS, LETTER_FORMS, type Letter, setNotation } from '../render/notation';
 import { type KeyTarget, bindingFor, restoresBlank } from './keymap';
 
 const settings = loadSettings();
 let theme = applySettings(settings);
 let page: LessonPage<unknown, unknown> | null = null;
+/** The letter the open page was built with: another letter builds it again. */
+let pageLetter: Letter = settings.letter;
 /** The latest navigation: a lesson that finishes loading after another was asked for is dropped. */
 let routeToken = 0;
 /** The navigation in progress (a lesson's code may still be loading). */
@@ -55,6 +60,18 @@ const projectorButton = button(
   'for-projector',
 );
 const darkButton = button('Dark', 'Dark theme (D)', () => toggleDark(), settings.dark);
+const LETTER_WORDS: Record<Letter, string> = { mu: 'lecture', u: 'slides', t: 'practical' };
+const letterSelect = h(
+  'select',
+  {
+    class: 'letter-setting',
+    'aria-label': 'Parameter letter',
+    title: `How the curve parameter is written: ${LETTERS.map((l) => `${LETTER_FORMS[l].plain} as in ${LETTER_FORMS[l].source}`).join(', ')}`,
+    onchange: () => chooseLetter(letterSelect.value as Letter),
+  },
+  ...LETTERS.map((l) => h('option', { value: l }, `${LETTER_FORMS[l].plain} (${LETTER_WORDS[l]})`)),
+);
+letterSelect.value = settings.letter;
 const topBar = h(
   'header',
   { class: 'top-bar' },
@@ -64,6 +81,7 @@ const topBar = h(
     { class: 'app-tools', 'aria-label': 'Display' },
     projectorButton,
     darkButton,
+    letterSelect,
     button('Full screen', 'Full screen (F)', () => toggleFullscreen(), undefined, 'for-projector'),
     button('?', 'Help: touch, mouse, keyboard and clicker (?)', () => openHelp(help)),
   ),
@@ -113,6 +131,18 @@ function rerender(): void {
   else if (parseHash(location.hash).slug === null) showGallery();
 }
 
+/** The reader's letter for the curve parameter: kept on the device, in the link, and the page says it. */
+function chooseLetter(letter: Letter): void {
+  if (letter === settings.letter) return;
+  settings.letter = letter;
+  saveSettings(settings);
+  letterSelect.value = letter;
+  setNotation(page?.lesson.letter ?? null, letter);
+  // The link takes the letter now; the page is built again in it.
+  page?.writeUrl();
+  routing = route();
+}
+
 function toggleProjector(): void {
   settings.projector = !settings.projector;
   rerender();
@@ -158,7 +188,15 @@ async function loadFor<T>(
 
 async function route(): Promise<void> {
   const token = ++routeToken;
-  const { slug: path, query } = parseHash(location.hash);
+  const { slug: path, query: linkQuery } = parseHash(location.hash);
+  // A link's letter is the reader's from now on (a lecturer's link opens in the lecturer's letter).
+  const taken = takeLetter(linkQuery);
+  const query = taken.rest;
+  if (taken.letter && taken.letter !== settings.letter) {
+    settings.letter = taken.letter;
+    saveSettings(settings);
+    letterSelect.value = taken.letter;
+  }
   const handout = path?.endsWith(HANDOUT) ?? false;
   const slug = handout && path ? path.slice(0, -HANDOUT.length) : path;
   if (handout && slug !== null) {
@@ -170,10 +208,11 @@ async function route(): Promise<void> {
   }
   routedHandout = null;
   document.body.classList.remove('handout-mode');
-  if (slug !== null && page && page.lesson.slug === slug) {
+  if (slug !== null && page && page.lesson.slug === slug && pageLetter === settings.letter) {
     // A bare link to the open lesson (“#/de-casteljau”) keeps what is on
     // screen, as opening it afresh restores the last state; a link with a
     // state (typed into the address bar, or back/forward) applies it.
+    if (taken.issue) notice(taken.issue);
     if (query === '') page.keepState();
     else page.applyQuery(loadState(page.lesson, query, null));
     return;
@@ -181,6 +220,8 @@ async function route(): Promise<void> {
   page?.destroy();
   page = null;
   notices.replaceChildren();
+  if (taken.issue) notice(taken.issue);
+  setNotation(null, settings.letter);
   const meta = slug === null ? undefined : findLesson(slug);
   if (slug !== null && !meta) {
     notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
@@ -203,6 +244,8 @@ async function route(): Promise<void> {
   } catch {
     storage = null;
   }
+  setNotation(lesson.letter ?? null, settings.letter);
+  pageLetter = settings.letter;
   page = new LessonPage(meta, lesson, loadState(lesson, query, storage), {
     theme: () => theme,
     notice,
@@ -235,6 +278,7 @@ async function openHandout(token: number, slug: string, query: string): Promise<
   );
   if (!loaded) return;
   const [lesson, { HandoutPage }, { readOptions }] = loaded;
+  setNotation(lesson.letter ?? null, settings.letter);
   const read = readOptions(
     query,
     (lesson.scenes ?? []).map((scene) => scene.id),
@@ -242,7 +286,9 @@ async function openHandout(token: number, slug: string, query: string): Promise<
   const state = loadState(lesson, read.lessonQuery, null);
   for (const issue of [...read.issues, ...state.issues]) notice(issue);
   document.body.classList.add('handout-mode');
-  const handoutPage = new HandoutPage(meta, lesson, state, read.lessonQuery, read.options, {
+  // The handout's links (its title block, its QR code, back to the lesson) keep the reader's letter.
+  const lessonQuery = withLetter(settings.letter, read.lessonQuery);
+  const handoutPage = new HandoutPage(meta, lesson, state, lessonQuery, read.options, {
     notice,
     replaceLink: (hash) => {
       routedHandout = hash;
@@ -252,6 +298,8 @@ async function openHandout(token: number, slug: string, query: string): Promise<
   routedHandout = location.hash;
   setChildren(main, handoutPage.element);
 }
+
+watchNotation(main);
 
 window.addEventListener('hashchange', () => {
   routing = route();

@@ -1,9 +1,12 @@
+import { DEFAULT_LETTER, type Letter, parseLetter } from '../render/notation';
 import { makeTheme, type Theme } from '../render/theme';
 
 /** Display settings that belong to the device, not to a lesson's link. */
 export interface Settings {
   projector: boolean;
   dark: boolean;
+  /** The curve parameter's letter: μ (the lecture notes), u (the slides) or t (the practical). */
+  letter: Letter;
 }
 
 const KEY = 'spline-lab:settings';
@@ -11,7 +14,7 @@ const KEY = 'spline-lab:settings';
 export function loadSettings(): Settings {
   const prefersDark =
     typeof matchMedia === 'function' && matchMedia('(prefers-color-scheme: dark)').matches;
-  const fallback = { projector: false, dark: prefersDark };
+  const fallback: Settings = { projector: false, dark: prefersDark, letter: DEFAULT_LETTER };
   try {
     const raw = localStorage.getItem(KEY);
     if (!raw) return fallback;
@@ -21,6 +24,7 @@ export function loadSettings(): Settings {
     return {
       projector: record.projector === true,
       dark: typeof record.dark === 'boolean' ? record.dark : prefersDark,
+      letter: (typeof record.letter === 'string' && parseLetter(record.letter)) || DEFAULT_LETTER,
     };
   } catch {
     return fallback;

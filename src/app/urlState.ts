@@ -12,6 +12,7 @@
 import { type Field, SAFE_VALUE, quote } from './fields';
 
 export type { Field } from './fields';
+import { DEFAULT_LETTER, LETTER_KEY, type Letter, parseLetter } from '../render/notation';
 
 /** The schema of a lesson state `S`: one field per key. */
 export type Schema<S> = { readonly [K in keyof S]: Field<S[K]> };
@@ -49,6 +50,39 @@ export const withPractice = (practice: PracticeLink | null, query: string) =>
   practice ? `${practiceQuery(practice)}${query ? `&${query}` : ''}` : query;
 
 /** Longest query string we read at all: a real state is far shorter. */
+/**
+ * The parameter's letter a link names (`par=mu`, the shell's like the scene),
+ * taken out of the query: the rest is the lesson's. A letter that is none of
+ * μ, u, t is said, and the reader's own letter stays.
+ */
+export function takeLetter(query: string): {
+  letter: Letter | null;
+  issue: string | null;
+  rest: string;
+} {
+  let letter: Letter | null = null;
+  let issue: string | null = null;
+  const rest = query.split('&').filter((part) => {
+    if (!part.startsWith(`${LETTER_KEY}=`)) return true;
+    let raw = part.slice(LETTER_KEY.length + 1);
+    try {
+      raw = decodeURIComponent(raw);
+    } catch {
+      // Left as written: it is refused below.
+    }
+    const parsed = parseLetter(raw);
+    if (parsed && letter === null) letter = parsed;
+    else if (!parsed)
+      issue = `${LETTER_KEY}: ${quote(raw)} is not a letter for the parameter (mu, u or t), so it is written as before`;
+    return false;
+  });
+  return { letter, issue, rest: rest.join('&') };
+}
+
+/** A lesson's query with the reader's letter in front, when it is not the usual one. */
+export const withLetter = (letter: Letter, query: string) =>
+  letter === DEFAULT_LETTER ? query : `${LETTER_KEY}=${letter}${query ? `&${query}` : ''}`;
+
 export const MAX_QUERY_LENGTH = 20_000;
 
 /** Prefix of the keys that carry a figure's view (pan and zoom, or camera). */

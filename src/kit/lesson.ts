@@ -19,6 +19,7 @@ import type {
 import type { Schema } from '../app/urlState';
 import type { Point } from '../math';
 import type { ExerciseSpec } from './exercise';
+import type { Letter } from '../render/notation';
 import type { Painter } from '../render/painter';
 import type { PointList } from './pointList';
 import type { Script, Revealed } from './script';
@@ -82,6 +83,8 @@ export interface KitLessonSpec<S, M extends { state: S }, N extends string> {
   figures: readonly KitFigure<S, M>[];
   layout?: 'row' | 'column' | LayoutNode;
   parameter?: ParameterSpec<S>;
+  /** The letter the lesson writes its curve parameter with (see LessonDefinition.letter). */
+  letter?: Letter;
   normalize?(state: S): { state: S; issues: string[] };
   panel(api: LessonApi<S, M>): LessonPanel<S, M>;
   /** The tables a handout prints under a scene's last frame (see LessonDefinition.tables). */
@@ -122,6 +125,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     figures: spec.figures.map((figure) => shellFigure(figure)),
     layout: spec.layout,
     parameter: spec.parameter,
+    letter: spec.letter,
     steps: {
       key: spec.step,
       count: (state) => scriptOf(state).lastStep(state),

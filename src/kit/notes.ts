@@ -1,4 +1,5 @@
 import { h } from '../app/dom';
+import { LETTERS, LETTER_FORMS, chosenLetter, shownLetter } from '../render/notation';
 
 // How a lesson speaks about the course notes (../shared/notes): where the
 // notes write something another way, or slip, the lesson says so beside the
@@ -26,7 +27,14 @@ export function documentName(doc: NotesDocument): string {
  * reads "The practical (TP2) writes the first derivative as d²/dt². The first derivative is d/dt."
  */
 export function notesSlip(doc: NotesDocument, written: string, correct: string): HTMLElement {
-  return h('p', { class: 'notes-aside', role: 'note' }, slipText(doc, written, correct));
+  // What the notes write is quoted as they write it; the correction is in the reader's letter.
+  const quoted = slipText(doc, written, '').trimEnd();
+  return h(
+    'p',
+    { class: 'notes-aside', role: 'note' },
+    h('span', { 'data-notation': 'own' }, quoted),
+    ` ${correct}`,
+  );
 }
 
 /** The words of `notesSlip`: "The lecture notes write …", "The practical (TP2) writes …". */
@@ -38,11 +46,27 @@ export function slipText(doc: NotesDocument, written: string, correct: string): 
 }
 
 /**
+ * Words or a formula quoted as the notes write them, letters and all: the
+ * reader's choice of letter for the parameter does not touch them
+ * (`notesQuote('x(t) = at³ + bt² + ct + d')`, or an element to keep whole).
+ */
+export function notesQuote(quoted: string | HTMLElement): HTMLElement {
+  if (typeof quoted !== 'string') {
+    quoted.dataset.notation = 'own';
+    return quoted;
+  }
+  return h('span', { 'data-notation': 'own' }, quoted);
+}
+
+/**
  * How the app's symbols read in the notes: one small key per lesson, e.g.
  * `notesKey([['P_{r,i}', 'b_i^{(r)} in the continuation notes'], …])`, rows of
  * (app's symbol in plain Unicode, how the notes write it).
  */
 export function notesKey(rows: readonly (readonly [string, string])[]): HTMLElement {
+  // The curve parameter's row is the kit's: the reader's letter, and how each document writes it.
+  const parameter = parameterRow();
+  if (parameter) rows = [parameter, ...rows];
   return h(
     'details',
     { class: 'notes-key' },
@@ -53,4 +77,17 @@ export function notesKey(rows: readonly (readonly [string, string])[]): HTMLElem
       rows.flatMap(([here, there]) => [h('dt', {}, here), h('dd', {}, there)]),
     ),
   );
+}
+
+/**
+ * The key's row for the curve parameter, in a lesson that writes one: the
+ * letter the reader chose, and the letter of each of the notes.
+ */
+export function parameterRow(): readonly [string, string] | null {
+  if (shownLetter() === null) return null;
+  const here = LETTER_FORMS[chosenLetter()].plain;
+  return [
+    `${here}, the curve’s parameter`,
+    `${LETTERS.map((l) => `${LETTER_FORMS[l].plain} in ${LETTER_FORMS[l].source}`).join(', ')}; the letter is chosen at the top of the page`,
+  ];
 }

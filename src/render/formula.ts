@@ -1,6 +1,7 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
+import { sayTex } from './notation';
 
 const OPTIONS = {
   throwOnError: false,
@@ -19,7 +20,7 @@ export function renderFormula(el: HTMLElement, tex: string, display = false): vo
   if (el.dataset.tex === tex) return;
   el.dataset.tex = tex;
   typesetSoon(el, () => {
-    katex.render(tex, el, { ...OPTIONS, displayMode: display });
+    katex.render(sayTex(tex), el, { ...OPTIONS, displayMode: display });
     if (display) markForFit(el);
   });
 }
@@ -148,7 +149,7 @@ export class LiveFormula {
     if (changed && this.display) markForFit(this.element);
     // The MathML keeps the TeX as typeset, numbers filled in (copy as TeX, assistive tools).
     if (changed && this.annotation) {
-      this.annotation.textContent = filled(parts);
+      this.annotation.textContent = sayTex(filled(parts));
     }
   }
 
@@ -163,7 +164,7 @@ export class LiveFormula {
       k++;
       return acc + slot + part;
     });
-    katex.render(tex, this.element, { ...OPTIONS, displayMode: this.display });
+    katex.render(sayTex(tex), this.element, { ...OPTIONS, displayMode: this.display });
     this.annotation = this.element.querySelector('annotation');
     const mtexts = [...this.element.querySelectorAll('mtext')];
     this.slots = [];

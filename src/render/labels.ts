@@ -4,6 +4,7 @@
  * boxed notes. Every placed label's box is recorded on the painter, so tests
  * can check that no two overlap.
  */
+import { say } from './notation';
 import type { Painter } from './painter';
 
 export interface LabelStyle {
@@ -76,6 +77,7 @@ export function drawScreenLabel(
   const theme = painter.theme;
   const view = painter.view;
   const size = style.size ?? theme.sizes.label;
+  text = say(text);
   const runs = splitSubscripts(text);
   const weight = style.bold ? 'bold ' : '';
   const mainFont = `${weight}${size}px ${theme.fontFamily}`;
@@ -184,6 +186,7 @@ export function drawNote(
   c.save();
   c.font = `${size}px ${theme.fontFamily}`;
   const lines: string[] = [];
+  text = say(text);
   for (const word of text.split(/\s+/).filter(Boolean)) {
     const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
     if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;

@@ -1,5 +1,8 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, snapshot, test, linkState } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState, inLecturesLetter } from './fixtures';
+
+// This lesson follows the lecture notes, and its tests read its text in their letter, μ.
+test.beforeEach(({ page }) => inLecturesLetter(page));
 
 const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
 const plot = (page: Page) => page.locator('canvas[data-figure="blending"]');

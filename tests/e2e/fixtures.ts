@@ -102,3 +102,25 @@ export async function linkState(page: Page): Promise<Record<string, string>> {
   await settled(page);
   return hashState(page);
 }
+
+/**
+ * The lessons whose text follows the lecture notes write the parameter μ:
+ * their tests read that text, so they open them in the lecture's letter
+ * (chosen as a reader would, kept on the device). Every letter is checked for
+ * every step in tests/notation.test.ts, and the setting itself in shell.spec.
+ */
+export const LECTURE_LETTER_LESSONS: readonly string[] = ['blending', 'hermite', 'quadratic'];
+
+export async function inLecturesLetter(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const key = 'spline-lab:settings';
+    let settings: Record<string, unknown> = {};
+    try {
+      settings = JSON.parse(localStorage.getItem(key) ?? '{}') as Record<string, unknown>;
+    } catch {
+      settings = {};
+    }
+    if (!('letter' in settings))
+      localStorage.setItem(key, JSON.stringify({ ...settings, letter: 'mu' }));
+  });
+}

@@ -1,5 +1,16 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test, linkState } from './fixtures';
+import {
+  expect,
+  expectHash,
+  hashState,
+  snapshot,
+  test,
+  linkState,
+  inLecturesLetter,
+} from './fixtures';
+
+// This lesson follows the lecture notes, and its tests read its text in their letter, μ.
+test.beforeEach(({ page }) => inLecturesLetter(page));
 
 const patches = (page: Page) => page.locator('canvas[data-figure="patches"]');
 const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');

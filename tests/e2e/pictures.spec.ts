@@ -17,7 +17,14 @@
  */
 import type { Page } from '@playwright/test';
 import { legibleFromTheBackRow } from './clicker';
-import { expect, lessonFolders, settled, test } from './fixtures';
+import {
+  expect,
+  inLecturesLetter,
+  LECTURE_LETTER_LESSONS,
+  lessonFolders,
+  settled,
+  test,
+} from './fixtures';
 
 const slugs = lessonFolders();
 
@@ -56,6 +63,8 @@ for (const slug of slugs) {
       page,
     }) => {
       test.setTimeout(90_000);
+      // The reviewed pictures of the lessons that follow the lecture notes are in its letter, μ.
+      if (LECTURE_LETTER_LESSONS.includes(slug)) await inLecturesLetter(page);
       if (mode === 'presenter') await page.setViewportSize({ width: 1920, height: 1080 });
       await page.goto(`./#/${slug}`);
       await settled(page);

@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, settled, test } from './fixtures';
+import { expect, inLecturesLetter, LECTURE_LETTER_LESSONS, settled, test } from './fixtures';
 import bSplines from './practice/b-splines';
 import bezierProperties from './practice/bezier-properties';
 import bezierSplines from './practice/bezier-splines';
@@ -107,6 +107,8 @@ for (const [slug, cases] of Object.entries(LESSONS)) {
     page,
   }) => {
     test.setTimeout(60_000);
+    // The practice data of a lesson that follows the lecture notes is written in μ.
+    if (LECTURE_LETTER_LESSONS.includes(slug)) await inLecturesLetter(page);
     expect(new Set(cases.map((c) => Object.keys(c.answer)[0])).size, 'one of each kind').toBe(3);
     for (const exercise of cases) {
       await page.goto(`./#/${slug}?ex=${exercise.id}&seed=${exercise.seed}`);

@@ -1,5 +1,8 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, snapshot, test, linkState } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState, inLecturesLetter } from './fixtures';
+
+// This lesson follows the lecture notes, and its tests read its text in their letter, μ.
+test.beforeEach(({ page }) => inLecturesLetter(page));
 
 const figure = (page: Page) => page.locator('canvas[data-figure="quadratic"]');
 const pixels = (page: Page) => figure(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());

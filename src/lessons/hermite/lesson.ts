@@ -57,6 +57,7 @@ const scene = (
 
 export default defineLesson({
   slug: 'hermite',
+  letter: 'mu',
   schema,
   step: 'step',
   script: construction,

@@ -4,7 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
 import { LiveFormula, formula, renderFormula } from '../../render/formula';
 import { curvatureLink } from '../../kit/lessonLinks';
-import { notesKey } from '../../kit/notes';
+import { notesKey, notesQuote } from '../../kit/notes';
 import {
   basisLine,
   bezierPoints,
@@ -31,7 +31,6 @@ const SYMBOLS: [string, string][] = [
     'a₀ … a₃',
     'P = a₃μ³ + a₂μ² + a₁μ + a₀ as in the lecture notes; aᵢ, bᵢ, cᵢ, dᵢ in the lecture slides; d, c, b, a in the continuation notes, which write x(t) = at³ + bt² + ct + d',
   ],
-  ['μ', 't in the continuation notes'],
   ['H₀ … H₃', 'the same in the continuation notes: H₀ weighs x₀, H₁ x₁, H₂ x′₀, H₃ x′₁'],
   [
     'B₀ … B₃',
@@ -138,9 +137,11 @@ export function hermitePanel(
     h(
       'p',
       {},
-      'The continuation notes write the same cubic as x(t) = at³ + bt² + ct + d and order the data x₀, x₁, x′₀, x′₁ (here Pᵢ, Pᵢ₊₁, Dᵢ, Dᵢ₊₁), so their matrix has its rows and columns in another order. The numbers are the same, last first: a = a₃, b = a₂, c = a₁, d = a₀.',
+      'The continuation notes write the same cubic as ',
+      notesQuote('x(t) = at³ + bt² + ct + d'),
+      ' and order the data x₀, x₁, x′₀, x′₁ (here Pᵢ, Pᵢ₊₁, Dᵢ, Dᵢ₊₁), so their matrix has its rows and columns in another order. The numbers are the same, last first: a = a₃, b = a₂, c = a₁, d = a₀.',
     ),
-    continuationFormula.element,
+    notesQuote(continuationFormula.element),
     h('h2', {}, 'The Hermite basis at μ'),
     basisFormula.element,
     dataTable('Hermite weights at μ', ['Basis', 'Value at μ', 'Weighs'], weightsBody),

@@ -28,6 +28,7 @@ const scene = (
 
 export default defineLesson({
   slug: 'lagrange',
+  letter: 't',
   schema,
   step: 'step',
   script: interpolation,

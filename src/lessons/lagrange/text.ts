@@ -18,7 +18,6 @@ export const NOTES_KEY: readonly (readonly [string, string])[] = [
   ['Pₖ', 'xₖ in the continuation notes, which interpolate one coordinate x(t) at a time'],
   ['tₖ', 'tₖ in the continuation notes, from t₀ = 0 to tₙ = 1'],
   ['Lₖ(t)', 'Lₖ(t) in the continuation notes'],
-  ['t', 'μ in the lecture notes, which write it for every parameter'],
 ];
 
 /** Runge's phenomenon, and what a spline does instead, with the largest Σ|Lₖ(t)| of these points. */

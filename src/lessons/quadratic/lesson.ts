@@ -19,6 +19,7 @@ const scene = (id: string, label: string, points: Point[], mu = 0.5) => ({
 
 export default defineLesson({
   slug: 'quadratic',
+  letter: 'mu',
   schema,
   step: 'step',
   script: construction,

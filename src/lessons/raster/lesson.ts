@@ -37,6 +37,7 @@ const instructive = (s: RasterState) => ({
 
 export default defineLesson({
   slug: 'raster',
+  letter: 't',
   schema,
   step: 'step',
   sceneOf: (state) => state.view,

@@ -24,7 +24,6 @@ const splineSlip = () =>
 /** The slides' symbols beside the lesson's. */
 const slideSymbols = () =>
   notesKey([
-    ['t, the curve’s parameter', 'u in the “Splines” slides: P(u) = (x(u), y(u))'],
     [
       'P₀ … Pₙ, the control points',
       'p₀ … pₙ, pₖ = (xₖ, yₖ), in the “Splines” slides, which also call them knots',
