@@ -2,6 +2,7 @@ import type { DrawInfo } from '../../app/lesson';
 import type { Painter } from '../../render/painter';
 import { catmull } from './drawCatmull';
 import { inspector } from './drawInspector';
+import { degree, worked } from './drawWorked';
 import type { BezierSplinesModel } from './model';
 import { dashed, labelAt, polygons } from './strokes';
 
@@ -96,4 +97,6 @@ export const drawParts: Record<BezierSplinesModel['state']['part'], Draw> = {
   grid: () => undefined,
   inspector,
   catmull,
+  worked,
+  degree,
 };

@@ -16,6 +16,10 @@ function shownPoints(m: BezierSplinesModel): Point[] {
       return [...p, ...b, ...m.quadraticControls];
     case 'system':
       return [...p, ...m.system.controls];
+    case 'worked':
+      return [...p, ...m.worked.c1.output, ...m.worked.c2.controls];
+    case 'degree':
+      return [...p, ...m.degree.row.c1.flat(), ...m.degree.continued];
     case 'catmull':
       return [...p, ...m.hermite.flat(), ...m.alphas.flatMap((a) => a.segments.flat())];
     default:

@@ -19,6 +19,7 @@ import type { Revealed } from '../../kit/script';
 import { asCubic, comb, piecesOf, type Tooth } from './pieces';
 import type { Reveal } from './script';
 import { type BezierSplinesState, handTangents, midpoint } from './state';
+import { type HandC1, type HandC2, continuation, handC1, handC2 } from './workedExample';
 
 export { asCubic, piecesOf, type Tooth } from './pieces';
 
@@ -69,6 +70,10 @@ export interface BezierSplinesModel {
   oneSided: Point[][];
   oneSidedTangents: Point[];
   alphas: { alpha: number; name: string; segments: Point[][]; crossings: Point[] }[];
+  /** Part 7: the practical's computeSplineC1 and computeSplineC2 worked by hand. */
+  worked: { c1: HandC1; c2: HandC2 };
+  /** Part 8: the points as splines of degree 1, 2 and 3, and the first cubic piece continued past its end. */
+  degree: { row: GridRow; continued: Point[] };
   /** The points the figure starts from are all on one spot (the figure says what that makes). */
   oneSpot: boolean;
 }
@@ -191,6 +196,18 @@ const catmullPieces = memoOn<
   };
 });
 
+/** Parts 7 and 8: the hand computations, the three degrees, the first cubic continued. */
+const workedPieces = memoOn<State, 'points', Pick<BezierSplinesModel, 'worked' | 'degree'>>(
+  ['points'],
+  ({ points: p }) => {
+    const c2 = handC2(p);
+    return {
+      worked: { c1: handC1(p), c2 },
+      degree: { row: gridRow(p), continued: continuation(c2.controls.slice(0, 4)) },
+    };
+  },
+);
+
 /** Everything the figures and the panel show, with what the current step reveals. */
 export function derive(state: State, shown: Revealed<Reveal>): BezierSplinesModel {
   const system = systemPieces(state);
@@ -209,6 +226,7 @@ export function derive(state: State, shown: Revealed<Reveal>): BezierSplinesMode
     },
     ...inspectorPieces(state),
     ...catmullPieces(state),
+    ...workedPieces(state),
   };
 }
 

@@ -3,6 +3,7 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { renderFormula } from '../../render/formula';
 import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
+import { checkTools, datasetDownloads } from './checkTools';
 import { inspectorTools } from './inspectorTools';
 import type { BezierSplinesModel } from './model';
 import { scripts } from './script';
@@ -78,6 +79,11 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
     system: systemTools(),
     inspector: inspectorTools(api),
     catmull: catmullTools(api),
+    grid: {
+      element: h('div', {}, h('h3', {}, 'The datasets'), datasetDownloads(api)),
+      update: () => undefined,
+    },
+    worked: checkTools(api),
   };
   const curvature = curvatureLink();
   const element = h(

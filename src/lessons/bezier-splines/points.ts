@@ -51,13 +51,15 @@ const givenList = shownAs(
   }),
   (s, i) => {
     if (!hasGivenPoints(s)) return null;
-    if (s.part !== 'system') return { label: `p_{${i}}` };
+    // The worked example names them A, D, G, J (or c₃ᵢ) once its C² part starts.
+    const letters = s.part === 'system' || (s.part === 'worked' && revealedAt(s).has('c2Count'));
+    if (!letters) return { label: `p_{${i}}` };
     const name = controlPointName(3 * i, 3 * (s.points.length - 1) + 1);
     return { label: name.length === 1 ? name : `c_{${3 * i}}` };
   },
 );
 
-/** The given points p₀ … pₙ (in the C² system the practical's A, D, G, J), added where a part shows them. */
+/** The given points p₀ … pₙ (in the C² system and the worked C² the practical's A, D, G, J), added where a part shows them. */
 export const givenPoints: PointList<State> = {
   ...givenList,
   add: (s, at) => (hasGivenPoints(s) ? givenList.add(s, at) : null),

@@ -32,7 +32,7 @@ const scene = (
   script: scripts[id],
 });
 
-/** The six parts in teaching order; the first opens the lesson as its link's defaults. */
+/** The parts in teaching order; the first opens the lesson as its link's defaults. */
 export const scenes: ScriptedScene<State, BezierSplinesModel, Reveal>[] = [
   { ...scene('why', 'Why pieces'), setup: () => defaults },
   scene('quadratic', 'C¹ quadratic spline', {
@@ -47,4 +47,12 @@ export const scenes: ScriptedScene<State, BezierSplinesModel, Reveal>[] = [
   scene('grid', 'C⁰ · C¹ · C² grid'),
   scene('inspector', 'Continuity inspector', { handBuilt: HAND_BUILT }),
   scene('catmull', 'Catmull-Rom', { points: HAIRPIN, tangents: handTangents(HAIRPIN) }),
+  scene('worked', 'C¹ and C² by hand', {
+    points: FOUR_POINTS,
+    tangents: handTangents(FOUR_POINTS),
+  }),
+  scene('degree', 'Degree d ⇒ Cᵈ⁻¹', {
+    points: FOUR_POINTS,
+    tangents: handTangents(FOUR_POINTS),
+  }),
 ];

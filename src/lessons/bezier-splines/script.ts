@@ -4,7 +4,9 @@ import type { Point } from '../../math';
 import { texNumber, texPoint } from '../../render/formula';
 import type { BezierSplinesModel } from './model';
 import type { BezierSplinesState, Part } from './state';
+import { type DegreeReveal, degree } from './degreeScript';
 import { type SystemReveal, system } from './systemScript';
+import { type WorkedReveal, worked } from './workedScript';
 
 /** What each part's steps reveal, by name: the figures and the panel ask for these. */
 export type WhyReveal = 'points' | 'single' | 'moved' | 'pieces' | 'local';
@@ -14,8 +16,17 @@ export type InspectorReveal = 'joints' | 'pieces' | 'verdicts' | 'tangents' | 'c
 export type CatmullReveal =
   'points' | 'hermite' | 'uniform' | 'oneSided' | 'centripetal' | 'chordal' | 'all';
 export type { SystemReveal } from './systemScript';
+export type { WorkedReveal } from './workedScript';
+export type { DegreeReveal } from './degreeScript';
 export type Reveal =
-  WhyReveal | QuadraticReveal | SystemReveal | GridReveal | InspectorReveal | CatmullReveal;
+  | WhyReveal
+  | QuadraticReveal
+  | SystemReveal
+  | GridReveal
+  | InspectorReveal
+  | CatmullReveal
+  | WorkedReveal
+  | DegreeReveal;
 
 type State = BezierSplinesState;
 type Model = BezierSplinesModel;
@@ -197,6 +208,8 @@ export const scripts: Record<Part, Script<State, Model, Reveal>> = {
   grid,
   inspector,
   catmull,
+  worked,
+  degree,
 };
 
 /** What the current step of a state's part reveals (for handles, which see only the state). */

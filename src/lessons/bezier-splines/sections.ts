@@ -1,4 +1,5 @@
 import { h } from '../../app/dom';
+import { notesKey, notesSlip } from '../../kit/notes';
 import { formula } from '../../render/formula';
 import type { Part } from './state';
 
@@ -102,6 +103,67 @@ export function introductions(): Record<Part, HTMLElement> {
         {},
         'With knot gaps Δᵢ = |pᵢ₊₁ − pᵢ|^α, α = 0 is uniform, ½ centripetal, 1 chordal. Centripetal Catmull-Rom never forms a cusp or a loop inside a piece (Yuksel, Schaefer & Keyser 2011); the uniform one does at this hairpin.',
       ),
+    ),
+    worked: h(
+      'div',
+      {},
+      h('h2', {}, 'computeSplineC1 and computeSplineC2 by hand'),
+      h(
+        'p',
+        {},
+        'The practical’s two functions, worked on paper through the same points (the practical calls four points A, D, G, J; these coordinates are the lesson’s own). C¹: b₀ is chosen, and each further bᵢ is the mirror image of bᵢ₋₁ through pᵢ. C²: keep B unknown, walk the practical’s equations from the start (each gives the next control point in terms of B), and the natural end, the last equation, fixes B.',
+      ),
+      formula(
+        '\\begin{aligned}\\text{C}^1:&\\ b_i = 2p_i - b_{i-1}\\\\ \\text{C}^2:&\\ C = 2B - A,\\ E = 2D - C,\\ F = B - 2C + 2E,\\ \\dots,\\ H - 2I + J = 0\\end{aligned}',
+        true,
+      ),
+      h(
+        'p',
+        { class: 'note' },
+        'Each function returns its control points in order, one row each: computeSplineC1 2n + 1 rows (p₀, b₀, p₁, b₁, …, pₙ), computeSplineC2 3n + 1 rows (c₀ … c₃ₙ, a point every third). The numbers on each point in the figure are those rows.',
+      ),
+      notesSlip(
+        'practical',
+        'the first derivative as ẋ = d²/dt² x',
+        'The first derivative is ẋ = d/dt x; for a quadratic piece it is 2(b₁ − b₀)B₀¹(t) + 2(b₂ − b₁)B₁¹(t), a Bézier curve of degree 1, which is where the C¹ condition comes from.',
+      ),
+      notesKey([
+        [
+          'bᵢ',
+          'b₁ⁱ in the practical: the inner control point of piece i (the upper index is the piece)',
+        ],
+        ['c₀ … c₃ₙ', 'A … J in the practical, for four points'],
+      ]),
+    ),
+    degree: h(
+      'div',
+      {},
+      h('h2', {}, 'Degree d, continuity up to Cᵈ⁻¹'),
+      h(
+        'p',
+        {},
+        'The continuation notes: “splines of degree n can guarantee Cⁿ⁻¹ continuity”. Here n counts the pieces, so the degree is d. A piece of degree d has d + 1 coefficients, or d + 1 control points: its order is d + 1 (the continuation notes: “degree is n, and order is n + 1”). That order is a count of coefficients; the order of continuity, the k of Cᵏ, is another thing.',
+      ),
+      formula(
+        '\\underbrace{dn + 1}_{\\text{control points}} - \\underbrace{(n + 1)}_{\\text{points}} - \\underbrace{(d - 1)(n - 1)}_{\\text{C}^1 \\dots \\text{C}^{d-1}} = d - 1',
+        true,
+      ),
+      h(
+        'p',
+        {},
+        'n pieces of degree d share their joints: dn + 1 control points. The points fix n + 1 of them, and C¹ … Cᵈ⁻¹ at the n − 1 inner joints give d − 1 equations each. d − 1 are left to choose: none for straight pieces, b₀ for quadratics (the practical’s computeSplineC1), the two natural ends for cubics (computeSplineC2).',
+      ),
+      h(
+        'p',
+        { class: 'note' },
+        'The continuation notes count the cubic case piece by piece: 4n control points and 4n − 2 equations (2n end points, n − 1 tangents, n − 1 second derivatives). The practical shares the joints: 3n + 1 control points and 3n − 1 equations. Both leave 2. And Cᵈ is too much: two pieces of degree d with the same value and d derivatives at a joint are one polynomial, the second the first continued.',
+      ),
+      notesKey([
+        [
+          'd (the degree)',
+          'n in the continuation notes’ “degree n, Cⁿ⁻¹”; here n counts the pieces',
+        ],
+      ]),
     ),
   };
 }

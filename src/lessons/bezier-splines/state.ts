@@ -3,8 +3,9 @@ import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents, cubicSplineC2 } from '../../math';
 
-/** The six parts of the lesson, one scene each, in teaching order. */
-export type Part = 'why' | 'quadratic' | 'system' | 'grid' | 'inspector' | 'catmull';
+/** The parts of the lesson, one scene each, in teaching order. */
+export type Part =
+  'why' | 'quadratic' | 'system' | 'grid' | 'inspector' | 'catmull' | 'worked' | 'degree';
 export const PARTS: readonly Part[] = [
   'why',
   'quadratic',
@@ -12,6 +13,8 @@ export const PARTS: readonly Part[] = [
   'grid',
   'inspector',
   'catmull',
+  'worked',
+  'degree',
 ];
 
 /**
@@ -22,7 +25,7 @@ export interface BezierSplinesState {
   part: Part;
   /** Step of the current part's construction (0 = only the given points). */
   step: number;
-  /** The points p0 … pn the spline passes through (parts 1, 2, 3 and 6). */
+  /** The points p0 … pn the spline passes through (parts 1, 2, 3, 6, 7 and 8). */
   points: Point[];
   /** The chosen first inner control point b0 of the C¹ quadratic spline. */
   firstControl: Point[];
