@@ -27,6 +27,11 @@ export function shownRow(m: BSplineModel): number | null {
       return m.shown.has('curve') ? degree : null;
     case 'nurbs':
       return m.shown.has('plain') ? degree : null;
+    case 'meanings':
+      return m.shown.has('values') ? degree : null;
+    case 'continuity':
+      // The step's own degree: the bases' kinks sit at the knots.
+      return m.shown.is('points') ? null : degree;
   }
 }
 

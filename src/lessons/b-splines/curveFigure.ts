@@ -6,6 +6,8 @@ import { boundsOf } from '../../render/projection';
 import { segmentAt } from './drawParts';
 import { dragHalo, haloAt, showsHalos } from './halo';
 import { haloIds } from './ids';
+import { drawContinuity } from './continuityDrawing';
+import { drawMeanings } from './meaningsDrawing';
 import { drawCircle, drawKnots, drawNurbs, drawProjective } from './knotDrawing';
 import type { BSplineModel } from './model';
 import { controlPoints, linePoints } from './points';
@@ -31,6 +33,10 @@ function drawScene(painter: Painter, m: BSplineModel, info: DrawInfo): void {
       return drawCircle(painter, m, info);
     case 'projective':
       return drawProjective(painter, m, info);
+    case 'meanings':
+      return drawMeanings(painter, m, info);
+    case 'continuity':
+      return drawContinuity(painter, m, info);
   }
 }
 

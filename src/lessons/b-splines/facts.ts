@@ -1,5 +1,6 @@
 import type { RowSpec } from '../../app/liveTable';
 import { texNumber } from '../../render/formula';
+import { derivativeName, smoothName } from './continuityScript';
 import type { BSplineModel } from './model';
 import { isUniformPart } from './state';
 
@@ -71,6 +72,26 @@ function sceneFacts(m: BSplineModel): RowSpec[] {
             row('H(C) vs NURBS of H(x), w′', m.projective.deviation.toExponential(1)),
             row('H(C) vs old weights', num(m.projective.plainDeviation)),
           ];
+    case 'meanings':
+      return m.knotPoints.map((k) =>
+        row(
+          `C(u${k.index}) at the knot u = ${texNumber(k.u, 3)}`,
+          `${point(k.at)}${k.on === null ? '' : ` = x${k.on}`}`,
+        ),
+      );
+    case 'continuity': {
+      const check = m.watched;
+      const at = texNumber(check.u, 3);
+      return [
+        ...check.left.map((left, r) =>
+          row(
+            `${derivativeName(r)} left | right of u = ${at}`,
+            `${point(left)} ${check.agree[r] ? '=' : '≠'} ${point(check.right[r])}`,
+          ),
+        ),
+        row(`continuity at u = ${at}`, smoothName(check.smooth), 'current'),
+      ];
+    }
     default:
       return [];
   }

@@ -1,32 +1,40 @@
 import type { Handle } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
+import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import { knotIds } from './ids';
+import { knotRuns } from './knotGeometry';
 import type { BSplineModel } from './model';
 import { plotRange, uStep } from './plotRange';
 import { type BSplineState, isUniformPart } from './state';
 
+/** The knots are set by the lesson, not dragged: the matrix form's, and the continuity scene's steps. */
+const fixedKnots = (m: BSplineModel) => isUniformPart(m.state.part) || m.kind === 'continuity';
 /**
  * Knots are editable where the lesson is about them (not the matrix form's fixed
  * uniform cubic), once the step shows more than the points.
  */
-const editable = (m: BSplineModel) => !isUniformPart(m.state.part) && !m.shown.is('points');
+const editable = (m: BSplineModel) => !fixedKnots(m) && !m.shown.is('points');
+
+/** Marks on the strip that a scene ties to the curve: the knot values of its joins, the watched knot. */
+function stripMarks(painter: Painter, m: BSplineModel): void {
+  const theme = painter.theme;
+  // A tick above each knot value that has a point on the curve (the handles cover the line).
+  if (m.kind === 'meanings' && m.shown.has('joins'))
+    for (const k of m.knotPoints)
+      painter.segment([k.u, 0.3], [k.u, 0.9], { color: theme.ink, width: theme.sizes.line * 2 });
+  if (m.kind === 'continuity' && !m.shown.is('points'))
+    painter.ring([m.watched.u, 0], theme.sizes.handle * 2.2, {
+      color: theme.accent,
+      width: theme.sizes.line * 2,
+    });
+}
 /** A knot dropped this close to a neighbour (a share of the range) lands on it: a repeated knot. */
 const SNAP = 0.015;
 
 function stripBounds(m: BSplineModel): Bounds {
   const [minX, maxX] = plotRange(m);
   return { minX, maxX, minY: -1, maxY: 1 };
-}
-
-/** Runs of equal knots: [first index, multiplicity]. */
-export function knotRuns(knots: readonly number[]): [number, number][] {
-  const runs: [number, number][] = [];
-  for (let j = 0; j < knots.length; j++) {
-    if (j > 0 && knots[j] === knots[j - 1]) runs[runs.length - 1][1]++;
-    else runs.push([j, 1]);
-  }
-  return runs;
 }
 
 export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
@@ -46,9 +54,10 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
     if (m.shown.is('points') && !uniform) return;
     const size = theme.sizes.label * 0.75;
     let lastX = -Infinity;
+    stripMarks(painter, m);
     for (const [j, count] of knotRuns(m.knots)) {
       const u = m.knots[j];
-      if (uniform) painter.dot([u, 0], theme.ink, theme.sizes.point);
+      if (fixedKnots(m)) painter.dot([u, 0], theme.ink, theme.sizes.point);
       // A label per run of knots, where there is room: stacked ones say how many.
       const x = painter.view.toScreen([u, 0])[0];
       if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;

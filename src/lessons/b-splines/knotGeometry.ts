@@ -23,9 +23,10 @@ export interface KnotCurve {
 
 /**
  * A general B-spline of degree p on the knot vector u, rational from the
- * NURBS scenes on (before them every weight is 1).
+ * NURBS scenes on (before them every weight is 1). Built afresh: `knotCurve`
+ * keeps the state's; a scene that shows several knot vectors keeps its own.
  */
-export const knotCurve = memoOn<KnotFields, keyof KnotFields, KnotCurve>(KNOT_FIELDS, (state) => {
+export function buildKnotCurve(state: KnotFields): KnotCurve {
   const { points, degree, knots } = state;
   const n = points.length;
   const weights = isRationalPart(state.part) ? state.weights : points.map(() => 1);
@@ -55,7 +56,13 @@ export const knotCurve = memoOn<KnotFields, keyof KnotFields, KnotCurve>(KNOT_FI
     joins: knotJoins(knots, degree, n, at),
   };
   return { curve, at };
-});
+}
+
+/** The state's curve, kept while the fields it reads are the same. */
+export const knotCurve = memoOn<KnotFields, keyof KnotFields, KnotCurve>(
+  KNOT_FIELDS,
+  buildKnotCurve,
+);
 
 /** The cursor at t: u = u_p + t·(u_{m+1} − u_p), its segment, the Cox–de Boor triangle there. */
 export function knotCursor({ curve, at }: KnotCurve, t: number): Cursor {
@@ -97,4 +104,14 @@ export function knotJoins(
     });
   }
   return joins;
+}
+
+/** Runs of equal knots: [first index, multiplicity]. */
+export function knotRuns(knots: readonly number[]): [number, number][] {
+  const runs: [number, number][] = [];
+  for (let j = 0; j < knots.length; j++) {
+    if (j > 0 && knots[j] === knots[j - 1]) runs[runs.length - 1][1]++;
+    else runs.push([j, 1]);
+  }
+  return runs;
 }

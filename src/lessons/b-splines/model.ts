@@ -1,7 +1,11 @@
 import type { Revealed } from '../../kit/script';
 import type { Point } from '../../math';
 import type { Crossings } from './crossings';
+import { type ContinuityCase, type JoinCheck, continuityCurves } from './continuityGeometry';
+import type { ContinuityReveal } from './continuityScript';
 import { knotCurve, knotCursor } from './knotGeometry';
+import { type KnotPoint, stateKnotPoints } from './meaningsGeometry';
+import type { MeaningsReveal } from './meaningsScript';
 import { circleCheck, projective, rational } from './nurbsGeometry';
 import type { KnotReveal } from './knotScript';
 import type { CircleReveal, NurbsReveal, ProjectiveReveal } from './nurbsScripts';
@@ -151,6 +155,15 @@ export type ProjectiveModel = SceneModel<'projective', ProjectiveReveal> & {
   projective: Projective;
 };
 
+/** The two meanings of “knots”: the parameter values, and C(u) at each of them. */
+export type MeaningsModel = SceneModel<'meanings', MeaningsReveal> & { knotPoints: KnotPoint[] };
+/** The step's curve (its degree and knots come from the step), every knot checked, one watched. */
+export type ContinuityModel = SceneModel<'continuity', ContinuityReveal> & {
+  knotCase: ContinuityCase;
+  checks: JoinCheck[];
+  watched: JoinCheck;
+};
+
 /** Everything the figures and the panel show, one kind per scene family. */
 export type BSplineModel =
   | UniformModel
@@ -160,7 +173,9 @@ export type BSplineModel =
   | KnotModel
   | NurbsModel
   | CircleModel
-  | ProjectiveModel;
+  | ProjectiveModel
+  | MeaningsModel
+  | ContinuityModel;
 
 /**
  * The model of a state: its family's curve (kept while the fields it reads are
@@ -180,11 +195,19 @@ export function derive(state: BSplineState, shown: Revealed<Reveal>): BSplineMod
     if (family === 'properties') return { ...base, kind: family, properties: properties(state) };
     return { ...base, kind: 'uniform' };
   }
+  if (family === 'continuity') {
+    // Step 0 shows the points alone; its (hidden) curve is the next step's.
+    const name = shown.name === 'points' ? 'linear' : (shown.name as ContinuityCase);
+    const { curve, checks, watched } = continuityCurves(state)[name];
+    const base = { state, shown: named, ...curve.curve, ...knotCursor(curve, state.t) };
+    return { ...base, kind: family, knotCase: name, checks, watched };
+  }
   const knotted = knotCurve(state);
   const base = { state, shown: named, ...knotted.curve, ...knotCursor(knotted, state.t) };
   if (family === 'nurbs') return { ...base, kind: family, rational: rational(state, base) };
   if (family === 'circle')
     return { ...base, kind: family, rational: rational(state, base), circle: circleCheck(state) };
   if (family === 'projective') return { ...base, kind: family, projective: projective(state) };
+  if (family === 'meanings') return { ...base, kind: family, knotPoints: stateKnotPoints(state) };
   return { ...base, kind: 'knots' };
 }

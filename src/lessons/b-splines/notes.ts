@@ -45,3 +45,25 @@ export const CLOSED_SLIP = {
 } as const;
 
 export const closedSlip = () => notesSlip('slides', CLOSED_SLIP.written, CLOSED_SLIP.correct);
+
+/**
+ * How the documents use “knots”, in their own words: the lecture notes for the
+ * points where patches join and for the points a curve is made from, the
+ * “Splines” slides for control points, the continuation notes for parameter
+ * values (as this app). The lecture slides never use the word.
+ */
+export const KNOT_WORDS = {
+  lectureJoin: 'each pair of adjacent knots is joined by a different curve',
+  lectureControl: 'a small set of control points (knots)',
+  lectureBezier: 'has four knots: P0, P1, P2, P3',
+  splineSlides: 'user-specified control points (knots)',
+  continuation: 'knots are equally spaced',
+  continuationNurbs: 'non-uniform location of knots',
+} as const;
+
+/** What the notes say of a spline's continuity, in their own words. */
+export const CONTINUITY_WORDS = {
+  slides: 'cubic B-splines are C², or can be made to be less: C¹ or C⁰',
+  continuation: 'splines of degree n can guarantee Cⁿ⁻¹ continuity',
+  bezier: 'three control points are on a straight line, and the distance is the same',
+} as const;

@@ -102,7 +102,8 @@ export function bsplinePanel(
         setHidden(matrix, !isUniformPart(part));
         setHidden(recursion, isUniformPart(part));
         setHidden(localTools, part !== 'local');
-        setHidden(knots.element, isUniformPart(part));
+        // The continuity scene's steps set the degree and the knots themselves.
+        setHidden(knots.element, isUniformPart(part) || part === 'continuity');
         setHidden(weights.element, !isRationalPart(part));
       }
       if (state.points !== shownPoints) {

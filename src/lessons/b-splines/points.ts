@@ -1,6 +1,6 @@
 import { type PointList, pointList } from '../../kit/pointList';
 import type { Point } from '../../math';
-import { type BSplineState, MAX_POINTS, refitKnots } from './state';
+import { type BSplineState, CONTINUITY_POINTS, MAX_POINTS, refitKnots } from './state';
 
 /**
  * A list whose points keep their own labels even on one spot: the lesson
@@ -55,9 +55,12 @@ const list = pointList<BSplineState>({
 /** The control points x0 … xm: dragged, moved by keyboard, added and removed. */
 export const controlPoints: PointList<BSplineState> = {
   ...labelledApart(list, label),
-  // Degree p needs p + 1 points.
+  // Degree p needs p + 1 points; the continuity scene's triple knot needs seven.
   remove: (state, index) =>
-    state.points.length <= state.degree + 1 ? null : list.remove(state, index),
+    state.points.length <= state.degree + 1 ||
+    (state.part === 'continuity' && state.points.length <= CONTINUITY_POINTS)
+      ? null
+      : list.remove(state, index),
 };
 
 /** The two points of the line that tests variation diminishing (square handles). */

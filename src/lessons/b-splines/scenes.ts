@@ -1,5 +1,5 @@
 import type { ScriptedScene } from '../../kit/lesson';
-import { clampedUniformKnots, nurbsCircle, type Point } from '../../math';
+import { clampedUniformKnots, nurbsCircle, type Point, uniformKnots } from '../../math';
 import type { BSplineModel } from './model';
 import { CIRCLE } from './nurbsGeometry';
 import { type Reveal, partScript } from './scripts';
@@ -86,4 +86,7 @@ export const SCENES: Scene[] = [
   }),
   scene('circle', 'The exact circle', circleFields),
   scene('projective', 'Projective map', circleFields),
+  scene('meanings', 'Two meanings of “knots”', { t: 0.4 }),
+  // The steps set the degree and the knots; the state's are the cubic's, uniform.
+  scene('continuity', 'Degree p ⇒ Cᵖ⁻¹', { knots: uniformKnots(n, 3), t: 0.4 }),
 ];

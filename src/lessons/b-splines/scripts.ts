@@ -7,7 +7,9 @@ import {
   localScript,
   propertiesScript,
 } from './cubicScripts';
+import { type ContinuityReveal, continuityScript } from './continuityScript';
 import { type KnotReveal, knotScript } from './knotScript';
+import { type MeaningsReveal, meaningsScript } from './meaningsScript';
 import type { BSplineModel } from './model';
 import {
   type CircleReveal,
@@ -29,7 +31,9 @@ export type Reveal =
   | KnotReveal
   | NurbsReveal
   | CircleReveal
-  | ProjectiveReveal;
+  | ProjectiveReveal
+  | MeaningsReveal
+  | ContinuityReveal;
 
 export type LessonScript = Script<BSplineState, BSplineModel, Reveal>;
 
@@ -53,6 +57,8 @@ export const SCRIPTS: Readonly<Record<Family, LessonScript>> = {
   nurbs: onLesson(nurbsScript),
   circle: onLesson(circleScript),
   projective: onLesson(projectiveScript),
+  meanings: onLesson(meaningsScript),
+  continuity: onLesson(continuityScript),
 };
 
 /** The steps of a part's scene: its family's. */

@@ -19,7 +19,9 @@ export type Part =
   | 'repeated'
   | 'nurbs'
   | 'circle'
-  | 'projective';
+  | 'projective'
+  | 'meanings'
+  | 'continuity';
 
 export const PARTS: readonly Part[] = [
   'uniform',
@@ -33,6 +35,8 @@ export const PARTS: readonly Part[] = [
   'nurbs',
   'circle',
   'projective',
+  'meanings',
+  'continuity',
 ];
 
 /**
@@ -90,7 +94,16 @@ export const DEFAULT_LINE: Point[] = [
  * model (the open and the closed uniform cubic; the three knot scenes).
  */
 export type Family =
-  'uniform' | 'local' | 'convert' | 'properties' | 'knots' | 'nurbs' | 'circle' | 'projective';
+  | 'uniform'
+  | 'local'
+  | 'convert'
+  | 'properties'
+  | 'knots'
+  | 'nurbs'
+  | 'circle'
+  | 'projective'
+  | 'meanings'
+  | 'continuity';
 
 export const FAMILY: Readonly<Record<Part, Family>> = {
   uniform: 'uniform',
@@ -104,6 +117,8 @@ export const FAMILY: Readonly<Record<Part, Family>> = {
   nurbs: 'nurbs',
   circle: 'circle',
   projective: 'projective',
+  meanings: 'meanings',
+  continuity: 'continuity',
 };
 
 const partUses = {
@@ -157,6 +172,12 @@ export function refitKnots(u: readonly number[], n: number, p: number): number[]
   return Array.from({ length: n + p + 1 }, (_, j) => j);
 }
 
+/**
+ * The continuity scene stacks three knots inside a cubic's domain: that takes
+ * m + p + 2 ≥ 4 + 3 + 4 knots, so m + 1 ≥ 7 points.
+ */
+export const CONTINUITY_POINTS = 7;
+
 /** Cross-field rules: points enough for the part, knots and weights that fit the points. */
 export function normalize(state: BSplineState): { state: BSplineState; issues: string[] } {
   const issues: string[] = [];
@@ -165,6 +186,11 @@ export function normalize(state: BSplineState): { state: BSplineState; issues: s
   if (n < 4 && next.part !== 'closed') {
     issues.push(
       `a cubic B-spline needs at least 4 control points, not ${n}; the seven default points are shown`,
+    );
+    next = { ...next, points: copy(SEVEN_POINTS) };
+  } else if (n < CONTINUITY_POINTS && next.part === 'continuity') {
+    issues.push(
+      `a triple knot inside a cubic’s curve needs at least ${CONTINUITY_POINTS} control points, not ${n}; the seven default points are shown`,
     );
     next = { ...next, points: copy(SEVEN_POINTS) };
   }

@@ -1,5 +1,7 @@
 import type { Part } from './state';
 import { capital, gestures } from '../../kit/gestures';
+import { AGREE } from './continuityGeometry';
+import { CONTINUITY_WORDS, KNOT_WORDS } from './notes';
 
 /** The panel's words for each part of the lesson: a heading and what to look at. */
 export const TEXTS: Record<Part, { title: string; text: string }> = {
@@ -48,5 +50,20 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   projective: {
     title: 'A projective map keeps the curve',
     text: 'Map the control points with a perspective map H and multiply each weight by the new homogeneous coordinate w′ = h20 x + h21 y + h22: the NURBS of the new points and weights is exactly the image of the curve (the rings are mapped curve points). Keeping the old weights, as a plain B-spline must, gives a different curve (dashed).',
+  },
+  meanings: {
+    title: 'Two meanings of “knots”',
+    text:
+      `The course’s documents use the word for two different things. In the continuation notes, as in this app, a knot is a parameter value: the knot vector u0 ≤ u1 ≤ … on the strip (“${KNOT_WORDS.continuation}” in a uniform B-spline, NURBS allow “${KNOT_WORDS.continuationNurbs}”). The curve’s points at those values, C(uj), are where its pieces join. ` +
+      `The lecture notes call knots the points a spline is made from, “${KNOT_WORDS.lectureControl}”: their spline patches join at them (“${KNOT_WORDS.lectureJoin}”), and a cubic Bézier curve “${KNOT_WORDS.lectureBezier}”, its control points. The “Splines” slides speak of “${KNOT_WORDS.splineSlides}”. ` +
+      'The lecture slides do not use the word: their road’s pieces meet at parameter values p̄i, xi(p̄i) = xi+1(p̄i), knots in the first sense. ' +
+      'On a B-spline the two are different points, except where the knots make one the other: at clamped ends, or at a knot repeated p times. Drag the knots on the strip: the joins slide along the curve while the control points stay.',
+  },
+  continuity: {
+    title: 'Degree p ⇒ Cᵖ⁻¹',
+    text:
+      `Between two knots a B-spline of degree p is one polynomial of degree p. At a simple knot the pieces either side share the point and the derivatives up to the (p − 1)th: the curve is Cᵖ⁻¹ there; a knot of multiplicity k lowers that to Cᵖ⁻ᵏ, and k = p leaves C⁰, through a control point. The steps draw the same control points with degree 1, 2 and 3 on uniform knots, then the cubic with a second and a third knot stacked on the watched one; at each, the piece before the knot and the piece after it are each the polynomial through p + 1 of their own points, differentiated at the knot, and two sides count as equal within ${AGREE} of their size. ` +
+      `The lecture slides say it of the cubic: “${CONTINUITY_WORDS.slides}”. ` +
+      `The continuation notes say it of any spline, “${CONTINUITY_WORDS.continuation}” (their n is the degree p), and show joined cubic Bézier curves reaching C¹ only where their control points are placed for it, when “${CONTINUITY_WORDS.bezier}”, whereas a B-spline is Cᵖ⁻¹ at every simple knot wherever its control points are.`,
   },
 };

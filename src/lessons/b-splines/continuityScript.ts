@@ -1,0 +1,121 @@
+import { words } from '../../kit/format';
+import { script, step } from '../../kit/script';
+import type { ContinuityCase, JoinCheck } from './continuityGeometry';
+import type { ContinuityModel } from './model';
+import { pt, superscript } from './notation';
+import type { BSplineState } from './state';
+
+/** What the steps of degree p ⇒ Cᵖ⁻¹ reveal: the points, then one curve per press. */
+export type ContinuityReveal = 'points' | ContinuityCase;
+
+const PRIMES = ['', '′', '″', '‴'];
+
+/** The r-th derivative's name in a caption or label: C, C′, C″, C‴, C⁽⁴⁾. */
+export const derivativeName = (r: number) =>
+  r < PRIMES.length ? `C${PRIMES[r]}` : `C⁽${superscript(r)}⁾`;
+/** The same in TeX. */
+const derivativeTex = (r: number) => (r < PRIMES.length ? `C${"'".repeat(r)}` : `C^{(${r})}`);
+
+/** C², C⁰, C∞ for a caption or label. */
+export const smoothName = (k: number) =>
+  k === Infinity ? 'C∞' : k < 0 ? 'no C⁰ (a jump)' : `C${superscript(k)}`;
+
+/** “C, C′ and C″ match left and right, C‴ does not”, from the check's numbers. */
+function agreement(check: JoinCheck): string {
+  if (check.smooth < 0) return 'C itself does not match left and right';
+  const matching = Array.from(
+    { length: Math.min(check.smooth, check.agree.length - 1) + 1 },
+    (_, r) => derivativeName(r),
+  );
+  const list =
+    matching.length === 1
+      ? `${matching[0]} matches`
+      : `${matching.slice(0, -1).join(', ')} and ${matching[matching.length - 1]} match`;
+  const next = check.smooth + 1;
+  return next < check.agree.length
+    ? `${list} left and right, ${derivativeName(next)} does not`
+    : `${list} left and right: one polynomial on both sides`;
+}
+
+/** What the knot's multiplicity promises, said as the rule: C² = C³⁻¹. */
+function verdict(m: ContinuityModel): string {
+  const { smooth, promised, multiplicity } = m.watched;
+  const rule = `C${superscript(m.degree)}⁻${superscript(multiplicity)}`;
+  return smooth === promised
+    ? `${smoothName(smooth)} = ${rule}`
+    : `${smoothName(smooth)}, more than the ${smoothName(promised)} = ${rule} promised, as these points lie`;
+}
+
+/** What the step did to the knots, in words. */
+function knotsSaid(m: ContinuityModel): string {
+  const c = m.watched.u;
+  const u = (j: number) => `u${j}`;
+  switch (m.knotCase) {
+    case 'double':
+      return `A double knot at u = ${words(c)} (${u(c + 1)} moved onto ${u(c)})`;
+    case 'triple':
+      return `A triple knot at u = ${words(c)} (${u(c - 1)} and ${u(c + 1)} moved onto ${u(c)})`;
+    default:
+      return `Degree ${m.degree} on simple knots, at u = ${words(c)}`;
+  }
+}
+
+function caseCaption(m: ContinuityModel): string {
+  const through = m.watched.through === null ? '' : `, through x${m.watched.through}`;
+  return `${knotsSaid(m)}: ${agreement(m.watched)}: ${verdict(m)}${through}`;
+}
+
+/** The derivatives left and right of the watched knot, each row said equal or not. */
+export function joinTex(m: ContinuityModel): string {
+  const check = m.watched;
+  const c = words(check.u);
+  const rows = check.left.map(
+    (left, r) =>
+      `${derivativeTex(r)} & ${pt(left)} & ${pt(check.right[r])} & ${check.agree[r] ? '=' : '\\ne'}`,
+  );
+  const smooth =
+    check.smooth === Infinity
+      ? 'C^{\\infty}'
+      : check.smooth < 0
+        ? '\\text{a jump}'
+        : `C^{${check.smooth}}`;
+  const through = check.through === null ? '' : `,\\quad C(${c}) = x_{${check.through}}`;
+  return `\\begin{array}{c|cc|c} & u \\to ${c}^- & u \\to ${c}^+ & \\\\ \\hline ${rows.join(' \\\\ ')}\\end{array}\\;\\Rightarrow\\; ${smooth}${through}`;
+}
+
+/**
+ * Degree p ⇒ Cᵖ⁻¹: the same points with degree 1, 2 and 3 on simple knots,
+ * then the cubic with a double and a triple knot; at each, the derivatives of
+ * the pieces either side of the watched knot compared.
+ */
+export const continuityScript = script<BSplineState, ContinuityModel, ContinuityReveal>(
+  step('points', ({ state }) => {
+    const n = state.points.length;
+    return `The m + 1 = ${n} control points x0 … x${n - 1}: curves of degree 1, 2 and 3 come next`;
+  }),
+  step(
+    'linear',
+    ({ model }) => caseCaption(model),
+    ({ model }) => joinTex(model),
+  ),
+  step(
+    'quadratic',
+    ({ model }) => caseCaption(model),
+    ({ model }) => joinTex(model),
+  ),
+  step(
+    'cubic',
+    ({ model }) => caseCaption(model),
+    ({ model }) => joinTex(model),
+  ),
+  step(
+    'double',
+    ({ model }) => caseCaption(model),
+    ({ model }) => joinTex(model),
+  ),
+  step(
+    'triple',
+    ({ model }) => caseCaption(model),
+    ({ model }) => joinTex(model),
+  ),
+);

@@ -1,0 +1,81 @@
+import type { DrawInfo } from '../../app/lesson';
+import { words } from '../../kit/format';
+import { pointBetween } from '../../math';
+import type { Painter } from '../../render/painter';
+import { drawCursor, drawPolygon, drawSegments, ringHovered } from './drawParts';
+import { nearestControl } from './meaningsGeometry';
+import type { MeaningsModel } from './model';
+
+/** The figure's key to the two kinds of ring, one line per meaning in its ring's colour, top left (pixels). */
+function legend(painter: Painter, line: number, text: string, color: string): void {
+  const size = painter.theme.sizes.label * 0.8;
+  painter.screenLabel(text, 8, size * (1.2 + 1.5 * line), { color, size, halo: true });
+}
+
+/**
+ * The two meanings of “knots” on one curve: the curve over its knot values,
+ * its points at them where its pieces join (named after their u on the strip),
+ * those ringed as the lecture notes' knots, the control points ringed as the
+ * slides' knots, and a double ring where one is the other.
+ */
+export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo): void {
+  const theme = painter.theme;
+  const { shown } = m;
+  const points = m.state.points;
+  if (shown.has('values')) {
+    drawPolygon(painter, points);
+    drawSegments(painter, m, info);
+  }
+  if (shown.has('joins')) {
+    // Clear of the control points and of their handles' labels (up and right of each).
+    const step = painter.view.worldLength(16);
+    const avoid = points.flatMap((x) => [x, [x[0] + step, x[1] + step]]);
+    for (const k of m.knotPoints) {
+      painter.dot(k.at, theme.ink, theme.sizes.point * 1.3);
+      if (!info.thumbnail)
+        painter.labelClear(`C(u_{${k.index}})`, k.at, avoid, { color: theme.ink, halo: true });
+    }
+  }
+  const joinRing = theme.sizes.handle * 1.9;
+  if (shown.has('lecture')) {
+    for (const k of m.knotPoints)
+      painter.ring(k.at, joinRing, { color: theme.ink, width: theme.sizes.line * 1.5 });
+    if (!info.thumbnail)
+      legend(
+        painter,
+        0,
+        'C(u) at the knots, where the pieces join: the lecture notes’ knots',
+        theme.ink,
+      );
+  }
+  const controlRing = theme.sizes.handle * 2.8;
+  if (shown.has('controls')) {
+    for (const x of points)
+      painter.ring(x, controlRing, { color: theme.polygon, width: theme.sizes.line * 1.5 });
+    if (!info.thumbnail)
+      legend(painter, 1, 'control points: the “Splines” slides’ knots', theme.polygon);
+  }
+  if (shown.has('meet')) {
+    const meet = m.knotPoints.filter((k) => k.on !== null);
+    for (const k of meet)
+      painter.ring(k.at, controlRing * 1.35, { color: theme.accent, width: theme.sizes.line * 2 });
+    if (meet.length === 0) {
+      // None is one spot: how near the nearest pair comes.
+      const { knot, point, distance } = nearestControl(m.knotPoints, points);
+      painter.segment(knot.at, points[point], {
+        color: theme.accent,
+        width: theme.sizes.line * 1.5,
+        dash: [4, 4],
+      });
+      if (!info.thumbnail)
+        painter.label(words(distance), pointBetween(knot.at, points[point], 0.5), {
+          color: theme.accent,
+          halo: true,
+          dx: 8,
+          dy: -8,
+        });
+    }
+  }
+  if (shown.has('values')) drawCursor(painter, m.point, 'C(u)', info);
+  ringHovered(painter, m, info);
+}
