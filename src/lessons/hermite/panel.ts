@@ -4,7 +4,7 @@ import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
 import { LiveFormula, formula, renderFormula } from '../../render/formula';
 import { curvatureLink } from '../../kit/lessonLinks';
-import { notesKey, notesQuote } from '../../kit/notes';
+import { notesKey, notesQuote, notesSlip } from '../../kit/notes';
 import {
   basisLine,
   bezierPoints,
@@ -133,6 +133,11 @@ export function hermitePanel(
     ),
     matrixFormula,
     inverseFormula.element,
+    notesSlip(
+      'lecture',
+      'the data matrices as 4×2 in one sentence and as 2×4 a paragraph later',
+      'Each point or gradient is a row here, so the data (Pᵢ, Dᵢ, Pᵢ₊₁, Dᵢ₊₁) and the coefficients a₀ … a₃ are 4 × 2 matrices in 2D (4 × 3 in 3D): eight equations in 2D, twelve in 3D, all with the same 4 × 4 matrix.',
+    ),
     dataTable('Coefficients of the patch', ['Coefficient', 'x', 'y'], coefficientsBody),
     h(
       'p',

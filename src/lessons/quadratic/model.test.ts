@@ -123,7 +123,7 @@ describe('quadratic model: the parametric quadratic', () => {
 
   it('draws the family without the slider’s own value, and only usable rules', () => {
     expect(derive(state(LECTURE, 4, 0.5)).parametric.members.map((m) => m.mu)).toEqual([
-      0.2, 0.35, 0.65, 0.8,
+      0.2, 0.35, 0.8,
     ]);
     // P1 on P0: chord length and centripetal both give μ1 = 0, where there is no curve.
     const onP0 = derive(

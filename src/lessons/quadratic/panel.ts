@@ -1,5 +1,6 @@
 import { h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
+import { notesKey } from '../../kit/notes';
 import type { QuadraticModel } from './model';
 import { parabolaSection } from './parabolaSection';
 import { parametricSection } from './parametricSection';
@@ -52,6 +53,15 @@ export function quadraticPanel(
     { class: 'note' },
     'The curve’s parameter is μ, from 0 at P₀ to 1 at P₂; the slider sets μ₁, the value of μ at which the curve passes P₁.',
   );
+  // How the lesson's symbols read in the notes (the parameter's row is the kit's).
+  const symbols = notesKey([
+    ['P₀, P₁, P₂', 'the same in the lecture notes'],
+    [
+      'a₀, a₁, a₂',
+      'P = a₂μ² + a₁μ + a₀ in the lecture notes; a, b, c in y = a + bp + cp², the lecture slides’ quadratic splines (the road lesson)',
+    ],
+    ['μ₁', 'the parameter at P₁: the lecture notes choose ½ there (their equation 3)'],
+  ]);
   const element = h('div', { class: 'lesson-text' });
   // The section each step is about comes first, under the step's text.
   const leading: Record<Reveal, HTMLElement> = {
@@ -75,7 +85,7 @@ export function quadraticPanel(
         const rest = [parabola.element, parametric.element, rules.element].filter(
           (section) => section !== first,
         );
-        setChildren(element, parameterNote, stepTitle, stepText, first, ...rest, higher);
+        setChildren(element, parameterNote, stepTitle, stepText, first, ...rest, higher, symbols);
       }
       stepTitle.textContent = `Step ${shown.k} of ${shown.lastStep}: ${construction.caption(state, m, shown.k)}`;
       parabola.update(m);

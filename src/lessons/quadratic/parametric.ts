@@ -17,8 +17,12 @@ import type { Reveal } from './script';
 /** Segments each drawn curve is sampled with: a multiple of 10, so the tenths of μ are samples. */
 const SEGMENTS = 100;
 
-/** The members of the family drawn in Figure 2 of the notes. */
-export const FAMILY = [0.2, 0.35, 0.5, 0.65, 0.8] as const;
+/**
+ * The members of the family drawn in Figure 2 of the notes: four curves, the
+ * first at μ1 = ½ as the notes' text says (its boxes' other values are not
+ * in the text, so these are three more across the range).
+ */
+export const FAMILY = [0.2, 0.35, 0.5, 0.8] as const;
 
 export interface MuRule {
   id: 'uniform' | 'chord' | 'centripetal';

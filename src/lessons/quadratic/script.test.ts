@@ -98,9 +98,11 @@ describe('the script of the quadratic lesson', () => {
   });
 
   it('lists the family and the slider’s μ1, then the rules with d0 = 2√2, d1 = √5', () => {
-    expect(captionAt({}, 4)).toBe('One set of points, many curves: μ₁ = 0.2, 0.35, 0.5, 0.65, 0.8');
+    expect(captionAt({}, 4)).toBe(
+      'One set of points, four curves, as in Figure 2: μ₁ = 0.2, 0.35, 0.5, 0.8',
+    );
     expect(formulaAt({ step: 4, mu: 0.3 })).toBe(
-      "\\mu_1 = 0.2,\\ 0.35,\\ 0.5,\\ 0.65,\\ 0.8\\quad\\text{(and the slider's } \\mu_1 = 0.3\\text{)}",
+      "\\mu_1 = 0.2,\\ 0.35,\\ 0.5,\\ 0.8\\quad\\text{(and the slider's } \\mu_1 = 0.3\\text{)}",
     );
     expect(captionAt({}, 5)).toBe(
       'Choosing μ₁ from the points: uniform, chord length, centripetal',

@@ -62,7 +62,7 @@ export const construction = script<QuadraticState, QuadraticModel, Reveal>(
   ),
   step(
     'family',
-    `One set of points, many curves: μ₁ = ${FAMILY.map(words).join(', ')}`,
+    `One set of points, four curves, as in Figure 2: μ₁ = ${FAMILY.map(words).join(', ')}`,
     ({ state }) =>
       `\\mu_1 = ${FAMILY.map((v) => String(v)).join(',\\ ')}\\quad\\text{(and the slider's } \\mu_1 = ${words(state.mu)}\\text{)}`,
   ),
