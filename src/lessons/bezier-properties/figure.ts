@@ -9,6 +9,7 @@ import { drawCubic } from './cubic/draw';
 import { drawElevate } from './elevate/draw';
 import { drawEnds } from './ends/draw';
 import { drawHermite } from './hermite/draw';
+import { drawHodograph } from './hodograph/draw';
 import { drawHull } from './hull/draw';
 import { drawLocal } from './local/draw';
 import type { ModelOf, PropertiesModel } from './model';
@@ -33,6 +34,7 @@ const DRAWINGS: Drawings = {
   affine: drawAffine,
   cubic: drawCubic,
   hermite: drawHermite,
+  hodograph: drawHodograph,
 };
 
 function drawExperiment<X extends ExperimentId>(
@@ -54,6 +56,8 @@ function movingPoint(m: PropertiesModel): Point | null {
     case 'cubic':
     case 'hermite':
       return m.shown.has('point') ? m.point : null;
+    case 'hodograph':
+      return m.shown.has('tangent') ? m.point : null;
     // Where the curve is split, and the point the copies pull: shown with the curve.
     case 'repeat':
     case 'split':

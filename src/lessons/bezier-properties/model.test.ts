@@ -1,9 +1,10 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
-import type { Point } from '../../math';
+import { type Point, bezierDerivative, bezierPoint, bezierTangent } from '../../math';
 import lesson from './lesson';
 import type { ModelOf, PropertiesModel } from './model';
-import { type ExperimentId, LECTURE_CUBIC, type PropertiesState, schema } from './state';
+import { type ExperimentId, ARCH_CUBIC, type PropertiesState, normalize, schema } from './state';
 
 // Every expected value below is worked out by hand from the lecture's formulas.
 
@@ -22,7 +23,7 @@ const closeTo = (actual: readonly number[], expected: readonly number[], digits 
   expected.forEach((v, i) => expect(actual[i]).toBeCloseTo(v, digits));
 
 describe('end points and end tangents', () => {
-  const m = modelOf('ends', { points: LECTURE_CUBIC, t: 0.5 });
+  const m = modelOf('ends', { points: ARCH_CUBIC, t: 0.5 });
   it('has P′(0) = 3(P1 − P0), P′(1) = 3(P3 − P2) and P′(½) from the hodograph', () => {
     const [start, end, at] = m.tangents;
     expect(start.vector).toEqual([3, 6]);
@@ -137,7 +138,7 @@ describe('repeated and closing points', () => {
 });
 
 describe('degree elevation', () => {
-  const m = modelOf('elevate', { points: LECTURE_CUBIC, step: 2 }); // one elevation;
+  const m = modelOf('elevate', { points: ARCH_CUBIC, step: 2 }); // one elevation;
   it('gives Qi = i/4·P(i−1) + (1 − i/4)·Pi on the same curve', () => {
     expect(m.controls).toEqual([
       [0, 0],
@@ -158,7 +159,7 @@ describe('degree elevation', () => {
 
 describe('subdivision', () => {
   it('splits at ½ into the de Casteljau polygons, twice', () => {
-    const m = modelOf('split', { points: LECTURE_CUBIC, t: 0.5, step: 3 }); // two splits;
+    const m = modelOf('split', { points: ARCH_CUBIC, t: 0.5, step: 3 }); // two splits;
     expect(m.levels.map((level) => level.length)).toEqual([1, 2, 4]);
     expect(m.first?.[0]).toEqual([
       [0, 0],
@@ -176,7 +177,7 @@ describe('subdivision', () => {
 
 describe('affine and perspective maps', () => {
   it('shears about (2, 1) and shifts 6 right: images agree', () => {
-    const m = modelOf('affine', { points: LECTURE_CUBIC, map: 'shear' });
+    const m = modelOf('affine', { points: ARCH_CUBIC, map: 'shear' });
     if (!m.images.ok) throw new Error(m.images.why);
     // (x, y) ↦ (x + 0.8(y − 1) + 6, y): P0 = (0, 0) ↦ (5.2, 0), P1 = (1, 2) ↦ (7.8, 2).
     closeTo(m.images.mappedControls[0], [5.2, 0]);
@@ -186,7 +187,7 @@ describe('affine and perspective maps', () => {
     expect(m.images.rationalDistance).toBeNull();
   });
   it('divides by w = 1 + 0.22(x − 2) + 0.12(y − 1) in perspective, and weights repair it', () => {
-    const m = modelOf('affine', { points: LECTURE_CUBIC, map: 'perspective' });
+    const m = modelOf('affine', { points: ARCH_CUBIC, map: 'perspective' });
     if (!m.images.ok) throw new Error(m.images.why);
     closeTo(m.images.weights, [0.44, 0.9, 1.34, 1.32]);
     closeTo(m.images.weightRange, [0.44, 1.34]);
@@ -196,7 +197,7 @@ describe('affine and perspective maps', () => {
   it('draws no image when a point is beyond the vanishing line', () => {
     // w(−5, 0) = 1 + 0.22·(−7) + 0.12·(−1) = −0.66.
     const m = modelOf('affine', {
-      points: [[-5, 0], ...LECTURE_CUBIC.slice(1)],
+      points: [[-5, 0], ...ARCH_CUBIC.slice(1)],
       map: 'perspective',
     });
     expect(m.images.ok).toBe(false);
@@ -237,9 +238,9 @@ describe('inflection and self-intersection', () => {
     closeTo(m.loop!.point, [2, 18 / 11], 9);
     expect(m.inflections).toEqual([]);
   });
-  it('gives κ(½) = −16/27 for the lecture cubic, and nothing for a straight one', () => {
+  it('gives κ(½) = −16/27 for the arch cubic, and nothing for a straight one', () => {
     // P′(½) = (4.5, 0), P″(½) = (0, −12): κ = 4.5·(−12) / 4.5³.
-    expect(modelOf('cubic', { points: LECTURE_CUBIC, t: 0.5 }).curvature).toBeCloseTo(-16 / 27, 12);
+    expect(modelOf('cubic', { points: ARCH_CUBIC, t: 0.5 }).curvature).toBeCloseTo(-16 / 27, 12);
     const line = modelOf('cubic', {
       points: [
         [0, 0],
@@ -253,7 +254,7 @@ describe('inflection and self-intersection', () => {
 });
 
 describe('the Hermite form of a cubic', () => {
-  const m = modelOf('hermite', { points: LECTURE_CUBIC, t: 0.4 });
+  const m = modelOf('hermite', { points: ARCH_CUBIC, t: 0.4 });
   it('has the power form of equation 11 and the end data x0, x0′, x1, x1′', () => {
     expect(m.power).toEqual([
       [0, 0],
@@ -272,5 +273,87 @@ describe('the Hermite form of a cubic', () => {
     closeTo(m.hermiteAtT, [1.552, 1.44]);
     closeTo(m.point, [1.552, 1.44]);
     expect(m.deviation).toBeLessThan(1e-12);
+  });
+});
+
+describe('the derivative curve (hodograph)', () => {
+  const m = modelOf('hodograph', { points: ARCH_CUBIC, t: 0.3 });
+  it('has the legs times n as control points, by hand and as the maths gives them', () => {
+    expect(m.differences).toEqual([
+      [1, 2],
+      [2, 0],
+      [1, -2],
+    ]);
+    // 3(P1 − P0) = (3, 6), 3(P2 − P1) = (6, 0), 3(P3 − P2) = (3, −6): a quadratic.
+    expect(m.hodograph).toEqual([
+      [3, 6],
+      [6, 0],
+      [3, -6],
+    ]);
+    expect(m.hodograph).toEqual(bezierDerivative(ARCH_CUBIC));
+    // Its ends are property 1's end tangents.
+    const ends = modelOf('ends', { points: ARCH_CUBIC, t: 0.3 }).tangents;
+    expect([m.hodograph[0], m.hodograph[2]]).toEqual([ends[0].vector, ends[1].vector]);
+  });
+  it('draws the vectors from O, right of the polygon: (4 + 0.3·4, 1) = (5.2, 1)', () => {
+    // The polygon spans x 0 … 4, y 0 … 2 (size 4); the vectors and 0 span x 0 … 6, y −6 … 6.
+    closeTo(m.origin, [5.2, 1]);
+    closeTo(m.placed[1], [11.2, 1]);
+    closeTo(m.placedDifferences[2], [6.2, -1]);
+    expect(m.extent).toContainEqual(m.placed[0]);
+  });
+  it('gives P′(0.3) = 0.49·(3, 6) + 0.42·(6, 0) + 0.09·(3, −6) = (4.26, 2.4), along the tangent', () => {
+    closeTo(m.weights, [0.49, 0.42, 0.09]);
+    closeTo(m.derivative, [4.26, 2.4]);
+    closeTo(bezierTangent(ARCH_CUBIC, 0.3), [4.26, 2.4]);
+    // The construction's level 2: (0.69, 1.02) and (2.11, 1.82); 3 × their difference.
+    closeTo(m.edge[0], [0.69, 1.02]);
+    closeTo(m.edge[1], [2.11, 1.82]);
+    closeTo(m.fromEdge, [4.26, 2.4]);
+    closeTo(m.point, [1.116, 1.26]);
+    expect(m.disagreement).toBeLessThan(1e-12);
+    // The arrow at P(t) ends at (1.116 + 4.26, 1.26 + 2.4) = (5.376, 3.66), inside the view.
+    closeTo(m.extent[m.extent.length - 1], [5.376, 3.66]);
+  });
+  it('is the velocity of the curve for any polygon: a central difference of P agrees', () =>
+    fc.assert(
+      fc.property(
+        fc.array(fc.tuple(fc.integer({ min: -9, max: 9 }), fc.integer({ min: -9, max: 9 })), {
+          minLength: 2,
+          maxLength: 8,
+        }),
+        fc.double({ min: 0.01, max: 0.99, noNaN: true }),
+        (points, t) => {
+          const h = modelOf('hodograph', { points, t });
+          const step = 1e-5;
+          const [a, b] = [bezierPoint(points, t - step), bezierPoint(points, t + step)];
+          h.derivative.forEach((v, d) => expect(v).toBeCloseTo((b[d] - a[d]) / (2 * step), 4));
+          expect(h.hodograph).toHaveLength(points.length - 1);
+          expect(h.disagreement).toBeLessThan(1e-9);
+        },
+      ),
+    ));
+  it('is one constant vector for a straight segment (degree 1)', () => {
+    const line = modelOf('hodograph', {
+      points: [
+        [0, 0],
+        [2, 1],
+      ],
+      t: 0.7,
+    });
+    expect(line.hodograph).toEqual([[2, 1]]);
+    closeTo(line.derivative, [2, 1]);
+    closeTo(line.fromEdge, [2, 1]);
+  });
+});
+
+describe('a cubic experiment given other than four points', () => {
+  it('shows the arch cubic, and says so by what it is', () => {
+    const five = state({ experiment: 'hermite', points: [...ARCH_CUBIC, [5, 1]] });
+    const { state: shown, issues } = normalize(five);
+    expect(shown.points).toEqual(ARCH_CUBIC);
+    expect(issues).toEqual([
+      'this experiment is about cubics, which have 4 control points, not 5; the arch cubic (0, 0), (1, 2), (3, 2), (4, 0) is shown',
+    ]);
   });
 });

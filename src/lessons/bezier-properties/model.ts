@@ -12,6 +12,8 @@ import { type EndsModel, deriveEnds } from './ends/model';
 import type { EndsReveal } from './ends/script';
 import { type HermiteModel, deriveHermite } from './hermite/model';
 import type { HermiteReveal } from './hermite/script';
+import { type HodographModel, deriveHodograph } from './hodograph/model';
+import type { HodographReveal } from './hodograph/script';
 import { type HullModel, deriveHull } from './hull/model';
 import type { HullReveal } from './hull/script';
 import { type LocalModel, deriveLocal } from './local/model';
@@ -41,7 +43,8 @@ export type PropertiesModel =
   | Shown<SplitModel, SplitReveal>
   | Shown<AffineModel, AffineReveal>
   | Shown<CubicModel, CubicReveal>
-  | Shown<HermiteModel, HermiteReveal>;
+  | Shown<HermiteModel, HermiteReveal>
+  | Shown<HodographModel, HodographReveal>;
 
 /** Every name a step of the lesson reveals, over all its experiments. */
 export type Reveal =
@@ -54,7 +57,8 @@ export type Reveal =
   | SplitReveal
   | AffineReveal
   | CubicReveal
-  | HermiteReveal;
+  | HermiteReveal
+  | HodographReveal;
 
 /** The model while experiment X is shown. */
 export type ModelOf<X extends ExperimentId> = Extract<PropertiesModel, { kind: X }>;
@@ -80,6 +84,7 @@ const PARTS: {
   affine: deriveAffine,
   cubic: deriveCubic,
   hermite: deriveHermite,
+  hodograph: deriveHodograph,
 };
 
 export function derive(state: PropertiesState, shown: Revealed<Reveal>): PropertiesModel {

@@ -7,6 +7,7 @@ import { elevatePanel } from './elevate/details';
 import { endsPanel } from './ends/details';
 import type { Details, ExperimentPanel, PanelApi } from './experimentPanel';
 import { hermitePanel } from './hermite/details';
+import { hodographPanel } from './hodograph/details';
 import { hullPanel } from './hull/details';
 import { localPanel } from './local/details';
 import type { ModelOf, PropertiesModel } from './model';
@@ -28,6 +29,7 @@ const PANELS: { [X in ExperimentId]: ExperimentPanel<ModelOf<X>> } = {
   affine: affinePanel,
   cubic: cubicPanel,
   hermite: hermitePanel,
+  hodograph: hodographPanel,
 };
 
 export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, PropertiesModel> {

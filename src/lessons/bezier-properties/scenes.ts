@@ -2,7 +2,7 @@ import type { ScriptedScene } from '../../kit/lesson';
 import type { Point } from '../../math';
 import type { PropertiesModel, Reveal } from './model';
 import { SCRIPTS } from './scripts';
-import { type ExperimentId, LECTURE_CUBIC, type MapKind, type PropertiesState } from './state';
+import { type ExperimentId, ARCH_CUBIC, type MapKind, type PropertiesState } from './state';
 
 export interface PropertiesScene extends ScriptedScene<PropertiesState, PropertiesModel, Reveal> {
   /** The experiment the scene sets up: its steps are that experiment's. */
@@ -35,11 +35,11 @@ const WAVE: Point[] = Array.from({ length: 12 }, (_, i) => [
 const WAVE_MOVED: Point[] = WAVE.map((q, i) => (i === 5 ? [q[0], q[1] + 2] : q));
 
 const affineScene = (id: string, label: string, map: MapKind) =>
-  scene(id, label, 'affine', LECTURE_CUBIC, { map, t: 0.4 });
+  scene(id, label, 'affine', ARCH_CUBIC, { map, t: 0.4 });
 
 /** One scene per experiment (two for maps and for cubics), numbered as the notes number the properties. */
 export const SCENES: PropertiesScene[] = [
-  scene('ends', '1 End tangents', 'ends', LECTURE_CUBIC),
+  scene('ends', '1 End tangents', 'ends', ARCH_CUBIC),
   scene('hull', '2 Convex hull', 'hull', [
     [0, 0],
     [1, 3],
@@ -68,8 +68,8 @@ export const SCENES: PropertiesScene[] = [
     [5, 3],
     [4, 0],
   ]),
-  scene('elevate', '5 Raise the degree', 'elevate', LECTURE_CUBIC),
-  scene('split', '6 Subdivision', 'split', LECTURE_CUBIC, { t: 0.5 }),
+  scene('elevate', '5 Raise the degree', 'elevate', ARCH_CUBIC),
+  scene('split', '6 Subdivision', 'split', ARCH_CUBIC, { t: 0.5 }),
   affineScene('affine', '7 Affine map', 'shear'),
   affineScene('perspective', '7 Perspective map', 'perspective'),
   scene('inflection', '8 Inflection', 'cubic', [
@@ -90,7 +90,9 @@ export const SCENES: PropertiesScene[] = [
     ],
     { t: 0.5 },
   ),
-  scene('hermite', '9 Hermite form', 'hermite', LECTURE_CUBIC, { t: 0.4 }),
+  scene('hermite', '9 Hermite form', 'hermite', ARCH_CUBIC, { t: 0.4 }),
+  // Property 1 again, at every t: the whole derivative (#20).
+  scene('hodograph', '1 Derivative curve', 'hodograph', ARCH_CUBIC),
 ];
 
 /** The scene a state is in: the first that sets up its experiment (maps and cubics share their steps). */

@@ -5,7 +5,7 @@ import { propertiesFigure } from './figure';
 import lesson from './lesson';
 import type { ModelOf, PropertiesModel } from './model';
 import { SCENES } from './scenes';
-import { LECTURE_CUBIC, type PropertiesState, schema } from './state';
+import { ARCH_CUBIC, type PropertiesState, schema } from './state';
 
 const scene = (id: string, step?: number): PropertiesState => {
   const s = SCENES.find((p) => p.id === id)!.setup(defaultsOf(schema));
@@ -20,9 +20,9 @@ describe('the script of the Bézier properties', () => {
   it('every experiment steps from little to all, in at most 20 steps, with plain captions', () =>
     checkScript(lesson));
 
-  it('gives every one of the twelve scenes steps, and opens on the first one at step 0', () => {
+  it('gives every one of the thirteen scenes steps, and opens on the first one at step 0', () => {
     const scenes = sceneStates(lesson);
-    expect(scenes).toHaveLength(12);
+    expect(scenes).toHaveLength(13);
     for (const { id, count } of scenes) expect(count, id).toBeGreaterThanOrEqual(4);
     const defaults = defaultsOf(schema);
     expect(defaults.step).toBe(0);
@@ -44,12 +44,40 @@ describe('the script of the Bézier properties', () => {
     expect(describeStep(elevate, 3)).toBe(
       'Degree raised 2 times, to 5: the same curve, a polygon closer to it',
     );
-    // Hermite data of the lecture cubic: x0′ = 3(P1 − P0) = (3, 6), x1′ = 3(P3 − P2) = (3, −6).
+    // Hermite data of the arch cubic: x0′ = 3(P1 − P0) = (3, 6), x1′ = 3(P3 − P2) = (3, −6).
     const hermite = scene('hermite', 2);
     expect(stepFormula(derive(hermite), hermite)).toBe(
       "x_0' = 3(P_1 - P_0) = (3.000,\\ 6.000),\\quad x_1' = 3(P_3 - P_2) = (3.000,\\ -6.000)",
     );
     expect(describeStep(scene('local', 2), 2)).toBe('P₅ moved; every other control point stayed');
+  });
+
+  it('steps through the derivative curve with the numbers worked by hand', () => {
+    const at = (step: number) => {
+      const s = scene('hodograph', step);
+      return [describeStep(s, step), stepFormula(derive(s), s)];
+    };
+    // The arch's legs: (1, 2) − (0, 0) = (1, 2), (3, 2) − (1, 2) = (2, 0), (4, 0) − (3, 2) = (1, −2).
+    expect(at(2)[1]).toBe(
+      'P_{1} - P_{0} = (1.000,\\ 2.000),\\ P_{2} - P_{1} = (2.000,\\ 0.000),\\ P_{3} - P_{2} = (1.000,\\ -2.000)',
+    );
+    // Times 3: (3, 6), (6, 0), (3, −6).
+    expect(at(3)).toEqual([
+      'Times n = 3: the control points of the derivative, 3(Pᵢ₊₁ − Pᵢ)',
+      '3(P_{1} - P_{0}) = (3.000,\\ 6.000),\\ 3(P_{2} - P_{1}) = (6.000,\\ 0.000),\\ 3(P_{3} - P_{2}) = (3.000,\\ -6.000)',
+    ]);
+    expect(at(4)[1]).toBe("P'(t) = \\sum_{i=0}^{2} W(2,i,t)\\,3(P_{i+1} - P_i)");
+    // At t = 0.3: W(2, i, 0.3) = 0.49, 0.42, 0.09;
+    // P′(0.3) = 0.49·(3, 6) + 0.42·(6, 0) + 0.09·(3, −6) = (1.47 + 2.52 + 0.27, 2.94 − 0.54) = (4.26, 2.4).
+    expect(at(5)).toEqual([
+      'At t = 0.3 the derivative curve gives P′(t) = (4.26, 2.4)',
+      "P'(0.3) = 0.49\\cdot(3.000,\\ 6.000) + 0.42\\cdot(6.000,\\ 0.000) + 0.09\\cdot(3.000,\\ -6.000) = (4.260,\\ 2.400)",
+    ]);
+    // Level 2 of the construction at 0.3: P2,0 = 0.7·(0.3, 0.6) + 0.3·(1.6, 2) = (0.69, 1.02),
+    // P2,1 = 0.7·(1.6, 2) + 0.3·(3.3, 1.4) = (2.11, 1.82); 3(P2,1 − P2,0) = 3(1.42, 0.8) = (4.26, 2.4).
+    expect(at(6)[1]).toBe(
+      "3(P_{2,1} - P_{2,0}) = 3((2.110,\\ 1.820) - (0.690,\\ 1.020)) = (4.260,\\ 2.400) = P'(0.3)",
+    );
   });
 
   it('keeps the closed curve’s arrows short, in the view, and names P0 = P5 once', () => {
@@ -74,7 +102,7 @@ describe('the script of the Bézier properties', () => {
 
   it('traces P(t) once the experiment shows it', () => {
     expect(propertiesFigure.trail!(derive(scene('ends', 4)))).toBeNull();
-    // P(0.3) of the lecture cubic: 0.343·P0 + 0.441·P1 + 0.189·P2 + 0.027·P3 = (1.116, 1.26).
+    // P(0.3) of the arch cubic: 0.343·P0 + 0.441·P1 + 0.189·P2 + 0.027·P3 = (1.116, 1.26).
     const p = propertiesFigure.trail!(derive(scene('ends', 5)))!;
     expect(p[0]).toBeCloseTo(1.116, 12);
     expect(p[1]).toBeCloseTo(1.26, 12);
@@ -83,7 +111,7 @@ describe('the script of the Bézier properties', () => {
   it('stacks coincident control points under one name', () => {
     const m = derive({
       ...scene('hull'),
-      points: [LECTURE_CUBIC[0], LECTURE_CUBIC[0], LECTURE_CUBIC[3]],
+      points: [ARCH_CUBIC[0], ARCH_CUBIC[0], ARCH_CUBIC[3]],
     });
     expect(lesson.figures[0].handles!(m).map((h) => [h.label, h.showLabel])).toEqual([
       ['P_{0} = P_{1}', true],

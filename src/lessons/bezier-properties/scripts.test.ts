@@ -49,6 +49,15 @@ describe('the scripts of the nine experiments', () => {
       'marks',
       'point',
     ]);
+    expect(names(opened('hodograph', 0))).toEqual([
+      'points',
+      'curve',
+      'differences',
+      'times',
+      'hodograph',
+      'derivative',
+      'tangent',
+    ]);
     expect(names(opened('hermite', 0))).toEqual([
       'points',
       'curve',

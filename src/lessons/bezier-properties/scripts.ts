@@ -5,6 +5,7 @@ import { cubicScript } from './cubic/script';
 import { elevateScript } from './elevate/script';
 import { endsScript } from './ends/script';
 import { hermiteScript } from './hermite/script';
+import { hodographScript } from './hodograph/script';
 import { hullScript } from './hull/script';
 import { localScript } from './local/script';
 import type { PropertiesModel, Reveal } from './model';
@@ -36,6 +37,7 @@ export const SCRIPTS: Readonly<Record<ExperimentId, LessonScript>> = {
   affine: onLesson(affineScript),
   cubic: onLesson(cubicScript),
   hermite: onLesson(hermiteScript),
+  hodograph: onLesson(hodographScript),
 };
 
 /** The script of the experiment a state is in. */

@@ -13,7 +13,8 @@ export type ExperimentId =
   | 'split'
   | 'affine'
   | 'cubic'
-  | 'hermite';
+  | 'hermite'
+  | 'hodograph';
 
 /** The plane maps of the affine-invariance experiment. */
 export type MapKind = 'rotate' | 'scale' | 'shear' | 'perspective';
@@ -44,7 +45,11 @@ export const MAX_ELEVATIONS = 12;
 export const MAX_SPLITS = 5;
 export const MAX_COPIES = 5;
 
-export const LECTURE_CUBIC: Point[] = [
+/**
+ * The lesson's own cubic, a symmetric arch (the notes' figures give no
+ * coordinates, so it is not theirs): P(0.5) = (2, 1.5).
+ */
+export const ARCH_CUBIC: Point[] = [
   [0, 0],
   [1, 2],
   [3, 2],
@@ -62,13 +67,14 @@ export const EXPERIMENT_IDS: readonly ExperimentId[] = [
   'affine',
   'cubic',
   'hermite',
+  'hodograph',
 ];
 
 export const MAP_KINDS: readonly MapKind[] = ['rotate', 'scale', 'shear', 'perspective'];
 
 export const schema: Schema<PropertiesState> = {
   experiment: linkKey(choice({ default: 'ends', values: EXPERIMENT_IDS }), 'x'),
-  points: linkKey(points({ default: LECTURE_CUBIC, min: 2, max: MAX_POINTS }), 'p'),
+  points: linkKey(points({ default: ARCH_CUBIC, min: 2, max: MAX_POINTS }), 'p'),
   before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.3, min: 0, max: 1 }),
   // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
@@ -89,9 +95,9 @@ export function normalize(state: PropertiesState): { state: PropertiesState; iss
   let next = state;
   if (needsCubic(next.experiment) && next.points.length !== 4) {
     issues.push(
-      `this experiment is about cubics, which have 4 control points, not ${next.points.length}; the lecture cubic is shown`,
+      `this experiment is about cubics, which have 4 control points, not ${next.points.length}; the arch cubic (0, 0), (1, 2), (3, 2), (4, 0) is shown`,
     );
-    next = { ...next, points: copy(LECTURE_CUBIC) };
+    next = { ...next, points: copy(ARCH_CUBIC) };
   }
   if (next.experiment === 'local' && next.before.length !== next.points.length) {
     if (next.before.length > 0) {

@@ -1,7 +1,7 @@
 import { multiplyPlaneMatrices, translationMatrix } from '../../../math';
 import type { MapKind } from '../state';
 
-/** The centre the maps act about, and how far right the image is drawn (the lecture cubic's frame). */
+/** The centre the maps act about, and how far right the image is drawn (the frame of the arch cubic (0, 0), (1, 2), (3, 2), (4, 0)). */
 export const CENTRE: readonly [number, number] = [2, 1];
 export const SHIFT = 6;
 
