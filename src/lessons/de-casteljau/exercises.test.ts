@@ -164,10 +164,10 @@ describe('split the curve in two', () => {
 
   it('opens at the polygon unsplit; its working shows the two halves', () => {
     const posed = pose('split-half', 2);
-    expect(posed.state.split).toBe(false);
+    expect(posed.state.mode).toBe('construction');
     expect(derive(posed.state).shown.count('level')).toBe(0);
     const working = derive(posed.working);
-    expect(posed.working.split).toBe(true);
+    expect(posed.working.mode).toBe('halves');
     expect(working.shown.last).toBe(true);
     expect(working.right[1][0]).toBeCloseTo(2.22, 12);
   });

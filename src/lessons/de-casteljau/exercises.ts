@@ -51,7 +51,7 @@ export function arch(r: Random, degree: 2 | 3): Point[] {
 
 /** The construction of these points at t, walked from the points to the curve. */
 const walked = (defaults: DeCasteljauState, p: Point[], t: number): DeCasteljauState => {
-  const s = { ...defaults, p, t, split: false };
+  const s: DeCasteljauState = { ...defaults, p, t, mode: 'construction' };
   return { ...s, step: construction.lastStep(s) };
 };
 
@@ -60,7 +60,7 @@ const polygonOnly = (defaults: DeCasteljauState, p: Point[], t: number): DeCaste
   ...defaults,
   p,
   t,
-  split: false,
+  mode: 'construction',
   step: construction.stepOf({ ...defaults, p, t }, 'polygon'),
 });
 
@@ -196,7 +196,7 @@ const splitHalf: ExerciseSpec<DeCasteljauState> = {
       },
     ];
     const hint = `The ${half.name} half's control points are ${half.points.join(', ')}: this one is ${half.points[j]}, a point of level ${side === 0 ? j : 3 - j}; cut level by level at t = ${words(t)}.`;
-    const working: DeCasteljauState = { ...walked(defaults, p, t), split: true };
+    const working: DeCasteljauState = { ...walked(defaults, p, t), mode: 'halves' };
     return {
       state: polygonOnly(defaults, p, t),
       prompt: `Split the curve of ${listText(p)} at t = ${words(t)}: what is ${which}, from ${half.from}? Give x and y to 2 decimals.`,

@@ -1,8 +1,10 @@
+import type { DrawInfo } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
 import { HALF_DASH, halfColour, levelColour, levelDash } from '../../kit/seriesColours';
 import { handleLabelBoxes, placeLabel } from '../../kit/labels';
+import { drawBernstein, drawPseudocode } from './drawWalks';
 import type { DeCasteljauModel } from './model';
 import { controlPoints } from './points';
 import type { DeCasteljauState } from './state';
@@ -17,43 +19,58 @@ export const constructionFigure: KitFigure<DeCasteljauState, DeCasteljauModel> =
   kind: 'geometry',
   bounds: (m) => boundsOf(m.state.p),
   draw(painter, m, info) {
-    const theme = painter.theme;
-    const { state, n, levels, shown } = m;
-
-    // The last step: the whole curve faintly, the part traced so far (0 … t) strongly.
-    if (shown.has('curve') && !state.split) {
-      painter.polylineFlat(m.curve, {
-        color: theme.curveFaint,
-        width: theme.sizes.curve * 0.8,
-        role: 'curve',
-      });
-      if (state.t > 0) painter.polylineFlat(m.leftCurve, { color: theme.curve, role: 'curve' });
-    }
-    if (state.split) drawHalves(painter, m, shown.has('curve'));
-
-    // Level 0 is the control polygon.
-    if (shown.has('polygon')) {
-      painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
-    }
-    for (let r = 1; r <= shown.count('level'); r++) {
-      const color = levelColour(theme.palette, r);
-      painter.polyline(levels[r], { color, width: theme.sizes.line, dash: levelDash(r) });
-      levels[r].forEach((point) => {
-        const last = r === n;
-        painter.dot(
-          point,
-          last ? theme.accent : color,
-          last ? theme.sizes.point * 1.6 : theme.sizes.point,
-        );
-      });
-    }
-    if (!info.thumbnail) drawLabels(painter, m);
+    if (m.state.mode === 'pseudocode') drawPseudocode(painter, m, info);
+    else if (m.state.mode === 'bernstein') drawBernstein(painter, m, info);
+    else drawConstruction(painter, m, info);
     if (m.note && !info.thumbnail) painter.note(m.note);
   },
   points: [controlPoints],
   addTo: controlPoints,
-  trail: (m) => (m.shown.has('level', m.n) ? m.levels[m.n][0] : null),
+  trail: (m) => (pointReached(m) ? m.levels[m.n][0] : null),
 };
+
+/** P(t) is on the figure: the construction's last level, the pseudocode's return, the last blend. */
+function pointReached({ state, shown, n }: DeCasteljauModel): boolean {
+  if (state.mode === 'pseudocode') return shown.has('return');
+  if (state.mode === 'bernstein') return shown.has('blend', n);
+  return shown.has('level', n);
+}
+
+/** The construction level by level, with its subdivision's halves in the mode that shows them. */
+function drawConstruction(painter: Painter, m: DeCasteljauModel, info: DrawInfo): void {
+  const theme = painter.theme;
+  const { state, n, levels, shown } = m;
+  const split = state.mode === 'halves';
+
+  // The last step: the whole curve faintly, the part traced so far (0 … t) strongly.
+  if (shown.has('curve') && !split) {
+    painter.polylineFlat(m.curve, {
+      color: theme.curveFaint,
+      width: theme.sizes.curve * 0.8,
+      role: 'curve',
+    });
+    if (state.t > 0) painter.polylineFlat(m.leftCurve, { color: theme.curve, role: 'curve' });
+  }
+  if (split) drawHalves(painter, m, shown.has('curve'));
+
+  // Level 0 is the control polygon.
+  if (shown.has('polygon')) {
+    painter.polyline(state.p, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] });
+  }
+  for (let r = 1; r <= shown.count('level'); r++) {
+    const color = levelColour(theme.palette, r);
+    painter.polyline(levels[r], { color, width: theme.sizes.line, dash: levelDash(r) });
+    levels[r].forEach((point) => {
+      const last = r === n;
+      painter.dot(
+        point,
+        last ? theme.accent : color,
+        last ? theme.sizes.point * 1.6 : theme.sizes.point,
+      );
+    });
+  }
+  if (!info.thumbnail) drawLabels(painter, m);
+}
 
 /** The labels of the levels shown, each where it covers no other label and no point. */
 function drawLabels(painter: Painter, m: DeCasteljauModel): void {

@@ -8,8 +8,9 @@ import { curvatureLink } from '../../kit/lessonLinks';
 import { halfColour, levelColour } from '../../kit/seriesColours';
 import type { DeCasteljauModel } from './model';
 import { controlPoints } from './points';
-import { construction } from './script';
 import type { DeCasteljauState } from './state';
+import { walkPanel } from './walkPanel';
+import { scriptOf } from './walks';
 import { gestures } from '../../kit/gestures';
 
 const coords = (p: readonly number[]) => p.map((v) => texNumber(v, 3));
@@ -31,8 +32,8 @@ export function deCasteljauPanel(
   const split = checkbox(api, {
     id: 'split-toggle',
     label: 'Show subdivision at t: the two halves of the curve and their control polygons',
-    get: (s) => s.split,
-    set: (s, on) => ({ ...s, split: on }),
+    get: (s) => s.mode === 'halves',
+    set: (s, on): DeCasteljauState => ({ ...s, mode: on ? 'halves' : 'construction' }),
   });
   const splitText = h('p', {});
   const halvesBody = h('tbody', {});
@@ -46,6 +47,7 @@ export function deCasteljauPanel(
   const tableBody = h('tbody', {});
   const table = new LiveRows(tableBody);
   const pointCount = controlPoints.buttons(api);
+  const walks = walkPanel();
 
   const curvature = curvatureLink();
   const element = h(
@@ -69,6 +71,7 @@ export function deCasteljauPanel(
     stepText,
     note,
     stepFormulas,
+    ...walks.elements,
     split.element,
     splitInfo,
     pointCount.element,
@@ -86,11 +89,13 @@ export function deCasteljauPanel(
       const palette = api.theme().palette;
       const r = shown.count('level');
       split.update(state);
+      split.element.hidden = state.mode !== 'construction' && state.mode !== 'halves';
+      walks.update(m);
       pointCount.update(state);
       curvature.update({ src: 'bezier', p: state.p, t: state.t });
 
       stepTitle.textContent = `Step ${state.step} of ${shown.lastStep}`;
-      stepText.textContent = `${construction.caption(state, m, state.step)}.`;
+      stepText.textContent = `${scriptOf(state).caption(state, m, state.step)}.`;
       note.textContent = m.note ?? '';
       note.hidden = m.note === null;
       if (r > 0) {
@@ -124,8 +129,8 @@ export function deCasteljauPanel(
         );
       }
 
-      splitInfo.hidden = !state.split;
-      if (state.split) {
+      splitInfo.hidden = state.mode !== 'halves';
+      if (state.mode === 'halves') {
         splitText.textContent = `Cut at t = ${words(t)}, the curve is two Bézier curves of degree ${n}. The left half (t from 0 to ${words(t)}) has the first point of every level as its control points, the right half (t from ${words(t)} to 1) the last point of every level, from level ${n} back to level 0.`;
         const row = (half: 0 | 1, name: string, point: readonly number[]) => ({
           cells: [
@@ -144,9 +149,10 @@ export function deCasteljauPanel(
       table.set(
         levels.flatMap((row, level) =>
           row.map((point, i) => {
-            const visible = level <= r;
+            const visible = i < m.computed[level];
+            const current = m.current.some(([a, b]) => a === level && b === i);
             return {
-              className: level === r && r > 0 ? 'current' : visible ? '' : 'future',
+              className: current ? 'current' : visible ? '' : 'future',
               data: { level: String(level) },
               cells: [
                 {

@@ -1,6 +1,6 @@
 import { pointList } from '../../kit/pointList';
-import { construction } from './script';
 import { type DeCasteljauState, MAX_POINTS } from './state';
+import { scriptOf } from './walks';
 
 /** The control points P₀ … Pₙ: dragged, moved by keyboard, added and removed. */
 export const controlPoints = pointList<DeCasteljauState>({
@@ -10,6 +10,6 @@ export const controlPoints = pointList<DeCasteljauState>({
   label: (i) => `P_{${i}}`,
   min: 2,
   max: MAX_POINTS,
-  // A construction shown to its end stays shown to its end.
-  after: (before, after) => construction.keptAtEnd(before, after, 'step'),
+  // A walk shown to its end stays shown to its end.
+  after: (before, after) => scriptOf(before).keptAtEnd(before, after, 'step'),
 });

@@ -32,7 +32,7 @@ describe('the script of the de Casteljau construction', () => {
   it('every scene steps from little to all, in at most 20 steps, with plain captions', () =>
     checkScript(lesson));
 
-  it('opens on the lecture cubic at step 0, so the first press is the first step', () => {
+  it('opens on the arch cubic at step 0, so the first press is the first step', () => {
     const defaults = defaultsOf(schema);
     // Step 0 the points, 1 the polygon, 2–4 the levels, 5 the curve.
     expect(lesson.steps!.count(defaults)).toBe(5);

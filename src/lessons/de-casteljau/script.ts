@@ -3,8 +3,8 @@ import { repeat, script, step } from '../../kit/script';
 import type { DeCasteljauModel } from './model';
 import { type DeCasteljauState, degree } from './state';
 
-/** What the steps reveal, by name: the figure and the panel ask for these. */
-export type Reveal = 'points' | 'polygon' | 'level' | 'curve';
+/** What the construction's steps reveal, by name: the figure and the panel ask for these. */
+export type ConstructionReveal = 'points' | 'polygon' | 'level' | 'curve';
 
 const point = (p: readonly number[]) => texPoint(p, 3);
 
@@ -12,7 +12,7 @@ const point = (p: readonly number[]) => texPoint(p, 3);
  * The construction as the lecture draws it (Figure 5): the control points,
  * the polygon (level 0), one press per level r = 1 … n, the curve traced.
  */
-export const construction = script<DeCasteljauState, DeCasteljauModel, Reveal>(
+export const construction = script<DeCasteljauState, DeCasteljauModel, ConstructionReveal>(
   step(
     'points',
     ({ state }) =>
