@@ -40,6 +40,15 @@ describe('the script of the de Casteljau construction', () => {
     expect({ ...lesson.scenes![0].apply(defaults), step: 0 }).toEqual(defaults);
   });
 
+  it('builds the first scene at Figure 5’s parameter: the lecture notes draw it at μ ≈ 0.6', () => {
+    const cubic = lesson.scenes![0];
+    expect(cubic.id).toBe('cubic');
+    expect(cubic.apply(defaultsOf(schema)).t).toBe(0.6);
+    expect(cubic.label).toBe('Cubic at t = 0.6, as Figure 5');
+    // No scene calls the lesson's own data the lecture's.
+    for (const scene of lesson.scenes!) expect(scene.label).not.toMatch(/lecture/i);
+  });
+
   it('step 0 shows only the control points: no polygon, no level, no curve', () => {
     const m = derive(state({ step: 0 }));
     expect(revealed(m)).toEqual({ polygon: false, levels: 0, curve: false });
@@ -64,22 +73,23 @@ describe('the script of the de Casteljau construction', () => {
       const s = state({ step });
       return stepFormula(derive(s), s);
     };
-    // Level 1 at t = 0.4: P1,0 = 0.6·(0, 0) + 0.4·(1, 2) = (0.4, 0.8).
+    // Level 1 at t = 0.6: P1,0 = 0.4·(0, 0) + 0.6·(1, 2) = (0.6, 1.2).
     expect(at(2)).toBe(
-      'P_{1,0} = 0.6\\cdot(0.000,\\ 0.000) + 0.4\\cdot(1.000,\\ 2.000) = (0.400,\\ 0.800)',
+      'P_{1,0} = 0.4\\cdot(0.000,\\ 0.000) + 0.6\\cdot(1.000,\\ 2.000) = (0.600,\\ 1.200)',
     );
-    // P(0.4) = 0.216·P0 + 0.432·P1 + 0.288·P2 + 0.064·P3 = (1.552, 1.44).
-    expect(at(4)).toMatch(/^P\(0\.4\) = P_\{3,0\} = .* = \(1\.552,\\ 1\.440\)$/);
-    expect(at(5)).toBe('P(0.4) = \\sum_{i=0}^{3} W(3,i,0.4)\\,P_i = (1.552,\\ 1.440)');
+    // P(0.6) = 0.064·P0 + 0.288·P1 + 0.432·P2 + 0.216·P3
+    //        = (0.288 + 1.296 + 0.864, 0.576 + 0.864) = (2.448, 1.44).
+    expect(at(4)).toMatch(/^P\(0\.6\) = P_\{3,0\} = .* = \(2\.448,\\ 1\.440\)$/);
+    expect(at(5)).toBe('P(0.6) = \\sum_{i=0}^{3} W(3,i,0.6)\\,P_i = (2.448,\\ 1.440)');
     expect(describeStep(state({}), 3)).toBe(
-      'Level 2: every edge of level 1 cut at t = 0.4, 2 new points',
+      'Level 2: every edge of level 1 cut at t = 0.6, 2 new points',
     );
   });
 
   it('traces P(t) only once the construction reaches it', () => {
     expect(constructionFigure.trail!(derive(state({ step: 3 })))).toBeNull();
     const p = constructionFigure.trail!(derive(state({ step: 4 })))!;
-    expect(p[0]).toBeCloseTo(1.552, 12);
+    expect(p[0]).toBeCloseTo(2.448, 12);
     expect(p[1]).toBeCloseTo(1.44, 12);
   });
 

@@ -61,7 +61,8 @@ const modeField: Field<Mode> = {
 
 export const schema: Schema<DeCasteljauState> = {
   p: points({ default: ARCH_CUBIC, min: 2, max: MAX_POINTS }),
-  t: number({ default: 0.4, min: 0, max: 1 }),
+  // Figure 5 of the lecture notes draws its construction at μ ≈ 0.6.
+  t: number({ default: 0.6, min: 0, max: 1 }),
   // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
   step: int({ default: 0, min: 0, max: 20 }),
   mode: modeField,
