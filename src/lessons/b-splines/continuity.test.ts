@@ -271,8 +271,12 @@ describe('the continuity scene', () => {
     const k = CONTINUITY_CASES.indexOf('cubic') + 1;
     const state = { ...scene, step: k };
     const tex = steps.formula!(lesson.derive(state), state)!;
-    expect(tex).toContain("C''' & (1.00,\\ 6.00) & (-1.00,\\ 2.00) & \\ne");
-    expect(tex).toContain("C'' & (0.50,\\ 2.00) & (0.50,\\ 2.00) & =");
+    // A column per derivative: C, C′ and C″ agree, C‴ does not; the left and right values in rows.
+    expect(tex).toContain("C'\\!:\\ = & C''\\!:\\ = & C'''\\!:\\ \\ne");
+    expect(tex).toMatch(
+      /u \\to 5\^- & [^\\]*\\ [^&]*& [^&]*& \(0\.50,\\ 2\.00\) & \(1\.00,\\ 6\.00\)/,
+    );
+    expect(tex).toMatch(/u \\to 5\^\+ & .*\(0\.50,\\ 2\.00\) & \(-1\.00,\\ 2\.00\)\\end/);
     expect(tex).toMatch(/\\Rightarrow\\; C\^\{2\}$/);
   });
 

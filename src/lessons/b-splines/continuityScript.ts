@@ -69,10 +69,12 @@ function caseCaption(m: ContinuityModel): string {
 export function joinTex(m: ContinuityModel): string {
   const check = m.watched;
   const c = words(check.u);
-  const rows = check.left.map(
-    (left, r) =>
-      `${derivativeTex(r)} & ${pt(left)} & ${pt(check.right[r])} & ${check.agree[r] ? '=' : '\\ne'}`,
+  // One column per derivative, left and right under it: three rows whatever
+  // the degree, so the figure keeps its room on the projector.
+  const heads = check.left.map(
+    (_, r) => `${derivativeTex(r)}\\!:\\ ${check.agree[r] ? '=' : '\\ne'}`,
   );
+  const side = (values: typeof check.left) => values.map((v) => pt(v)).join(' & ');
   const smooth =
     check.smooth === Infinity
       ? 'C^{\\infty}'
@@ -80,7 +82,8 @@ export function joinTex(m: ContinuityModel): string {
         ? '\\text{a jump}'
         : `C^{${check.smooth}}`;
   const through = check.through === null ? '' : `,\\quad C(${c}) = x_{${check.through}}`;
-  return `\\begin{array}{c|cc|c} & u \\to ${c}^- & u \\to ${c}^+ & \\\\ \\hline ${rows.join(' \\\\ ')}\\end{array}\\;\\Rightarrow\\; ${smooth}${through}`;
+  const columns = 'c'.repeat(check.left.length);
+  return `\\begin{array}{r|${columns}} & ${heads.join(' & ')} \\\\ \\hline u \\to ${c}^- & ${side(check.left)} \\\\ u \\to ${c}^+ & ${side(check.right)}\\end{array}\\;\\Rightarrow\\; ${smooth}${through}`;
 }
 
 /**
