@@ -1,15 +1,9 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { type Point, cubicSplineC2, quadraticSplineC1 } from '../../math';
-import {
-  type SplineKind,
-  checkOutput,
-  differenceRows,
-  expectedOutput,
-  printedSlack,
-  readPoints,
-  rowName,
-} from './checkOutput';
+import { checkOutput, differenceRows } from './checkOutput';
+import { printedSlack, readPoints } from './pastedPoints';
+import { type SplineKind, expectedOutput, rowName } from './splineRows';
 import { FOUR_POINTS, INFINITY, SEMI, SPIRAL } from './state';
 
 // The four points A = (0, 0), D = (1, 2.5), G = (4, 2.5), J = (5, 0), worked by
