@@ -4,6 +4,7 @@ import { LABEL_VILLAGES } from './points';
 import { drawRoadway } from './mapDrawing';
 import type { RoadModel } from './model';
 import { isFixed } from './solve';
+import { compared } from './view';
 
 // What the map draws around the road to show how it was built: the chosen
 // gradients and control points of each method, the roads it must join, and
@@ -36,7 +37,12 @@ export function drawMethodAids(painter: Painter, m: RoadModel, info: DrawInfo): 
     painter.arrow(v[0], m.endHandles[0], arrow);
     painter.arrow(v[v.length - 1], m.endHandles[1], arrow);
   }
-  if (!state.overlay && state.road === 'hermite' && v.length <= LABEL_VILLAGES && m.gradientTips) {
+  if (
+    !compared(state) &&
+    state.road === 'hermite' &&
+    v.length <= LABEL_VILLAGES &&
+    m.gradientTips
+  ) {
     // The gradient of each piece at each village, from the parabola through it and its neighbours.
     m.gradientTips.forEach((tip, i) => {
       if (state.ends && (i === 0 || i === v.length - 1)) return;

@@ -39,7 +39,7 @@ const roadState = (defaults: RoadState, villages: Point[], road: RoadState['road
   ...defaults,
   villages,
   road,
-  overlay: false,
+  view: 'road',
   ends: false,
   comb: false,
   pBar: 0,
@@ -243,7 +243,7 @@ const quadraticArrival: ExerciseSpec<RoadState> = {
     const check = (s: RoadState): Verdict => {
       if (!sameVillages(s.villages, villages))
         return { correct: false, message: 'Keep the villages where they are: only B₀ moves.' };
-      if (s.road !== 'quadratic' || s.overlay)
+      if (s.road !== 'quadratic' || s.view !== 'road')
         return { correct: false, message: 'Show the quadratic road again: this is about its B₀.' };
       const arrival = arrivalGradient(s);
       const off = distance(arrival, target);

@@ -43,7 +43,7 @@ describe('the map', () => {
     expect(mapFigure.hoverAt!(m, onSegment2, 0.5)).toBe('seg2');
     expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 0.9], 0.5)).toBe('seg2');
     expect(mapFigure.hoverAt!(m, [onSegment2[0], onSegment2[1] + 30], 0.5)).toBeNull();
-    expect(mapFigure.hoverAt!(derive(state({ overlay: true })), onSegment2, 0.5)).toBeNull();
+    expect(mapFigure.hoverAt!(derive(state({ view: 'compare' })), onSegment2, 0.5)).toBeNull();
   });
 
   it('moves the marker p̄ to the road point nearest the pointer, to 0.01', () => {

@@ -20,6 +20,7 @@ import {
 } from './mapDrawing';
 import type { RoadModel } from './model';
 import { LABEL_VILLAGES, villagePoints } from './points';
+import { drawDerivationFocus, drawGlobal } from './sceneDrawing';
 import type { ShownRoad } from './shownRoad';
 import type { RoadState } from './state';
 
@@ -42,10 +43,13 @@ export const mapFigure: KitFigure<RoadState, RoadModel> = {
         painter.ring(village, theme.sizes.handle * 2.2, { alpha: 0 }, painter.color(2), 0.16);
     }
     if (m.shown.is('villages')) drawBare(painter, m, info);
-    else if (m.visible) drawMethodRoad(painter, m, m.visible, info);
-    else drawOverlay(painter, m, info);
+    else if (m.globalChange) drawGlobal(painter, m, info);
+    else if (m.visible) {
+      drawMethodRoad(painter, m, m.visible, info);
+      if (m.derivation) drawDerivationFocus(painter, m);
+    } else drawOverlay(painter, m, info);
   },
-  trail: (m) => m.visible?.marker?.point ?? null,
+  trail: (m) => (m.globalChange ? null : (m.visible?.marker?.point ?? null)),
   drawOver(painter, m, info) {
     if (!info.thumbnail && m.visible) drawFixedGradients(painter, m);
   },
@@ -54,7 +58,8 @@ export const mapFigure: KitFigure<RoadState, RoadModel> = {
   handles: roadHandles,
   moveHandle: moveRoadHandle,
   hoverAt(m, at, tolerance) {
-    if (!m.visible) return null;
+    // The global view draws roads of its own: no segment of one is picked out.
+    if (!m.visible || m.globalChange) return null;
     const { pieces, boxes } = m.visible;
     const near = nearestOnBezierPieces(pieces, at, { boxes, within: tolerance * 2 });
     return near ? segmentId(near.piece) : null;

@@ -8,11 +8,13 @@ import {
 } from '../../math';
 import { memoOn } from '../../kit/memoOn';
 import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
+import { type GlobalChange, globalChange } from './globalChange';
 import { SHAPE } from './methods';
 import { villageNotes } from './notes';
 import { CURVES, type Road, asCubics, buildRoad, quadraticControl, roadGradients } from './roads';
 import { type RoadSolve, buildSolve, solvedGradients } from './solve';
 import { type RoadInputs, type RoadState, segmentCount } from './state';
+import { compared } from './view';
 
 /** Up to this many pieces the method's road is fitted into the map whole (control points and all). */
 const FIT_PIECES = 100;
@@ -70,16 +72,18 @@ export interface RoadGeometry {
   /** The counting argument for the method (null for a ring through two villages). */
   count: ConstraintCount | null;
   cost: SolveCost | null;
+  /** The global view: the road with one village moved, and mapped by an affine map (else null). */
+  globalChange: GlobalChange | null;
 }
 
 /** Are the handles for the end gradients (the other roads) in play? */
 const usesEndGradients = (state: RoadInputs) =>
-  state.overlay
+  compared(state)
     ? state.compare.includes(4) || (state.ends && state.compare.includes(2))
     : state.road === 'clamped' || (state.road === 'hermite' && state.ends);
 
 const usesQuadraticHandle = (state: RoadInputs) =>
-  state.overlay ? state.compare.includes(1) : state.road === 'quadratic';
+  compared(state) ? state.compare.includes(1) : state.road === 'quadratic';
 
 const plus = (p: Point, d: Point, k: number): Point => [p[0] + d[0] * k, p[1] + d[1] * k];
 
@@ -88,7 +92,7 @@ export const roadGeometry = memoOn<RoadState, keyof RoadInputs, RoadGeometry>(
   [
     'villages',
     'road',
-    'overlay',
+    'view',
     'compare',
     'quadraticGradient',
     'startGradient',
@@ -124,9 +128,9 @@ export const roadGeometry = memoOn<RoadState, keyof RoadInputs, RoadGeometry>(
       gradients,
       tips: gradients?.map((d, i) => plus(v[i], d, 1 / 3)),
       solve,
-      overlayCurves: state.overlay ? overlayCurves(state, road) : [],
+      overlayCurves: compared(state) ? overlayCurves(state, road) : [],
       quadraticPolygon:
-        !state.overlay && state.road === 'quadratic' ? controlPolygon(road, last) : null,
+        !compared(state) && state.road === 'quadratic' ? controlPolygon(road, last) : null,
       notes: villageNotes(v),
       ringRhs:
         state.road === 'ring' && v.length >= 3
@@ -134,6 +138,7 @@ export const roadGeometry = memoOn<RoadState, keyof RoadInputs, RoadGeometry>(
           : null,
       count: countConditions(state),
       cost: solve ? solveCost(state, solve) : null,
+      globalChange: state.view === 'global' ? globalChange(v) : null,
     };
     return { ...geometry, bounds: fitBounds(state, geometry, box) };
   },
@@ -190,16 +195,19 @@ function fitBounds(
   villages: Bounds,
 ): Bounds {
   const points: Point[] = [];
+  // The global view shows the moved road and the mapped one beside it: in the frame from its first step.
+  const change = geometry.globalChange;
+  if (change) points.push(...change.moved.road.pieces.flat(), ...change.mapped.mappedRoad.flat());
   if (geometry.usesQuadraticHandle) points.push(geometry.quadraticControl);
   if (geometry.usesEndGradients) points.push(...geometry.endHandles, ...geometry.otherRoads);
   const road = geometry.road;
-  if (!state.overlay && state.road !== 'quadratic' && state.road !== 'roman') {
+  if (!compared(state) && state.road !== 'quadratic' && state.road !== 'roman') {
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
   }
   const fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
   // The overlay's legend sits top left: room for it there, so it covers no curve.
-  if (!state.overlay) return fitted;
+  if (!compared(state)) return fitted;
   const width = fitted.maxX - fitted.minX;
   return { ...fitted, minX: fitted.minX - 0.45 * width };
 }

@@ -22,7 +22,8 @@ export function roadHandles(m: RoadModel): Handle[] {
       shape: 'square',
     });
   }
-  const marker = m.visible?.marker;
+  // The global view has no marker: its roads are compared whole.
+  const marker = m.globalChange ? null : m.visible?.marker;
   if (marker)
     handles.push({
       id: 's',

@@ -5,7 +5,7 @@ import { defineLesson } from '../../kit/lesson';
 import { mapFigure } from './figure';
 import { type RoadModel, derive } from './model';
 import { roadPanel } from './panel';
-import { scenes } from './scenes';
+import { sceneOf, scenes } from './scenes';
 import { roadScript } from './script';
 import { type RoadState, normalize, schema } from './state';
 
@@ -14,6 +14,8 @@ const lesson = defineLesson({
   schema,
   step: 'step',
   script: roadScript,
+  // The derivation and the global view walk steps of their own; the other scenes share the road's.
+  sceneOf,
   derive,
   figures: [mapFigure],
   normalize,

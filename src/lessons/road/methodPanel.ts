@@ -11,6 +11,7 @@ import type { RoadModel } from './model';
 import { CURVES } from './roads';
 import { keepShownToEnd, shownToEnd } from './script';
 import { ROAD_METHODS, type RoadState } from './state';
+import { compared } from './view';
 
 /** Method radio buttons, overlay checkboxes, the method's explanation and the counting panel. */
 export function methodSection(api: LessonApi<RoadState, RoadModel>) {
@@ -18,8 +19,9 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
     name: 'road',
     choices: ROAD_METHODS.map((method) => ({ value: method, label: NAMES[method] })),
     get: (s) => s.road,
-    // Choosing a method shows its whole road (its last step).
-    set: (s, road) => shownToEnd({ ...s, road }),
+    // Choosing a method shows its whole road (its last step); the derivation
+    // and the global view are of the natural spline, so a choice leaves them.
+    set: (s, road) => shownToEnd({ ...s, road, view: compared(s) ? 'compare' : 'road' }),
   });
   const methodList = h(
     'fieldset',
@@ -30,9 +32,9 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
   const overlay = checkbox(api, {
     id: 'road-overlay',
     label: 'Compare: draw several answers at once',
-    get: (s) => s.overlay,
+    get: (s) => compared(s),
     // Switching the overlay shows every answer chosen (its last step), as choosing a method does.
-    set: (s, on) => shownToEnd({ ...s, overlay: on }),
+    set: (s, on) => shownToEnd({ ...s, view: on ? 'compare' : 'road' }),
   });
   const compareBoxes = CURVES.map((curve, index) => {
     const box = h('input', { type: 'checkbox', id: `road-compare-${curve.id}` });
@@ -100,7 +102,7 @@ export function methodSection(api: LessonApi<RoadState, RoadModel>) {
       const palette = api.theme().palette;
       methods.update(state);
       overlay.update(state);
-      setHidden(compareList, !state.overlay);
+      setHidden(compareList, !compared(state));
       compareBoxes.forEach((c, index) => {
         c.box.checked = state.compare.includes(index);
         const road = model.overlay.find((curve) => curve.index === index)?.road;

@@ -5,7 +5,7 @@ import { roadHandles } from './handles';
 import lesson from './lesson';
 import type { RoadModel } from './model';
 import { valleyVillages } from './scenes';
-import { LECTURE_VILLAGES, type RoadState, chunkSize, normalize, schema } from './state';
+import { SIX_VILLAGES, type RoadState, chunkSize, normalize, schema } from './state';
 import { defaultsOf } from '../../app/urlState';
 
 /** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
@@ -148,7 +148,7 @@ describe('the other roads', () => {
 
   it('quadratic pieces: B0 = P0 + D0/2, then each Bi is B(i−1) reflected in Pi', () => {
     const m = derive(
-      state({ villages: LECTURE_VILLAGES, road: 'quadratic', quadraticGradient: [30, 0] }),
+      state({ villages: SIX_VILLAGES, road: 'quadratic', quadraticGradient: [30, 0] }),
     );
     expect(m.quadraticControl).toEqual([15, 0]);
     // B1 = 2·(20, 16) − (15, 0) = (25, 32); B2 = 2·(42, 10) − (25, 32) = (59, −12).
@@ -166,7 +166,7 @@ describe('the other roads', () => {
   });
 
   it('Hermite: the gradient at Pi is half the chord between its neighbours, zero at the ends', () => {
-    const m = derive(state({ villages: LECTURE_VILLAGES, road: 'hermite' }));
+    const m = derive(state({ villages: SIX_VILLAGES, road: 'hermite' }));
     // D1 = ((42, 10) − (0, 0))/2 = (21, 5).
     expect(m.gradients!.slice(0, 2)).toEqual([
       [0, 0],
@@ -175,7 +175,7 @@ describe('the other roads', () => {
   });
 
   it('ring road: one more segment, and the first right-hand side 3(x1 − xm)', () => {
-    const m = derive(state({ villages: LECTURE_VILLAGES, road: 'ring' }));
+    const m = derive(state({ villages: SIX_VILLAGES, road: 'ring' }));
     expect(m.visible!.pieces).toHaveLength(6);
     expect(m.ringRhs).toBe(3 * (20 - 92));
     expect(m.visible!.pieces[5][3]).toEqual([0, 0]);
@@ -216,7 +216,7 @@ describe('the other roads', () => {
 
 describe('the overlay', () => {
   it('builds each chosen curve once, in order, and says which it cannot draw', () => {
-    const m = derive(state({ villages: hill, overlay: true, compare: [10, 0, 6] }));
+    const m = derive(state({ villages: hill, view: 'compare', compare: [10, 0, 6] }));
     expect(m.visible).toBeNull();
     expect(m.overlay.map((curve) => curve.index)).toEqual([0, 6, 10]);
     expect(m.overlay.map((curve) => curve.road.kind)).toEqual(['pieces', 'polyline', 'missing']);
@@ -251,7 +251,7 @@ describe('the script (road)', () => {
     checkScript(lesson);
   });
 
-  it('the lecture villages: the system, six rows swept, six gradients fixed', () => {
+  it('the six villages: the system, six rows swept, six gradients fixed', () => {
     const lecture = state({ step: 0 });
     expect(stepCount(lecture)).toBe(13);
     expect(stage({ ...lecture, step: 1 }).solveStep).toBe(0);
@@ -285,7 +285,7 @@ describe('the script (road)', () => {
     expect(derive({ ...quadratic, step: 1 }).visible!.pieces).toHaveLength(0);
     const ring = state({ road: 'ring', step: 0 });
     expect(stepCount(ring)).toBe(1 + 6);
-    const overlay = state({ overlay: true, compare: [0, 3, 6], step: 2 });
+    const overlay = state({ view: 'compare', compare: [0, 3, 6], step: 2 });
     expect(stepCount(overlay)).toBe(3);
     expect(derive(overlay).overlay.map((c) => c.index)).toEqual([0, 3]);
     expect(describeStep(overlay, 3)).toBe('Answer 3 of 3: Lagrange polynomial');

@@ -1,10 +1,12 @@
 import { type Point, bezierToPowerBasis } from '../../math';
 import type { Revealed } from '../../kit/script';
+import { type Derivation, deriveSystem } from './derivation';
 import { type OverlayCurve, type RoadGeometry, roadGeometry } from './geometry';
 import type { Reveal } from './script';
 import { type ShownRoad, localParameter, showRoad } from './shownRoad';
 import { type SolveProgress, solveProgress } from './solve';
 import { type RoadState, chunkSize, hasSolve, segmentCount } from './state';
+import { compared, dissects } from './view';
 
 export type { OverlayCurve, SolveCost } from './geometry';
 
@@ -39,6 +41,8 @@ export interface RoadModel extends RoadGeometry {
   mapNotes: string[];
   /** Where the slider's p̄ is on the method's road: its segment and local p. */
   along: { piece: number; p: number };
+  /** The derivation view: the system worked out at the join nearest p̄ (else null). */
+  derivation: Derivation | null;
   /** The power-basis coefficients of shown piece i (worked out when first asked for, once per state). */
   coefficients(piece: number): Point[];
 }
@@ -49,7 +53,9 @@ const shorten = (text: string) => text.split(/(?<=\.)\s/)[0];
 /** What the steps so far have built: rows and gradients of the solve, pieces, curves. */
 function stageOf(state: RoadState, shown: Revealed<Reveal>): RoadStage {
   const segments = segmentCount(state);
-  if (state.overlay) return { solveStep: null, pieces: segments, curves: shown.count('answer') };
+  if (compared(state)) return { solveStep: null, pieces: segments, curves: shown.count('answer') };
+  // The derivation and the global view take the natural road as it is: no solve stepped through.
+  if (dissects(state)) return { solveStep: null, pieces: segments, curves: 0 };
   if (hasSolve(state)) {
     const n = state.villages.length;
     const swept = Math.min(n, shown.count('sweep') * chunkSize(n));
@@ -75,7 +81,7 @@ export function derive(state: RoadState, shown: Revealed<Reveal>): RoadModel {
   // The system is shown and the back substitution has not reached D0 yet.
   const solving = progress !== null && shown.has('system') && !shown.last;
   const bare = shown.is('villages');
-  const visible = state.overlay
+  const visible = compared(state)
     ? null
     : showRoad(
         state,
@@ -93,11 +99,13 @@ export function derive(state: RoadState, shown: Revealed<Reveal>): RoadModel {
     progress,
     solving,
     gradientTips:
-      (state.road === 'hermite' && !state.overlay) || solving ? geometry.tips : undefined,
+      (state.road === 'hermite' && !compared(state)) || solving ? geometry.tips : undefined,
     visible,
     overlay: geometry.overlayCurves.slice(0, stage.curves),
     mapNotes: [...(visible?.missing ? [visible.missing] : []), ...geometry.notes].map(shorten),
     along: localParameter(state.pBar, segmentCount(state)),
+    derivation:
+      state.view === 'derivation' && solve ? deriveSystem(state.villages, solve, state.pBar) : null,
     coefficients: powerBasisOf(visible?.pieces ?? []),
   };
 }

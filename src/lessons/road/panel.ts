@@ -3,6 +3,8 @@ import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox } from '../../app/panelControls';
 import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
 import { setText } from '../../app/dom';
+import { derivationSection } from './derivationPanel';
+import { globalSection } from './globalPanel';
 import { methodSection } from './methodPanel';
 import type { RoadModel } from './model';
 import { segmentSection } from './segmentPanel';
@@ -15,6 +17,8 @@ import { gestures } from '../../kit/gestures';
 export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<RoadState, RoadModel> {
   const method = methodSection(api);
   const solve = solveSection();
+  const derivation = derivationSection();
+  const global = globalSection();
   const segment = segmentSection();
 
   const slider = h('input', {
@@ -49,6 +53,8 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       `How should one specify the path of a road through a number of villages? To move a village, ${gestures().move}; to add one, ${gestures().add}; to remove one, ${gestures().remove}. Choose how the road is built below, or compare several at once.`,
     ),
     notes,
+    derivation.element,
+    global.element,
     method.element,
     comb.element,
     pointCount.element,
@@ -76,6 +82,8 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
     update(m, state) {
       method.update(m, state);
       solve.update(m);
+      derivation.update(m);
+      global.update(m);
       comb.update(state);
       pointCount.update(state);
       curvature.update(roadCurve(m, state));

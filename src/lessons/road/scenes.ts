@@ -1,9 +1,16 @@
 import type { Point } from '../../app/lesson';
-import type { SceneSpec } from '../../kit/lesson';
+import type { ScriptedScene } from '../../kit/lesson';
 import { defaultsOf } from '../../app/urlState';
 import { seededRandom } from '../../math/seededRandom';
+import { derivationScript } from './derivationScript';
+import { globalScript } from './globalScript';
+import type { RoadModel } from './model';
 import { CURVES } from './roads';
-import { LECTURE_VILLAGES, type RoadState, roundPoint, schema } from './state';
+import type { Reveal } from './script';
+import { SIX_VILLAGES, type RoadState, roundPoint, schema } from './state';
+import type { RoadView } from './view';
+
+type RoadScene = ScriptedScene<RoadState, RoadModel, Reveal>;
 
 /**
  * `count` villages up a winding valley: hairpin bends climbing a hillside, each
@@ -27,7 +34,7 @@ const scene = (
   id: string,
   label: string,
   change: (s: RoadState) => Partial<RoadState>,
-): SceneSpec<RoadState> => ({
+): RoadScene => ({
   id,
   label,
   setup: (current) => {
@@ -41,25 +48,28 @@ const scene = (
  * sets up its whole figure (a ring road through a valley's villages, left
  * over from the lake scene, would only look broken).
  */
-const naturalThrough = (villages: Point[]) => () => ({
-  villages,
-  road: 'natural' as const,
-  overlay: false,
-});
+const naturalThrough =
+  (villages: Point[], view: RoadView = 'road') =>
+  () => ({
+    villages,
+    road: 'natural' as const,
+    view,
+  });
 
 /** The lesson's scenes, in teaching order. */
-export const scenes: SceneSpec<RoadState>[] = [
-  // Back to the lesson as it opens: the lecture's villages, the natural spline, nothing else.
-  scene('lecture', 'Lecture villages', () => defaultsOf(schema)),
+export const scenes: RoadScene[] = [
+  // Back to the lesson as it opens: the six villages, the natural spline, nothing else.
+  // (The id is the scene's old name: links keep opening it.)
+  scene('lecture', 'Six villages inland', () => defaultsOf(schema)),
   scene('compare', 'Every answer at once', (s) => ({
-    villages: s.villages.length > 12 ? LECTURE_VILLAGES : s.villages,
-    overlay: true,
+    villages: s.villages.length > 12 ? SIX_VILLAGES : s.villages,
+    view: 'compare',
     compare: CURVES.map((_, i) => i),
   })),
   scene('swing', 'Quadratics swing', () => ({
-    villages: LECTURE_VILLAGES,
+    villages: SIX_VILLAGES,
     road: 'quadratic',
-    overlay: false,
+    view: 'road',
     quadraticGradient: [10, 40],
   })),
   scene('ring', 'Villages round a lake', () => ({
@@ -73,7 +83,7 @@ export const scenes: SceneSpec<RoadState>[] = [
       [22, 46],
     ],
     road: 'ring',
-    overlay: false,
+    view: 'road',
   })),
   scene(
     'two',
@@ -108,4 +118,23 @@ export const scenes: SceneSpec<RoadState>[] = [
   ),
   scene('valley50', 'Valley: 50 villages', naturalThrough(valleyVillages(50))),
   scene('valley500', 'Valley: 500 villages', naturalThrough(valleyVillages(500))),
+  {
+    // At the default p̄ (2.4), so the join worked at is P2 whatever the scene before left.
+    ...scene('derivation', 'The system, derived at a join', () => ({
+      ...naturalThrough(SIX_VILLAGES, 'derivation')(),
+      pBar: schema.pBar.default,
+    })),
+    script: derivationScript,
+  },
+  {
+    ...scene('global', 'Global, and affine-invariant', naturalThrough(SIX_VILLAGES, 'global')),
+    script: globalScript,
+  },
 ];
+
+/** The scene a state is in, where its view says so (the others share the road's steps). */
+export function sceneOf(state: RoadState): string {
+  if (state.view === 'compare') return 'compare';
+  if (state.view === 'road') return 'lecture';
+  return state.view;
+}

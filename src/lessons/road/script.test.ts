@@ -59,12 +59,12 @@ describe('the road’s script: each step named after what it reveals', () => {
   });
 
   it('the overlay: one answer a press, whatever the method', () => {
-    expect(names(state({ overlay: true, compare: [6, 0, 3] }))).toEqual([
+    expect(names(state({ view: 'compare', compare: [6, 0, 3] }))).toEqual([
       'villages',
       ...times('answer', 3),
     ]);
     // With no answer ticked the overlay keeps one step, and says why nothing is drawn.
-    const none = state({ overlay: true, compare: [], step: 1 });
+    const none = state({ view: 'compare', compare: [], step: 1 });
     expect(names(none)).toEqual(['villages', 'answer 1']);
     expect(lesson.steps!.describe(none, 1)).toBe('No answer is ticked to draw side by side');
   });
@@ -72,8 +72,8 @@ describe('the road’s script: each step named after what it reveals', () => {
   it('gives each step of the solve its formula for x, and none to the villages or the overlay', () => {
     const formula = (s: RoadState) => lesson.steps!.formula!(derive(s), s);
     expect(formula(state({ step: 0 }))).toBeNull();
-    expect(formula(state({ overlay: true, step: 2 }))).toBeNull();
-    // Row 1 of the lecture's system for x: 1·D0 + 4·D1 + 1·D2 = 3(x2 − x0) = 126.
+    expect(formula(state({ view: 'compare', step: 2 }))).toBeNull();
+    // Row 1 of the six villages' system for x: 1·D0 + 4·D1 + 1·D2 = 3(x2 − x0) = 126.
     expect(formula(state({ step: 1 }))).toBe(
       '\\text{row } 1,\\ x:\\quad 1\\,D_{0} + 4\\,D_{1} + 1\\,D_{2} = 126',
     );
@@ -146,5 +146,47 @@ describe('the villages, declared once', () => {
     // Midway, the step stays where it was.
     const midway = state({ step: 4 });
     expect(map.addPoint!(midway, [50, 20], derive(midway))!.step).toBe(4);
+  });
+});
+
+describe('the view in the link (`overlay`, as before)', () => {
+  const field = schema.view;
+
+  it('writes the road alone and the comparison as 0 and 1, as the overlay did', () => {
+    expect(field.key).toBe('overlay');
+    expect(field.default).toBe('road');
+    expect(
+      ['road', 'compare', 'derivation', 'global'].map((v) => field.encode(v as never)),
+    ).toEqual(['0', '1', 'derivation', 'global']);
+  });
+
+  it('reads what the yes/no overlay read, and the two new views', () => {
+    const read = (raw: string) => field.decode(raw);
+    expect(read('0')).toEqual({ ok: true, value: 'road' });
+    expect(read('false')).toEqual({ ok: true, value: 'road' });
+    expect(read('1')).toEqual({ ok: true, value: 'compare' });
+    expect(read('true')).toEqual({ ok: true, value: 'compare' });
+    expect(read('derivation')).toEqual({ ok: true, value: 'derivation' });
+    expect(read('global')).toEqual({ ok: true, value: 'global' });
+    expect(read('2')).toEqual({ ok: false, why: '"2" is not 0, 1, derivation or global' });
+  });
+
+  it('says which scene a state is in, and keeps the derivation and global views natural', () => {
+    expect(lesson.sceneOf!(state({}))).toBe('lecture');
+    expect(lesson.sceneOf!(state({ view: 'compare' }))).toBe('compare');
+    expect(lesson.sceneOf!(state({ view: 'derivation' }))).toBe('derivation');
+    expect(lesson.sceneOf!(state({ view: 'global' }))).toBe('global');
+    const fixed = normalize({ ...defaultsOf(schema), view: 'derivation', road: 'ring' });
+    expect(fixed.state.road).toBe('natural');
+    expect(fixed.issues).toEqual([
+      'road: the derivation view is of the natural spline, so road=natural',
+    ]);
+  });
+
+  it('names the first scene after its villages, not the lecture', () => {
+    expect(lesson.scenes!.map((s) => [s.id, s.label]).slice(0, 1)).toEqual([
+      ['lecture', 'Six villages inland'],
+    ]);
+    expect(lesson.scenes!.slice(-2).map((s) => s.id)).toEqual(['derivation', 'global']);
   });
 });

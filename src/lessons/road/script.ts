@@ -4,21 +4,39 @@ import { repeat, script, step } from '../../kit/script';
 import { methodFormula } from './methodFormula';
 import type { RoadModel } from './model';
 import { CURVES } from './roads';
+import type { DerivationStep } from './derivationFormulas';
+import { derivationScript } from './derivationScript';
+import { globalScript } from './globalScript';
 import { stepFormula } from './solveSteps';
 import { type RoadState, chunkSize, chunks, hasSolve, segmentCount } from './state';
+import { compared } from './view';
 
 /**
  * What the steps reveal, by name: the villages; with the overlay, one answer
  * a press; for the natural and clamped roads, the system, then chunks of its
  * forward sweep and of its back substitution; for the others, their
- * construction, then chunks of the road's segments from P0.
+ * construction, then chunks of the road's segments from P0. The derivation
+ * and the global view have steps of their own (derivationScript.ts,
+ * globalScript.ts).
  */
 export type Reveal =
-  'villages' | 'answer' | 'system' | 'sweep' | 'substitution' | 'construction' | 'segments';
+  | 'villages'
+  | 'answer'
+  | 'system'
+  | 'sweep'
+  | 'substitution'
+  | 'construction'
+  | 'segments'
+  | Exclude<DerivationStep, 'villages' | 'system'>
+  | 'gradients'
+  | 'move'
+  | 'changes'
+  | 'map'
+  | 'mapped';
 
 /** The method's own road is built (no overlay): by a solve, or piece by piece. */
-const solved = (state: RoadState) => !state.overlay && hasSolve(state);
-const pieceByPiece = (state: RoadState) => !state.overlay && !hasSolve(state);
+const solved = (state: RoadState) => !compared(state) && hasSolve(state);
+const pieceByPiece = (state: RoadState) => !compared(state) && !hasSolve(state);
 
 /** "row 3" or "rows 3–8": a chunk of rows or pieces. */
 const span = (word: string, from: number, to: number) =>
@@ -52,7 +70,7 @@ export const roadScript = script<RoadState, RoadModel, Reveal>(
   }),
   repeat(
     'answer',
-    (s) => (s.overlay ? Math.max(1, s.compare.length) : 0),
+    (s) => (compared(s) ? Math.max(1, s.compare.length) : 0),
     ({ state, index }) => {
       const order = [...state.compare].sort((a, b) => a - b);
       // With no answer ticked the overlay still has its one step: say so.
@@ -117,16 +135,23 @@ export const roadScript = script<RoadState, RoadModel, Reveal>(
   ),
 );
 
+/** The steps a state walks: its view's (the derivation and the global view have their own). */
+export function scriptOf(state: RoadState) {
+  if (state.view === 'derivation') return derivationScript;
+  if (state.view === 'global') return globalScript;
+  return roadScript;
+}
+
 /** An edit that changes the number of steps keeps a road shown to its end at its (new) end. */
 export const keepShownToEnd = (before: RoadState, after: RoadState): RoadState => ({
   ...after,
-  step: roadScript.keepEnd(before, before.step, after),
+  step: scriptOf(after).keepEnd(before, before.step, after),
 });
 
 /** The state with its whole road shown: the last step (a method or the overlay just chosen). */
 export const shownToEnd = (state: RoadState): RoadState => ({
   ...state,
-  step: roadScript.lastStep(state),
+  step: scriptOf(state).lastStep(state),
 });
 
 /**

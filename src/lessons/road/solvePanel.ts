@@ -33,7 +33,7 @@ export function solveSection() {
     update(m: RoadModel) {
       const { solve, state } = m;
       const { progress, cost: counts } = m;
-      setHidden(element, !solve);
+      setHidden(element, !solve || !m.progress);
       if (!solve || !progress || !counts) return;
       const step = m.stage.solveStep ?? 2 * solve.n;
       if (shownStep >= 0 && shownStep !== step) revealInPanel(element);

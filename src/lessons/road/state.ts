@@ -1,6 +1,7 @@
 import { bool, choice, int, linkKey, number, numbers, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
+import { type RoadView, dissects, viewField } from './view';
 
 /** The road the class is discussing: one of the lecture's answers. */
 export type RoadMethod = 'roman' | 'quadratic' | 'hermite' | 'natural' | 'clamped' | 'ring';
@@ -19,8 +20,11 @@ export interface RoadState {
   /** The villages P0 … Pm, in the order the road visits them (`v`). */
   villages: Point[];
   road: RoadMethod;
-  /** Draw several answers at once, with a legend. */
-  overlay: boolean;
+  /**
+   * The road alone, several answers at once with a legend, the natural
+   * spline's derivation, or its global change (`overlay`: see view.ts).
+   */
+  view: RoadView;
   /** The curves drawn in the overlay, as indices into CURVES (see roads.ts). */
   compare: number[];
   /** Gradient D0 at P0 chosen for the quadratic pieces; the first control point is P0 + D0/2 (`q`). */
@@ -43,7 +47,7 @@ export type RoadInputs = Pick<
   RoadState,
   | 'villages'
   | 'road'
-  | 'overlay'
+  | 'view'
   | 'compare'
   | 'quadraticGradient'
   | 'startGradient'
@@ -58,8 +62,11 @@ const GRID = 100;
 export const roundCoordinate = (value: number) => Math.round(value * GRID) / GRID;
 export const roundPoint = (p: Point): Point => [roundCoordinate(p[0]), roundCoordinate(p[1])];
 
-/** The lecture's villages: a road from the coast (P0) inland to P5. */
-export const LECTURE_VILLAGES: Point[] = [
+/**
+ * Six villages inland: a road from the coast (P0) inland to P5. The lesson's
+ * own numbers: the notes ask the question without giving villages.
+ */
+export const SIX_VILLAGES: Point[] = [
   [0, 0],
   [20, 16],
   [42, 10],
@@ -72,12 +79,9 @@ const gradient = (value: readonly number[], key: string) =>
   linkKey(numbers({ default: value, min: 2, max: 2, low: -1e5, high: 1e5 }), key);
 
 export const schema: Schema<RoadState> = {
-  villages: linkKey(
-    points({ default: LECTURE_VILLAGES, min: 2, max: MAX_VILLAGES, limit: 1e5 }),
-    'v',
-  ),
+  villages: linkKey(points({ default: SIX_VILLAGES, min: 2, max: MAX_VILLAGES, limit: 1e5 }), 'v'),
   road: choice({ default: 'natural', values: ROAD_METHODS }),
-  overlay: bool({ default: false }),
+  view: linkKey(viewField(), 'overlay'),
   compare: numbers({ default: [0, 2, 3, 6], min: 0, max: 11, low: 0, high: 10 }),
   quadraticGradient: gradient([30, 0], 'q'),
   startGradient: gradient([30, -10], 'a'),
@@ -106,10 +110,17 @@ export const chunkSize = (total: number) => Math.max(1, Math.ceil(total / CHUNKS
 /** Steps for `total` rows or pieces, in chunks. */
 export const chunks = (total: number) => Math.ceil(total / chunkSize(total));
 
-/** Cross-field rules: the marker stays on the road; the overlay lists each curve once. */
+/**
+ * Cross-field rules: the marker stays on the road; the overlay lists each
+ * curve once; the derivation and the global view are of the natural spline.
+ */
 export function normalize(state: RoadState): { state: RoadState; issues: string[] } {
   const issues: string[] = [];
   let next = state;
+  if (dissects(next) && next.road !== 'natural') {
+    issues.push(`road: the ${next.view} view is of the natural spline, so road=natural`);
+    next = { ...next, road: 'natural' };
+  }
   const compare = [...new Set(state.compare.filter((c) => Number.isInteger(c)))];
   if (compare.length !== state.compare.length) {
     issues.push('compare: each curve is listed once, by its whole number');

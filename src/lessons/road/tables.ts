@@ -1,5 +1,6 @@
 import type { HandoutTable } from '../../app/lesson';
 import { fixed, sub } from '../../kit/format';
+import type { GlobalChange } from './globalChange';
 import type { RoadModel } from './model';
 
 /** A long system prints its first and last rows; the sweep's γ settles within a few rows. */
@@ -18,7 +19,8 @@ function printedRows(n: number): (number | null)[] {
  * sweep's γi and Γi (x and y) and the gradient Di back substitution found,
  * the numbers the panel's system table reaches at the end of the solve.
  */
-export function sweepTables({ solve }: RoadModel): HandoutTable[] {
+export function sweepTables({ solve, globalChange }: RoadModel): HandoutTable[] {
+  if (globalChange) return [movedTable(globalChange)];
   if (!solve) return [];
   const [x, y] = solve.trace;
   return [
@@ -39,4 +41,23 @@ export function sweepTables({ solve }: RoadModel): HandoutTable[] {
       ),
     },
   ];
+}
+
+/** The global view's handout: every gradient before and after one village moved. */
+function movedTable({ road, moved }: GlobalChange): HandoutTable {
+  const point = (d: readonly number[]) => `(${fixed(d[0], 3)}, ${fixed(d[1], 3)})`;
+  return {
+    title: `The natural spline's gradients before and after P${sub(moved.index)} moves ${fixed(moved.shift[1], 2)} up`,
+    columns: ['Gradient', 'before', 'after', '|change|'],
+    rows: printedRows(road.gradients.length).map((i) =>
+      i === null
+        ? [`⋮ ${road.gradients.length - 2 * EDGE_ROWS} more gradients`, '', '', '']
+        : [
+            `D${sub(i)}`,
+            point(road.gradients[i]),
+            point(moved.road.gradients[i]),
+            fixed(moved.changes[i], 3),
+          ],
+    ),
+  };
 }
