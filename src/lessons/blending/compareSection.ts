@@ -2,10 +2,12 @@ import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
-import { texT } from '../../kit/format';
+import { texT, words } from '../../kit/format';
 import { formula } from '../../render/formula';
 import { comparedIds, comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
+import { wordsSlip } from './notesKey';
+import type { Nearest } from './passes';
 import { keepShownToEnd } from './script';
 import type { BlendingState, Comparison } from './state';
 
@@ -15,6 +17,7 @@ const CHOICES: { value: Comparison; label: string }[] = [
   { value: 'bspline', label: 'Uniform cubic B-spline' },
   { value: 'lagrange', label: 'Lagrange, equally spaced nodes' },
   { value: 'mirror', label: 'Bernstein mirrored: μ → 1 − μ' },
+  { value: 'interpolating', label: 'Interpolating or approximating: Lagrange and Bézier' },
 ];
 
 const EXPLAIN: Record<Comparison, string> = {
@@ -27,6 +30,8 @@ const EXPLAIN: Record<Comparison, string> = {
     'The Lagrange bases for the nodes μ = 0, 1/N, …, 1 also sum to 1, and each is 1 at its own node, so the dashed curve passes through every control point. But they are not non-negative: a negative weight pushes the point away from its control point, and the curve can leave the convex hull.',
   mirror:
     'The blending functions are symmetric under μ → 1 − μ: W(N, i, μ) = W(N, N − i, 1 − μ), since C(N, i) = C(N, N − i). Step through it with the clicker: the second cursor at 1 − μ, each pair of functions, and the curve traced backwards by the reversed control points.',
+  interpolating:
+    'An interpolating curve passes through every one of its points; an approximating curve is shaped by its control points without having to pass through them. The Lagrange curve (dashed) interpolates: Lᵢ is 1 at its own node μ = i/N and 0 at the others, so at μ = i/N the curve is at Pᵢ. The Bézier curve approximates: only W(N, 0, μ) and W(N, N, μ) reach 1, so it passes through P0 and PN, and no other point has its whole weight anywhere. Each point’s distance to a curve is the least |C(μ) − Pᵢ| over μ: 0 exactly where the curve passes through it.',
 };
 
 const plain = (label: string) => label.replace(/_\{?([^}]*)\}?/, '$1');
@@ -41,6 +46,8 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     set: (s, comparison) => keepShownToEnd(s, { ...s, comparison }),
   });
   const explain = h('p', {});
+  // Beside the words' meaning, where the “Splines” slides swap them (that scene only).
+  const slip = wordsSlip();
   const body = h('tbody', {});
   const rows = new LiveRows(body);
   const table = dataTable('Comparison weights at μ', ['Function', 'Weights', 'Value at μ'], body);
@@ -71,6 +78,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
         basisChoice.labels,
       ),
       explain,
+      slip,
       table,
       verdict,
     ),
@@ -78,6 +86,7 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
       const { state, n, compared } = m;
       basisChoice.update(state);
       setText(explain, EXPLAIN[state.comparison]);
+      setHidden(slip, state.comparison !== 'interpolating');
       setHidden(table, compared === null);
       if (!compared) {
         rows.set([]);
@@ -119,6 +128,10 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
             ? `The dashed Lagrange curve leaves the convex hull of the control points (${Math.round(100 * compared.outside)}% of its samples lie outside); the Bézier curve never does.`
             : 'Here the dashed Lagrange curve happens to stay in the convex hull; drag a point (or try the Lagrange preset) to push it out.',
         );
+      if (m.passes)
+        sentences.push(
+          `Distance of P0 … P${n} to the Lagrange curve: ${distances(m.passes.lagrange)}; to the Bézier curve: ${distances(m.passes.bezier)}.`,
+        );
       if (state.comparison === 'hermite' && n !== 3)
         sentences.push('Set N = 3 to see the Hermite form of this very curve in the figure.');
       if (state.comparison === 'bspline' && n < 3)
@@ -133,6 +146,9 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
     },
   };
 }
+
+/** Each point's distance to a curve, in words: "0, 0.714, 0.714, 0". */
+const distances = (near: readonly Nearest[]) => near.map((q) => words(q.distance)).join(', ');
 
 /** Whether the rows must show other names: another family, or one of another size. */
 function labelsChanged(before: Compared | null, after: Compared): boolean {

@@ -10,7 +10,8 @@ import {
 import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
 import type { Comparison } from './state';
 
-type Kind = Exclude<Comparison, 'none' | 'mirror'>;
+/** The bases compared (interpolating or approximating asks the Lagrange curve). */
+type Kind = Exclude<Comparison, 'none' | 'mirror' | 'interpolating'>;
 
 /** Another basis beside Bernstein's, drawn for the control points alone (not yet at μ). */
 export interface ComparedShape extends Family {
@@ -37,8 +38,9 @@ export interface Compared extends ComparedShape {
 }
 
 /** The compared basis and its curve for these control points: it does not depend on μ. */
-export function comparedShape(p: readonly Point[], kind: Comparison): ComparedShape | null {
-  if (kind === 'none' || kind === 'mirror') return null;
+export function comparedShape(p: readonly Point[], comparison: Comparison): ComparedShape | null {
+  if (comparison === 'none' || comparison === 'mirror') return null;
+  const kind: Kind = comparison === 'interpolating' ? 'lagrange' : comparison;
   const n = p.length - 1;
   const basis = family(kind, n)!;
   let curve: Point[] | null = null;

@@ -2,8 +2,10 @@ import type { Point } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
 import { seriesDash } from '../../kit/seriesColours';
 import type { Painter } from '../../render/painter';
+import { words } from '../../kit/format';
 import { highlightedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
+import type { Passes } from './passes';
 import { controlPoints } from './points';
 import type { BlendingState } from './state';
 
@@ -108,6 +110,8 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
         });
       }
     }
+    if (m.passes && (drawn.onLagrange || drawn.onBezier))
+      drawPasses(painter, m.passes, state.p, drawn.onBezier, !info.thumbnail);
     if (m.note && !info.thumbnail) painter.note(m.note);
     if (drawn.reversed) {
       painter.dot(m.mirrored, theme.muted, theme.sizes.point * 1.3);
@@ -146,6 +150,53 @@ function drawHermiteData(painter: Painter, compared: Compared): void {
       bold: true,
     });
   });
+}
+
+/**
+ * Which points a curve passes through: a ring round each point on the
+ * Lagrange curve, and once the Bézier curve is asked, a smaller ring round
+ * each point on it and a line from each other point to its nearest point.
+ * Under every point, its distance to the curve asked last.
+ */
+function drawPasses(
+  painter: Painter,
+  passes: Passes,
+  p: readonly Point[],
+  bezier: boolean,
+  labels: boolean,
+): void {
+  const theme = painter.theme;
+  const width = theme.sizes.line * 1.5;
+  p.forEach((control, i) => {
+    if (passes.onLagrange[i])
+      painter.ring(control, theme.sizes.handle * 2.4, { color: theme.muted, width });
+  });
+  if (bezier)
+    p.forEach((control, i) => {
+      const near = passes.bezier[i];
+      if (passes.onBezier[i])
+        painter.ring(control, theme.sizes.handle * 1.6, { color: theme.curve, width });
+      else {
+        painter.segment(control, near.point, {
+          color: theme.curve,
+          width: theme.sizes.line,
+          dash: [4, 3],
+        });
+        painter.dot(near.point, theme.curve, theme.sizes.point);
+      }
+    });
+  if (!labels) return;
+  const [near, color] = bezier ? [passes.bezier, theme.curve] : [passes.lagrange, theme.muted];
+  p.forEach((control, i) =>
+    painter.label(`d = ${words(near[i].distance)}`, control, {
+      dy: theme.sizes.handle + theme.sizes.small * 1.1,
+      align: 'center',
+      color,
+      halo: true,
+      bold: true,
+      size: theme.sizes.small,
+    }),
+  );
 }
 
 /** Would a weight written under `p` run into one written under an earlier point? */

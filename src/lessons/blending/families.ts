@@ -63,7 +63,9 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
         colors: indices(4),
         values: uniformBSplineBasis,
       };
-    case 'lagrange': {
+    // Interpolating or approximating: the Lagrange curve is the interpolating one.
+    case 'lagrange':
+    case 'interpolating': {
       const nodes = equallySpacedNodes(n);
       return {
         labels: each((i) => `L_{${i}}`),

@@ -5,7 +5,7 @@ import { exercises } from './exercises';
 import { derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
-import { bsplineScript, hermiteScript, lagrangeScript, lessonScript } from './script';
+import { bsplineScript, hermiteScript, lagrangeScript, lessonScript, passesScript } from './script';
 import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
 
 /** A scene: its control points, μ and the basis compared with (the clicker opens it at step 0). */
@@ -99,6 +99,16 @@ export default defineLesson({
         'lagrange',
       ),
       script: lagrangeScript,
+    },
+    {
+      ...scene(
+        'interpolating',
+        'Interpolating or approximating',
+        LECTURE_CUBIC,
+        0.5,
+        'interpolating',
+      ),
+      script: passesScript,
     },
   ],
   panel: blendingPanel,

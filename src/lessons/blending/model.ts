@@ -5,6 +5,7 @@ import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
 import { type Compared, type ComparedShape, comparedAt, comparedShape } from './comparison';
 import { type Family, family } from './families';
+import { type Passes, passes } from './passes';
 import type { Reveal } from './script';
 import type { BlendingState } from './state';
 
@@ -38,27 +39,34 @@ export interface Drawn {
   mirror: boolean;
   pairs: number;
   reversed: boolean;
+  /** Each point's distance to the Lagrange curve written, then to the Bézier curve. */
+  onLagrange: boolean;
+  onBezier: boolean;
 }
 
 function drawnAt(shown: Revealed<Reveal>, n: number): Drawn {
   const whole = shown.has('bezier');
   const symmetry = shown.has('functions');
+  // Interpolating or approximating: each curve comes with its weights on the plot.
+  const bezierCurve = shown.has('bezierCurve');
   return {
-    bernstein: whole || symmetry ? n + 1 : shown.count('weight'),
+    bernstein: whole || symmetry || bezierCurve ? n + 1 : shown.count('weight'),
     faded: whole && shown.count('basis') > 0,
     weights: whole ? n + 1 : shown.count('weight'),
     point: whole || shown.has('point') || shown.has('reversed'),
-    curve: whole || shown.has('curve') || shown.has('reversed'),
-    compared: shown.count('basis'),
+    curve: whole || shown.has('curve') || shown.has('reversed') || bezierCurve,
+    compared: shown.has('lagrangeCurve') ? n + 1 : shown.count('basis'),
     data: shown.has('data'),
     tangents: shown.has('tangents'),
     ends: shown.has('ends'),
-    comparedCurve: shown.has('spline'),
+    comparedCurve: shown.has('spline') || shown.has('lagrangeCurve'),
     hull: shown.has('hull'),
     atMu: shown.has('atMu'),
     mirror: shown.has('mirror'),
     pairs: shown.count('pair'),
     reversed: shown.has('reversed'),
+    onLagrange: shown.has('interpolating'),
+    onBezier: shown.has('approximating'),
   };
 }
 
@@ -91,6 +99,8 @@ export interface BlendingModel {
   handleY: number;
   /** What is degenerate about the control points and what it does to the curve, or null. */
   note: string | null;
+  /** Interpolating or approximating: each point's distance to the Lagrange and the Bézier curve. */
+  passes: Passes | null;
 }
 
 /** The curve and what depends on its points alone: dragging μ or stepping costs nothing. */
@@ -130,6 +140,15 @@ const comparison = memoOn<
   };
 });
 
+/** Each point's distance to both curves, for interpolating or approximating only: μ does not move it. */
+const passesOf = memoOn<
+  Pick<BlendingState, 'p' | 'comparison'>,
+  'p' | 'comparison',
+  Pick<BlendingModel, 'passes'>
+>(['p', 'comparison'], ({ p, comparison: kind }) => ({
+  passes: kind === 'interpolating' ? passes(p) : null,
+}));
+
 /** Everything at μ: the weights, P(μ), and the compared functions' values. */
 const atMu = memoOn<
   Pick<BlendingState, 'p' | 'mu' | 'comparison'>,
@@ -152,7 +171,17 @@ export function derive(state: BlendingState, shown: Revealed<Reveal>): BlendingM
   const { curveBounds, plotBounds, handleY } = comparison(state);
   const common = shape(state);
   const drawn = drawnAt(shown, common.n);
-  return { ...common, ...atMu(state), curveBounds, plotBounds, handleY, state, shown, drawn };
+  return {
+    ...common,
+    ...atMu(state),
+    ...passesOf(state),
+    curveBounds,
+    plotBounds,
+    handleY,
+    state,
+    shown,
+    drawn,
+  };
 }
 
 /** Coincident or collinear control points, in words: what the curve does then. */

@@ -4,9 +4,11 @@ import type { Schema } from '../../app/urlState';
 
 /**
  * A basis drawn on the same axes as the Bernstein functions, for comparison;
- * or the Bernstein functions' own mirror image under μ → 1 − μ.
+ * or the Bernstein functions' own mirror image under μ → 1 − μ; or the
+ * Lagrange and the Bézier curve of the same points, each asked whether it
+ * passes through them (interpolating or approximating).
  */
-export type Comparison = 'none' | 'hermite' | 'bspline' | 'lagrange' | 'mirror';
+export type Comparison = 'none' | 'hermite' | 'bspline' | 'lagrange' | 'mirror' | 'interpolating';
 
 /** Everything the blending lesson shows, and all of it goes in the link. */
 export interface BlendingState {
@@ -38,7 +40,7 @@ export const schema: Schema<BlendingState> = {
   comparison: linkKey(
     choice<Comparison>({
       default: 'none',
-      values: ['none', 'hermite', 'bspline', 'lagrange', 'mirror'],
+      values: ['none', 'hermite', 'bspline', 'lagrange', 'mirror', 'interpolating'],
     }),
     'b',
   ),
