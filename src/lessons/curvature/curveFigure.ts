@@ -4,6 +4,7 @@ import type { Painter } from '../../render/painter';
 import { boundsOf } from '../../render/projection';
 import { words } from '../../kit/format';
 import { COLOURS, arrowUnit, vectorArrow } from './marks';
+import { drawJoinDerivatives } from './joinsMarks';
 import type { CurvatureModel } from './model';
 import type { PlaneModel } from './planeModel';
 import { gradientHandles, gradientTips, planePoints, topViewPoints } from './points';
@@ -32,6 +33,7 @@ export const curveFigure: KitFigure<CurvatureState, CurvatureModel> = {
     const box = boundsOf([
       ...m.state.points,
       ...curvePoints(plane),
+      ...(m.joins ? curvePoints(m.joins.catmull) : []),
       ...gradientTips(m.state),
       ...plane.comb.flat().map((tooth) => tooth[1]),
       ...round,
@@ -63,6 +65,14 @@ export const curveFigure: KitFigure<CurvatureState, CurvatureModel> = {
     for (const [i, tip] of gradientTips(m.state).entries())
       painter.segment(m.state.points[i], tip, { color: theme.polygon, width: theme.sizes.thin });
     if (m.state.part === 'plane' && m.shown.has('comb')) drawComb(painter, plane);
+    // The joins part: the Catmull-Rom spline of the same points, dashed, beside the natural one.
+    if (m.joins && m.shown.has('catmull'))
+      painter.polylineFlat(m.joins.catmull.curve, {
+        color: theme.muted,
+        width: theme.sizes.curve * 0.8,
+        dash: [10, 6],
+      });
+    if (m.joins && m.shown.has('c2')) drawJoinDerivatives(painter, m.joins.natural, labels);
     painter.polylineFlat(plane.curve, {
       color: theme.curve,
       width: theme.sizes.curve,
@@ -79,7 +89,7 @@ export const curveFigure: KitFigure<CurvatureState, CurvatureModel> = {
 };
 
 /** Every eighth sample of the curve: a spline through the points may swing beyond them. */
-function curvePoints(plane: PlaneModel): Point[] {
+function curvePoints(plane: Pick<PlaneModel, 'curve'>): Point[] {
   const out: Point[] = [];
   for (let i = 0; i < plane.curve.length; i += 16) out.push([plane.curve[i], plane.curve[i + 1]]);
   return out;

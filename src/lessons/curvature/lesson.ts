@@ -17,6 +17,12 @@ function normalize(state: CurvatureState): { state: CurvatureState; issues: stri
     next = { ...next, source: 'bezier' };
     issues.push('Arc length is worked on one Bézier curve: its control points are the points P.');
   }
+  if (next.part === 'joins' && next.source !== 'natural') {
+    next = { ...next, source: 'natural' };
+    issues.push(
+      'The joins are compared on the natural cubic spline through the points (and the Catmull-Rom spline of the same points).',
+    );
+  }
   const { points, gradients } = next;
   if (next.source === 'hermite' && gradients.length !== points.length) {
     issues.push(

@@ -1,6 +1,7 @@
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
 import { type ArcCurve, type ArcModel, deriveArc, deriveArcCurve } from './arcModel';
+import { type JoinsModel, deriveJoins } from './joinsModel';
 import { type PlaneCurve, type PlaneModel, deriveCurve, derivePlane } from './planeModel';
 import type { Reveal } from './scripts';
 import { piecewiseCurve } from './sources';
@@ -25,6 +26,8 @@ export interface CurvatureModel {
   space: SpaceModel;
   /** Arc length against parameter (part arc). */
   arc: ArcModel | null;
+  /** Both sides of the natural spline's joins, and the Catmull-Rom spline of the same points (part joins). */
+  joins: JoinsModel | null;
 }
 
 type Fields<K extends keyof CurvatureState> = Pick<CurvatureState, K>;
@@ -65,6 +68,12 @@ const arcAt = memoOn<
   ArcModel
 >(['points', 'equalSteps', 't'], (s) => deriveArc(arcCurve(s), s.points, s.t));
 
+const joinsOf = memoOn<
+  { points: CurvatureState['points']; pieces: PlaneModel['pieces'] },
+  'points' | 'pieces',
+  JoinsModel
+>(['points', 'pieces'], ({ points, pieces }) => deriveJoins(points, pieces.segments));
+
 export function derive(state: CurvatureState, shown: Revealed<Reveal>): CurvatureModel {
   const plane = state.part === 'space' ? null : planeAt(state);
   return {
@@ -73,5 +82,9 @@ export function derive(state: CurvatureState, shown: Revealed<Reveal>): Curvatur
     plane,
     space: plane ? lifted({ plane }) : spaceAt(state),
     arc: state.part === 'arc' ? arcAt(state) : null,
+    joins:
+      state.part === 'joins' && plane
+        ? joinsOf({ points: state.points, pieces: plane.pieces })
+        : null,
   };
 }

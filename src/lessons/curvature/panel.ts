@@ -8,6 +8,7 @@ import type { CurvatureModel } from './model';
 import { CURVE_SOURCES, type CurveSource } from '../../kit/lessonLinks';
 import { SOURCE_NAMES } from './sources';
 import { PART_SCRIPTS } from './scripts';
+import { SLOPE_STEP } from './curvatureSlope';
 import { type CurvatureState, type Part, type SpaceCurve, schema } from './state';
 import { arcRows, valueRows } from './values';
 import { gestures } from '../../kit/gestures';
@@ -19,6 +20,9 @@ const INTRO: Record<Part, string> = {
     'In space T turns towards the principal normal N, and the binormal B = T × N completes a right-handed frame. The curvature κ measures how fast T turns, the torsion τ how fast the osculating plane (spanned by T and N) turns about T. Move the control points Q0 … Q3 in space or in the top view. To turn the space figure, ' +
     gestures().orbit +
     '.',
+  joins:
+    'At a join of two pieces, C² (P′ and P″ the same on both sides) keeps the curvature κ continuous: G², the curvature continuity of the continuation notes. G³ asks one thing more: that κ changes at the same rate on both sides, dκ/ds continuous, with s the arc length. The continuation notes ask “Is C¹ enough?”, answer that car surfaces have to guarantee at least G³, and add that splines of degree n can guarantee Cⁿ⁻¹: cubic pieces give C², so C³ (and with it G³) takes pieces of degree 4 or more. In the plot of κ against p̄ a jump of κ is a step (not G²), a jump of dκ/ds a kink (G², not G³). The lesson takes dκ/ds by one-sided finite differences of κ, with a step h = ' +
+    `${SLOPE_STEP} of each piece’s parameter, and divides by the speed |P′|.`,
   arc: 'The parameter t is not length: equal steps of t cover short stretches where the curve is slow and long ones where it is fast. The arc length s(t) adds up the speed; a table of s at equal steps of t, read backwards, gives the parameters of equal steps of length.',
 };
 
@@ -28,6 +32,8 @@ const CURVATURE_VECTOR = "K = \\frac{dT}{ds} = \\frac{T'(t)}{|P'(t)|} = \\kappa 
 const FORMULAS: Record<Part, string> = {
   plane: `${CURVATURE_VECTOR},\\qquad \\kappa = \\frac{x'y'' - y'x''}{(x'^2 + y'^2)^{3/2}},\\qquad R = \\frac{1}{|\\kappa|},\\qquad \\text{centre} = P + R\\,N`,
   space: `${CURVATURE_VECTOR},\\quad \\kappa = \\frac{|P' \\times P''|}{|P'|^3},\\quad \\tau = \\frac{(P' \\times P'') \\cdot P'''}{|P' \\times P''|^2},\\quad B = T \\times N`,
+  joins:
+    "G^2:\\ \\kappa(\\bar p^-) = \\kappa(\\bar p^+),\\qquad G^3:\\ G^2 \\text{ and } \\tfrac{d\\kappa}{ds}(\\bar p^-) = \\tfrac{d\\kappa}{ds}(\\bar p^+),\\qquad \\frac{d\\kappa}{ds} = \\frac{1}{|P'|}\\frac{d\\kappa}{dp}",
   arc: "s(t) = \\int_0^t |P'(u)|\\,du,\\qquad t(s_i) = s^{-1}\\!\\left(\\tfrac{i}{n} L\\right)",
 };
 

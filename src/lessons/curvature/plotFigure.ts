@@ -4,15 +4,25 @@ import { type Bounds, niceStep } from '../../render/projection';
 import { words } from '../../kit/format';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
+import { drawJoinMarks, joinSeries } from './joinsMarks';
 import type { Join } from './sources';
 import type { CurvatureState } from './state';
 
 const clampT = (t: number) => Math.min(1, Math.max(0, Number(t.toFixed(4))));
 
+/** A curve of the plot: its name at the cursor, its runs, its colour (dashed for a second spline). */
+export interface Series {
+  name: string;
+  runs: Float64Array[];
+  colour: number;
+  dash?: number[];
+}
+
 /** What the plot shows now: κ (or the speed first) against t or p̄, κ and τ in space, s(t) for arc length. */
-function series(m: CurvatureModel): { name: string; runs: Float64Array[]; colour: number }[] {
+function series(m: CurvatureModel): Series[] {
   const { part } = m.state;
   const { shown } = m;
+  if (part === 'joins') return joinSeries(m);
   if (part === 'plane') {
     if (shown.has('curvature'))
       return [{ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature }];
@@ -35,19 +45,28 @@ function plotBounds(m: CurvatureModel): Bounds {
   const kappa = part === 'plane' && m.shown.has('curvature');
   // The axes are set by everything the part will show, so stepping does not rescale them.
   const runs =
-    part === 'plane'
-      ? kappa
-        ? m.plane!.kappa
-        : m.plane!.speed
-      : part === 'space'
-        ? [...m.space.kappa, ...m.space.tau]
-        : [m.arc!.plot];
+    part === 'joins'
+      ? [...m.plane!.kappa, ...m.joins!.catmull.kappa]
+      : part === 'plane'
+        ? kappa
+          ? m.plane!.kappa
+          : m.plane!.speed
+        : part === 'space'
+          ? [...m.space.kappa, ...m.space.tau]
+          : [m.arc!.plot];
   for (const run of runs)
     for (let i = 1; i < run.length; i += 2) {
       low = Math.min(low, run[i]);
       high = Math.max(high, run[i]);
     }
-  const cap = kappa ? 1.25 * m.plane!.kappaCap : part === 'space' ? 1.25 * m.space.cap : Infinity;
+  const cap =
+    part === 'joins'
+      ? 1.25 * Math.max(m.plane!.kappaCap, m.joins!.catmull.kappaCap)
+      : kappa
+        ? 1.25 * m.plane!.kappaCap
+        : part === 'space'
+          ? 1.25 * m.space.cap
+          : Infinity;
   low = Math.max(low, -cap);
   high = Math.min(high, cap);
   const pad = 0.08 * (high - low || 1);
@@ -56,7 +75,7 @@ function plotBounds(m: CurvatureModel): Bounds {
 
 /** The plane curve's pieces: the plot runs over the global p̄ ∈ [0, pieces], p̄ = pieces·t. */
 const pieces = (m: CurvatureModel) =>
-  m.state.part === 'plane' ? m.plane!.pieces.segments.length : 1;
+  m.state.part === 'plane' || m.state.part === 'joins' ? m.plane!.pieces.segments.length : 1;
 
 /** The plot's x: t for one piece; the global p̄ = i + p across pieces (piece i, local p), as in the lecture slides. */
 const axisName = (m: CurvatureModel) => (pieces(m) > 1 ? 'p̄ = i + p' : 't');
@@ -82,7 +101,11 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
     drawMarks(painter, m, bounds, info.thumbnail);
     for (const s of shown)
       for (const run of s.runs)
-        painter.polylineFlat(run, { color: painter.color(s.colour), width: theme.sizes.curve });
+        painter.polylineFlat(run, {
+          color: painter.color(s.colour),
+          width: theme.sizes.curve,
+          dash: s.dash,
+        });
     painter.segment([t, bounds.minY], [t, bounds.maxY], {
       color: theme.accent,
       width: theme.sizes.line,
@@ -119,7 +142,7 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
 
 function cursorValues(m: CurvatureModel): { name: string; y: number; colour: number }[] {
   const { part } = m.state;
-  if (part === 'plane') {
+  if (part === 'plane' || part === 'joins') {
     const at = m.plane!.at;
     const out = [{ name: '|P′|', y: at.speed, colour: 4 }];
     if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
@@ -155,6 +178,7 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
       });
   };
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
+  if (part === 'joins') drawJoinMarks(painter, m, bounds, thumbnail);
   if (part === 'plane' && shown.has('inflections')) {
     for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
     for (const t of m.plane!.cusps) vertical(t, t === 0 || t === pieces(m) ? 'P′ = 0' : 'cusp');

@@ -35,6 +35,19 @@ const SPLINE_POINTS: Point[] = [
   [6, 2],
 ];
 
+/**
+ * Four points, one unit apart in x: the natural spline's x is p̄ itself, so its
+ * κ and dκ/ds at the joins can be worked by hand (see joinsModel.test.ts); and
+ * the Catmull-Rom gradients at P1 and P2, (1, 0) and (1, −0.5), are not
+ * parallel, so its κ jumps at the first join.
+ */
+const JOIN_POINTS: Point[] = [
+  [0, 0],
+  [1, 1],
+  [2, 0],
+  [3, 0],
+];
+
 type Scene = ScriptedScene<CurvatureState, CurvatureModel, Reveal>;
 
 /** A scene of a part: the fields it sets, and the part's steps. */
@@ -75,12 +88,26 @@ export const SCENES: readonly Scene[] = [
   }),
   spline('natural', 'A natural spline: κ is continuous at its C² joins', 'natural'),
   spline('catmull', 'A Catmull-Rom spline: κ jumps at its C¹ joins', 'catmull-rom'),
+  {
+    ...scene('joins', 'G², G³ and Cⁿ⁻¹', 'joins', {
+      source: 'natural',
+      points: JOIN_POINTS,
+      t: 0.45,
+    }),
+    // The curve and κ against p̄: the plane curve lifted into space adds nothing here.
+    figures: ['curve', 'plot'],
+  },
 ];
 
 /**
  * The scene a state is in, as far as its steps go: the scenes of one part
  * share the part's script, so the part's first scene stands for them all.
  */
-const FIRST_SCENE: Readonly<Record<Part, string>> = { plane: 'plane', space: 'helix', arc: 'arc' };
+const FIRST_SCENE: Readonly<Record<Part, string>> = {
+  plane: 'plane',
+  space: 'helix',
+  arc: 'arc',
+  joins: 'joins',
+};
 
 export const sceneOf = (state: CurvatureState): string => FIRST_SCENE[state.part];

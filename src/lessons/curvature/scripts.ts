@@ -1,12 +1,13 @@
 import type { Script } from '../../kit/script';
 import { type ArcReveal, arcScript } from './arcScript';
+import { type JoinsReveal, joinsScript } from './joinsScript';
 import type { CurvatureModel } from './model';
 import { type PlaneReveal, planeScript } from './planeScript';
 import { type SpaceReveal, spaceScript } from './spaceScript';
 import type { CurvatureState, Part } from './state';
 
-/** Every name a step of the lesson reveals, over its three parts. */
-export type Reveal = PlaneReveal | SpaceReveal | ArcReveal;
+/** Every name a step of the lesson reveals, over its parts. */
+export type Reveal = PlaneReveal | SpaceReveal | ArcReveal | JoinsReveal;
 
 export type LessonScript = Script<CurvatureState, CurvatureModel, Reveal>;
 
@@ -15,4 +16,5 @@ export const PART_SCRIPTS: Readonly<Record<Part, LessonScript>> = {
   plane: planeScript,
   space: spaceScript,
   arc: arcScript,
+  joins: joinsScript,
 };

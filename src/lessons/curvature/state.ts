@@ -3,8 +3,11 @@ import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { CURVE_SOURCES, type CurveSource, MAX_LINKED_POINTS } from '../../kit/lessonLinks';
 
-/** The three parts of the lesson, in teaching order: each is a family of scenes with its own steps. */
-export type Part = 'plane' | 'space' | 'arc';
+/**
+ * The parts of the lesson, in teaching order: each is a family of scenes with
+ * its own steps (joins: G², G³ and C^(n−1) at the joins of a spline).
+ */
+export type Part = 'plane' | 'space' | 'arc' | 'joins';
 /** The curve in space: the helix (closed forms) or a cubic Bézier with 3D control points. */
 export type SpaceCurve = 'helix' | 'bezier';
 
@@ -55,7 +58,7 @@ export const TWISTED_CUBIC: Point[] = [
 ];
 
 export const schema: Schema<CurvatureState> = {
-  part: choice<Part>({ default: 'plane', values: ['plane', 'space', 'arc'] }),
+  part: choice<Part>({ default: 'plane', values: ['plane', 'space', 'arc', 'joins'] }),
   source: linkKey(choice<CurveSource>({ default: 'bezier', values: CURVE_SOURCES }), 'src'),
   points: linkKey(points({ default: LECTURE_CUBIC, min: 2, max: MAX_LINKED_POINTS }), 'p'),
   gradients: linkKey(points({ default: [], min: 0, max: MAX_LINKED_POINTS }), 'd'),

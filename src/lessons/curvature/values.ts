@@ -34,6 +34,26 @@ export function valueRows(
     const row = named(name, value === null ? otherwise : shown(value), colour);
     return { ...row, data: { quantity: name, value: value === null ? '' : String(value) } };
   };
+  if (state.part === 'joins') {
+    // Both sides of each join: the natural spline's κ and dκ/ds, the Catmull-Rom spline's κ.
+    const pair = (name: string, sides: [number, number] | null) =>
+      named(name, sides ? `${shown(sides[0])} | ${shown(sides[1])}` : 'undefined');
+    const { natural, catmullJoins } = m.joins!;
+    return natural.flatMap((j, i) => {
+      const other = catmullJoins[i];
+      return [
+        pair(`κ before | after p̄ = ${j.s}`, j.kappa && [j.kappa.before, j.kappa.after]),
+        pair(
+          `dκ/ds before | after p̄ = ${j.s}`,
+          j.slope && [j.slope.before.perLength, j.slope.after.perLength],
+        ),
+        pair(
+          `Catmull-Rom κ before | after p̄ = ${j.s}`,
+          other?.kappa ? [other.kappa.before, other.kappa.after] : null,
+        ),
+      ];
+    });
+  }
   if (state.part === 'plane') {
     const at = m.plane!.at;
     // On several pieces P′ is the piece's own dP/dp̄ (see planeScript).
