@@ -18,15 +18,14 @@ import { FigureView } from './figureView';
 import type { PresenterTool } from './keymap';
 import { buildLayout } from './layout';
 import type { AnyLesson, DrawInfo, LessonPanel, Point } from './lesson';
-import { LessonStore, normalizeState, type Loaded } from './lessonState';
+import { LessonStore, type Loaded } from './lessonState';
 import type { LessonMeta } from './meta';
 import { Presenter } from './presenter';
 import { ScriptWalker } from './scriptWalker';
 import { Trails } from './trails';
 import { UrlSync } from './urlSync';
-import type { ExerciseSpec } from '../kit/exercise';
-import { Practice } from './practice';
-import { defaultsOf, type Schema, withLetter, withPractice } from './urlState';
+import { PracticeHost } from './practiceHost';
+import { withLetter, withPractice } from './urlState';
 import { chosenLetter } from '../render/notation';
 
 /** What the app shell offers a lesson page. */
@@ -61,15 +60,11 @@ export class LessonPage<S, M> {
   /** The clicker's walk through the script: steps, scenes, their buttons and status. */
   readonly walker: ScriptWalker<S>;
   /** The lesson's exercises (absent for a lesson without any). */
-  private readonly practice?: Practice<S>;
-  /** The button that opens practice, at the top of the panel. */
-  private practiceEntry: HTMLElement | null = null;
+  private readonly practice?: PracticeHost<S>;
   /** The room is asked to predict the next step (presenter's Q). */
   private asking = false;
   /** The step the question was asked at: any other step answers it. */
   private askedAt = '';
-  /** The working being walked step by step ("Show me"), or 0. */
-  private walking = 0;
   private readonly undoButton: HTMLButtonElement;
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
@@ -133,8 +128,8 @@ export class LessonPage<S, M> {
           shown: () => this.presenter.shown(),
           ghost: () => this.ghostModel,
           trail: (figure) => this.trails.of(figure),
-          marks: (figure) => this.practice?.marks(figure) ?? [],
-          tap: (figure, at) => this.practice?.tap(figure, at) ?? false,
+          marks: (figure) => this.practice?.practice.marks(figure) ?? [],
+          tap: (figure, at) => this.practice?.practice.tap(figure, at) ?? false,
         }),
     );
     this.panel = lesson.panel({
@@ -161,7 +156,23 @@ export class LessonPage<S, M> {
       announce: (text) => shell.announce(text),
       pauseAtSceneEnd: () => !document.documentElement.classList.contains('projector'),
     });
-    this.practice = this.buildPractice(loaded);
+    this.practice = PracticeHost.of<S>(
+      {
+        lesson,
+        store: this.store,
+        walker: this.walker,
+        element: () => this.element,
+        figureBox: () => this.figureBox,
+        shownFigureIds: () => this.figures.filter((f) => !f.element.hidden).map((f) => f.spec.id),
+        fit: () => this.fit(),
+        redraw: () => {
+          this.refreshAll = true;
+          this.requestFrame();
+        },
+        linkChanged: () => this.url.schedule(0),
+      },
+      loaded,
+    );
     this.undoButton = h(
       'button',
       { type: 'button', title: 'Undo (Ctrl+Z)', onclick: () => this.undo() },
@@ -202,8 +213,8 @@ export class LessonPage<S, M> {
     const aside = h(
       'aside',
       { class: 'panel', 'aria-label': 'Explanation' },
-      this.practiceEntry,
-      this.practice?.element,
+      this.practice?.entry,
+      this.practice?.practice.element,
       this.walker.sceneGroup,
       this.panel.element,
     );
@@ -259,112 +270,6 @@ export class LessonPage<S, M> {
     this.requestFrame();
     // The link of the state the page opened with is written at once: it is final.
     this.url.write();
-  }
-
-  private buildPractice(loaded: Loaded<S>): Practice<S> | undefined {
-    const exercises = this.lesson.exercises as readonly ExerciseSpec<S>[] | undefined;
-    if (!exercises?.length) return undefined;
-    const practice = new Practice<S>(exercises, {
-      slug: this.lesson.slug,
-      defaults: defaultsOf(this.lesson.schema as Schema<S>),
-      get: () => this.store.state,
-      open: (state, scene) => {
-        this.stopWalk();
-        this.enterScene(scene, state);
-        this.store.set(normalizeState(this.lesson, state).state);
-        this.fit();
-      },
-      walk: (state, scene) => this.walk(state, scene),
-      redraw: () => {
-        this.refreshAll = true;
-        this.requestFrame();
-      },
-      linkChanged: () => this.url.schedule(0),
-      toggled: (open) => {
-        if (this.practiceEntry) this.practiceEntry.hidden = open;
-        this.element.classList.toggle('practising', open);
-        // A phone: the figure shares the first screen with the question.
-        if (open && window.matchMedia?.('(max-width: 820px)').matches)
-          requestAnimationFrame(() => this.figureBox.scrollIntoView({ block: 'start' }));
-      },
-      tappable: (id) => this.lesson.figures.find((f) => f.id === id)?.kind !== 'space',
-      quiet: (on) => this.element.classList.toggle('practice-quiet', on),
-      figureTitle: (id) => {
-        const shown = this.figures.filter((f) => !f.element.hidden);
-        const title = this.lesson.figures.find((f) => f.id === id)?.title;
-        return shown.length > 1 && title ? `the figure “${title}”` : 'the figure';
-      },
-    });
-    this.practiceEntry = h(
-      'div',
-      { class: 'practice-entry' },
-      h(
-        'button',
-        {
-          type: 'button',
-          class: 'primary',
-          onclick: () => practice.start(exercises[0].id, loaded.practice?.seed ?? 1),
-        },
-        'Practice',
-      ),
-      h(
-        'span',
-        {},
-        ` ${exercises.length} exercises: predict a point, compute a number, make a curve. Checked as you go.`,
-      ),
-    );
-    if (loaded.practice) {
-      const { id, seed, kept } = loaded.practice;
-      // After the page is built: the exercise sets the state and the scene
-      // (the figure the link kept, if it kept one: the student's own work).
-      queueMicrotask(() => practice.start(id, seed, kept ? loaded.state : undefined));
-    }
-    return practice;
-  }
-
-  /**
-   * "Show me": opens the working at step 0 and walks its steps, one a second
-   * (at once with reduced motion). Any other change of state stops the walk.
-   */
-  private walk(state: S, scene: string | undefined): void {
-    this.stopWalk();
-    this.enterScene(scene, state);
-    const key = this.lesson.steps?.key as keyof S | undefined;
-    const start = key === undefined ? state : ({ ...state, [key]: 0 } as S);
-    this.store.set(normalizeState(this.lesson, start).state);
-    this.fit();
-    const reduced = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
-    let walked = this.store.state;
-    const tick = () => {
-      const { k, count } = this.walker.stepOf(this.store.state);
-      // Done, or the student took over (moved a point, pressed Back): stop.
-      if (k >= count || this.store.state !== walked) {
-        this.walking = 0;
-        return;
-      }
-      this.store.set({ ...this.store.state, [key as keyof S]: reduced ? count : k + 1 } as S, {
-        record: false,
-      });
-      walked = this.store.state;
-      this.walking = window.setTimeout(tick, 900);
-    };
-    if (key !== undefined) this.walking = window.setTimeout(tick, reduced ? 0 : 700);
-  }
-
-  /**
-   * The scene an exercise is set in becomes the walker's: the one it names,
-   * else the one its state is in, else the first.
-   */
-  private enterScene(id: string | undefined, state: S): void {
-    const wanted =
-      id ?? (this.lesson.sceneOf as ((s: S) => string | undefined) | undefined)?.(state);
-    const index = (this.lesson.scenes ?? []).findIndex((scene) => scene.id === wanted);
-    this.walker.restart(Math.max(0, index));
-  }
-
-  private stopWalk(): void {
-    window.clearTimeout(this.walking);
-    this.walking = 0;
   }
 
   private toolbar(): HTMLElement {
@@ -728,15 +633,7 @@ export class LessonPage<S, M> {
   /** Applies a state typed into the address bar or reached by back/forward. */
   applyQuery(loaded: Loaded<S>): void {
     this.url.adopt();
-    if (loaded.practice && this.practice) {
-      const { id, seed, kept } = loaded.practice;
-      const now = this.practice.link();
-      if (now?.id !== id || now.seed !== seed)
-        this.practice.start(id, seed, kept ? loaded.state : undefined);
-      else if (kept) this.store.set(loaded.state);
-      return;
-    }
-    if (this.practice?.active) this.practice.close();
+    if (this.practice?.applyLink(loaded)) return;
     this.walker.restart(loaded.scene);
     for (const issue of loaded.issues) this.shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
@@ -888,7 +785,7 @@ export class LessonPage<S, M> {
   }
 
   destroy(): void {
-    this.stopWalk();
+    this.practice?.stopWalk();
     // By now the address bar may already show another page: only remember
     // (and a write still pending sees the new address and leaves it alone).
     this.url.close();
