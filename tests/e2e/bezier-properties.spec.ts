@@ -18,10 +18,10 @@ test('the clicker walks every experiment from its control points to the whole pi
   page,
 }) => {
   const scenes = page.locator('[data-scene]');
-  await expect(scenes).toHaveCount(12);
+  await expect(scenes).toHaveCount(13);
   await page.keyboard.press('p');
   await page.keyboard.press('Home');
-  for (let i = 0; i < 12; i++) {
+  for (let i = 0; i < 13; i++) {
     const id = await scenes.nth(i).getAttribute('data-scene');
     await expect(scenes.nth(i)).toHaveAttribute('aria-pressed', 'true');
     await expect(status(page)).toHaveText(/^Step 0\/(\d+): The \d+ control points P₀ … P/);

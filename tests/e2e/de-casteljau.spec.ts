@@ -65,15 +65,15 @@ test('the clicker builds the construction from the points up, then opens the nex
   expect(await pixels(page)).not.toBe(points);
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('Step 2/5: Level 1:');
-  // P1,0 = 0.6·P0 + 0.4·P1 = (0.4, 0.8) at t = 0.4.
-  await expect(row(page, 'P1,0')).toContainText('0.4000');
-  await expect(row(page, 'P1,0')).toContainText('0.8000');
+  // P1,0 = 0.4·P0 + 0.6·P1 = (0.6, 1.2) at t = 0.6 (Figure 5's).
+  await expect(row(page, 'P1,0')).toContainText('0.6000');
+  await expect(row(page, 'P1,0')).toContainText('1.2000');
   await expect(row(page, 'P2,0')).toContainText('—');
   await page.keyboard.press('PageDown');
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('Step 4/5: Level 3: one point is left');
-  // P(0.4) = 0.216·P0 + 0.432·P1 + 0.288·P2 + 0.064·P3 = (1.552, 1.44).
-  await expect(row(page, 'P3,0')).toContainText('1.5520');
+  // P(0.6) = 0.064·P0 + 0.288·P1 + 0.432·P2 + 0.216·P3 = (2.448, 1.44).
+  await expect(row(page, 'P3,0')).toContainText('2.4480');
   await expect(row(page, 'P3,0')).toContainText('1.4400');
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('traces the Bézier curve');
@@ -95,7 +95,7 @@ test('the slider and the number field move t', async ({ page }) => {
   const slider = page.getByRole('slider', { name: 't' });
   await slider.focus();
   await page.keyboard.press('ArrowRight');
-  await expectHash(page, 't', (v) => v === '0.41');
+  await expectHash(page, 't', (v) => v === '0.61');
   await slider.fill('0.75');
   await expectHash(page, 't', (v) => v === '0.75');
   // P(0.75) = 1/64·P0 + 9/64·P1 + 27/64·P2 + 27/64·P3 → x = (9 + 81 + 108)/64
@@ -111,9 +111,10 @@ test('subdivision lists both halves legibly, even for many points', async ({ pag
   await page.getByLabel(/Show subdivision at t/).check();
   await expectHash(page, 'split', (v) => v === '1');
   const halves = page.getByRole('table', { name: 'Control points of the two halves' });
-  // At t = 0.4: P2,0 = 0.6·(0.4, 0.8) + 0.4·(1.8, 2) = (0.96, 1.28), the left half's third point.
-  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('0.9600');
-  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('1.2800');
+  // At t = 0.6: P1,0 = (0.6, 1.2), P1,1 = 0.4·(1, 2) + 0.6·(3, 2) = (2.2, 2), and
+  // P2,0 = 0.4·(0.6, 1.2) + 0.6·(2.2, 2) = (1.56, 1.68), the left half's third point.
+  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('1.5600');
+  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('1.6800');
   // Its right half ends at P3: (4, 0), named P0,3.
   await expect(halves.getByRole('row', { name: /^Right P0,3 / })).toContainText('4.0000');
   for (let i = 0; i < 6; i++)

@@ -108,8 +108,8 @@ test.describe('handouts', () => {
     page,
   }, testInfo) => {
     const captions = await walkCaptions(page, 'de-casteljau');
-    // The lesson's four scenes: 6, 5, 6 and 8 steps (counted on the lesson page above).
-    expect([...captions.values()].map((c) => c.length)).toEqual([6, 5, 6, 8]);
+    // The lesson's six scenes: 6, 5, 6, 8, 10 and 5 steps (counted on the lesson page above).
+    expect([...captions.values()].map((c) => c.length)).toEqual([6, 5, 6, 8, 10, 5]);
     await page.locator('button[data-scene]').first().click();
     await settled(page);
     const lessonLink = await openHandout(page);
@@ -117,23 +117,24 @@ test.describe('handouts', () => {
     // By hand: a page holds 2 × 2 frames; each scene's table of points (10, 6,
     // 10, 21 rows: at most 108 mm, under one 116 mm row of A4's grid) starts a
     // fresh row after the scene's last frame. Cubic: 4 | 2 + table. Quadratic:
-    // 4 | 1 + table. Loop: 4 | 2 + table. Degree 5: 4 | 4 | table. 9 pages.
-    await expect(page.locator('.handout')).toHaveAttribute('data-pages', '9');
+    // 4 | 1 + table. Loop: 4 | 2 + table. Degree 5: 4 | 4 | table. Pseudocode:
+    // 4 | 4 | 2 + table. Bernstein form: 4 | 1 + table. 14 pages.
+    await expect(page.locator('.handout')).toHaveAttribute('data-pages', '14');
     const file = testInfo.outputPath('de-casteljau.pdf');
     const pdf = await printed(page, file);
-    expect(pdf.pages).toBe(9);
+    expect(pdf.pages).toBe(14);
     expectPageSize(pdf.info, 595.28, 841.89);
 
     // No frame crosses a page's edge: each sheet is one A4 page, stacked page
     // after page, every frame inside its sheet, and PDF page i holds exactly
     // the captions of sheet i's frames.
     const sheets = await sheetsUnderPrint(page);
-    expect(sheets).toHaveLength(9);
+    expect(sheets).toHaveLength(14);
     for (const [i, sheet] of sheets.entries()) {
       expect(sheet.height).toBeCloseTo(297 * MM, 0);
       expect(sheet.inside, `page ${i + 1}: every frame inside its sheet`).toBe(true);
       const text = pdf.text(i + 1);
-      expect(text).toContain(`Page ${i + 1} of 9`);
+      expect(text).toContain(`Page ${i + 1} of 14`);
       for (const { scene, step } of sheet.frames)
         expect(text, `page ${i + 1}: ${scene} step ${step}`).toContain(
           flat(captions.get(scene)![step]),
@@ -145,15 +146,15 @@ test.describe('handouts', () => {
     );
 
     // Formulas as text in KaTeX's own fonts, not missing glyphs: the cubic's
-    // last step says P(0.4) = (1.552, 1.440), worked by hand from the notes'
-    // points (0,0), (1,2), (3,2), (4,0).
+    // last step says P(0.6) = (2.448, 1.440) (Figure 5's t), worked by hand
+    // from the points (0,0), (1,2), (3,2), (4,0): 0.288·(1, 2) + 0.432·(3, 2) + 0.216·(4, 0).
     expect(pdf.fonts).toMatch(/KaTeX_Main/);
     expect(pdf.fonts).toMatch(/KaTeX_Math/);
     const all = Array.from({ length: pdf.pages }, (_, i) => pdf.text(i + 1)).join(' ');
-    expect(all).toMatch(/\(\s?1\.552,\s?1\.440\)/);
+    expect(all).toMatch(/\(\s?2\.448,\s?1\.440\)/);
     expect(all).not.toMatch(/\uFFFD/);
-    // The table of points under the cubic: P₃,₀ = P(0.4).
-    expect(pdf.text(2)).toMatch(/P₃,₀ 1\.5520 1\.4400/);
+    // The table of points under the cubic: P₃,₀ = P(0.6).
+    expect(pdf.text(2)).toMatch(/P₃,₀ 2\.4480 1\.4400/);
 
     // The title block: the lesson's title, and the link to the lesson as shown.
     const first = pdf.text(1);
@@ -168,7 +169,7 @@ test.describe('handouts', () => {
     const dir = testInfo.outputPath('pages');
     mkdirSync(dir, { recursive: true });
     execFileSync('pdftoppm', ['-r', '40', '-png', file, `${dir}/page`]);
-    expect(readdirSync(dir).filter((f) => f.endsWith('.png'))).toHaveLength(9);
+    expect(readdirSync(dir).filter((f) => f.endsWith('.png'))).toHaveLength(14);
   });
 
   test('raster, every step, 6 a page on Letter: its pixel grid prints, every caption on its page', async ({

@@ -58,8 +58,9 @@ describe('the frames of a handout', () => {
 
   it('is every step of every scene, in order, with the lesson’s own captions', () => {
     const scenes = planItems(lesson, defaults, 0, { ...DEFAULT_OPTIONS, steps: 'all' });
-    // de Casteljau: a cubic (4 points) and the loop walk 6 steps, the quadratic 5, degree 5 eight.
-    expect(scenes.map((s) => s.length)).toEqual([6, 5, 6, 8]);
+    // de Casteljau: a cubic (4 points) and the loop walk 6 steps, the quadratic 5, degree 5 eight,
+    // the pseudocode ten and the Bernstein form five.
+    expect(scenes.map((s) => s.length)).toEqual([6, 5, 6, 8, 10, 5]);
     const loop = scenes[2];
     expect(loop.map((f) => f.step)).toEqual([0, 1, 2, 3, 4, 5]);
     for (const frame of loop)
@@ -74,6 +75,8 @@ describe('the frames of a handout', () => {
       ['4/4'],
       ['5/5'],
       ['7/7'],
+      ['9/9'],
+      ['4/4'],
     ]);
   });
 
@@ -103,15 +106,16 @@ describe('the frames of a handout', () => {
     // = (0.421875 + 0.421875 + 0.0625, 1.265625 + 0.28125) = (0.90625, 1.546875).
     expect(now[0][0].formula).toMatch(/P\(0\.25\)/);
     expect(now[0][0].formula).toMatch(/0\.906,\\ 1\.547/);
-    expect(own[0][0].formula).toMatch(/P\(0\.4\)/);
+    // The scene's own t is Figure 5's, 0.6.
+    expect(own[0][0].formula).toMatch(/P\(0\.6\)/);
   });
 
   it('puts the construction’s points in a table under the scene’s last frame', () => {
     const [cubic] = planItems(lesson, defaults, 0, { ...DEFAULT_OPTIONS, steps: 'last' });
     const [table] = tablesOf(lesson, cubic[0], 100);
     expect(table.table.rows).toHaveLength(10);
-    // P₃,₀ = P(0.4) = (1.552, 1.44), by hand from the notes' points.
-    expect(table.table.rows.at(-1)).toEqual(['3', 'P₃,₀', '1.5520', '1.4400']);
+    // P₃,₀ = P(0.6) = 0.288·(1, 2) + 0.432·(3, 2) + 0.216·(4, 0) = (2.448, 1.44), by hand.
+    expect(table.table.rows.at(-1)).toEqual(['3', 'P₃,₀', '2.4480', '1.4400']);
     const parts = tablesOf(lesson, cubic[0], 4);
     expect(parts.map((p) => [p.part, p.parts, p.table.rows.length])).toEqual([
       [0, 3, 4],

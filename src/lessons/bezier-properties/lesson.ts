@@ -8,6 +8,7 @@ import { normalize, schema } from './state';
 
 export default defineLesson({
   slug: 'bezier-properties',
+  letter: 't',
   schema,
   step: 'step',
   // Each scene walks its experiment's steps; the state's experiment says which scene it is in.

@@ -9,6 +9,7 @@ import { normalize, schema } from './state';
 
 export default defineLesson({
   slug: 'bezier-splines',
+  letter: 't',
   schema,
   step: 'step',
   // Each part is a scene with its own steps and figures: the state's part says which.

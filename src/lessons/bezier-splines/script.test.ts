@@ -175,7 +175,8 @@ describe('the scripts of the six parts', () => {
       'curvature',
       'comb',
     ]);
-    expect(steps[2].formula).toBe('\\text{joint 1: C^2},\\quad \\text{joint 2: G^1}');
+    // C^2 in maths, not in \text{} (where ^ is an error KaTeX draws in red).
+    expect(steps[2].formula).toBe('\\text{joint 1: }C^2,\\quad \\text{joint 2: }G^1');
     expect(steps[3]).toMatchObject({
       caption: 'At each joint, the two tangent vectors: their angle decides G¹, their lengths C¹',
       formula:

@@ -122,7 +122,7 @@ export const inspector = script<State, Model, InspectorReveal>(
     model.joints.length === 0
       ? null
       : model.joints
-          .map((r, i) => `\\text{joint ${i + 1}: ${r.continuity.replace(/(\d)/, '^$1')}}`)
+          .map((r, i) => `\\text{joint ${i + 1}: }${r.continuity.replace(/(\d)/, '^$1')}`)
           .join(',\\quad '),
   ),
   step(

@@ -23,6 +23,7 @@ const scene = (
 
 export default defineLesson({
   slug: 'blending',
+  letter: 'mu',
   schema,
   step: 'step',
   // Bernstein's steps (or the symmetry's); each Compare scene walks a script of its own.
@@ -34,7 +35,7 @@ export default defineLesson({
   layout: 'row',
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
   scenes: [
-    scene('cubic', 'Lecture cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
+    scene('cubic', 'A cubic, μ = 0.5', LECTURE_CUBIC, 0.5),
     scene(
       'linear',
       'N = 1: a straight line',

@@ -1,3 +1,5 @@
+import { parameterRow } from '../../kit/notes';
+import { setNotation } from '../../render/notation';
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { drawState } from '../../kit/scriptChecks';
@@ -148,10 +150,15 @@ describe('one letter for the parameter: μ, as the lecture notes write it (issue
     expect(filled(rowFormula(0.5, m.weights))).toMatch(/^\\text\{at \} \\mu = 0\.5:/);
   });
 
-  it('the key says how the slides (u) and the practical (t) write μ', () => {
-    expect(NOTES_KEY[0]).toEqual([
-      'μ',
-      'u in the lecture slides; t in the practical (TP2) and the continuation notes',
+  it('the key says how the slides (u) and the practical (t) write μ: the kit’s row, in the reader’s letter', () => {
+    // The lesson's own rows no longer name the parameter: the kit's row does, for every lesson.
+    expect(NOTES_KEY.some(([here]) => here === 'μ')).toBe(false);
+    setNotation('mu', 't');
+    expect(parameterRow()).toEqual([
+      't, the curve’s parameter',
+      'μ in the lecture notes, u in the slides, t in the practical and the continuation notes; the letter is chosen at the top of the page',
     ]);
+    setNotation(null, 't');
+    expect(parameterRow()).toBeNull();
   });
 });

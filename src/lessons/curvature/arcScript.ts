@@ -27,9 +27,9 @@ export const arcScript = script<CurvatureState, CurvatureModel, ArcReveal>(
   ),
   step(
     'arcLength',
-    'The arc length s(t) = ∫₀ᵗ |P′(u)| du against t',
+    'The arc length s(t) = ∫ |P′(ξ)| dξ from 0 to t, against t',
     ({ state, model }) =>
-      `s(${parameter(state.t)}) = \\int_0^{${parameter(state.t)}} |P'(u)|\\,du = ${value(model.arc!.sAtT)}`,
+      `s(${parameter(state.t)}) = \\int_0^{${parameter(state.t)}} |P'(\\xi)|\\,d\\xi = ${value(model.arc!.sAtT)}`,
   ),
   step(
     'table',

@@ -35,6 +35,7 @@ function normalize(state: CurvatureState): { state: CurvatureState; issues: stri
 
 export default defineLesson({
   slug: 'curvature',
+  letter: 't',
   schema,
   step: 'step',
   // The part (plane, space, arc length) says which steps a state walks.

@@ -34,7 +34,7 @@ const FORMULAS: Record<Part, string> = {
   space: `${CURVATURE_VECTOR},\\quad \\kappa = \\frac{|P' \\times P''|}{|P'|^3},\\quad \\tau = \\frac{(P' \\times P'') \\cdot P'''}{|P' \\times P''|^2},\\quad B = T \\times N`,
   joins:
     "G^2:\\ \\kappa(\\bar p^-) = \\kappa(\\bar p^+),\\qquad G^3:\\ G^2 \\text{ and } \\tfrac{d\\kappa}{ds}(\\bar p^-) = \\tfrac{d\\kappa}{ds}(\\bar p^+),\\qquad \\frac{d\\kappa}{ds} = \\frac{1}{|P'|}\\frac{d\\kappa}{dp}",
-  arc: "s(t) = \\int_0^t |P'(u)|\\,du,\\qquad t(s_i) = s^{-1}\\!\\left(\\tfrac{i}{n} L\\right)",
+  arc: "s(t) = \\int_0^t |P'(\\xi)|\\,d\\xi,\\qquad t(s_i) = s^{-1}\\!\\left(\\tfrac{i}{n} L\\right)",
 };
 
 /**

@@ -71,7 +71,9 @@ describe('the scripts of the curvature lesson', () => {
     expect(caption(scene('twisted'), 6)).toBe(
       'Where κ → 0 the frame flips: N and B swing round fast (at κ = 0 they would jump)',
     );
-    expect(caption(scene('arc'), 2)).toBe('The arc length s(t) = ∫₀ᵗ |P′(u)| du against t');
+    expect(caption(scene('arc'), 2)).toBe(
+      'The arc length s(t) = ∫ |P′(ξ)| dξ from 0 to t, against t',
+    );
     // Beyond the last step, the last caption.
     expect(caption(scene('arc'), 9)).toBe('Both sets of ticks: equal t against equal s');
   });

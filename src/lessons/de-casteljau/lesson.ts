@@ -10,6 +10,7 @@ import { SCRIPTS } from './walks';
 
 export default defineLesson({
   slug: 'de-casteljau',
+  letter: 't',
   schema,
   step: 'step',
   script: SCRIPTS.construction,
