@@ -138,8 +138,12 @@ describe('the derivation scene', () => {
     expect(formula(at(9))).toContain('2(24.3254) + (-0.6507) = 48.0000 = 3(16 - 0)');
     expect(formula(at(10))).toContain('D_{4} + 2D_{5} = 3(y_{5} - y_{4})');
     expect(formula(at(10))).toContain('1.5598 + 2(26.2201) = 54.0000 = 3(44 - 26)');
+    // The whole system in two lines: its end rows and inner right-hand sides, then the D's.
+    expect(formula(at(11))).toContain('2D_{0} + D_{1} = 48');
+    expect(formula(at(11))).toContain('D_{i-1} + 4D_{i} + D_{i+1} = 30,\\ 42,\\ 48,\\ 42');
+    expect(formula(at(11))).toContain('D_{4} + 2D_{5} = 54');
     expect(formula(at(11))).toContain(
-      '\\begin{bmatrix}48\\\\ 30\\\\ 42\\\\ 48\\\\ 42\\\\ 54\\end{bmatrix}',
+      '(D_{0}, \\dots, D_{5}) = (24.3254,\\ -0.6507,\\ 8.2775,\\ 9.5407,\\ 1.5598,\\ 26.2201)',
     );
     expect(formula(at(2))).toBe(
       'p = \\frac{\\bar p - \\bar p_{2}}{\\bar p_{3} - \\bar p_{2}} = \\frac{2.40 - 2}{3 - 2} = 0.40',

@@ -138,26 +138,18 @@ function substituted(c: CoordinateWork, v: string, j: number): FormulaParts {
   return tex`\begin{aligned}${symbols}\\ ${numbers}\\ ${both}\end{aligned}`;
 }
 
-/** A long system's matrix as the slides write it: the first three rows, ⋱, the last two. */
-const LONG_MATRIX = ['2&1', '1&4&1', '&1&4&1', '&&\\ddots&\\ddots&\\ddots', '&&&1&4&1', '&&&&1&2'];
-
-/** The whole system with its numbers: the matrix, the right-hand side, and the D's it gives. */
+/**
+ * The whole system with its numbers, in two lines so the map keeps its room
+ * on the projector: the end rows and the inner rows' right-hand sides, then
+ * the D's it gives.
+ */
 function systemFormula(c: CoordinateWork, m: number): FormulaParts {
-  const n = m + 1;
-  const full = n <= FULL_ROWS;
-  const rows = full ? Array.from({ length: n }, (_, i) => i) : [0, 1, 2, null, m - 1, m];
-  const entry = (i: number, j: number) =>
-    j === i ? (i === 0 || i === m ? '2' : '4') : Math.abs(j - i) === 1 ? '1' : '';
-  const matrix = full
-    ? Array.from({ length: n }, (_, i) =>
-        Array.from({ length: n }, (_, j) => entry(i, j)).join('&'),
-      ).join('\\\\ ')
-    : LONG_MATRIX.join('\\\\ ');
-  const column = (entry: (i: number) => FormulaParts) =>
-    joined(
-      rows.map((i) => (i === null ? tex`\vdots` : entry(i))),
-      '\\\\ ',
-    );
-  const unknowns = column((i) => tex`D_{${i}}`);
-  return tex`\begin{bmatrix}${matrix}\end{bmatrix}\begin{bmatrix}${unknowns}\end{bmatrix} = \begin{bmatrix}${column((i) => number(c.rhs[i]))}\end{bmatrix} \;\Rightarrow\; \begin{bmatrix}${unknowns}\end{bmatrix} = \begin{bmatrix}${column((i) => number(c.gradients[i]))}\end{bmatrix}`;
+  const rhs = (i: number) => number(c.rhs[i]);
+  const inner = Array.from({ length: m - 1 }, (_, k) => k + 1);
+  const innerRows =
+    inner.length === 0
+      ? tex``
+      : tex`,\quad D_{i-1} + 4D_{i} + D_{i+1} = ${listed(inner.map(rhs))}\ (i = 1, \dots, ${m - 1})`;
+  const solved = listed(c.gradients.map((d) => number(d)));
+  return tex`\begin{aligned}&2D_{0} + D_{1} = ${rhs(0)}${innerRows},\quad D_{${m - 1}} + 2D_{${m}} = ${rhs(m)}\\ &\Rightarrow\ (D_{0}, \dots, D_{${m}}) = (${solved})\end{aligned}`;
 }
