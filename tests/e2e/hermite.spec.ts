@@ -7,6 +7,7 @@ import {
   test,
   linkState,
   inLecturesLetter,
+  settled,
 } from './fixtures';
 
 // This lesson follows the lecture notes, and its tests read its text in their letter, μ.
@@ -273,4 +274,58 @@ test('the script builds the patch from its points, and every scene steps from no
     await snapshot(page, `hermite-projector-${id}-last`);
     await page.keyboard.press('PageDown');
   }
+});
+
+/** The pmatrix bodies of a TeX formula, each as rows of cells. */
+function pmatrices(tex: string): string[][][] {
+  return [...tex.matchAll(/\\begin\{pmatrix\}(.*?)\\end\{pmatrix\}/g)].map((m) =>
+    m[1].split('\\\\').map((row) => row.split('&').map((cell) => cell.trim())),
+  );
+}
+
+/** The numbers of a cell: "-4.500" → [−4.5], "(3,\ 4)" → [3, 4]. */
+const numbersOf = (cell: string) =>
+  [...cell.replace(/−/g, '-').matchAll(/-?\d+(?:\.\d+)?/g)].map((m) => Number(m[0]));
+
+test('the panel’s matrix and its inverse are the lecture’s, and the inverse times the data is the patch', async ({
+  page,
+}) => {
+  await page.goto('./#/hermite?scene=one&step=7');
+  await settled(page);
+  const texts = await page
+    .locator('aside .katex annotation')
+    .evaluateAll((all) => all.map((a) => a.textContent ?? ''));
+  // Equation 6 as a matrix (the lecture notes' rows), then equation 7 with the patch's numbers.
+  const conditions = texts.find((t) => t.includes('1 & 1 & 1 & 1'))!;
+  expect(pmatrices(conditions)[0].map((row) => row.map(Number))).toEqual([
+    [1, 0, 0, 0],
+    [0, 1, 0, 0],
+    [1, 1, 1, 1],
+    [0, 1, 2, 3],
+  ]);
+  const inverted = texts.find((t) => t.includes('-3 & -2 & 3 & -1'))!;
+  const [, inverse, data, coefficients] = pmatrices(inverted);
+  const M = inverse.map((row) => row.map(Number));
+  // The lecture notes' inverse, rows 1 0 0 0 / 0 1 0 0 / −3 −2 3 −1 / 2 1 −2 1.
+  expect(M).toEqual([
+    [1, 0, 0, 0],
+    [0, 1, 0, 0],
+    [-3, -2, 3, -1],
+    [2, 1, -2, 1],
+  ]);
+  // The data in the lecture's order: P0 = (0, 0), D0 = (3, 4.5), P1 = (4, 0), D1 = (3, −4.5).
+  const d = data.map((row) => row.flatMap(numbersOf));
+  expect(d).toEqual([
+    [0, 0],
+    [3, 4.5],
+    [4, 0],
+    [3, -4.5],
+  ]);
+  // The inverse times the data, here, is the page's a0 … a3 (computed by the maths module).
+  const a = coefficients.map((row) => row.flatMap(numbersOf));
+  for (let r = 0; r < 4; r++)
+    for (let c = 0; c < 2; c++) {
+      const product = M[r].reduce((sum, m, k) => sum + m * d[k][c], 0);
+      expect(a[r][c]).toBeCloseTo(product, 3);
+    }
 });

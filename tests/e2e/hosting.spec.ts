@@ -88,7 +88,8 @@ test('once loaded, the app works offline', async ({ page, context }) => {
   await expect(
     page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
   ).toBeVisible();
-  await expect(page.getByRole('row', { name: /^P3,0 / })).toContainText('1.5520');
+  // P(0.6) of the first scene (Figure 5's t), worked by hand: (2.448, 1.44).
+  await expect(page.getByRole('row', { name: /^P3,0 / })).toContainText('2.4480');
   await page.goto('./#/');
   await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
   await context.setOffline(false);

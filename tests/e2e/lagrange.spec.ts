@@ -28,7 +28,7 @@ test('the table shows L_k(t) of the product formula, and they add up to 1', asyn
   await expect(page.getByText(/The weights add up to 1 at every t/)).toBeVisible();
   // The continuation notes' slip, said beside the formula: Lₖ(tᵢ), not Lₖ(t).
   await expect(
-    page.getByRole('note').getByText(/continuation notes writes? “Lₖ\(t\) is 1 if k = i/),
+    page.getByRole('note').filter({ hasText: /continuation notes writes? “Lₖ\(t\) is 1 if k = i/ }),
   ).toContainText('Lₖ(tᵢ) = 1 if k = i');
   // Moving t with the slider moves the weights.
   await page.getByRole('slider', { name: 't' }).fill('0.9');

@@ -104,3 +104,44 @@ test('a lesson written in μ shows no μ in t, at any step of any scene', async 
   }
   expect(found).toEqual([]);
 });
+
+test('every lesson has its key to the notes’ symbols, and a lesson with a parameter leads it with the reader’s letter', async ({
+  page,
+}) => {
+  test.setTimeout(240_000);
+  await page.goto('./#/');
+  const slugs = await page
+    .locator('a[href^="#/"]')
+    .evaluateAll((links) =>
+      [...new Set(links.map((a) => a.getAttribute('href')!.slice(2)))].filter(
+        (s) => s && !s.includes('/') && !s.includes('?'),
+      ),
+    );
+  expect(slugs.length).toBe(12);
+  const missing: string[] = [];
+  for (const slug of slugs) {
+    await page.goto(`./#/${slug}`);
+    await settled(page);
+    const scenes = await page
+      .locator('button[data-scene]')
+      .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+    let found = (await page.locator('details.notes-key').count()) > 0;
+    for (const scene of scenes) {
+      if (found) break;
+      await page.locator(`button[data-scene="${scene}"]`).click();
+      await settled(page);
+      found = (await page.locator('details.notes-key').count()) > 0;
+    }
+    if (!found) missing.push(slug);
+  }
+  expect(missing).toEqual([]);
+  // Lagrange writes t; the reader's μ leads its key, with the notes' three letters.
+  await page.goto('./#/lagrange?par=mu');
+  await settled(page);
+  const key = page.locator('details.notes-key').first();
+  await key.locator('summary').click();
+  await expect(key.locator('dt').first()).toHaveText('μ, the curve’s parameter');
+  await expect(key.locator('dd').first()).toContainText(
+    'μ in the lecture notes, u in the slides, t in the practical',
+  );
+});

@@ -151,7 +151,7 @@ test.describe('a student with a phone in hand', () => {
   test('turning the phone keeps the reading position', async ({ page }) => {
     await page.goto('./#/road');
     await settled(page);
-    const heading = page.locator('aside.panel h2').nth(1);
+    const heading = page.locator('aside.panel h2:visible').nth(1);
     await heading.evaluate((el) => window.scrollTo(0, el.getBoundingClientRect().top + scrollY));
     // Let the page note what is at the top (it does so once per frame of scrolling).
     await page.evaluate(

@@ -85,7 +85,7 @@ test('the clicker builds the construction from the points up, then opens the nex
     'First idea: the parabola y(x)',
     'Instead, a parametric quadratic P(μ)',
     'Dots at equal steps of μ',
-    'One set of points, many curves',
+    'One set of points, four curves',
     'Choosing μ₁ from the points',
   ];
   for (const [k, caption] of captions.entries()) {

@@ -1,3 +1,4 @@
+import { notesKey } from '../../kit/notes';
 import { h } from '../../app/dom';
 import type { LessonPanel } from '../../app/lesson';
 import { affinePanel } from './affine/details';
@@ -59,6 +60,17 @@ export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, Pro
       { class: 'note' },
       `Each preset sets up one experiment. To move a control point, ${gestures().move}; t moves the point P(t) and, in subdivision, where the curve is split.`,
     ),
+    notesKey([
+      [
+        'P₀, P₁, …, the control points',
+        'P₀ … P₃ in the lecture notes; x₀ … xₙ in the continuation notes; p₀ … pₙ in the “Splines” slides',
+      ],
+      [
+        'W(N, i, t)',
+        'the blending functions of the lecture notes, Bᵢ(t) (Bernstein polynomials) in the continuation notes',
+      ],
+      ['P′(t)', 'P′(μ) in the lecture notes, ẋ in the practical (TP2)'],
+    ]),
   );
 
   return {

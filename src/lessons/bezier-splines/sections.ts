@@ -20,6 +20,11 @@ export function introductions(): Record<Part, HTMLElement> {
         link('#/bezier-properties', 'Bézier properties'),
         '). Low-degree pieces joined end to end fix both: each piece stays simple, and a point mainly moves the pieces near it. The question becomes how smoothly the pieces join.',
       ),
+      notesSlip(
+        'spline slides',
+        'that “the curve fragments are always smoothly joined”',
+        'Pieces that share an end point only meet (C⁰); they join smoothly only when the control points either side of the joint are chosen so (on one line through it for G¹, at equal distances for C¹), as the next scenes do. The continuity inspector shows a sharp corner between two Bézier pieces.',
+      ),
     ),
     quadratic: h(
       'div',

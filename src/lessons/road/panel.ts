@@ -1,3 +1,4 @@
+import { notesKey } from '../../kit/notes';
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { checkbox } from '../../app/panelControls';
@@ -75,6 +76,21 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       sliderValue,
     ),
     segment.element,
+    notesKey([
+      [
+        'P₀ … Pₘ, the villages',
+        'the same in the lecture slides; x₀ … xₙ, the control points, in the continuation notes’ natural cubic splines',
+      ],
+      [
+        'p̄, p',
+        'p̄ and p in the lecture slides (the global and the local parameter); t in the continuation notes',
+      ],
+      ['Dᵢ', 'Dᵢ, the gradient at Pᵢ, in the lecture slides; x′ᵢ in the continuation notes'],
+      [
+        'a, b, c, d',
+        'y = a + bp + cp² + dp³ in the lecture slides; the continuation notes use Bézier control points instead',
+      ],
+    ]),
   );
 
   return {
