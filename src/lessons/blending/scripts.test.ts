@@ -147,6 +147,16 @@ describe('one letter for the parameter: μ, as the lecture notes write it (issue
       /\\begin\{pmatrix\}1 & \\mu & \\mu\^\{2\} & \\mu\^\{3\}\\end\{pmatrix\}/,
     );
     expect(matrix).not.toMatch(/\bu\b|x_\{/);
+    // Past degree 6, M by its rule: M(j, i) = (−1)^(j−i) C(n, j) C(j, i), checked on the maths' matrix.
+    const eight = derive({ ...cubic, p: Array.from({ length: 9 }, (_, i) => [i, (i * i) % 5]) });
+    expect(matrixFormTex(eight.matrix)).toContain('M_{ji} &= (-1)^{j-i}\\binom{8}{j}\\binom{j}{i}');
+    const choose = (n: number, k: number): number =>
+      k === 0 || k === n ? 1 : choose(n - 1, k - 1) + choose(n - 1, k);
+    eight.matrix.forEach((row, j) =>
+      row.forEach((entry, i) =>
+        expect(entry).toBe(j >= i ? (-1) ** (j - i) * choose(8, j) * choose(j, i) : 0),
+      ),
+    );
     expect(filled(rowFormula(0.5, m.weights))).toMatch(/^\\text\{at \} \\mu = 0\.5:/);
   });
 

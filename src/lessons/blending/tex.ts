@@ -62,8 +62,13 @@ export function matrixFormTex(matrix: readonly (readonly number[])[]): string {
     power === 0 ? '1' : power === 1 ? '\\mu' : `\\mu^{${power}}`,
   );
   const names = Array.from({ length: n + 1 }, (_, i) => `P_{${i}}`);
+  const head = `\\begin{aligned}P(\\mu) &= U\\,M\\,\\mathbf{P},\\qquad U = \\begin{pmatrix}${powers.join(' & ')}\\end{pmatrix},\\\\ \\mathbf{P} &= \\begin{pmatrix}${names.join(' & ')}\\end{pmatrix}^{T},\\\\ `;
+  // Past degree 6 the numbers of M are unreadable (and a 13 × 13 matrix takes a
+  // whole frame to typeset): its entries are given by their rule instead.
+  if (n > SPELL_OUT_UP_TO)
+    return `${head}M_{ji} &= (-1)^{j-i}\\binom{${n}}{j}\\binom{j}{i}\\ (j \\ge i),\\quad M_{ji} = 0\\ (j < i)\\end{aligned}`;
   const rows = matrix.map((row) => row.join(' & ')).join('\\\\');
-  return `\\begin{aligned}P(\\mu) &= U\\,M\\,\\mathbf{P},\\qquad U = \\begin{pmatrix}${powers.join(' & ')}\\end{pmatrix},\\\\ \\mathbf{P} &= \\begin{pmatrix}${names.join(' & ')}\\end{pmatrix}^{T},\\\\ M &= \\begin{pmatrix}${rows}\\end{pmatrix}\\end{aligned}`;
+  return `${head}M &= \\begin{pmatrix}${rows}\\end{pmatrix}\\end{aligned}`;
 }
 
 /** U·M at μ: the weights again, as a row. */
