@@ -67,14 +67,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
       }
       if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO && !crowded(painter, placed, control)) {
         placed.push(control);
-        painter.label(weights[i].toFixed(3), control, {
-          dy: theme.sizes.handle + theme.sizes.small * 1.1,
-          align: 'center',
-          color,
-          halo: true,
-          bold: true,
-          size: theme.sizes.small,
-        });
+        underPoint(painter, weights[i].toFixed(3), control, color);
       }
     });
     // The weights are written under the points: P(μ), its label and the
@@ -187,16 +180,7 @@ function drawPasses(
     });
   if (!labels) return;
   const [near, color] = bezier ? [passes.bezier, theme.curve] : [passes.lagrange, theme.muted];
-  p.forEach((control, i) =>
-    painter.label(`d = ${words(near[i].distance)}`, control, {
-      dy: theme.sizes.handle + theme.sizes.small * 1.1,
-      align: 'center',
-      color,
-      halo: true,
-      bold: true,
-      size: theme.sizes.small,
-    }),
-  );
+  p.forEach((control, i) => underPoint(painter, `d = ${words(near[i].distance)}`, control, color));
 }
 
 /** Would a weight written under `p` run into one written under an earlier point? */
@@ -206,5 +190,18 @@ function crowded(painter: Painter, placed: readonly Point[], p: Point): boolean 
   return placed.some((q) => {
     const [qx, qy] = painter.view.toScreen(q);
     return Math.abs(qx - x) < size * 3.6 && Math.abs(qy - y) < size * 1.6;
+  });
+}
+
+/** A small value written under a control point, in the point's colour: its weight, or its distance to a curve. */
+function underPoint(painter: Painter, text: string, at: Point, color: string): void {
+  const sizes = painter.theme.sizes;
+  painter.label(text, at, {
+    dy: sizes.handle + sizes.small * 1.1,
+    align: 'center',
+    color,
+    halo: true,
+    bold: true,
+    size: sizes.small,
   });
 }
