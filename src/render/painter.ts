@@ -143,6 +143,22 @@ export class Painter {
     this.strokeScreen(this.project(path), style);
   }
 
+  /**
+   * Separate straight segments in one style, stroked as one path: a sampled
+   * surface's hundreds of depth-sorted pieces cost one stroke, not hundreds.
+   */
+  segments(pairs: readonly (readonly [P, P])[], style: StrokeStyle = {}): void {
+    if (!pairs.length || this.hidden(style)) return;
+    const c = this.ctx;
+    c.save();
+    this.applyStroke(style, this.sizes.curve, this.theme.curve);
+    c.beginPath();
+    let drawn = 0;
+    for (const [a, b] of pairs) drawn += clipPolyline(this.project([a, b]), this.clip, c);
+    if (drawn > 0) c.stroke();
+    c.restore();
+  }
+
   /** The presenter hid what this style draws. */
   hidden(style: StrokeStyle): boolean {
     return style.role === 'curve' && !this.show.curve;
@@ -249,6 +265,33 @@ export class Painter {
       c.restore();
     }
     if (outline) this.polyline(points, outline, true);
+  }
+
+  /**
+   * Flat facets (a shaded surface's quads, far to near), each its own fill and
+   * opacity, in one save and restore; a facet wholly on the canvas skips the
+   * clipper.
+   */
+  facets(facets: readonly { points: readonly P[]; fill: string; alpha: number }[]): void {
+    const c = this.ctx;
+    const r = this.clip;
+    c.save();
+    for (const { points, fill, alpha } of facets) {
+      if (points.length < 3) continue;
+      let screen: number[][] = points.map((p) => this.view.toScreen(p));
+      const inside = screen.every(
+        ([x, y]) => x >= r.minX && x <= r.maxX && y >= r.minY && y <= r.maxY,
+      );
+      if (!inside) screen = clipPolygon(screen, r);
+      if (screen.length < 3) continue;
+      c.globalAlpha = alpha;
+      c.fillStyle = fill;
+      c.beginPath();
+      screen.forEach(([x, y], i) => (i === 0 ? c.moveTo(x, y) : c.lineTo(x, y)));
+      c.closePath();
+      c.fill();
+    }
+    c.restore();
   }
 
   /** An arrow from a to b (world), head sized for the theme. */

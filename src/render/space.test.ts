@@ -62,6 +62,33 @@ describe('SpaceScene: drawing in space far to near', () => {
   });
 });
 
+describe('SpaceScene: one stroke per run of lines in one style', () => {
+  const strokes = (svg: SvgContext) => svg.elements.filter((e) => e.includes('stroke="'));
+
+  it('strokes a sampled curve, cut into depth-sorted pieces, as one path', () => {
+    const { space, svg } = scene(-30, 40);
+    const style = { color: '#333333', width: 2 };
+    const arc = Array.from({ length: 33 }, (_, i) => [Math.cos(i / 10), Math.sin(i / 10), 0]);
+    space.polyline(arc, style);
+    space.flush();
+    expect(strokes(svg)).toHaveLength(1);
+  });
+
+  it('keeps a line behind a square drawn before it and one in front after it', () => {
+    const { space, svg } = scene(-30, 60);
+    const style = { color: '#00aa00', width: 2 };
+    // Looking down, z = −1 is behind the square at z = 0 and z = 1 in front of it.
+    space.line([-1, 0, 1], [1, 0, 1], style);
+    space.quad(square(0), '#808080');
+    space.line([-1, 0, -1], [1, 0, -1], style);
+    space.flush();
+    const order = svg.elements
+      .filter((e) => e.includes('#00aa00') || /fill="#[0-7][0-9a-f]/i.test(e))
+      .map((e) => (e.includes('#00aa00') ? 'line' : 'quad'));
+    expect(order).toEqual(['line', 'quad', 'line']);
+  });
+});
+
 describe('OrbitCamera: angles alone in the link (turned, then fitted)', () => {
   const start = { yaw: -60, pitch: 25, perspective: false };
 

@@ -109,15 +109,35 @@ export class SpaceScene {
   /** Draws everything collected, far to near, and forgets it. */
   flush(): void {
     const painter = this.painter;
-    this.items.sort((a, b) => b.depth - a.depth);
-    for (const item of this.items) {
+    const items = this.items;
+    items.sort((a, b) => b.depth - a.depth);
+    for (let i = 0; i < items.length; i++) {
+      const item = items[i];
       switch (item.kind) {
-        case 'line':
-          painter.polyline([item.a, item.b], item.style);
+        case 'line': {
+          // A run of lines in one style (neighbours in depth) is one stroke.
+          const run: [P, P][] = [[item.a, item.b]];
+          for (let next = items[i + 1]; next?.kind === 'line' && next.style === item.style;) {
+            run.push([next.a, next.b]);
+            next = items[++i + 1];
+          }
+          painter.segments(run, item.style);
           break;
-        case 'quad':
-          painter.polygon(item.points, item.fill, item.alpha, item.edge);
+        }
+        case 'quad': {
+          if (item.edge) {
+            painter.polygon(item.points, item.fill, item.alpha, item.edge);
+            break;
+          }
+          // A run of unoutlined quads is filled in one go.
+          const run = [item];
+          for (let next = items[i + 1]; next?.kind === 'quad' && !next.edge;) {
+            run.push(next);
+            next = items[++i + 1];
+          }
+          painter.facets(run);
           break;
+        }
         case 'dot':
           painter.dot(item.p, item.color, item.radius);
           break;

@@ -111,6 +111,7 @@ function drawPatch(
   strength: 'faint' | 'full',
   color: string,
   up: (p: readonly number[]) => Point,
+  edges: boolean,
 ): void {
   const theme = painter.theme;
   const faint = strength === 'faint';
@@ -132,7 +133,10 @@ function drawPatch(
     role: 'curve',
   };
   if (lines || !faint) {
-    for (const line of [...samples.uLines, ...samples.vLines]) scene.polyline(line.map(up), style);
+    const isoLines = lines
+      ? [...samples.uLines, ...samples.vLines]
+      : [...samples.facetLines, ...(edges ? [] : samples.facetEdges)];
+    for (const line of isoLines) scene.polyline(line.map(up), style);
   }
 }
 
@@ -163,8 +167,10 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
 
     drawAxes(scene, painter, m, info);
     if (shown.patch !== 'none') {
-      drawPatch(scene, painter, m.patch, state, shown.patch, patchColor, up);
-      if (m.second) drawPatch(scene, painter, m.second, state, shown.patch, painter.color(4), up);
+      const edges = shown.edges && state.mode !== 'join';
+      drawPatch(scene, painter, m.patch, state, shown.patch, patchColor, up, edges);
+      if (m.second)
+        drawPatch(scene, painter, m.second, state, shown.patch, painter.color(4), up, edges);
     }
     if (shown.net) {
       drawNet(scene, state.net, netStyle);

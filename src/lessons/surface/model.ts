@@ -37,6 +37,14 @@ export interface PatchSamples {
   uLines: Point[][];
   /** Iso-curves v = j/ISO_LINES, each a polyline in u. */
   vLines: Point[][];
+  /**
+   * The same iso-curves along the facets' edges (every other grid line): on a
+   * shaded patch they lie on its flat facets instead of cutting through them,
+   * and half as many depth-sorted pieces keep a frame within budget.
+   */
+  facetLines: Point[][];
+  /** The four boundary curves along the facets' edges (drawn when the edges are not drawn over them). */
+  facetEdges: Point[][];
 }
 
 /** The matrix form x(u, v) = U·M·B·Mᵀ·Vᵀ of one coordinate, with its numbers. */
@@ -206,7 +214,14 @@ function samplePatch(net: readonly (readonly Point[])[]): PatchSamples {
     uLines.push(curve(surfaceColumnPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
     vLines.push(curve(surfaceRowPoints(net, i / ISO_LINES), CURVE_SEGMENTS));
   }
-  return { grid, uLines, vLines };
+  const step = FACETS / ISO_LINES;
+  const facetLines: Point[][] = [];
+  for (let i = step; i < FACETS; i += step) {
+    facetLines.push(grid[i]);
+    facetLines.push(grid.map((row) => row[i]));
+  }
+  const facetEdges = [0, FACETS].flatMap((i) => [grid[i], grid.map((row) => row[i])]);
+  return { grid, uLines, vLines, facetLines, facetEdges };
 }
 
 /** A cubic curve in 3D sampled at 33 points (drawn as a polyline in space). */
