@@ -187,8 +187,8 @@ export function drawOverConstruction(painter: Painter, m: SurfaceModel, info: Dr
       painter.arrow(p, end, { color, width: theme.sizes.line * 1.3 });
       label(text, end, color);
     };
-    if (shown.has('uTangent')) arrow(scaled(m.du, 1 / 3), '∂x/∂u', painter.color(0));
-    if (shown.has('vTangent')) arrow(scaled(m.dv, 1 / 3), '∂x/∂v', painter.color(1));
+    if (shown.has('uTangent')) arrow(scaled(m.du, 1 / 3), '∂P/∂u', painter.color(0));
+    if (shown.has('vTangent')) arrow(scaled(m.dv, 1 / 3), '∂P/∂v', painter.color(1));
     if (shown.has('normal') && m.normal) {
       const b = m.bounds;
       const size = Math.max(b.maxX - b.minX, b.maxY - b.minY) * 0.3;

@@ -3,18 +3,18 @@ import type { SurfaceModel } from './model';
 import { DOUBLE_SUM, num, point, pointAt } from './notation';
 import type { SurfaceState } from './state';
 
-// The patch built up from its net, then its point x(u, v) built two ways:
+// The patch built up from its net, then its point P(u, v) built two ways:
 // from the row curves, and by de Casteljau in either order.
 
 export type PatchReveal = 'points' | 'net' | 'corners' | 'edges' | 'isoCurves' | 'patch';
 
-const doubleSum = () => `\\mathbf{x}(u,v)=${DOUBLE_SUM}`;
+const doubleSum = () => `\\mathbf{P}(u,v)=${DOUBLE_SUM}`;
 
 /** The patch from its 16 control points: the net, its corners and edges, the patch. */
 export const patchScript = script<SurfaceState, SurfaceModel, PatchReveal>(
   step(
     'points',
-    'The 16 control points xₘ,ₙ of a bicubic patch: m runs along u, n along v',
+    'The 16 control points Pₘ,ₙ of a bicubic patch: m runs along u, n along v',
     doubleSum,
   ),
   step(
@@ -24,14 +24,14 @@ export const patchScript = script<SurfaceState, SurfaceModel, PatchReveal>(
   ),
   step(
     'corners',
-    'The four corners of the net lie on the patch: x(0,0) = x₀,₀ and so on',
+    'The four corners of the net lie on the patch: P(0,0) = P₀,₀ and so on',
     ({ state: { net } }) =>
-      `\\begin{aligned}\\mathbf{x}(0,0)&=\\mathbf{x}_{0,0}=${point(net[0][0])}, & \\mathbf{x}(1,0)&=\\mathbf{x}_{3,0}=${point(net[3][0])},\\\\ \\mathbf{x}(0,1)&=\\mathbf{x}_{0,3}=${point(net[0][3])}, & \\mathbf{x}(1,1)&=\\mathbf{x}_{3,3}=${point(net[3][3])}\\end{aligned}`,
+      `\\begin{aligned}\\mathbf{P}(0,0)&=\\mathbf{P}_{0,0}=${point(net[0][0])}, & \\mathbf{P}(1,0)&=\\mathbf{P}_{3,0}=${point(net[3][0])},\\\\ \\mathbf{P}(0,1)&=\\mathbf{P}_{0,3}=${point(net[0][3])}, & \\mathbf{P}(1,1)&=\\mathbf{P}_{3,3}=${point(net[3][3])}\\end{aligned}`,
   ),
   step(
     'edges',
     'Each edge of the patch is the Bézier curve of the edge row or column of the net',
-    () => '\\mathbf{x}(u,0)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{x}_{m,0}',
+    () => '\\mathbf{P}(u,0)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{P}_{m,0}',
   ),
   step(
     'isoCurves',
@@ -40,7 +40,7 @@ export const patchScript = script<SurfaceState, SurfaceModel, PatchReveal>(
   ),
   step(
     'patch',
-    ({ state }) => `The patch, and the point x(${num(state.u)}, ${num(state.v)}) on it`,
+    ({ state }) => `The patch, and the point P(${num(state.u)}, ${num(state.v)}) on it`,
     ({ state, model }) => `${pointAt(state)} = ${point(model.point)}`,
   ),
 );
@@ -56,7 +56,7 @@ export const rowsScript = script<SurfaceState, SurfaceModel, RowsReveal>(
   step(
     'rowCurves',
     'Each row m of the net is the control polygon of a curve in v',
-    () => '\\mathbf{r}_m(v)=\\sum_{n=0}^{3} f_n(v)\\,\\mathbf{x}_{m,n}',
+    () => '\\mathbf{r}_m(v)=\\sum_{n=0}^{3} f_n(v)\\,\\mathbf{P}_{m,n}',
   ),
   step(
     'rowPoints',
@@ -67,12 +67,12 @@ export const rowsScript = script<SurfaceState, SurfaceModel, RowsReveal>(
     'isoV',
     ({ state }) =>
       `r₀ … r₃ are the control points of a curve in u, 0 ≤ u ≤ 1: the iso-curve v = ${num(state.v)}`,
-    () => '\\mathbf{x}(u,v)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{r}_m(v)',
+    () => '\\mathbf{P}(u,v)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{r}_m(v)',
   ),
   step(
     'point',
     ({ state }) =>
-      `Choose u = ${num(state.u)}: the point x(u, v) on that curve is the point on the surface`,
+      `Choose u = ${num(state.u)}: the point P(u, v) on that curve is the point on the surface`,
     onRowCurve,
   ),
   step(
@@ -101,7 +101,7 @@ export const casteljauScript = script<SurfaceState, SurfaceModel, CasteljauRevea
   ),
   step(
     'uThenV',
-    ({ state }) => `de Casteljau at v = ${num(state.v)} on c₀ … c₃ gives x(u, v)`,
+    ({ state }) => `de Casteljau at v = ${num(state.v)} on c₀ … c₃ gives P(u, v)`,
     ({ state, model }) => `\\text{u, then v: } ${pointAt(state)} = ${point(model.uThenV.point)}`,
   ),
   step(

@@ -31,8 +31,8 @@ describe('Where is a point of the patch? (seed 1)', () => {
   const posed = byId('patch-point').pose(1, defaults);
   const task = taskOf(posed, 'point');
 
-  it('x(0.75, 0.5) of a flat net: the rows at v = ½, then their curve at u = ¾', () => {
-    expect(posed.prompt).toContain('x(0.75, 0.5)');
+  it('P(0.75, 0.5) of a flat net: the rows at v = ½, then their curve at u = ¾', () => {
+    expect(posed.prompt).toContain('P(0.75, 0.5)');
     expect(posed.state.net.map((row) => row.map(([x, y, z]) => [x, y, z]))).toEqual([
       [
         [0, -1, 0],
@@ -89,7 +89,7 @@ describe('Compute a height z(u, v) (seed 1)', () => {
   const task = taskOf(posed, 'number');
 
   it('z(0.75, 0.4) of the inner heights 2, 1, 2, 3 is 0.891', () => {
-    expect(posed.prompt).toContain('x₁,₁ at z = 2, x₁,₂ at z = 1, x₂,₁ at z = 2, x₂,₂ at z = 3');
+    expect(posed.prompt).toContain('P₁,₁ at z = 2, P₁,₂ at z = 1, P₂,₁ at z = 2, P₂,₂ at z = 3');
     expect(posed.prompt).toContain('z(0.75, 0.4)');
     // f₁(¾) = 9/64, f₂(¾) = 27/64; f₁(0.4) = 3·0.4·0.6² = 0.432, f₂(0.4) = 3·0.4²·0.6 = 0.288.
     // z = 9/64·(2·0.432 + 1·0.288) + 27/64·(2·0.432 + 3·0.288) = 0.162 + 0.729 = 0.891.
@@ -122,7 +122,7 @@ describe('Join two patches C¹ (seed 1)', () => {
   const posed = byId('smooth-join').pose(1, defaults);
   const task = taskOf(posed, 'construct');
 
-  it('has y₁,₃ half a unit off (4, 2.5, 0) where C¹ needs 2x₃,₃ − x₂,₃ = (4, 3, 0)', () => {
+  it('has Q₁,₃ half a unit off (4, 2.5, 0) where C¹ needs 2P₃,₃ − P₂,₃ = (4, 3, 0)', () => {
     expect(posed.state.secondNet[1][3]).toEqual([4, 2.5, 0]);
     expect(posed.state.net[2][3]).toEqual([2, 3, 0]);
     expect(posed.state.net[3][3]).toEqual([3, 3, 0]);
@@ -131,6 +131,7 @@ describe('Join two patches C¹ (seed 1)', () => {
     expect(verdict.message).toContain('one column is off');
     expect(verdict.message).toContain('At n = 3');
     expect(verdict.message).toContain('by 0.5');
+    expect(verdict.message).toContain('Q₁,₃ belongs at 2P₃,₃ − P₂,₃');
   });
 
   it('is solved by moving that one point in x and y, its height kept', () => {
@@ -141,13 +142,14 @@ describe('Join two patches C¹ (seed 1)', () => {
     expect(task.check(secondNetPoints.move(posed.state, 3, [4, 3.2, 0])).correct).toBe(false);
   });
 
-  it('a torn edge is not a join: x₃,₁ lifted off y₀,₁', () => {
+  it('a torn edge is not a join: P₃,₁ lifted off Q₀,₁', () => {
     const net = posed.state.net.map((row, m) =>
       row.map((p, n) => (m === 3 && n === 1 ? [p[0], p[1], p[2] + 1] : p)),
     );
     const verdict = task.check({ ...task.solution, net });
     expect(verdict.correct).toBe(false);
     expect(verdict.message).toContain('torn at column n = 1');
+    expect(verdict.message).toContain('where P₃,₁ and Q₀,₁ are');
   });
 });
 
@@ -212,7 +214,7 @@ describe('every seed', () => {
     );
   });
 
-  it('smooth join: only y’s row 1 moves, in x and y', () => {
+  it('smooth join: only Q’s row 1 moves, in x and y', () => {
     fc.assert(
       fc.property(seeds, (seed) => {
         const posed = pose('smooth-join', seed);

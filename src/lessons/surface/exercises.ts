@@ -19,7 +19,7 @@ const pair = (u: number, v: number) => `(${words(u)}, ${words(v)})`;
 const column = (net: readonly (readonly Point[])[], n: number) => net.map((row) => row[n]);
 
 /**
- * Where is x(u, v) on a net that lies flat in the plane z = 0? A grid 3
+ * Where is P(u, v) on a net that lies flat in the plane z = 0? A grid 3
  * apart with every point moved by −1, 0 or 1 in x and y (rows and columns
  * stay in order), so the answer is not the even grid's (9u, 9v).
  */
@@ -39,9 +39,9 @@ const patchPoint: ExerciseSpec<SurfaceState> = {
     const tolerance = 0.3;
     const base: SurfaceState = { ...defaults, net, u, v, step: 0, mode: 'rows' };
     return {
-      // The 16 points alone, the panel's point at the corner (0, 0): x(u, v) not yet drawn.
+      // The 16 points alone, the panel's point at the corner (0, 0): P(u, v) not yet drawn.
       state: { ...base, mode: 'patch', u: 0, v: 0 },
-      prompt: `This net lies flat in the plane z = 0. Where is the point x${pair(u, v)} of its patch (its x and y, within ${tolerance})?`,
+      prompt: `This net lies flat in the plane z = 0. Where is the point P${pair(u, v)} of its patch (its x and y, within ${tolerance})?`,
       task: {
         kind: 'point',
         figure: 'patch',
@@ -52,7 +52,7 @@ const patchPoint: ExerciseSpec<SurfaceState> = {
             guess,
             answer,
             tolerance,
-            `Choose v, then u: at v = ${words(v)} each row m gives a point rₘ = Σₙ fₙ(${words(v)}) xₘ,ₙ, and x${pair(u, v)} is the point at u = ${words(u)} of the curve with control points r₀ … r₃.`,
+            `Choose v, then u: at v = ${words(v)} each row m gives a point rₘ = Σₙ fₙ(${words(v)}) Pₘ,ₙ, and P${pair(u, v)} is the point at u = ${words(u)} of the curve with control points r₀ … r₃.`,
           ),
       },
       working: base,
@@ -88,7 +88,7 @@ const patchHeight: ExerciseSpec<SurfaceState> = {
     const answer = at(u, v);
     const tolerance = 0.001;
     const raised = [1, 2]
-      .flatMap((m) => [1, 2].map((n) => `x${cell(m, n)} at z = ${z[m][n]}`))
+      .flatMap((m) => [1, 2].map((n) => `P${cell(m, n)} at z = ${z[m][n]}`))
       .join(', ');
     const base: SurfaceState = { ...defaults, net, u, v, step: 0, mode: 'matrix', coordinate: 'z' };
     const slips = [
@@ -135,7 +135,7 @@ function joinGaps(state: SurfaceState): { n: number; edge: number; leg: number }
     return {
       n,
       edge: distance(bezierPoint(left, 1), bezierPoint(right, 0)),
-      // A cubic's P′ at an end is 3 times its leg: y₁ − y₀ against x₃ − x₂.
+      // A cubic's P′ at an end is 3 times its leg: Q₁ − Q₀ against P₃ − P₂.
       leg: distance(bezierTangent(left, 1), bezierTangent(right, 0)) / 3,
     };
   });
@@ -147,37 +147,37 @@ function joinVerdict(state: SurfaceState, tolerance: number): Verdict {
   if (torn)
     return {
       correct: false,
-      message: `Not yet: the edge is torn at column n = ${torn.n}, where x${cell(3, torn.n)} and y${cell(0, torn.n)} are ${words(torn.edge)} apart. Put x${cell(3, torn.n)} back on the shared edge.`,
+      message: `Not yet: the edge is torn at column n = ${torn.n}, where P${cell(3, torn.n)} and Q${cell(0, torn.n)} are ${words(torn.edge)} apart. Put P${cell(3, torn.n)} back on the shared edge.`,
     };
   const off = gaps.filter((g) => g.leg > tolerance);
   if (off.length === 0)
     return {
       correct: true,
-      message: `Correct: every leg y₁,ₙ − y₀,ₙ equals x₃,ₙ − x₂,ₙ (within ${words(Math.max(...gaps.map((g) => g.leg)))}): the patches join C¹.`,
+      message: `Correct: every leg Q₁,ₙ − Q₀,ₙ equals P₃,ₙ − P₂,ₙ (within ${words(Math.max(...gaps.map((g) => g.leg)))}): the patches join C¹.`,
     };
   const worst = off.reduce((a, b) => (b.leg > a.leg ? b : a));
   return {
     correct: false,
-    message: `Not yet: ${off.length === 1 ? 'one column is' : `${off.length} columns are`} off. At n = ${worst.n} the leg y${cell(1, worst.n)} − y${cell(0, worst.n)} differs from x${cell(3, worst.n)} − x${cell(2, worst.n)} by ${words(worst.leg)}: y${cell(1, worst.n)} belongs at 2x${cell(3, worst.n)} − x${cell(2, worst.n)}.`,
+    message: `Not yet: ${off.length === 1 ? 'one column is' : `${off.length} columns are`} off. At n = ${worst.n} the leg Q${cell(1, worst.n)} − Q${cell(0, worst.n)} differs from P${cell(3, worst.n)} − P${cell(2, worst.n)} by ${words(worst.leg)}: Q${cell(1, worst.n)} belongs at 2P${cell(3, worst.n)} − P${cell(2, worst.n)}.`,
   };
 }
 
 /** A height for the nets: 0 … 2 in halves. */
 const height = (r: Random) => r.pick([0, 0.5, 1, 1.5, 2]);
 
-/** Two patches that share an edge: move y's row 1 until they join C¹. */
+/** Two patches that share an edge: move Q's row 1 until they join C¹. */
 const smoothJoin: ExerciseSpec<SurfaceState> = {
   id: 'smooth-join',
   title: 'Join two patches C¹',
   kind: 'construct',
   pose(seed, defaults) {
     const r = random(seed);
-    // x over [0, 3]²: flat along its sides n = 0, 3 and its first row, random heights inside.
+    // P over [0, 3]²: flat along its sides n = 0, 3 and its first row, random heights inside.
     const z = [0, 1, 2, 3].map((m) =>
       [0, 1, 2, 3].map((n) => (m === 0 || n % 3 === 0 ? 0 : height(r))),
     );
     const net = heights(z);
-    // y over [3, 6] × [0, 3]: row 0 is x's row 3, row 1 its C¹ continuation 2x₃,ₙ − x₂,ₙ.
+    // Q over [3, 6] × [0, 3]: row 0 is P's row 3, row 1 its C¹ continuation 2P₃,ₙ − P₂,ₙ.
     const smooth: Point[][] = [
       net[3].map((p) => [...p]),
       net[3].map((p, n) => p.map((value, d) => 2 * value - net[2][n][d])),
@@ -200,7 +200,7 @@ const smoothJoin: ExerciseSpec<SurfaceState> = {
     return {
       // Both patches and the verdict on their legs: the crease shows.
       state: { ...base, step: SCRIPTS.join.lastStep(base) },
-      prompt: `Across the shared edge, each leg x₂,ₙ → x₃,ₙ = y₀,ₙ → y₁,ₙ must go on straight with equal length for a C¹ join. Move points of y's row 1 (y₁,₀ … y₁,₃) until the patches join C¹ (each within ${tolerance}).`,
+      prompt: `Across the shared edge, each leg P₂,ₙ → P₃,ₙ = Q₀,ₙ → Q₁,ₙ must go on straight with equal length for a C¹ join. Move points of Q's row 1 (Q₁,₀ … Q₁,₃) until the patches join C¹ (each within ${tolerance}).`,
       task: { kind: 'construct', check: (state) => joinVerdict(state, tolerance), solution },
       working: solution,
     };

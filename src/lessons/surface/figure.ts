@@ -20,7 +20,7 @@ export interface PatchShown {
   patch: 'none' | 'faint' | 'full';
   /** The iso-curves u, v = 0, ⅛, …, 1 alone, before the patch is shaded. */
   isoCurves: boolean;
-  /** The point x(u, v). */
+  /** The point P(u, v). */
   point: boolean;
 }
 
@@ -208,7 +208,7 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
     if (shown.point) {
       painter.dot(up(m.point), theme.accent, theme.sizes.point * 1.6);
       if (!info.thumbnail)
-        painter.label('x(u,v)', m.point, {
+        painter.label('P(u,v)', m.point, {
           dx: 12,
           dy: 18,
           color: theme.ink,

@@ -70,7 +70,7 @@ describe('the surface model, against values by hand', () => {
 });
 
 describe('the sampled patch', () => {
-  it('lies on x(u, v) at every facet corner and iso-line point, sampled once per net', () => {
+  it('lies on P(u, v) at every facet corner and iso-line point, sampled once per net', () => {
     const m = at(SADDLE_NET, 0.3, 0.6);
     // The saddle is (3u, 3v, 9(u − ½)(v − ½)/2).
     const saddle = (u: number, v: number) => [3 * u, 3 * v, (9 * (u - 0.5) * (v - 0.5)) / 2];

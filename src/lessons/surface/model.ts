@@ -31,7 +31,7 @@ const CURVE_SEGMENTS = 32;
 
 /** A patch sampled for drawing. */
 export interface PatchSamples {
-  /** `grid[i][j]` = x(i/FACETS, j/FACETS): the corners of the shaded facets. */
+  /** `grid[i][j]` = P(i/FACETS, j/FACETS): the corners of the shaded facets. */
   grid: Point[][];
   /** Iso-curves u = i/ISO_LINES, each a polyline in v. */
   uLines: Point[][];
@@ -47,7 +47,7 @@ export interface PatchSamples {
   facetEdges: Point[][];
 }
 
-/** The matrix form x(u, v) = U·M·B·Mᵀ·Vᵀ of one coordinate, with its numbers. */
+/** The matrix form of one coordinate of P(u, v), x(u, v) = U·M·B·Mᵀ·Vᵀ (or y, z), with its numbers. */
 export interface MatrixForm {
   /** [1 u u² u³] and [1 v v² v³]. */
   U: number[];
@@ -66,7 +66,7 @@ export interface MatrixForm {
 
 /** How the two patches of the joined pair meet along their shared edge. */
 export interface JoinReport {
-  /** Per column n of the pair: the continuity of the curves x(·,n) then y(·,n) at the edge. */
+  /** Per column n of the pair: the continuity of the curves P(·,n) then Q(·,n) at the edge. */
   columns: Continuity[];
   /** The weakest of them: what the surface has. */
   weakest: Continuity;
@@ -74,16 +74,16 @@ export interface JoinReport {
 
 /** The first patch at (u, v): its point, tangents, row and column curves, weights. */
 export interface PointGeometry {
-  /** x(u, v) by the Bernstein double sum. */
+  /** P(u, v) by the Bernstein double sum. */
   point: Point;
   du: Point;
   dv: Point;
-  /** ∂x/∂u × ∂x/∂v and its unit vector (null where the tangent plane is undefined). */
+  /** ∂P/∂u × ∂P/∂v and its unit vector (null where the tangent plane is undefined). */
   crossProduct: Point;
   normal: Point | null;
-  /** r_m(v) = Σn fn(v) x(m,n): the control points of the iso-curve v = const. */
+  /** r_m(v) = Σn fn(v) P(m,n): the control points of the iso-curve v = const. */
   rowPoints: Point[];
-  /** c_n(u) = Σm fm(u) x(m,n): the control points of the iso-curve u = const. */
+  /** c_n(u) = Σm fm(u) P(m,n): the control points of the iso-curve u = const. */
   columnPoints: Point[];
   /** Row m of the net as a curve in v, sampled. */
   rowCurves: Point[][];

@@ -24,7 +24,7 @@ const distanceTo = (b: Box, x: number, y: number) =>
   );
 
 /**
- * The names xₘ,ₙ of the points `named`, each where it covers no name placed before it and no
+ * The names Pₘ,ₙ of the points `named`, each where it covers no name placed before it and no
  * point of the net, and lies nearer its own point than any other: seen from
  * the side, the points of a row crowd together, and names at one fixed offset
  * ran into one another and over the next point. Crowded points choose first.
@@ -57,9 +57,9 @@ export function placeNetLabels(
     if (x < 0 || y < 0 || x > viewWidth || y > viewHeight) continue;
     const m = Math.floor(i / 4);
     const n = i % 4;
-    const text = `x_{${m},${n}}`;
-    // The name's box as the painter draws it: "x" and a subscript of three characters.
-    const width = size * 0.62 + size * 0.45 * 3;
+    const text = `P_{${m},${n}}`;
+    // The name's box as the painter draws it: "P" and a subscript of three characters.
+    const width = size * 0.7 + size * 0.45 * 3;
     const height = size * 1.3;
     let best: { cost: number; box: Box } | null = null;
     for (const ring of RINGS) {

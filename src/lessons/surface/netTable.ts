@@ -20,15 +20,17 @@ const tripleText = (p: readonly number[]) => p.map(formatNumber).join(', ');
 
 /**
  * The control net as an editable 4 × 4 table: one cell per point, "x, y, z",
- * m down and n across as the slides' x(m,n). Enter or leaving the cell applies it.
+ * m down and n across as the slides' xₘ,ₙ (Pₘ,ₙ here, the second net's Qₘ,ₙ).
+ * Enter or leaving the cell applies it.
  * A cell that is not three numbers is put back and says so under the table, not in
  * the page's notices: a notice would push the figures down and change their size.
  */
 export function netTable(
   api: LessonApi<SurfaceState, SurfaceModel>,
-  which: 'x' | 'y',
+  field: 'net' | 'secondNet',
 ): { element: HTMLElement; update(state: SurfaceState): void } {
-  const field = which === 'x' ? 'net' : 'secondNet';
+  // The net's letter as the figure names its points: P, and Q for the second patch.
+  const name = field === 'net' ? 'P' : 'Q';
   const inputs: HTMLInputElement[][] = [];
   const body = h('tbody', {});
   const message = h('p', { class: 'net-table-message', role: 'status' });
@@ -40,14 +42,14 @@ export function netTable(
         type: 'text',
         inputmode: 'decimal',
         spellcheck: 'false',
-        'aria-label': `${which}${m},${n} (x, y, z)`,
+        'aria-label': `${name}${m},${n} (x, y, z)`,
         class: 'net-cell',
       });
       input.addEventListener('change', () => {
         const state = api.get();
         const p = parseTriple(input.value);
         if (!p) {
-          message.textContent = `${which}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[field][m][n])}.`;
+          message.textContent = `${name}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[field][m][n])}.`;
           input.value = tripleText(state[field][m][n]);
           return;
         }
@@ -64,7 +66,7 @@ export function netTable(
   }
   const table = h(
     'table',
-    { class: 'data-table net-table', 'aria-label': `Control net ${which} (x, y, z of each point)` },
+    { class: 'data-table net-table', 'aria-label': `Control net ${name} (x, y, z of each point)` },
     h(
       'thead',
       {},

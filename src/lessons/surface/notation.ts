@@ -17,11 +17,11 @@ export const list = (values: readonly number[], digits = 4) =>
 export const matrix = (rows: readonly (readonly number[])[], digits = 4) =>
   `\\begin{bmatrix}${rows.map((row) => list(row, digits)).join('\\\\')}\\end{bmatrix}`;
 
-/** x(u, v) with its parameters, in TeX. */
+/** P(u, v) with its parameters, in TeX. */
 export const pointAt = (state: { u: number; v: number }) =>
-  `\\mathbf{x}(${num(state.u)},${num(state.v)})`;
+  `\\mathbf{P}(${num(state.u)},${num(state.v)})`;
 /** The patch as the slides' double sum. */
-export const DOUBLE_SUM = '\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{x}_{m,n}';
+export const DOUBLE_SUM = '\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{P}_{m,n}';
 
 /** A continuity class as the notes write it. */
 export const continuityName = (c: Continuity): string =>

@@ -4,14 +4,25 @@ import { notesKey, notesSlip } from '../../kit/notes';
 
 /** How the lesson's symbols read in the notes: (here, in the notes). */
 export const NOTES_SYMBOLS: readonly (readonly [string, string])[] = [
-  ['xₘ,ₙ: m runs along u, n along v', 'xₘ,ₙ in the lecture slides; pᵢⱼ in the continuation notes'],
+  [
+    'Pₘ,ₙ: m runs along u, n along v',
+    'xₘ,ₙ in the lecture slides; pᵢⱼ (and xᵢⱼ for its x coordinates) in the continuation notes',
+  ],
+  [
+    'P(u, v): the point of the patch',
+    'x(u, v) in the lecture slides; p(u, v) in the continuation notes, whose x(u, v) is its x coordinate',
+  ],
   [
     'fₘ(u): the cubic Bernstein polynomials',
     'fₙ(u) in the lecture slides; Bᵢ(u) in the continuation notes; B(k,n)(u) in the “Splines” slides',
   ],
   [
-    'x(u, v) = U·M·B·Mᵀ·Vᵀ, B the net’s coordinates',
-    'the same in the lecture slides; M(u)ᵀ·B_Bezierᵀ·Gˣ·B_Bezier·M(v) in the continuation notes',
+    'x(u, v) = U·M·B·Mᵀ·Vᵀ: one coordinate of P(u, v) (or y, z), B that coordinate of the net',
+    'x(u, v) = U·M·B·Mᵀ·Vᵀ for the whole point in the lecture slides, B the net’s points; M(u)ᵀ·B_Bezierᵀ·Gˣ·B_Bezier·M(v) for the x coordinate in the continuation notes',
+  ],
+  [
+    'Qₘ,ₙ: the second patch’s net, beside Pₘ,ₙ (Q₀,ₙ = P₃,ₙ where they join)',
+    'not in the notes, which join no two patches',
   ],
 ];
 

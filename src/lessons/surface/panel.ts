@@ -68,8 +68,8 @@ export function surfacePanel(
   const joinText = h('p', {});
   // The slides' “for 0 ≤ v ≤ 1” of the curve in u: beside the scene that builds it.
   const slip = rowsSlip();
-  const firstNet = netTable(api, 'x');
-  const secondNet = netTable(api, 'y');
+  const firstNet = netTable(api, 'net');
+  const secondNet = netTable(api, 'secondNet');
   const joinSection = h(
     'section',
     {},
@@ -77,7 +77,7 @@ export function surfacePanel(
     h(
       'p',
       {},
-      'The second net y continues the first across the edge x = 3: its row y₀,ₙ should be the first net’s row x₃,ₙ (C⁰), and each leg y₀,ₙ → y₁,ₙ should continue x₂,ₙ → x₃,ₙ in a straight line with the same length (C¹).',
+      'The second net Q continues the first, P, across the edge x = 3: its row Q₀,ₙ should be the first net’s row P₃,ₙ (C⁰), and each leg Q₀,ₙ → Q₁,ₙ should continue P₂,ₙ → P₃,ₙ in a straight line with the same length (C¹).',
     ),
     joinText,
     secondNet.element,
@@ -89,10 +89,10 @@ export function surfacePanel(
     h(
       'p',
       {},
-      'A bicubic Bézier patch is a surface in space made from 16 control points xₘ,ₙ (m, n = 0 … 3). Each row and each column of the control net is the control polygon of a cubic; the surface is the tensor product of two families of cubics:',
+      'A bicubic Bézier patch is a surface in space made from 16 control points Pₘ,ₙ (m, n = 0 … 3). Each row and each column of the control net is the control polygon of a cubic; the surface is the tensor product of two families of cubics:',
     ),
     formula(
-      '\\mathbf{x}(u,v)=\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{x}_{m,n},\\qquad 0\\le u,v\\le 1',
+      '\\mathbf{P}(u,v)=\\sum_{m=0}^{3}\\sum_{n=0}^{3} f_m(u)\\,f_n(v)\\,\\mathbf{P}_{m,n},\\qquad 0\\le u,v\\le 1',
       true,
     ),
     slip,
@@ -104,11 +104,11 @@ export function surfacePanel(
     ),
     h('div', { class: 'lesson-tools surface-v' }, h('label', {}, 'v ', vSlider), vField),
     h('div', { class: 'lesson-tools' }, ...look.labels),
-    h('h2', {}, 'The point x(u, v), three ways'),
+    h('h2', {}, 'The point P(u, v), three ways'),
     h('p', {}, 'By the double sum, and by de Casteljau in u then v and in v then u:'),
     h(
       'table',
-      { class: 'data-table', 'aria-label': 'The point x(u, v) three ways' },
+      { class: 'data-table', 'aria-label': 'The point P(u, v) three ways' },
       h(
         'thead',
         {},
@@ -116,7 +116,7 @@ export function surfacePanel(
       ),
       pointBody,
     ),
-    h('h2', {}, 'Tangents and normal at x(u, v)'),
+    h('h2', {}, 'Tangents and normal at P(u, v)'),
     derivatives.element,
     h('h2', {}, 'Matrix form, one coordinate'),
     h('div', { class: 'lesson-tools' }, ...coordinate.labels),
@@ -150,7 +150,7 @@ export function surfacePanel(
       ' (never negative, always 1: the patch lies in the convex hull of its net).',
     ),
     joinSection,
-    h('h2', {}, 'The control net x'),
+    h('h2', {}, 'The control net P'),
     firstNet.element,
   );
 
@@ -167,12 +167,12 @@ export function surfacePanel(
         cells: [name, ...p.map((value) => fmt(value, DIGITS))],
       });
       pointRows.set([
-        three('Σ fₘ fₙ xₘ,ₙ', m.point),
+        three('Σ fₘ fₙ Pₘ,ₙ', m.point),
         three('u, then v', m.uThenV.point),
         three('v, then u', m.vThenU.point),
       ]);
       derivatives.set(
-        `\\begin{aligned}\\partial\\mathbf{x}/\\partial u &= ${slotPoint(3)}\\\\ \\partial\\mathbf{x}/\\partial v &= ${slotPoint(3)}\\\\ \\partial\\mathbf{x}/\\partial u\\times\\partial\\mathbf{x}/\\partial v &= ${slotPoint(3)}\\\\ \\mathbf{n} &= ${m.normal ? slotPoint(3) : '\\text{undefined (the tangents are parallel)}'}\\end{aligned}`,
+        `\\begin{aligned}\\partial\\mathbf{P}/\\partial u &= ${slotPoint(3)}\\\\ \\partial\\mathbf{P}/\\partial v &= ${slotPoint(3)}\\\\ \\partial\\mathbf{P}/\\partial u\\times\\partial\\mathbf{P}/\\partial v &= ${slotPoint(3)}\\\\ \\mathbf{n} &= ${m.normal ? slotPoint(3) : '\\text{undefined (the tangents are parallel)}'}\\end{aligned}`,
         [
           ...vector(m.du),
           ...vector(m.dv),

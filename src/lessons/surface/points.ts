@@ -4,9 +4,10 @@ import type { Point } from '../../math';
 import { sceneOf, shownIn } from './scenes';
 import type { SurfaceState } from './state';
 
-// The movable points: the 16 control points of the net x, and in the scene of
-// two patches the rows y₁ … y₃ of the second net (its row y₀ sits on x₃: it
-// is edited in the table, so the edge's points stay one handle each).
+// The movable points: the 16 control points Pₘ,ₙ of the net, and in the scene of
+// two patches the rows Q₁ … Q₃ of the second net (its row Q₀ sits on P₃: it
+// is edited in the table, so the edge's points stay one handle each). The
+// handles' ids stay 'x' and 'y' (the links' keys); only their names are P and Q.
 
 const COLUMNS = 4;
 /** Row by row, as the link writes the net. */
@@ -38,7 +39,7 @@ function netHandles<S>(
   };
 }
 
-const netLabel = (i: number) => `x_{${place(i).row},${place(i).column}}`;
+const netLabel = (i: number) => `P_{${place(i).row},${place(i).column}}`;
 const isCorner = (i: number) => {
   const { row, column } = place(i);
   return (row === 0 || row === 3) && (column === 0 || column === 3);
@@ -57,7 +58,7 @@ export function namedPoints(state: SurfaceState): (i: number) => boolean {
   return isCorner;
 }
 
-/** The control points xₘ,ₙ (their names are placed by the figure). */
+/** The control points Pₘ,ₙ (their names are placed by the figure). */
 export const netPoints = netHandles(
   pointList<SurfaceState>({
     id: 'x',
@@ -72,7 +73,7 @@ export const netPoints = netHandles(
   () => false,
 );
 
-const secondLabel = (i: number) => `y_{${place(i).row + 1},${place(i).column}}`;
+const secondLabel = (i: number) => `Q_{${place(i).row + 1},${place(i).column}}`;
 const secondList = netHandles(
   pointList<SurfaceState>({
     id: 'y',
@@ -87,7 +88,7 @@ const secondList = netHandles(
   () => false,
 );
 
-/** The second net's rows y₁ … y₃, movable only in the scene of two patches. */
+/** The second net's rows Q₁ … Q₃, movable only in the scene of two patches. */
 export const secondNetPoints: PointList<SurfaceState> = {
   ...secondList,
   handles: (state) => (state.mode === 'join' ? secondList.handles(state) : []),

@@ -25,7 +25,7 @@ function weightDots(scene: SpaceScene, painter: Painter, m: SurfaceModel, toPoin
   );
 }
 
-/** The tangent plane at x(u, v): the parallelogram of ∂x/∂u and ∂x/∂v (a third of each), either side. */
+/** The tangent plane at P(u, v): the parallelogram of ∂P/∂u and ∂P/∂v (a third of each), either side. */
 export function tangentPlane(scene: SpaceScene, painter: Painter, m: SurfaceModel) {
   const a = scaled(m.du, 1 / 3);
   const b = scaled(m.dv, 1 / 3);

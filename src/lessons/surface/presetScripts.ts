@@ -26,7 +26,7 @@ export const flatScript = script<SurfaceState, SurfaceModel, FlatReveal>(
   step(
     'net',
     'A flat net: all 16 points in the plane z = 0, evenly spaced',
-    () => '\\mathbf{x}_{m,n} = (m,\\ n,\\ 0)',
+    () => '\\mathbf{P}_{m,n} = (m,\\ n,\\ 0)',
   ),
   step(
     'plane',
@@ -40,12 +40,12 @@ export const flatScript = script<SurfaceState, SurfaceModel, FlatReveal>(
   ),
   step(
     'surface',
-    'The patch is the square itself: x(u, v) = (3u, 3v, 0)',
-    () => '\\mathbf{x}(u,v) = (3u,\\ 3v,\\ 0)',
+    'The patch is the square itself: P(u, v) = (3u, 3v, 0)',
+    () => '\\mathbf{P}(u,v) = (3u,\\ 3v,\\ 0)',
   ),
   step(
     'point',
-    ({ state }) => `The point x(${num(state.u)}, ${num(state.v)}) sits at (3u, 3v, 0)`,
+    ({ state }) => `The point P(${num(state.u)}, ${num(state.v)}) sits at (3u, 3v, 0)`,
     pointFormula,
   ),
   step(
@@ -66,7 +66,7 @@ export const saddleScript = script<SurfaceState, SurfaceModel, SaddleReveal>(
   ),
   step(
     'corners',
-    'Two opposite corners up, two down: x₀,₀ and x₃,₃ at 9/8, x₃,₀ and x₀,₃ at −9/8',
+    'Two opposite corners up, two down: P₀,₀ and P₃,₃ at 9/8, P₃,₀ and P₀,₃ at −9/8',
     ({ state: { net } }) =>
       `z_{0,0} = z_{3,3} = ${three(net[0][0][2])},\\quad z_{3,0} = z_{0,3} = ${three(net[3][0][2])}`,
   ),
@@ -84,12 +84,12 @@ export const saddleScript = script<SurfaceState, SurfaceModel, SaddleReveal>(
   step(
     'isoCurves',
     'Every iso-curve is a straight line, and yet the surface bends: a hyperbolic paraboloid',
-    () => '\\mathbf{x}(u,v) = \\bigl(3u,\\ 3v,\\ \\tfrac92\\,(u - \\tfrac12)(v - \\tfrac12)\\bigr)',
+    () => '\\mathbf{P}(u,v) = \\bigl(3u,\\ 3v,\\ \\tfrac92\\,(u - \\tfrac12)(v - \\tfrac12)\\bigr)',
   ),
   step(
     'point',
     ({ state, model }) =>
-      `At x(${num(state.u)}, ${num(state.v)}) the height is ${words(model.point[2])}: up one way, down the other`,
+      `At P(${num(state.u)}, ${num(state.v)}) the height is ${words(model.point[2])}: up one way, down the other`,
     ({ state, model }) =>
       `z = \\tfrac92\\,(${num(state.u)} - \\tfrac12)(${num(state.v)} - \\tfrac12) = ${texNumber(model.point[2], 4)}`,
   ),
@@ -113,13 +113,13 @@ export const bumpScript = script<SurfaceState, SurfaceModel, BumpReveal>(
   step(
     'edges',
     'The border rows and columns lie on the ground, and so do the four edges of the patch',
-    () => '\\mathbf{x}(u,0) = \\sum_{m=0}^{3} f_m(u)\\,\\mathbf{x}_{m,0},\\quad z = 0',
+    () => '\\mathbf{P}(u,0) = \\sum_{m=0}^{3} f_m(u)\\,\\mathbf{P}_{m,0},\\quad z = 0',
   ),
   step('surface', 'Inside, the patch rises towards the lifted points, but does not reach them'),
   step(
     'point',
     ({ state, model }) =>
-      `At x(${num(state.u)}, ${num(state.v)}) it is ${words(model.point[2])} high, not 2`,
+      `At P(${num(state.u)}, ${num(state.v)}) it is ${words(model.point[2])} high, not 2`,
     ({ model }) => {
       const { a, b } = innerShares(model);
       return `z = 2\\,\\bigl(f_1(u) + f_2(u)\\bigr)\\bigl(f_1(v) + f_2(v)\\bigr) = 2 \\cdot ${texNumber(a, 4)} \\cdot ${texNumber(b, 4)} = ${texNumber(model.point[2], 4)}`;
@@ -159,12 +159,12 @@ export const waveScript = script<SurfaceState, SurfaceModel, WaveReveal>(
   step(
     'columnCurves',
     'Each column is the control polygon of a cubic in u: an S, up then down',
-    () => '\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{x}_{m,n},\\quad n = 0, \\dots, 3',
+    () => '\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{P}_{m,n},\\quad n = 0, \\dots, 3',
   ),
   step(
     'rowCurves',
     'Each row is the control polygon of a cubic in v: an arch, lower at its ends',
-    () => '\\sum_{n=0}^{3} f_n(v)\\,\\mathbf{x}_{m,n},\\quad m = 0, \\dots, 3',
+    () => '\\sum_{n=0}^{3} f_n(v)\\,\\mathbf{P}_{m,n},\\quad m = 0, \\dots, 3',
   ),
   step('surface', 'The patch: a wave along u, lower towards the edges v = 0 and v = 1'),
   step(
@@ -176,7 +176,7 @@ export const waveScript = script<SurfaceState, SurfaceModel, WaveReveal>(
   ),
   step(
     'point',
-    ({ state }) => `The point x(${num(state.u)}, ${num(state.v)}) on the wave`,
+    ({ state }) => `The point P(${num(state.u)}, ${num(state.v)}) on the wave`,
     ({ state, model }) =>
       `${pointAt(state)} = ${point(model.point)},\\quad 4.5 \\cdot ${num(state.u)}(1-${num(state.u)})(1-2\\cdot${num(state.u)}) \\cdot ${texNumber(waveHeight(model), 4)} = ${texNumber(model.point[2], 4)}`,
   ),
@@ -184,7 +184,7 @@ export const waveScript = script<SurfaceState, SurfaceModel, WaveReveal>(
 
 export type TwistedReveal = 'cornerQuad' | 'net' | 'edges' | 'surface' | 'point' | 'normal';
 
-/** (x₃,₀ − x₀,₀) × (x₀,₃ − x₀,₀) · (x₃,₃ − x₀,₀): zero exactly when the four corners are in one plane. */
+/** (P₃,₀ − P₀,₀) × (P₀,₃ − P₀,₀) · (P₃,₃ − P₀,₀): zero exactly when the four corners are in one plane. */
 export function cornerVolume(net: SurfaceState['net']): number {
   const o = net[0][0];
   const minus = (p: readonly number[]) => p.map((value, d) => value - o[d]);
@@ -197,19 +197,19 @@ export const twistedScript = script<SurfaceState, SurfaceModel, TwistedReveal>(
     'cornerQuad',
     'Not even the four corners are in one plane: joined, they make a twisted quadrilateral',
     ({ state }) =>
-      `(\\mathbf{x}_{3,0}-\\mathbf{x}_{0,0})\\times(\\mathbf{x}_{0,3}-\\mathbf{x}_{0,0})\\cdot(\\mathbf{x}_{3,3}-\\mathbf{x}_{0,0}) = ${texNumber(cornerVolume(state.net), 3)} \\ne 0`,
+      `(\\mathbf{P}_{3,0}-\\mathbf{P}_{0,0})\\times(\\mathbf{P}_{0,3}-\\mathbf{P}_{0,0})\\cdot(\\mathbf{P}_{3,3}-\\mathbf{P}_{0,0}) = ${texNumber(cornerVolume(state.net), 3)} \\ne 0`,
   ),
   step('net', 'The net: its rows and columns bend, rise and fall; no plane holds it'),
   step(
     'edges',
     'The edges of the patch are the Bézier curves of the border rows and columns: curves in space',
-    () => '\\mathbf{x}(u,0)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{x}_{m,0}',
+    () => '\\mathbf{P}(u,0)=\\sum_{m=0}^{3} f_m(u)\\,\\mathbf{P}_{m,0}',
   ),
   step('surface', 'The patch passes through all four corners and twists between them'),
-  step('point', ({ state }) => `The point x(${num(state.u)}, ${num(state.v)}) on it`, pointFormula),
+  step('point', ({ state }) => `The point P(${num(state.u)}, ${num(state.v)}) on it`, pointFormula),
   step(
     'normal',
-    'The normal ∂x/∂u × ∂x/∂v turns from place to place: move u and v to see it',
+    'The normal ∂P/∂u × ∂P/∂v turns from place to place: move u and v to see it',
     crossFormula,
   ),
 );

@@ -16,7 +16,7 @@ export const SADDLE_NET = heights(
   [0, 1, 2, 3].map((m) => [0, 1, 2, 3].map((n) => ((m - 1.5) * (n - 1.5)) / 2)),
 );
 
-/** Height 2 at the four inner points: the top, x(½, ½), is at 2·(3/4)² = 9/8. */
+/** Height 2 at the four inner points: the top, P(½, ½), is at 2·(3/4)² = 9/8. */
 export const BUMP_NET = heights([
   [0, 0, 0, 0],
   [0, 2, 2, 0],

@@ -9,7 +9,7 @@ import type { SurfaceState } from './state';
 
 export type MatrixReveal = 'coordinates' | 'rowFactors' | 'columnFactors' | 'product';
 
-/** x(u, v) = U·M·B·Mᵀ·Vᵀ for one coordinate, one factor at a time. */
+/** One coordinate of P(u, v), x(u, v) = U·M·B·Mᵀ·Vᵀ (or y, z), one factor at a time. */
 export const matrixScript = script<SurfaceState, SurfaceModel, MatrixReveal>(
   step(
     'coordinates',
@@ -61,7 +61,7 @@ export const weightsScript = script<SurfaceState, SurfaceModel, WeightsReveal>(
   ),
   step(
     'average',
-    'x(u, v) is the weighted average of the net, so the patch stays inside its convex hull',
+    'P(u, v) is the weighted average of the net, so the patch stays inside its convex hull',
     ({ state, model }) => `${pointAt(state)} = ${DOUBLE_SUM} = ${point(model.point)}`,
   ),
 );
@@ -69,51 +69,51 @@ export const weightsScript = script<SurfaceState, SurfaceModel, WeightsReveal>(
 export type NormalReveal = 'point' | 'uTangent' | 'vTangent' | 'normal' | 'tangentPlane';
 
 export const crossFormula = ({ model }: { model: SurfaceModel }) =>
-  `\\frac{\\partial\\mathbf{x}}{\\partial u}\\times\\frac{\\partial\\mathbf{x}}{\\partial v} = ${point(model.crossProduct)}${model.normal ? `,\\quad \\mathbf{n} = ${point(model.normal)}` : ''}`;
+  `\\frac{\\partial\\mathbf{P}}{\\partial u}\\times\\frac{\\partial\\mathbf{P}}{\\partial v} = ${point(model.crossProduct)}${model.normal ? `,\\quad \\mathbf{n} = ${point(model.normal)}` : ''}`;
 
-/** The two tangents at x(u, v), their cross product, the tangent plane. */
+/** The two tangents at P(u, v), their cross product, the tangent plane. */
 export const normalScript = script<SurfaceState, SurfaceModel, NormalReveal>(
   step(
     'point',
-    ({ state }) => `The patch and the point x(${num(state.u)}, ${num(state.v)})`,
+    ({ state }) => `The patch and the point P(${num(state.u)}, ${num(state.v)})`,
     ({ state, model }) => `${pointAt(state)} = ${point(model.point)}`,
   ),
   step(
     'uTangent',
-    ({ state }) => `The iso-curve v = ${num(state.v)} and its tangent ∂x/∂u`,
-    ({ model }) => `\\partial\\mathbf{x}/\\partial u = ${point(model.du)}`,
+    ({ state }) => `The iso-curve v = ${num(state.v)} and its tangent ∂P/∂u`,
+    ({ model }) => `\\partial\\mathbf{P}/\\partial u = ${point(model.du)}`,
   ),
   step(
     'vTangent',
-    ({ state }) => `The iso-curve u = ${num(state.u)} and its tangent ∂x/∂v`,
-    ({ model }) => `\\partial\\mathbf{x}/\\partial v = ${point(model.dv)}`,
+    ({ state }) => `The iso-curve u = ${num(state.u)} and its tangent ∂P/∂v`,
+    ({ model }) => `\\partial\\mathbf{P}/\\partial v = ${point(model.dv)}`,
   ),
-  step('normal', 'Their cross product ∂x/∂u × ∂x/∂v is normal to the surface', crossFormula),
+  step('normal', 'Their cross product ∂P/∂u × ∂P/∂v is normal to the surface', crossFormula),
   step(
     'tangentPlane',
-    'The tangent plane: spanned by ∂x/∂u and ∂x/∂v, perpendicular to the normal',
+    'The tangent plane: spanned by ∂P/∂u and ∂P/∂v, perpendicular to the normal',
     crossFormula,
   ),
 );
 
 export type JoinReveal = 'nets' | 'edge' | 'patches' | 'legs';
 
-const sharedEdge = () => '\\mathbf{y}_{0,n} = \\mathbf{x}_{3,n},\\ n = 0,\\dots,3 \\iff C^0';
+const sharedEdge = () => '\\mathbf{Q}_{0,n} = \\mathbf{P}_{3,n},\\ n = 0,\\dots,3 \\iff C^0';
 
 /** Two patches side by side: the shared edge (C⁰), then the legs across it (C¹). */
 export const joinScript = script<SurfaceState, SurfaceModel, JoinReveal>(
-  step('nets', 'Two patches side by side: the nets x and y'),
+  step('nets', 'Two patches side by side: the nets P and Q'),
   step(
     'edge',
-    'They share an edge: y₀,ₙ = x₃,ₙ, the last row of x is the first row of y',
+    'They share an edge: Q₀,ₙ = P₃,ₙ, the last row of P is the first row of Q',
     sharedEdge,
   ),
   step('patches', 'Both patches: drag a point near the edge and watch the join', sharedEdge),
   step(
     'legs',
     ({ model }) =>
-      `Across the edge, x₂,ₙ → x₃,ₙ = y₀,ₙ → y₁,ₙ: ${model.join ? joinVerdict(model.join) : 'the patches are not joined'}`,
+      `Across the edge, P₂,ₙ → P₃,ₙ = Q₀,ₙ → Q₁,ₙ: ${model.join ? joinVerdict(model.join) : 'the patches are not joined'}`,
     () =>
-      '\\mathbf{x}_{3,n}-\\mathbf{x}_{2,n} = \\mathbf{y}_{1,n}-\\mathbf{y}_{0,n}\\ \\text{for every } n \\iff C^1',
+      '\\mathbf{P}_{3,n}-\\mathbf{P}_{2,n} = \\mathbf{Q}_{1,n}-\\mathbf{Q}_{0,n}\\ \\text{for every } n \\iff C^1',
   ),
 );

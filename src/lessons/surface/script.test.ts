@@ -138,8 +138,8 @@ describe('the scenes and their named steps', () => {
 
   it('captions and formulas read the model of their state', () => {
     const s = sceneState('patch', { step: 5 });
-    expect(lesson.steps!.describe(s, 5)).toBe('The patch, and the point x(0.3, 0.6) on it');
-    expect(lesson.steps!.formula!(derive(s), s)).toMatch(/^\\mathbf\{x\}\(0\.3,0\.6\) = \(/);
+    expect(lesson.steps!.describe(s, 5)).toBe('The patch, and the point P(0.3, 0.6) on it');
+    expect(lesson.steps!.formula!(derive(s), s)).toMatch(/^\\mathbf\{P\}\(0\.3,0\.6\) = \(/);
     // The join's verdict follows the second net, from the model.
     const c1 = sceneState('c1', { step: 3 });
     const c0 = sceneState('c0', { step: 3 });
@@ -180,9 +180,9 @@ describe('the control points', () => {
     const names = (s: SurfaceState) =>
       placedLabels(s, 900, 560)
         .map((b) => b.text)
-        .filter((t) => /^x_\{\d,\d\}$/.test(t))
+        .filter((t) => /^P_\{\d,\d\}$/.test(t))
         .sort();
-    const all = [0, 1, 2, 3].flatMap((m) => [0, 1, 2, 3].map((n) => `x_{${m},${n}}`));
+    const all = [0, 1, 2, 3].flatMap((m) => [0, 1, 2, 3].map((n) => `P_{${m},${n}}`));
     expect(handles(defaults).map((h) => h.label)).toEqual(all);
     // The handles name no point themselves: the figure places every name.
     expect(handles(defaults).some((h) => h.showLabel)).toBe(false);
@@ -191,7 +191,7 @@ describe('the control points', () => {
       expect(named(s)).toEqual(all);
       expect(names(s)).toEqual(all);
     }
-    const corners = ['x_{0,0}', 'x_{0,3}', 'x_{3,0}', 'x_{3,3}'];
+    const corners = ['P_{0,0}', 'P_{0,3}', 'P_{3,0}', 'P_{3,3}'];
     expect(named(sceneState('patch', { step: 2 }))).toEqual(corners);
     expect(names(sceneState('patch', { step: 2 }))).toEqual(corners);
     expect(named(sceneState('rows'))).toEqual(corners);
@@ -219,7 +219,7 @@ describe('the control points', () => {
             const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
             expect(w > 1 && h > 1, `${where}: “${a.text}” on “${b.text}”`).toBe(false);
           }
-        for (const b of labels.filter((l) => /^x_/.test(l.text)))
+        for (const b of labels.filter((l) => /^P_/.test(l.text)))
           points.forEach(([x, y], k) => {
             const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
             const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
@@ -232,27 +232,27 @@ describe('the control points', () => {
     }
   });
 
-  it('gives the second net’s rows y₁ … y₃ handles only in the scene of two patches', () => {
+  it('gives the second net’s rows Q₁ … Q₃ handles only in the scene of two patches', () => {
     expect(handles(sceneState('normal'))).toHaveLength(16);
     const pair = handles(sceneState('c1'));
     expect(pair).toHaveLength(28);
     expect(pair.slice(16, 20).map((h) => h.label)).toEqual([
-      'y_{1,0}',
-      'y_{1,1}',
-      'y_{1,2}',
-      'y_{1,3}',
+      'Q_{1,0}',
+      'Q_{1,1}',
+      'Q_{1,2}',
+      'Q_{1,3}',
     ]);
     expect(pair.every((h) => h.small)).toBe(true);
   });
 
   it('moves the point of the handle, and nothing else', () => {
     const s = sceneState('c1');
-    const [x11] = handles(s).filter((h) => h.label === 'x_{1,1}');
+    const [x11] = handles(s).filter((h) => h.label === 'P_{1,1}');
     const moved = shellFigure.moveHandle!(s, x11.id, [1, 1, 5], derive(s));
     expect(moved.net[1][1]).toEqual([1, 1, 5]);
     expect(moved.net.flat().filter((p, i) => p !== s.net.flat()[i])).toHaveLength(1);
     expect(moved.secondNet).toBe(s.secondNet);
-    const [y21] = handles(s).filter((h) => h.label === 'y_{2,1}');
+    const [y21] = handles(s).filter((h) => h.label === 'Q_{2,1}');
     const next = shellFigure.moveHandle!(s, y21.id, [5, 1, 2], derive(s));
     expect(next.secondNet[2][1]).toEqual([5, 1, 2]);
     expect(next.secondNet[0]).toBe(s.secondNet[0]);
@@ -323,7 +323,7 @@ describe('each net worth seeing is a scene of its own idea', () => {
   });
 
   it('says what is true of its net, in numbers the model agrees with', () => {
-    // Flat: Σ m fm(u) = 3u, so x(u, v) = (3u, 3v, 0).
+    // Flat: Σ m fm(u) = 3u, so P(u, v) = (3u, 3v, 0).
     const flat = derive(sceneState('flat', { step: 4 }));
     expect(flat.point.map((v) => Number(v.toFixed(12)))).toEqual([0.9, 1.8, 0]);
     expect(flat.normal).toEqual([0, 0, 1]);
@@ -331,7 +331,7 @@ describe('each net worth seeing is a scene of its own idea', () => {
     const saddle = sceneState('saddle', { step: 5 });
     expect(derive(saddle).point[2]).toBeCloseTo(-0.09, 14);
     expect(lesson.steps!.describe(saddle, 5)).toBe(
-      'At x(0.3, 0.6) the height is −0.090: up one way, down the other',
+      'At P(0.3, 0.6) the height is −0.090: up one way, down the other',
     );
     const [c0, c1, , c3] = derive(saddle).columnPoints;
     const along = (p: readonly number[]) => p.map((v, d) => v - c0[d]);
@@ -339,7 +339,7 @@ describe('each net worth seeing is a scene of its own idea', () => {
     expect(Math.hypot(...crossed)).toBeLessThan(1e-12);
     // Bump: z = 2(f1 + f2)(u)·(f1 + f2)(v) = 2·(3/4)² = 9/8 at the top.
     const bump = sceneState('bump', { step: 3 });
-    expect(lesson.steps!.describe(bump, 3)).toBe('At x(0.5, 0.5) it is 1.125 high, not 2');
+    expect(lesson.steps!.describe(bump, 3)).toBe('At P(0.5, 0.5) it is 1.125 high, not 2');
     expect(lesson.steps!.formula!(derive(bump), bump)).toMatch(
       /= 2 \\cdot 0\.7500 \\cdot 0\.7500 = 1\.1250$/,
     );
@@ -364,10 +364,57 @@ describe('the notes', () => {
     expect(ROWS_SLIP.correct).toMatch(/runs in u, for 0 ≤ u ≤ 1/);
   });
 
+  it('writes the net Pₘ,ₙ (the second Qₘ,ₙ) and the point P(u, v), as every lesson writes P₀ … Pₙ and P(t)', () => {
+    // The point as the notes write it: x(…), xₘ,ₙ, ∂x, \\mathbf{x} or x_{m,n}, and the second net y.
+    // (z(u, v), z_{m,n} and the x, y, z coordinates are coordinates, not points; the matrix
+    // scene writes its coordinate, z by default.)
+    const plain = /\bx\(|\b[xy][₀-₃ₘ],|∂x|\bnets? [xy]\b|\bof [xy]\b/;
+    const tex = /\\mathbf\{[xy]\}|\b[xy]_\{/;
+    const said: string[] = [];
+    for (const scene of sceneStates(lesson)) {
+      for (let k = 0; k <= scene.count; k++) {
+        const state = scene.at(k) as unknown as SurfaceState;
+        const caption = lesson.steps!.describe(state, k);
+        const formula = lesson.steps!.formula!(derive(state), state) ?? '';
+        expect(caption, `${scene.id} step ${k}`).not.toMatch(plain);
+        expect(formula, `${scene.id} step ${k}`).not.toMatch(tex);
+        const labels = placedLabels(state, 900, 560).map((b) => b.text);
+        expect(
+          labels.filter((t) => /^[xy]_|^x\(|∂x/.test(t)),
+          `${scene.id} step ${k}`,
+        ).toEqual([]);
+        said.push(caption, formula, ...labels);
+      }
+    }
+    const all = said.join('\n');
+    for (const written of [
+      'P(0.3, 0.6)',
+      'P₀,₀',
+      '\\mathbf{P}(0.3,0.6)',
+      '\\mathbf{P}_{m,n}',
+      'P(u,v)',
+      'P_{0,0}',
+      '∂P/∂u',
+      'Q₀,ₙ = P₃,ₙ',
+      '\\mathbf{Q}_{0,n}',
+    ])
+      expect(all, written).toContain(written);
+    // The handles' names (what a screen reader hears) follow the labels; their ids keep the links.
+    const pair = lesson.figures[0].handles!(derive(sceneState('c1')));
+    expect(pair.map((h) => h.label).filter((l) => !/^[PQ]_\{\d,\d\}$/.test(l))).toEqual([]);
+    expect(pair.map((h) => h.id.charAt(0))).toEqual([...'x'.repeat(16), ...'y'.repeat(12)]);
+  });
+
   it('keys the lesson’s symbols to the notes’', () => {
     const there = NOTES_SYMBOLS.map(([, notes]) => notes).join(' | ');
-    expect(there).toMatch(/pᵢⱼ in the continuation notes/);
+    expect(there).toMatch(/pᵢⱼ \(and xᵢⱼ for its x coordinates\) in the continuation notes/);
     expect(there).toMatch(/Bᵢ\(u\) in the continuation notes/);
+    // 002 writes the patch's point p(u, v) and keeps x(u, v) for its x coordinate; 001 writes x(u, v).
+    expect(there).toMatch(/x\(u, v\) in the lecture slides; p\(u, v\) in the continuation notes/);
+    const here = NOTES_SYMBOLS.map(([app]) => app);
+    expect(here[0]).toBe('Pₘ,ₙ: m runs along u, n along v');
+    expect(here).toContain('P(u, v): the point of the patch');
+    expect(here.some((row) => row.startsWith('Qₘ,ₙ: the second patch’s net'))).toBe(true);
   });
 
   it('names its data after what it shows: the net the construction scenes start from is a leaning hill', () => {

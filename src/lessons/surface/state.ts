@@ -13,9 +13,9 @@ export type Coordinate = 'x' | 'y' | 'z';
 
 /** Everything the surface lesson shows, and all of it goes in the link. */
 export interface SurfaceState {
-  /** The control net x(m,n), `net[m][n]`: m runs along u, n along v (`x=` in the link). */
+  /** The control net Pₘ,ₙ, `net[m][n]`: m runs along u, n along v (`x=` in the link). */
   net: Point[][];
-  /** The second patch y(m,n) of the joined pair: its row m = 0 meets the first patch's row m = 3 (`y=`). */
+  /** The second patch's net Qₘ,ₙ of the joined pair: its row m = 0 meets the first patch's row m = 3 (`y=`). */
   secondNet: Point[][];
   u: number;
   v: number;

@@ -4,11 +4,11 @@ import type { SurfaceModel } from './model';
 
 const triple = (p: readonly number[]) => p.map((v) => fixed(v, 2)).join(', ');
 
-/** The handout's 4 × 4 control net x(m,n): m down, n across, as the panel's table. */
+/** The handout's 4 × 4 control net Pₘ,ₙ: m down, n across, as the panel's table. */
 export function netTables({ state }: SurfaceModel): HandoutTable[] {
   return [
     {
-      title: 'The control net x(m,n) = (x, y, z): m down, n across',
+      title: 'The control net Pₘ,ₙ = (x, y, z): m down, n across',
       columns: ['', ...[0, 1, 2, 3].map((n) => `n = ${n}`)],
       rows: state.net.map((row, m) => [`m = ${m}`, ...row.map(triple)]),
     },
