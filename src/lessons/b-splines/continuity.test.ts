@@ -43,10 +43,10 @@ const gap = (a: readonly number[], b: readonly number[]) =>
 const relativeGap = (a: readonly number[], b: readonly number[]) =>
   gap(a, b) / Math.max(1, ...a.map(Math.abs), ...b.map(Math.abs));
 
-// The seven points: x0 (0,0), x1 (1,3), x2 (3,4), x3 (4.5,1), x4 (6.5,0), x5 (8,3), x6 (10,3.5).
+// The seven points: P0 (0,0), P1 (1,3), P2 (3,4), P3 (4.5,1), P4 (6.5,0), P5 (8,3), P6 (10,3.5).
 // Worked by hand at the watched knot u = 5 (m + 1 = 7: ⌊(7 + 3)/2⌋ = 5), knots 1 apart:
 const HAND: Record<ContinuityCase, { smooth: number; left: Point[]; right: Point[] }> = {
-  // Degree 1 is the polygon: C(5) = x4; C′ is x4 − x3 before, x5 − x4 after.
+  // Degree 1 is the polygon: P(5) = P4; P′ is P4 − P3 before, P5 − P4 after.
   linear: {
     smooth: 0,
     left: [
@@ -58,8 +58,8 @@ const HAND: Record<ContinuityCase, { smooth: number; left: Point[]; right: Point
       [1.5, 3],
     ],
   },
-  // Degree 2, span [j, j+1) on x(j−2), x(j−1), xj: C = (x3 + x4)/2, C′ = x4 − x3 both sides,
-  // C″ = x2 − 2x3 + x4 before, x3 − 2x4 + x5 after.
+  // Degree 2, span [j, j+1) on P(j−2), P(j−1), Pj: P(5) = (P3 + P4)/2, P′ = P4 − P3 both sides,
+  // P″ = P2 − 2P3 + P4 before, P3 − 2P4 + P5 after.
   quadratic: {
     smooth: 1,
     left: [
@@ -73,8 +73,8 @@ const HAND: Record<ContinuityCase, { smooth: number; left: Point[]; right: Point
       [-0.5, 4],
     ],
   },
-  // Degree 3: C = (x2 + 4x3 + x4)/6, C′ = (x4 − x2)/2, C″ = x2 − 2x3 + x4 both sides;
-  // C‴ = −x1 + 3x2 − 3x3 + x4 before, −x2 + 3x3 − 3x4 + x5 after.
+  // Degree 3: P(5) = (P2 + 4P3 + P4)/6, P′ = (P4 − P2)/2, P″ = P2 − 2P3 + P4 both sides;
+  // P‴ = −P1 + 3P2 − 3P3 + P4 before, −P2 + 3P3 − 3P4 + P5 after.
   cubic: {
     smooth: 2,
     left: [
@@ -90,11 +90,11 @@ const HAND: Record<ContinuityCase, { smooth: number; left: Point[]; right: Point
       [-1, 2],
     ],
   },
-  // Knots 0 1 2 3 4 5 5 7 8 9 10. By blossoms x3 = f(4,5,5), x4 = f(5,5,7): C(5) = f(5,5,5)
-  // = (2x3 + x4)/3. C′ is the quadratic B-spline of Qi = 3(x(i+1) − xi)/(u(i+4) − u(i+1)):
-  // Q3 = 3(x4 − x3)/3 = (2, −1), where its own double knot puts it, both sides. C″: the
-  // linear B-spline of Ri = 2(Q(i+1) − Qi)/(u(i+4) − u(i+2)), with Q2 = 3(x3 − x2)/2 = (2.25, −4.5),
-  // Q4 = 3(x5 − x4)/3 = (1.5, 3): R2 = 2(Q3 − Q2)/1 = (−0.5, 7) before, R3 = 2(Q4 − Q3)/2 = (−0.5, 4) after.
+  // Knots 0 1 2 3 4 5 5 7 8 9 10. By blossoms P3 = f(4,5,5), P4 = f(5,5,7): P(5) = f(5,5,5)
+  // = (2P3 + P4)/3. P′ is the quadratic B-spline of Qi = 3(P(i+1) − Pi)/(u(i+4) − u(i+1)):
+  // Q3 = 3(P4 − P3)/3 = (2, −1), where its own double knot puts it, both sides. P″: the
+  // linear B-spline of Ri = 2(Q(i+1) − Qi)/(u(i+4) − u(i+2)), with Q2 = 3(P3 − P2)/2 = (2.25, −4.5),
+  // Q4 = 3(P5 − P4)/3 = (1.5, 3): R2 = 2(Q3 − Q2)/1 = (−0.5, 7) before, R3 = 2(Q4 − Q3)/2 = (−0.5, 4) after.
   double: {
     smooth: 1,
     left: [
@@ -108,8 +108,8 @@ const HAND: Record<ContinuityCase, { smooth: number; left: Point[]; right: Point
       [-0.5, 4],
     ],
   },
-  // Knots 0 1 2 3 5 5 5 7 8 9 10: only N(3,3) is 1 at u = 5, so C(5) = x3 = (4.5, 1). C′ jumps
-  // from Q2 = 3(x3 − x2)/(u6 − u3) = (2.25, −4.5) to Q3 = 3(x4 − x3)/(u7 − u4) = (3, −1.5).
+  // Knots 0 1 2 3 5 5 5 7 8 9 10: only N(3,3) is 1 at u = 5, so P(5) = P3 = (4.5, 1). P′ jumps
+  // from Q2 = 3(P3 − P2)/(u6 − u3) = (2.25, −4.5) to Q3 = 3(P4 − P3)/(u7 − u4) = (3, −1.5).
   triple: {
     smooth: 0,
     left: [
@@ -151,7 +151,7 @@ describe('derivatives of a piece at its ends', () => {
   });
 
   it('read the piece alone: nothing of the neighbour across a knot', () => {
-    // The triple knot's curve turns at x3; each side's C′ is its own piece's.
+    // The triple knot's curve turns at P3; each side's P′ is its own piece's.
     const m = at('triple');
     expect(gap(m.watched.left[1], HAND.triple.left[1])).toBeLessThan(1e-9);
     expect(gap(m.watched.right[1], HAND.triple.right[1])).toBeLessThan(1e-9);
@@ -185,7 +185,7 @@ describe('degree p ⇒ Cᵖ⁻¹, and a knot of multiplicity k ⇒ Cᵖ⁻ᵏ, o
       for (let r = 0; r <= hand.smooth; r++)
         expect(relativeGap(w.left[r], w.right[r]), `r = ${r}`).toBeLessThan(AGREE);
       expect(relativeGap(w.left[hand.smooth + 1], w.right[hand.smooth + 1])).toBeGreaterThan(0.1);
-      // The point is the maths' own C(5).
+      // The point is the maths' own P(5).
       const { knots } = caseKnots(7, name);
       const ones = SEVEN_POINTS.map(() => 1);
       expect(gap(w.left[0], nurbsPoint(SEVEN_POINTS, ones, knots, degree, 5))).toBeLessThan(1e-12);
@@ -251,19 +251,19 @@ describe('the continuity scene', () => {
       return steps.describe({ ...scene, step: k }, k);
     };
     expect(caption('linear')).toBe(
-      'Degree 1 on simple knots, at u = 5: C matches left and right, C′ does not: C⁰ = C¹⁻¹, through x4',
+      'Degree 1 on simple knots, at u = 5: P matches left and right, P′ does not: C⁰ = C¹⁻¹, through P4',
     );
     expect(caption('quadratic')).toBe(
-      'Degree 2 on simple knots, at u = 5: C and C′ match left and right, C″ does not: C¹ = C²⁻¹',
+      'Degree 2 on simple knots, at u = 5: P and P′ match left and right, P″ does not: C¹ = C²⁻¹',
     );
     expect(caption('cubic')).toBe(
-      'Degree 3 on simple knots, at u = 5: C, C′ and C″ match left and right, C‴ does not: C² = C³⁻¹',
+      'Degree 3 on simple knots, at u = 5: P, P′ and P″ match left and right, P‴ does not: C² = C³⁻¹',
     );
     expect(caption('double')).toBe(
-      'A double knot at u = 5 (u6 moved onto u5): C and C′ match left and right, C″ does not: C¹ = C³⁻²',
+      'A double knot at u = 5 (u6 moved onto u5): P and P′ match left and right, P″ does not: C¹ = C³⁻²',
     );
     expect(caption('triple')).toBe(
-      'A triple knot at u = 5 (u4 and u6 moved onto u5): C matches left and right, C′ does not: C⁰ = C³⁻³, through x3',
+      'A triple knot at u = 5 (u4 and u6 moved onto u5): P matches left and right, P′ does not: C⁰ = C³⁻³, through P3',
     );
   });
 
@@ -271,8 +271,8 @@ describe('the continuity scene', () => {
     const k = CONTINUITY_CASES.indexOf('cubic') + 1;
     const state = { ...scene, step: k };
     const tex = steps.formula!(lesson.derive(state), state)!;
-    // A column per derivative: C, C′ and C″ agree, C‴ does not; the left and right values in rows.
-    expect(tex).toContain("C'\\!:\\ = & C''\\!:\\ = & C'''\\!:\\ \\ne");
+    // A column per derivative: P, P′ and P″ agree, P‴ does not; the left and right values in rows.
+    expect(tex).toContain("P'\\!:\\ = & P''\\!:\\ = & P'''\\!:\\ \\ne");
     expect(tex).toMatch(
       /u \\to 5\^- & [^\\]*\\ [^&]*& [^&]*& \(0\.50,\\ 2\.00\) & \(1\.00,\\ 6\.00\)/,
     );
@@ -284,8 +284,8 @@ describe('the continuity scene', () => {
     const k = CONTINUITY_CASES.indexOf('cubic') + 1;
     const { texts } = drawCurve({ ...scene, step: k });
     expect(texts.filter((t) => t === 'C²')).toHaveLength(3);
-    expect(texts).toContain('C‴(5⁻)');
-    expect(texts).toContain('C‴(5⁺)');
+    expect(texts).toContain('P‴(5⁻)');
+    expect(texts).toContain('P‴(5⁺)');
     // Step 0: the points alone (their handles are the shell's), no label of the figure's.
     expect(drawCurve(scene).texts).toEqual([]);
   });

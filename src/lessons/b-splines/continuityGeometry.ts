@@ -20,7 +20,7 @@ export const AGREE = 1e-9;
 export interface JoinCheck {
   u: number;
   multiplicity: number;
-  /** C(u), C′(u), … C⁽ᵖ⁾(u) of the piece that ends at u: left[r] is the r-th derivative. */
+  /** P(u), P′(u), … P⁽ᵖ⁾(u) of the piece that ends at u: left[r] is the r-th derivative. */
   left: Point[];
   /** The same of the piece that starts at u. */
   right: Point[];

@@ -10,19 +10,19 @@ export type ContinuityReveal = 'points' | ContinuityCase;
 
 const PRIMES = ['', '′', '″', '‴'];
 
-/** The r-th derivative's name in a caption or label: C, C′, C″, C‴, C⁽⁴⁾. */
+/** The r-th derivative's name in a caption or label: P, P′, P″, P‴, P⁽⁴⁾. */
 export const derivativeName = (r: number) =>
-  r < PRIMES.length ? `C${PRIMES[r]}` : `C⁽${superscript(r)}⁾`;
+  r < PRIMES.length ? `P${PRIMES[r]}` : `P⁽${superscript(r)}⁾`;
 /** The same in TeX. */
-const derivativeTex = (r: number) => (r < PRIMES.length ? `C${"'".repeat(r)}` : `C^{(${r})}`);
+const derivativeTex = (r: number) => (r < PRIMES.length ? `P${"'".repeat(r)}` : `P^{(${r})}`);
 
 /** C², C⁰, C∞ for a caption or label. */
 export const smoothName = (k: number) =>
   k === Infinity ? 'C∞' : k < 0 ? 'no C⁰ (a jump)' : `C${superscript(k)}`;
 
-/** “C, C′ and C″ match left and right, C‴ does not”, from the check's numbers. */
+/** “P, P′ and P″ match left and right, P‴ does not”, from the check's numbers. */
 function agreement(check: JoinCheck): string {
-  if (check.smooth < 0) return 'C itself does not match left and right';
+  if (check.smooth < 0) return 'P itself does not match left and right';
   const matching = Array.from(
     { length: Math.min(check.smooth, check.agree.length - 1) + 1 },
     (_, r) => derivativeName(r),
@@ -61,7 +61,7 @@ function knotsSaid(m: ContinuityModel): string {
 }
 
 function caseCaption(m: ContinuityModel): string {
-  const through = m.watched.through === null ? '' : `, through x${m.watched.through}`;
+  const through = m.watched.through === null ? '' : `, through P${m.watched.through}`;
   return `${knotsSaid(m)}: ${agreement(m.watched)}: ${verdict(m)}${through}`;
 }
 
@@ -81,7 +81,7 @@ export function joinTex(m: ContinuityModel): string {
       : check.smooth < 0
         ? '\\text{a jump}'
         : `C^{${check.smooth}}`;
-  const through = check.through === null ? '' : `,\\quad C(${c}) = x_{${check.through}}`;
+  const through = check.through === null ? '' : `,\\quad P(${c}) = P_{${check.through}}`;
   const columns = 'c'.repeat(check.left.length);
   return `\\begin{array}{r|${columns}} & ${heads.join(' & ')} \\\\ \\hline u \\to ${c}^- & ${side(check.left)} \\\\ u \\to ${c}^+ & ${side(check.right)}\\end{array}\\;\\Rightarrow\\; ${smooth}${through}`;
 }
@@ -94,7 +94,7 @@ export function joinTex(m: ContinuityModel): string {
 export const continuityScript = script<BSplineState, ContinuityModel, ContinuityReveal>(
   step('points', ({ state }) => {
     const n = state.points.length;
-    return `The m + 1 = ${n} control points x0 … x${n - 1}: curves of degree 1, 2 and 3 come next`;
+    return `The m + 1 = ${n} control points P0 … P${n - 1}: curves of degree 1, 2 and 3 come next`;
   }),
   step(
     'linear',

@@ -20,13 +20,13 @@ export const localScript = script<BSplineState, LocalModel, LocalReveal>(
       const { moved, changed } = m.localControl;
       if (moved.length === 0) return '\\text{drag a control point}';
       const names = m.segments.flatMap((_, i) => (changed[i] ? [`Q_{${i + 3}}`] : []));
-      return `\\text{moved } ${moved.map((j) => `x_{${j}}`).join(', ')}:\\ \\text{changed } ${names.join(', ')}\\ \\text{of } ${m.segments.length}`;
+      return `\\text{moved } ${moved.map((j) => `P_{${j}}`).join(', ')}:\\ \\text{changed } ${names.join(', ')}\\ \\text{of } ${m.segments.length}`;
     },
   ),
   step(
     'basis',
     'The basis functions below: each is non-zero on four segments only',
-    ({ model: m }) => `P(s{=}${n3(m.u)}) = ${blend(m.basis, (j) => `x_{${j}}`)}`,
+    ({ model: m }) => `P(s{=}${n3(m.u)}) = ${blend(m.basis, (j) => `P_{${j}}`)}`,
   ),
 );
 
@@ -34,7 +34,7 @@ export const localScript = script<BSplineState, LocalModel, LocalReveal>(
 export type ConvertReveal = 'points' | 'curve' | 'bezier' | 'beziers' | 'back';
 
 /** The four B-spline points of the segment under the cursor, as TeX names. */
-const fourNames = (m: ConvertModel) => [0, 1, 2, 3].map((k) => `x_{${m.segment + k}}`);
+const fourNames = (m: ConvertModel) => [0, 1, 2, 3].map((k) => `P_{${m.segment + k}}`);
 
 /** B-spline ↔ Bézier, segment by segment. */
 export const convertScript = script<BSplineState, ConvertModel, ConvertReveal>(
@@ -81,6 +81,6 @@ export const propertiesScript = script<BSplineState, PropertiesModel, Properties
     'affine',
     'Affine invariance: the curve of the mapped points is the mapped curve',
     ({ model: m }) =>
-      `\\max\\,\\lvert A(P(s)) - P_{A x}(s) \\rvert = ${m.properties.deviation.toExponential(1)}`,
+      `\\max\\,\\lvert A(P(s)) - P_{AP}(s) \\rvert = ${m.properties.deviation.toExponential(1)}`,
   ),
 );

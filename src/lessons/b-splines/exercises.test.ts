@@ -34,7 +34,7 @@ describe('Where is a point of a segment? (seed 1)', () => {
   const posed = byId('segment-point').pose(1, defaults);
   const task = taskOf(posed, 'point');
 
-  it('poses Q₃(0.5) of seven zigzag points, and the answer is x₀ … x₃ weighted 1, 23, 23, 1 over 48', () => {
+  it('poses Q₃(0.5) of seven zigzag points, and the answer is P₀ … P₃ weighted 1, 23, 23, 1 over 48', () => {
     expect(posed.state.points).toEqual([
       [0, 4],
       [3, 1],
@@ -45,7 +45,7 @@ describe('Where is a point of a segment? (seed 1)', () => {
       [12, 3],
     ]);
     expect(posed.prompt).toContain('Q₃(0.5)');
-    expect(posed.prompt).toContain('x₀ … x₃');
+    expect(posed.prompt).toContain('Segment Q₃ blends P₀ … P₃');
     // B(½) = (1/48)(1, 23, 23, 1): x = (0 + 23·3 + 23·4 + 7)/48 = 168/48 = 3.5,
     // y = (4 + 23·1 + 23·4 + 0)/48 = 119/48.
     expect(task.answer[0]).toBeCloseTo(3.5, 12);
@@ -115,22 +115,22 @@ describe('Knots that make the curve touch a point (seed 1)', () => {
   const posed = byId('through-point').pose(1, defaults);
   const task = taskOf(posed, 'construct');
 
-  it('asks for x₃ on uniform knots 0 … 10, where the curve stays 0.95 away', () => {
-    expect(posed.prompt).toContain('through x₃ (within 0.15)');
+  it('asks for P₃ on uniform knots 0 … 10, where the curve stays 0.95 away', () => {
+    expect(posed.prompt).toContain('through P₃ (within 0.15)');
     expect(posed.state.knots).toEqual([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
-    // Near x₃ = (6, 1) the curve is at its joint C(5) = (x₂ + 4x₃ + x₄)/6 = ((4, 5) + (24, 4) + (8, 3))/6 = (6, 2).
+    // Near P₃ = (6, 1) the curve is at its joint P(5) = (P₂ + 4P₃ + P₄)/6 = ((4, 5) + (24, 4) + (8, 3))/6 = (6, 2).
     const verdict = task.check(posed.state);
     expect(verdict.correct).toBe(false);
-    expect(verdict.message).toContain('within 0.95 of x₃');
+    expect(verdict.message).toContain('within 0.95 of P₃');
   });
 
-  it('stacking u4, u5, u6 at 5 makes C(5) = x₃: at u = 5 only N(3,3) is 1', () => {
+  it('stacking u4, u5, u6 at 5 makes P(5) = P₃: at u = 5 only N(3,3) is 1', () => {
     // At u = 5 (span [u6, u7) = [5, 7)): N(5,1) = (7 − 5)/(7 − 5) = 1, N(4,2) = (7 − 5)/(7 − 5)·1 = 1,
     // N(3,3) = (u7 − u)/(u7 − u4)·N(4,2) = 2/2 = 1.
     expect(task.solution.knots).toEqual([0, 1, 2, 3, 5, 5, 5, 7, 8, 9, 10]);
     expect(task.check(task.solution)).toEqual({
       correct: true,
-      message: 'Correct: the curve passes through x₃, at u = 5.',
+      message: 'Correct: the curve passes through P₃, at u = 5.',
     });
   });
 
@@ -145,7 +145,7 @@ describe('Knots that make the curve touch a point (seed 1)', () => {
     expect(task.check(state).correct).toBe(true);
   });
 
-  it('a double knot is not enough: C¹ there, and the curve misses x₃', () => {
+  it('a double knot is not enough: C¹ there, and the curve misses P₃', () => {
     const double = { ...posed.state, knots: [0, 1, 2, 3, 4.5, 4.5, 6, 7, 8, 9, 10] };
     expect(task.check(double).correct).toBe(false);
   });

@@ -49,7 +49,7 @@ function partState(
 }
 
 /**
- * Seven points x0 … x6 of whole coordinates that zigzag along x: every other
+ * Seven points P0 … P6 of whole coordinates that zigzag along x: every other
  * one low (y 0 or 1), the others high (y 3 to 5), so no three lie on a line
  * and the curve keeps clear of every point (x = 2i, or 2i + 0/1 with `jitter`).
  */
@@ -61,7 +61,7 @@ function zigzag(r: Random, jitter: boolean): Point[] {
   });
 }
 
-const name = (i: number) => `x${sub(i)}`;
+const name = (i: number) => `P${sub(i)}`;
 const list = (values: readonly number[]) => values.map(words).join(', ');
 
 /** Where is Q_i(t)? The segment's four points blended by B0(t) … B3(t). */

@@ -18,17 +18,17 @@ export function facts(m: BSplineModel): RowSpec[] {
   const rows: RowSpec[] = [];
   const uniform = isUniformPart(s.part);
   rows.push(row(uniform ? 'parameter s' : 'parameter u', num(m.u)));
-  rows.push(row(uniform ? 'P(s)' : 'C(u)', point(m.point)));
+  rows.push(row(uniform ? 'P(s)' : 'P(u)', point(m.point)));
   if (!uniform) {
-    rows.push(row('curve start C(u(p))', point(m.start)));
-    rows.push(row('x0', point(s.points[0])));
-    rows.push(row('curve end C(u(m+1))', point(m.end)));
-    rows.push(row(`x${n - 1}`, point(s.points[n - 1])));
+    rows.push(row('curve start P(u(p))', point(m.start)));
+    rows.push(row('P0', point(s.points[0])));
+    rows.push(row('curve end P(u(m+1))', point(m.end)));
+    rows.push(row(`P${n - 1}`, point(s.points[n - 1])));
     for (const join of m.joins) {
       const through =
         join.through === null
           ? ''
-          : `, through x${join.through}: distance ${Math.hypot(join.at[0] - s.points[join.through][0], join.at[1] - s.points[join.through][1]).toExponential(1)}`;
+          : `, through P${join.through}: distance ${Math.hypot(join.at[0] - s.points[join.through][0], join.at[1] - s.points[join.through][1]).toExponential(1)}`;
       rows.push(
         row(
           `knot ${texNumber(join.u, 3)} ×${join.multiplicity}`,
@@ -62,21 +62,21 @@ function sceneFacts(m: BSplineModel): RowSpec[] {
       ];
     case 'circle':
       return [
-        row('circle: largest |‖C − c‖ − r|', m.circle.deviation.toExponential(1)),
+        row('circle: largest |‖P − c‖ − r|', m.circle.deviation.toExponential(1)),
         row('all weights 1: largest gap', num(m.circle.plainDeviation)),
       ];
     case 'projective':
       return m.projective.error
         ? []
         : [
-            row('H(C) vs NURBS of H(x), w′', m.projective.deviation.toExponential(1)),
-            row('H(C) vs old weights', num(m.projective.plainDeviation)),
+            row('H(P) vs NURBS of H(Pi), w′', m.projective.deviation.toExponential(1)),
+            row('H(P) vs old weights', num(m.projective.plainDeviation)),
           ];
     case 'meanings':
       return m.knotPoints.map((k) =>
         row(
-          `C(u${k.index}) at the knot u = ${texNumber(k.u, 3)}`,
-          `${point(k.at)}${k.on === null ? '' : ` = x${k.on}`}`,
+          `P(u${k.index}) at the knot u = ${texNumber(k.u, 3)}`,
+          `${point(k.at)}${k.on === null ? '' : ` = P${k.on}`}`,
         ),
       );
     case 'continuity': {

@@ -72,7 +72,7 @@ export function haloAt(
   return best;
 }
 
-/** The state with weight i set by a halo dragged to `to`: its radius is the distance to x_i. */
+/** The state with weight i set by a halo dragged to `to`: its radius is the distance to P_i. */
 export function dragHalo(state: BSplineState, i: number, to: Point, unit: number): BSplineState {
   const point = state.points[i];
   if (!point) return state;

@@ -68,7 +68,7 @@ function rowCaption(m: BSplineModel, r: number): string {
 export const knotScript = script<BSplineState, KnotModel, KnotReveal>(
   step('points', ({ state }) => {
     const n = state.points.length;
-    return `The m + 1 = ${n} control points x0 … x${n - 1}, for a curve of degree p = ${state.degree}`;
+    return `The m + 1 = ${n} control points P0 … P${n - 1}, for a curve of degree p = ${state.degree}`;
   }),
   step(
     'knots',
@@ -100,9 +100,9 @@ export const knotScript = script<BSplineState, KnotModel, KnotReveal>(
       const n = state.points.length;
       const p = state.degree;
       return state.part === 'clamped'
-        ? `The curve of degree ${p}: with p + 1 = ${p + 1} equal end knots it starts at x0 and ends at x${n - 1}`
+        ? `The curve of degree ${p}: with p + 1 = ${p + 1} equal end knots it starts at P0 and ends at P${n - 1}`
         : `The curve of degree ${p}: at a knot of multiplicity k it is C${superscript(p)}⁻ᵏ`;
     },
-    ({ model: m }) => `C(${n3(m.u)}) = ${blend(m.basis, (i) => `x_{${i}}`)} = ${pt(m.point)}`,
+    ({ model: m }) => `P(${n3(m.u)}) = ${blend(m.basis, (i) => `P_{${i}}`)} = ${pt(m.point)}`,
   ),
 );

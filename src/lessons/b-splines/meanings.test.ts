@@ -33,12 +33,12 @@ describe('two meanings of “knots” on one curve', () => {
     expect(steps.count(scene)).toBe(NAMES.length - 1);
   });
 
-  it('the knot values in the curve and C(u) at each: clamped, by hand and by the maths', () => {
+  it('the knot values in the curve and P(u) at each: clamped, by hand and by the maths', () => {
     // Clamped knots 0,0,0,0, ¼, ½, ¾, 1,1,1,1 on the seven points. At a simple knot uj the
-    // cubic is N(j−3) x(j−3) + N(j−2) x(j−2) + N(j−1) x(j−1) with N(j−3) = (u(j+1) − uj)²/
+    // cubic is N(j−3) P(j−3) + N(j−2) P(j−2) + N(j−1) P(j−1) with N(j−3) = (u(j+1) − uj)²/
     // ((u(j+1) − u(j−2))(u(j+1) − u(j−1))), N(j−1) = (uj − u(j−1))²/((u(j+2) − u(j−1))(u(j+1) − u(j−1))):
-    // u4 = ¼: ¼ x1 + 7/12 x2 + 1/6 x3 = (2.75, 3.25); u5 = ½: (x2 + 4x3 + x4)/6;
-    // u6 = ¾: 1/6 x3 + 7/12 x4 + ¼ x5; the clamped ends are x0 and x6.
+    // u4 = ¼: ¼ P1 + 7/12 P2 + 1/6 P3 = (2.75, 3.25); u5 = ½: (P2 + 4P3 + P4)/6;
+    // u6 = ¾: 1/6 P3 + 7/12 P4 + ¼ P5; the clamped ends are P0 and P6.
     const byHand: [number, number, Point, number | null][] = [
       [0, 3, [0, 0], 0],
       [0.25, 4, [2.75, 3.25], null],
@@ -51,7 +51,7 @@ describe('two meanings of “knots” on one curve', () => {
       byHand.map(([u, index, , on]) => [u, index, on]),
     );
     knotPoints.forEach((k, i) => {
-      expect(gap(k.at, byHand[i][2]), `C(u${k.index})`).toBeLessThan(1e-12);
+      expect(gap(k.at, byHand[i][2]), `P(u${k.index})`).toBeLessThan(1e-12);
       expect(gap(k.at, nurbsPoint(SEVEN_POINTS, ones, knots, 3, k.u))).toBe(0);
     });
     expect(knotPoints.map((k) => k.multiplicity)).toEqual([4, 1, 1, 1, 4]);
@@ -60,7 +60,7 @@ describe('two meanings of “knots” on one curve', () => {
   it('unclamped knots 0 … 10: only u3 … u7 have curve points, and none is a control point', () => {
     const knots = Array.from({ length: 11 }, (_, j) => j);
     const state = normalize({ ...scene, knots }).state;
-    // On knots 1 apart C(uj) = (x(j−3) + 4x(j−2) + x(j−1))/6.
+    // On knots 1 apart P(uj) = (P(j−3) + 4P(j−2) + P(j−1))/6.
     const byHand: Point[] = [
       [7 / 6, 16 / 6],
       [17.5 / 6, 20 / 6],
@@ -75,33 +75,33 @@ describe('two meanings of “knots” on one curve', () => {
       expect(gap(k.at, nurbsPoint(SEVEN_POINTS, ones, knots, 3, k.u))).toBe(0);
     });
     expect(knotPoints.every((k) => k.on === null)).toBe(true);
-    // The nearest pair: C(u5) and x3 = (4.5, 1), (1/12, 1/3) apart: √17/12 = 0.344.
+    // The nearest pair: P(u5) and P3 = (4.5, 1), (1/12, 1/3) apart: √17/12 = 0.344.
     expect(caption('meet', state)).toBe(
-      'No curve point at a knot lands on a control point here: the nearest pair, C(u₅) and x3, is marked with its distance',
+      'No curve point at a knot lands on a control point here: the nearest pair, P(u₅) and P3, is marked with its distance',
     );
     const last = { ...state, step: stepOf('meet') };
     expect(steps.formula!(lesson.derive(last), last)).toBe(
-      '\\text{nearest: } \\lvert C(u_{5}) - x_{3} \\rvert = 0.344',
+      '\\text{nearest: } \\lvert P(u_{5}) - P_{3} \\rvert = 0.344',
     );
     expect(Math.sqrt(17) / 12).toBeCloseTo(0.344, 3);
   });
 
   it('where knots make a join a control point, the two meanings are one spot', () => {
     expect(caption('meet')).toBe(
-      'Both meanings on one spot: C(u₃) = x0 and C(u₇) = x6, where the curve’s point at a knot value is a control point',
+      'Both meanings on one spot: P(u₃) = P0 and P(u₇) = P6, where the curve’s point at a knot value is a control point',
     );
-    // The repeated scene's knots: a knot of multiplicity p = 3 at u = 1 puts C(1) on x3.
+    // The repeated scene's knots: a knot of multiplicity p = 3 at u = 1 puts P(1) on P3.
     const repeated = normalize({ ...scene, knots: [0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2] }).state;
     expect(model(repeated).knotPoints.map((k) => k.on)).toEqual([0, 3, 6]);
-    expect(caption('meet', repeated)).toMatch(/C\(u₃\) = x0, C\(u₄\) = x3 and C\(u₇\) = x6/);
+    expect(caption('meet', repeated)).toMatch(/P\(u₃\) = P0, P\(u₄\) = P3 and P\(u₇\) = P6/);
   });
 
   it('quotes each document as it uses the word', () => {
     expect(caption('values')).toBe(
-      'Knots in the continuation notes and here: the parameter values u0 ≤ … ≤ u10 on the strip; the curve C(u) runs over them',
+      'Knots in the continuation notes and here: the parameter values u0 ≤ … ≤ u10 on the strip; the curve P(u) runs over them',
     );
     expect(caption('joins')).toBe(
-      'At the knot values the curve’s pieces join: C(u₃), C(u₄), C(u₅), C(u₆), C(u₇), each named after its u on the strip',
+      'At the knot values the curve’s pieces join: P(u₃), P(u₄), P(u₅), P(u₆), P(u₇), each named after its u on the strip',
     );
     expect(caption('lecture')).toContain(`“${KNOT_WORDS.lectureJoin}”`);
     expect(caption('controls')).toContain(`“${KNOT_WORDS.splineSlides}”`);
@@ -115,14 +115,14 @@ describe('two meanings of “knots” on one curve', () => {
     );
   });
 
-  it('draws each C(uj) named on the curve, a tick at its u on the strip, then each meaning’s rings', () => {
+  it('draws each P(uj) named on the curve, a tick at its u on the strip, then each meaning’s rings', () => {
     const curve = (step: number) =>
       drawState({ ...lesson, figures: [lesson.figures[0]] }, { ...scene, step });
     const strip = (step: number) =>
       drawState({ ...lesson, figures: [knotFigure] }, { ...scene, step }).elements;
     const joins = curve(stepOf('joins')).texts.join('');
-    for (const j of [3, 4, 5, 6, 7]) expect(joins).toContain(`C(u${j})`);
-    expect(curve(stepOf('values')).texts.join('')).not.toContain('C(u3)');
+    for (const j of [3, 4, 5, 6, 7]) expect(joins).toContain(`P(u${j})`);
+    expect(curve(stepOf('values')).texts.join('')).not.toContain('P(u3)');
     expect(strip(stepOf('joins')) - strip(stepOf('values'))).toBe(5);
     expect(curve(stepOf('lecture')).texts.join('')).toContain('the lecture notes’ knots');
     expect(curve(stepOf('controls')).texts.join('')).toContain('the “Splines” slides’ knots');

@@ -33,7 +33,7 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
     for (const k of m.knotPoints) {
       painter.dot(k.at, theme.ink, theme.sizes.point * 1.3);
       if (!info.thumbnail)
-        painter.labelClear(`C(u_{${k.index}})`, k.at, avoid, { color: theme.ink, halo: true });
+        painter.labelClear(`P(u_{${k.index}})`, k.at, avoid, { color: theme.ink, halo: true });
     }
   }
   const joinRing = theme.sizes.handle * 1.9;
@@ -44,7 +44,7 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
       legend(
         painter,
         0,
-        'C(u) at the knots, where the pieces join: the lecture notes’ knots',
+        'P(u) at the knots, where the pieces join: the lecture notes’ knots',
         theme.ink,
       );
   }
@@ -76,6 +76,6 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
         });
     }
   }
-  if (shown.has('values')) drawCursor(painter, m.point, 'C(u)', info);
+  if (shown.has('values')) drawCursor(painter, m.point, 'P(u)', info);
   ringHovered(painter, m, info);
 }

@@ -8,13 +8,13 @@ export interface KnotPoint {
   /** The knot that names it: u(j), the first of its run inside [u(p), u(m+1)]. */
   index: number;
   multiplicity: number;
-  /** C(u): where the pieces before and after u join (the curve's ends at u(p) and u(m+1)). */
+  /** P(u): where the pieces before and after u join (the curve's ends at u(p) and u(m+1)). */
   at: Point;
-  /** The control point C(u) lands on (within 1e-9), else null. */
+  /** The control point P(u) lands on (within 1e-9), else null. */
   on: number | null;
 }
 
-/** Every distinct knot value in the curve's domain [u(p), u(m+1)], with C(u) there. */
+/** Every distinct knot value in the curve's domain [u(p), u(m+1)], with P(u) there. */
 export function knotPoints({ curve, at }: KnotCurve): KnotPoint[] {
   const { knots, degree, domain, control } = curve;
   const found: KnotPoint[] = [];

@@ -9,8 +9,8 @@ import type { BSplineState } from './state';
 /** What the steps of the two meanings of “knots” reveal, by name. */
 export type MeaningsReveal = 'points' | 'values' | 'joins' | 'lecture' | 'controls' | 'meet';
 
-/** A knot point's name in a caption and on the figure: C(u₄). */
-export const knotPointName = (k: KnotPoint) => `C(u${sub(k.index)})`;
+/** A knot point's name in a caption and on the figure: P(u₄). */
+export const knotPointName = (k: KnotPoint) => `P(u${sub(k.index)})`;
 
 /** The knot points that land on a control point: where the two meanings are one spot. */
 const meeting = (m: MeaningsModel) => m.knotPoints.filter((k) => k.on !== null);
@@ -19,9 +19,9 @@ function meetCaption(m: MeaningsModel): string {
   const meet = meeting(m);
   if (meet.length === 0) {
     const { knot, point } = nearestControl(m.knotPoints, m.state.points);
-    return `No curve point at a knot lands on a control point here: the nearest pair, ${knotPointName(knot)} and x${point}, is marked with its distance`;
+    return `No curve point at a knot lands on a control point here: the nearest pair, ${knotPointName(knot)} and P${point}, is marked with its distance`;
   }
-  const said = meet.map((k) => `${knotPointName(k)} = x${k.on}`);
+  const said = meet.map((k) => `${knotPointName(k)} = P${k.on}`);
   const spots =
     said.length === 1 ? said[0] : `${said.slice(0, -1).join(', ')} and ${said[said.length - 1]}`;
   return `Both meanings on one spot: ${spots}, where the curve’s point at a knot value is a control point`;
@@ -31,9 +31,9 @@ function meetCaption(m: MeaningsModel): string {
 function meetTex(m: MeaningsModel): string {
   const meet = meeting(m);
   if (meet.length > 0)
-    return meet.map((k) => `C(u_{${k.index}}) = x_{${k.on}} = ${pt(k.at)}`).join(',\\quad ');
+    return meet.map((k) => `P(u_{${k.index}}) = P_{${k.on}} = ${pt(k.at)}`).join(',\\quad ');
   const { knot, point, distance } = nearestControl(m.knotPoints, m.state.points);
-  return `\\text{nearest: } \\lvert C(u_{${knot.index}}) - x_{${point}} \\rvert = ${n3(distance)}`;
+  return `\\text{nearest: } \\lvert P(u_{${knot.index}}) - P_{${point}} \\rvert = ${n3(distance)}`;
 }
 
 /**
@@ -45,12 +45,12 @@ function meetTex(m: MeaningsModel): string {
 export const meaningsScript = script<BSplineState, MeaningsModel, MeaningsReveal>(
   step('points', ({ state }) => {
     const n = state.points.length;
-    return `The m + 1 = ${n} control points x0 … x${n - 1} of a B-spline of degree ${state.degree}`;
+    return `The m + 1 = ${n} control points P0 … P${n - 1} of a B-spline of degree ${state.degree}`;
   }),
   step(
     'values',
     ({ model: m }) =>
-      `Knots in the continuation notes and here: the parameter values u0 ≤ … ≤ u${m.knots.length - 1} on the strip; the curve C(u) runs over them`,
+      `Knots in the continuation notes and here: the parameter values u0 ≤ … ≤ u${m.knots.length - 1} on the strip; the curve P(u) runs over them`,
     ({ model: m }) => `u = (${m.knots.map((v) => texNumber(v, 2)).join(',\\ ')})`,
   ),
   step(
@@ -59,14 +59,14 @@ export const meaningsScript = script<BSplineState, MeaningsModel, MeaningsReveal
       `At the knot values the curve’s pieces join: ${m.knotPoints.map(knotPointName).join(', ')}, each named after its u on the strip`,
     ({ model: m }) =>
       `\\begin{aligned}${m.knotPoints
-        .map((k) => `C(u_{${k.index}}) &= C(${trimmed(k.u, 3)}) = ${pt(k.at)}`)
+        .map((k) => `P(u_{${k.index}}) &= P(${trimmed(k.u, 3)}) = ${pt(k.at)}`)
         .join(' \\\\ ')}\\end{aligned}`,
   ),
   step('lecture', `The lecture notes call such points knots: “${KNOT_WORDS.lectureJoin}”`),
   step(
     'controls',
     ({ state }) =>
-      `The “Splines” slides’ “${KNOT_WORDS.splineSlides}”, like the lecture notes’ Bézier curve that “${KNOT_WORDS.lectureBezier}”: here x0 … x${state.points.length - 1}`,
+      `The “Splines” slides’ “${KNOT_WORDS.splineSlides}”, like the lecture notes’ Bézier curve that “${KNOT_WORDS.lectureBezier}”: here P0 … P${state.points.length - 1}`,
   ),
   step(
     'meet',

@@ -28,7 +28,7 @@ const sceneState = (id: string, changes: Partial<BSplineState> = {}): BSplineSta
 const gap = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 
 describe('the uniform cubic B-spline in the slides’ matrix form', () => {
-  it('m + 1 = 7 points give m − 2 = 4 segments; open at (x0 + 4x1 + x2)/6, closed gives m + 1', () => {
+  it('m + 1 = 7 points give m − 2 = 4 segments; open at (P0 + 4P1 + P2)/6, closed gives m + 1', () => {
     const m = derive(sceneState('uniform'));
     expect(m.segments).toHaveLength(4);
     // (0 + 4·1 + 3)/6 = 7/6 and (0 + 4·3 + 4)/6 = 16/6; the end (4.5·0 + … ) = (6.5 + 32 + 10)/6, (0 + 12 + 3.5)/6.
@@ -39,15 +39,15 @@ describe('the uniform cubic B-spline in the slides’ matrix form', () => {
     expect(derive(sceneState('closed')).segments).toHaveLength(6);
   });
 
-  it('segment i blends x_i … x_{i+3} with the 1/6 matrix: at local t = 1/2 the weights are 1/48, 23/48, 23/48, 1/48', () => {
-    // s = 1.5: segment 1 (Q4, x1 … x4) at t = 1/2.
+  it('segment i blends P_i … P_{i+3} with the 1/6 matrix: at local t = 1/2 the weights are 1/48, 23/48, 23/48, 1/48', () => {
+    // s = 1.5: segment 1 (Q4, P1 … P4) at t = 1/2.
     const m = derive({ ...sceneState('uniform'), t: 1.5 / 4 });
     expect(m.segment).toBe(1);
     expect(m.basis.slice(1, 5).map((b) => b * 48)).toEqual(
       [1, 23, 23, 1].map((v) => expect.closeTo(v, 12)),
     );
-    const [x1, x2, x3, x4] = SEVEN_POINTS.slice(1, 5);
-    const expected = [0, 1].map((d) => (x1[d] + 23 * x2[d] + 23 * x3[d] + x4[d]) / 48);
+    const [P1, P2, P3, P4] = SEVEN_POINTS.slice(1, 5);
+    const expected = [0, 1].map((d) => (P1[d] + 23 * P2[d] + 23 * P3[d] + P4[d]) / 48);
     expect(gap(m.point, expected)).toBeLessThan(1e-12);
   });
 
@@ -80,7 +80,7 @@ describe('the uniform cubic B-spline in the slides’ matrix form', () => {
     );
   });
 
-  it('the local-control scene says which segments changed: x4 moved, Q4 … Q7 of Q3 … Q9', () => {
+  it('the local-control scene says which segments changed: P4 moved, Q4 … Q7 of Q3 … Q9', () => {
     const m = modelOf('local', sceneState('local'));
     expect(m.localControl.moved).toEqual([4]);
     expect(m.localControl.changed).toEqual([false, true, true, true, true, false, false]);
@@ -104,7 +104,7 @@ describe('knots and Cox–de Boor', () => {
     }
   });
 
-  it('clamped knots: the curve starts at x0 and ends at the last point', () => {
+  it('clamped knots: the curve starts at P0 and ends at the last point', () => {
     const m = derive(sceneState('clamped'));
     expect(gap(m.start, SEVEN_POINTS[0])).toBeLessThan(1e-12);
     expect(gap(m.end, SEVEN_POINTS[6])).toBeLessThan(1e-12);
@@ -114,13 +114,13 @@ describe('knots and Cox–de Boor', () => {
   });
 
   it('a knot of multiplicity p makes the curve C⁰ there and pass through a control point', () => {
-    // Knots 0,0,0,0, 1,1,1, 2,2,2,2: at u = 1 only N(3,3) is non-zero, so C(1) = x3.
+    // Knots 0,0,0,0, 1,1,1, 2,2,2,2: at u = 1 only N(3,3) is non-zero, so P(1) = P3.
     const m = derive(sceneState('repeated'));
     expect(m.joins).toHaveLength(1);
     const [join] = m.joins;
     expect(join).toMatchObject({ u: 1, multiplicity: 3, continuity: 0, through: 3 });
     expect(gap(join.at, SEVEN_POINTS[3])).toBeLessThan(1e-12);
-    // Multiplicity 2 instead: C¹ there, and no longer through x3.
+    // Multiplicity 2 instead: C¹ there, and no longer through P3.
     const double = derive(sceneState('repeated', { knots: [0, 0, 0, 0, 1, 1, 1.5, 2, 2, 2, 2] }));
     expect(double.joins[0]).toMatchObject({ multiplicity: 2, continuity: 1, through: null });
   });

@@ -47,7 +47,7 @@ export interface KnotJoin {
 
 /** The curve: what its points, degree, knots and weights make, whatever the parameter. */
 export interface Curve {
-  /** The curve's control points (closed: x0 … xm, x0, x1, x2). */
+  /** The curve's control points (closed: P0 … Pm, P0, P1, P2). */
   control: Point[];
   /** Index into the points of each control point (closed: wraps). */
   owner: number[];
@@ -130,7 +130,7 @@ export interface Projective {
   points: Point[];
   weights: number[];
   curve: Float64Array;
-  /** The mapped curve samples H(C(u)). */
+  /** The mapped curve samples H(P(u)). */
   mapped: Point[];
   /** The mapped points with the old weights: not the mapped curve. */
   plain: Float64Array;
@@ -155,7 +155,7 @@ export type ProjectiveModel = SceneModel<'projective', ProjectiveReveal> & {
   projective: Projective;
 };
 
-/** The two meanings of “knots”: the parameter values, and C(u) at each of them. */
+/** The two meanings of “knots”: the parameter values, and P(u) at each of them. */
 export type MeaningsModel = SceneModel<'meanings', MeaningsReveal> & { knotPoints: KnotPoint[] };
 /** The step's curve (its degree and knots come from the step), every knot checked, one watched. */
 export type ContinuityModel = SceneModel<'continuity', ContinuityReveal> & {

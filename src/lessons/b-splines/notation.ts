@@ -10,12 +10,12 @@ const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 export const superscript = (n: number) =>
   [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
 
-/** A segment is named after its last control point, as the slides' c_i: Q_i blends x_{i−3} … x_i. */
+/** A segment is named after its last control point, as the slides' c_i: Q_i blends P_{i−3} … P_i. */
 export const segmentName = (first: number) => `Q${first + 3}`;
 /** The same name with its subscript, for labels and TeX (`Q_{4}`). */
 export const segmentLabel = (first: number) => segmentName(first).replace(/(\d+)/, '_{$1}');
 
-/** Σ (number) x_i over the non-zero terms, e.g. `0.167\,x_{2} + 0.667\,x_{3}`. */
+/** Σ (number) P_i over the non-zero terms, e.g. `0.167\,P_{2} + 0.667\,P_{3}`. */
 export function blend(values: readonly number[], names: (i: number) => string): string {
   return values
     .map((v, i) => (v === 0 ? '' : `${n3(v)}\\,${names(i)}`))

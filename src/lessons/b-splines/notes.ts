@@ -5,19 +5,23 @@ import { notesKey, notesSlip } from '../../kit/notes';
 /** How the lesson's symbols read in the notes: (here, in the notes). */
 export const NOTES_SYMBOLS: readonly (readonly [string, string])[] = [
   [
-    'x0 … xm: m + 1 control points, m ≥ 3',
-    'the same in the lecture slides (“Example – a cubic B-spline”); p0, p1, … in the continuation notes',
+    'P0 … Pm: m + 1 control points, m ≥ 3',
+    'x0 … xm in the lecture slides (“Example – a cubic B-spline”); p0, p1, … in the continuation notes',
   ],
   [
-    'Qi: the segment of x(i−3) … xi, i = 3 … m',
-    'cᵢ in the lecture slides (c3 … cm), each written there as xᵢ(u); P(t) in the continuation notes',
+    'P(u): the whole curve (P(s) in the uniform cubic)',
+    'the lecture slides write it only segment by segment, as xᵢ(u); the continuation notes write P(t) for a segment’s formula (their t counting segments, s here) and p(t) for a NURBS curve',
+  ],
+  [
+    'Qi: the segment of P(i−3) … Pi, i = 3 … m',
+    'cᵢ in the lecture slides (c3 … cm), each written there as xᵢ(u), of x(i−3) … xi; P(t) in the continuation notes, of p0 … p3',
   ],
   [
     'B0(t) … B3(t): the weights of a segment’s four points',
     'the continuation notes’ uniform cubic B-spline bases, the same four cubics; the columns of the slides’ matrix B',
   ],
   [
-    'N(i,p): the basis function of xᵢ over the whole curve',
+    'N(i,p): the basis function of Pᵢ over the whole curve',
     'not named in the notes; the B(k,n) of the “Splines” slides is a Bézier (Bernstein) blending function of degree n, not a B-spline basis function',
   ],
   [
@@ -41,7 +45,7 @@ export const notesSymbols = () => notesKey(NOTES_SYMBOLS);
 export const CLOSED_SLIP = {
   written: 'that a closed spline has the same matrix B for all segments and x₀ = xₘ',
   correct:
-    'The matrix is the same everywhere, but one repeated point does not close the curve: a segment reads four points, so closing it takes three, x(m+1) = x0, x(m+2) = x1 and x(m+3) = x2. With only the last point on the first, the curve’s ends (x0 + 4x1 + x2)/6 and (x(m−2) + 4x(m−1) + xm)/6 do not meet.',
+    'The matrix is the same everywhere, but one repeated point does not close the curve: a segment reads four points, so closing it takes three, P(m+1) = P0, P(m+2) = P1 and P(m+3) = P2. With only the last point on the first, Pm = P0, the curve’s ends (P0 + 4P1 + P2)/6 and (P(m−2) + 4P(m−1) + Pm)/6 do not meet.',
 } as const;
 
 export const closedSlip = () => notesSlip('slides', CLOSED_SLIP.written, CLOSED_SLIP.correct);

@@ -15,18 +15,18 @@ export const nurbsScript = script<BSplineState, NurbsModel, NurbsReveal>(
     'weights',
     'Weights: a heavier point pulls the curve towards itself, a lighter one lets it go',
   ),
-  step('sum', 'C(u) = Σ wᵢNᵢ(u)xᵢ / Σ wᵢNᵢ(u), with the numbers at u', ({ model: m }) => {
+  step('sum', 'P(u) = Σ wᵢNᵢ(u)Pᵢ / Σ wᵢNᵢ(u), with the numbers at u', ({ model: m }) => {
     const terms = m.basis.flatMap((b, i) =>
-      b === 0 ? [] : [`${texNumber(m.weights[i], 2)}\\cdot${n3(b)}\\,x_{${i}}`],
+      b === 0 ? [] : [`${texNumber(m.weights[i], 2)}\\cdot${n3(b)}\\,P_{${i}}`],
     );
-    return `C(${n3(m.u)}) = \\dfrac{${terms.join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
+    return `P(${n3(m.u)}) = \\dfrac{${terms.join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
   }),
 );
 
 /** What the steps of the exact circle reveal, by name. */
 export type CircleReveal = 'points' | 'weights' | 'arcs' | 'samples' | 'plain';
 
-const circleGap = '\\max_u \\bigl\\lvert\\, \\lVert C(u) - c \\rVert - r \\,\\bigr\\rvert';
+const circleGap = '\\max_u \\bigl\\lvert\\, \\lVert P(u) - c \\rVert - r \\,\\bigr\\rvert';
 
 /** The exact circle: nine points with their weights, four rational arcs, checked against the circle. */
 export const circleScript = script<BSplineState, CircleModel, CircleReveal>(
@@ -58,7 +58,7 @@ export const projectiveScript = script<BSplineState, ProjectiveModel, Projective
     ({ model: { projective: pr } }) =>
       pr.error
         ? null
-        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert C_{Hx,\\,w'}(u) - H(C(u)) \\rvert = ${pr.deviation.toExponential(1)}`,
+        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert P_{HP,\\,w'}(u) - H(P(u)) \\rvert = ${pr.deviation.toExponential(1)}`,
   ),
   step(
     'oldWeights',
@@ -66,6 +66,6 @@ export const projectiveScript = script<BSplineState, ProjectiveModel, Projective
     ({ model: { projective: pr } }) =>
       pr.error
         ? null
-        : `\\text{old weights: } \\max_u \\lvert C_{Hx,\\,w}(u) - H(C(u)) \\rvert = ${n3(pr.plainDeviation)}`,
+        : `\\text{old weights: } \\max_u \\lvert P_{HP,\\,w}(u) - H(P(u)) \\rvert = ${n3(pr.plainDeviation)}`,
   ),
 );

@@ -17,7 +17,7 @@ import { triangleTable } from './triangleTable';
 import { weightSliders } from './weightSliders';
 
 const MATRIX =
-  'Q_i(t) = \\begin{bmatrix}1 & t & t^2 & t^3\\end{bmatrix}\\,\\frac16\\begin{bmatrix}1 & 4 & 1 & 0\\\\ -3 & 0 & 3 & 0\\\\ 3 & -6 & 3 & 0\\\\ -1 & 3 & -3 & 1\\end{bmatrix}\\begin{bmatrix}x_{i-3}\\\\ x_{i-2}\\\\ x_{i-1}\\\\ x_i\\end{bmatrix}';
+  'Q_i(t) = \\begin{bmatrix}1 & t & t^2 & t^3\\end{bmatrix}\\,\\frac16\\begin{bmatrix}1 & 4 & 1 & 0\\\\ -3 & 0 & 3 & 0\\\\ 3 & -6 & 3 & 0\\\\ -1 & 3 & -3 & 1\\end{bmatrix}\\begin{bmatrix}P_{i-3}\\\\ P_{i-2}\\\\ P_{i-1}\\\\ P_i\\end{bmatrix}';
 const RECURSION =
   'N_{i,r}(u) = \\frac{u - u_i}{u_{i+r} - u_i}\\,N_{i,r-1}(u) + \\frac{u_{i+r+1} - u}{u_{i+r+1} - u_{i+1}}\\,N_{i+1,r-1}(u)';
 
@@ -43,7 +43,7 @@ export function bsplinePanel(
   const stepLine = h('p', { class: 'note' });
   // Degenerate control points, said in words (the figure alone shows a dot or a line).
   const shapeNote = h('p', { class: 'note' });
-  // The step's formula: its shape typeset once, its numbers (u, N, C(u)) written as text.
+  // The step's formula: its shape typeset once, its numbers (u, N, P(u)) written as text.
   const stepFormula = new LiveFormula(true);
   const stepBox = h('div', { class: 'step-formulas' }, stepFormula.element);
   const matrix = formula(MATRIX, true);

@@ -4,7 +4,7 @@ import { type BSplineState, CONTINUITY_POINTS, MAX_POINTS, refitKnots } from './
 
 /**
  * A list whose points keep their own labels even on one spot: the lesson
- * names every point apart (the circle's x0 and x8 share a spot, each labelled).
+ * names every point apart (the circle's P0 and P8 share a spot, each labelled).
  */
 function labelledApart<S>(list: PointList<S>, label: (i: number) => string): PointList<S> {
   return {
@@ -40,7 +40,7 @@ function withPoints(state: BSplineState, points: Point[]): BSplineState {
   return { ...state, points, before, weights, knots };
 }
 
-const label = (i: number) => `x_{${i}}`;
+const label = (i: number) => `P_{${i}}`;
 const list = pointList<BSplineState>({
   id: 'p',
   get: (s) => s.points,
@@ -52,7 +52,7 @@ const list = pointList<BSplineState>({
   constrain: (_s, _i, to) => [to[0], to[1]],
 });
 
-/** The control points x0 … xm: dragged, moved by keyboard, added and removed. */
+/** The control points P0 … Pm: dragged, moved by keyboard, added and removed. */
 export const controlPoints: PointList<BSplineState> = {
   ...labelledApart(list, label),
   // Degree p needs p + 1 points; the continuity scene's triple knot needs seven.

@@ -17,7 +17,7 @@ const CLOSED: Point[] = [
   [0.5, 5],
 ];
 
-/** Ten points (seven segments), so that moving x4 leaves three of them as they were. */
+/** Ten points (seven segments), so that moving P4 leaves three of them as they were. */
 const LONG: Point[] = [
   [0, 0],
   [1, 3],

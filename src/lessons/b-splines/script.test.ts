@@ -12,6 +12,7 @@ import { partScript } from './scripts';
 import { CLOSED_SLIP, NOTES_SYMBOLS } from './notes';
 import { type BSplineState, isUniformPart, normalize, schema } from './state';
 import { TEXTS } from './texts';
+import { facts } from './facts';
 import { basisFigure } from './basisFigure';
 
 const derive = (s: BSplineState) => lesson.derive(s) as BSplineModel;
@@ -75,7 +76,7 @@ describe('the scenes and their named steps', () => {
   it('captions and formulas come from the step declared with them', () => {
     const s = sceneState('uniform');
     expect(lesson.steps!.describe(s, 2)).toBe(
-      'Segment Q4 blends x1, x2, x3, x4 with the four bases B0(t) … B3(t)',
+      'Segment Q4 blends P1, P2, P3, P4 with the four bases B0(t) … B3(t)',
     );
     const knots = sceneState('knots', { step: 2 });
     expect(lesson.steps!.describe(knots, 2)).toBe(
@@ -122,10 +123,10 @@ describe('what a step draws, by name', () => {
     expect(moved.line).toEqual([s.line[0], [10, 5]]);
   });
 
-  it('every control point keeps its own label, even two on one spot (the circle’s x0 and x8)', () => {
+  it('every control point keeps its own label, even two on one spot (the circle’s P0 and P8)', () => {
     const handles = controlPoints.handles(sceneState('circle'));
     expect(handles.map((h) => [h.label, h.showLabel])).toEqual(
-      handles.map((_, i) => [`x_{${i}}`, true]),
+      handles.map((_, i) => [`P_{${i}}`, true]),
     );
   });
 
@@ -217,14 +218,14 @@ const allCaptions = () =>
     );
   });
 
-describe('one notation, as the slides write it: m + 1 control points x0 … xm', () => {
+describe('one notation, the app’s: m + 1 control points P0 … Pm (the slides’ x0 … xm)', () => {
   it('every scene counts its seven points as m + 1 = 7, the knot scenes too', () => {
     expect(lesson.steps!.describe(sceneState('uniform'), 0)).toBe(
-      'The m + 1 = 7 control points x0 … x6',
+      'The m + 1 = 7 control points P0 … P6',
     );
     for (const id of ['knots', 'clamped', 'repeated']) {
       const s = sceneState(id);
-      expect(lesson.steps!.describe(s, 0)).toMatch(/^The m \+ 1 = 7 control points x0 … x6/);
+      expect(lesson.steps!.describe(s, 0)).toMatch(/^The m \+ 1 = 7 control points P0 … P6/);
       expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
         'The knot vector u0 … u10: m + p + 2 = 11 knots on the strip',
       );
@@ -234,8 +235,74 @@ describe('one notation, as the slides write it: m + 1 control points x0 … xm',
   it('no caption or panel text counts the points as n', () => {
     const texts = [...allCaptions(), ...Object.values(TEXTS).map((t) => t.text)];
     for (const text of texts) expect(text).not.toMatch(/\bn = \d|\bn \+ p|\(n\+p\)|\bun\]|N\(n−1/);
-    expect(TEXTS.knots.text).toMatch(/m \+ 1 control points x0 … xm/);
+    expect(TEXTS.knots.text).toMatch(/m \+ 1 control points P0 … Pm/);
     expect(TEXTS.knots.text).toMatch(/u\(m\+p\+1\) of m \+ p \+ 2 numbers/);
+  });
+
+  // The app writes control points P0 … Pm and the curve P(u) (P(s) in the uniform cubic),
+  // as every other lesson does; the notes' x0 … xm and C(u) appear only inside quotation marks.
+  const notesLetters = /(?<!\p{L})(?:x(?:[0-9ᵢₘ₀-₉(]|_\{|[im](?!\p{L}))|C(?:\(|\)|_\{|['′″‴⁽]))/u;
+  const unquoted = (text: string) => text.replace(/“[^”]*”/g, '“…”');
+
+  it('the notes’ letters, x0 … xm and C(u), are caught where they are written', () => {
+    for (const text of [
+      'x0 … xm',
+      'x(m+1) = x0',
+      'xᵢ',
+      'x₀',
+      '\\,x_{2}',
+      'C(u)',
+      'H(C)',
+      "C'",
+      'C′',
+      'C_{Hx}',
+    ])
+      expect(text).toMatch(notesLetters);
+    for (const text of [
+      'P0 … Pm',
+      'P(u)',
+      'C²',
+      'C^{2}',
+      'the matrix',
+      'max_u',
+      'h_{20}x_i',
+      '“xi(p̄i)”',
+    ])
+      expect(unquoted(text)).not.toMatch(notesLetters);
+  });
+
+  it('writes P0 … Pm and P(u) in every caption, formula, figure label, handle, fact and panel text', () => {
+    const found: string[] = [];
+    const check = (where: string, text: string) => {
+      if (notesLetters.test(unquoted(text))) found.push(`${where}: ${text}`);
+    };
+    for (const { id, count, at } of sceneStates(lesson))
+      for (let k = 0; k <= count; k++) {
+        const state = at(k) as unknown as BSplineState;
+        const m = derive(state);
+        check(`${id} step ${k} caption`, lesson.steps!.describe(state, k));
+        check(`${id} step ${k} formula`, lesson.steps!.formula!(m, state) ?? '');
+        for (const text of drawState(lesson, state).texts) check(`${id} step ${k} label`, text);
+        for (const row of facts(m))
+          for (const cell of row.cells)
+            check(`${id} step ${k} fact`, typeof cell === 'string' ? cell : cell.text);
+        for (const handle of controlPoints.handles(state)) check(`${id} handle`, handle.label);
+      }
+    for (const { title, text } of Object.values(TEXTS)) check(title, text);
+    for (const [here] of NOTES_SYMBOLS) check('key', here);
+    check('closed slip', CLOSED_SLIP.correct);
+    expect(found).toEqual([]);
+    // The key says how the notes write what the app writes P: points, segments, the curve.
+    expect(NOTES_SYMBOLS.map(([here]) => here)).toEqual(
+      expect.arrayContaining([
+        'P0 … Pm: m + 1 control points, m ≥ 3',
+        'P(u): the whole curve (P(s) in the uniform cubic)',
+      ]),
+    );
+    const there = new Map(NOTES_SYMBOLS);
+    expect(there.get('P0 … Pm: m + 1 control points, m ≥ 3')).toMatch(
+      /^x0 … xm in the lecture slides/,
+    );
   });
 
   it('says once what order means: degree p, order p + 1', () => {
@@ -360,11 +427,11 @@ describe('the closed uniform B-spline needs three points wrapped', () => {
   it('says so in its caption, and the slides’ x₀ = xₘ kindly beside it', () => {
     const s = sceneState('closed');
     expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
-      'Closed: after x5 come x0, x1, x2 again (x6 = x0, x7 = x1, x8 = x2)',
+      'Closed: after P5 come P0, P1, P2 again (P6 = P0, P7 = P1, P8 = P2)',
     );
     expect(CLOSED_SLIP.written).toMatch(/x₀ = xₘ/);
-    expect(CLOSED_SLIP.correct).toMatch(/x\(m\+1\) = x0, x\(m\+2\) = x1 and x\(m\+3\) = x2/);
-    expect(TEXTS.closed.text).toMatch(/x\(m\+1\) = x0, x\(m\+2\) = x1, x\(m\+3\) = x2/);
+    expect(CLOSED_SLIP.correct).toMatch(/P\(m\+1\) = P0, P\(m\+2\) = P1 and P\(m\+3\) = P2/);
+    expect(TEXTS.closed.text).toMatch(/P\(m\+1\) = P0, P\(m\+2\) = P1, P\(m\+3\) = P2/);
   });
 
   it('the curve closes with three points wrapped, and not with the last point on the first alone', () => {
@@ -373,7 +440,7 @@ describe('the closed uniform B-spline needs three points wrapped', () => {
     expect(
       Math.hypot(closed.start[0] - closed.end[0], closed.start[1] - closed.end[1]),
     ).toBeLessThan(1e-12);
-    // The slides' x0 = xm read as an open curve whose last point is its first: the ends do not meet.
+    // The slides' x0 = xm (P0 = Pm here) read as an open curve whose last point is its first: the ends do not meet.
     const points = sceneState('closed').points;
     const open = derive({ ...sceneState('uniform'), points: [...points, points[0]] });
     expect(isUniformPart(open.state.part)).toBe(true);

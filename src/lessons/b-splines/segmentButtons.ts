@@ -21,7 +21,7 @@ export function segmentButtons(api: LessonApi<BSplineState, BSplineModel>) {
       buttons = m.segments.map((segment, i) => {
         const first = segment.points[0];
         const last = segment.points[segment.points.length - 1];
-        const button = h('button', { type: 'button' }, `${segmentName(i)}: x${first} … x${last}`);
+        const button = h('button', { type: 'button' }, `${segmentName(i)}: P${first} … P${last}`);
         button.style.borderColor = api.theme().palette[i % api.theme().palette.length];
         const on = () => api.setHover(segmentIds.id(i));
         const off = () => api.setHover(null);

@@ -46,7 +46,7 @@ export const PARTS: readonly Part[] = [
 export interface BSplineState {
   /** Which scene the state is in (`x`). */
   part: Part;
-  /** Control points x0 … xm (`p`). */
+  /** Control points P0 … Pm (`p`). */
   points: Point[];
   /** The control points before the last change, for local control's "before" curve (`q`). */
   before: Point[];

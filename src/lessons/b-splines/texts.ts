@@ -8,12 +8,12 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   uniform: {
     title: 'The uniform cubic B-spline',
     text:
-      'm + 1 control points x0 … xm (m ≥ 3) give m − 2 cubic segments Q3 … Qm. Segment Qi blends the four points x(i−3) … xi with the matrix below, at its local parameter t ∈ [0, 1]: the four weights are the columns of the matrix, the bases B0(t) = (1 − t)³/6, B1(t) = (3t³ − 6t² + 4)/6, B2(t) = (−3t³ + 3t² + 3t + 1)/6 and B3(t) = t³/6. They are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. The slider t runs along the whole curve: s = (m − 2)·t counts segments, Qi being s from i − 3 to i − 2. ' +
+      'm + 1 control points P0 … Pm (m ≥ 3) give m − 2 cubic segments Q3 … Qm. Segment Qi blends the four points P(i−3) … Pi with the matrix below, at its local parameter t ∈ [0, 1]: the four weights are the columns of the matrix, the bases B0(t) = (1 − t)³/6, B1(t) = (3t³ − 6t² + 4)/6, B2(t) = (−3t³ + 3t² + 3t + 1)/6 and B3(t) = t³/6. They are never negative and sum to 1, so the curve follows the polygon without passing through its points, and neighbouring segments join with C² continuity. The slider t runs along the whole curve P(s): s = (m − 2)·t counts segments, Qi being s from i − 3 to i − 2. ' +
       `${capital(gestures().point)} a segment (or Tab to its button) to see its four points; ${gestures().point} a point to see the segments it moves.`,
   },
   closed: {
     title: 'The closed uniform B-spline',
-    text: 'Use the first three points again after the last: x(m+1) = x0, x(m+2) = x1, x(m+3) = x2. Every segment reads four points, so three repeated points are what closing takes: the same matrix then gives m + 1 segments, one for each point, and the curve closes on itself with C² continuity everywhere — there is no special end.',
+    text: 'Use the first three points again after the last: P(m+1) = P0, P(m+2) = P1, P(m+3) = P2. Every segment reads four points, so three repeated points are what closing takes: the same matrix then gives m + 1 segments, one for each point, and the curve closes on itself with C² continuity everywhere — there is no special end.',
   },
   local: {
     title: 'Local control',
@@ -21,7 +21,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   convert: {
     title: 'B-spline ↔ Bézier, segment by segment',
-    text: 'Each segment is a cubic, so it is also a Bézier curve: G_Bez = M_Bez⁻¹ · M_B · G_B gives its four Bézier points from its four B-spline points, and M_B⁻¹ · M_Bez gives them back. The end point of a segment, (x(i−1) + 4xi + x(i+1))/6, is shared with the next one.',
+    text: 'Each segment is a cubic, so it is also a Bézier curve: G_Bez = M_Bez⁻¹ · M_B · G_B gives its four Bézier points from its four B-spline points, and M_B⁻¹ · M_Bez gives them back. The end point of a segment, (P(i−1) + 4Pi + P(i+1))/6, is shared with the next one.',
   },
   properties: {
     title: 'Properties',
@@ -29,11 +29,11 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   knots: {
     title: 'Knots and the Cox–de Boor recursion',
-    text: 'In general a B-spline of degree p — of order p + 1: the cubic has degree 3 and order 4 — has m + 1 control points x0 … xm and a knot vector u0 ≤ u1 ≤ … ≤ u(m+p+1) of m + p + 2 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). On equally spaced knots every span gets the same pieces in its local t, and row 3 derives the uniform cubic bases B0(t) … B3(t) of the matrix form. The curve lives on [up, u(m+1)] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
+    text: 'In general a B-spline of degree p — of order p + 1: the cubic has degree 3 and order 4 — has m + 1 control points P0 … Pm and a knot vector u0 ≤ u1 ≤ … ≤ u(m+p+1) of m + p + 2 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). On equally spaced knots every span gets the same pieces in its local t, and row 3 derives the uniform cubic bases B0(t) … B3(t) of the matrix form. The curve P(u) lives on [up, u(m+1)] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
   },
   clamped: {
     title: 'Clamped ends',
-    text: 'With p + 1 equal knots at each end, only N(0,p) is non-zero at the start and only N(m,p) at the end: the curve starts at x0 and ends at xm, tangent to the polygon there. This is how “open” splines interpolate their end control points, as the slides say the matrices can be modified at the curve ends to do.',
+    text: 'With p + 1 equal knots at each end, only N(0,p) is non-zero at the start and only N(m,p) at the end: the curve starts at P0 and ends at Pm, tangent to the polygon there. This is how “open” splines interpolate their end control points, as the slides say the matrices can be modified at the curve ends to do.',
   },
   repeated: {
     title: 'Repeated knots',
@@ -41,7 +41,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   nurbs: {
     title: 'NURBS: a weight per control point',
-    text: 'A rational B-spline gives each control point a weight wi: C(u) = Σ wi Ni(u) xi / Σ wi Ni(u). With every weight 1 it is the plain B-spline (dashed). Raising a weight pulls the curve towards that point; lowering it lets the curve go. Change the weights with the sliders.',
+    text: 'A rational B-spline gives each control point a weight wi: P(u) = Σ wi Ni(u) Pi / Σ wi Ni(u). With every weight 1 it is the plain B-spline (dashed). Raising a weight pulls the curve towards that point; lowering it lets the curve go. Change the weights with the sliders.',
   },
   circle: {
     title: 'The exact circle',
@@ -54,9 +54,9 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   meanings: {
     title: 'Two meanings of “knots”',
     text:
-      `The course’s documents use the word for two different things. In the continuation notes, as in this app, a knot is a parameter value: the knot vector u0 ≤ u1 ≤ … on the strip (“${KNOT_WORDS.continuation}” in a uniform B-spline, NURBS allow “${KNOT_WORDS.continuationNurbs}”). The curve’s points at those values, C(uj), are where its pieces join. ` +
+      `The course’s documents use the word for two different things. In the continuation notes, as in this app, a knot is a parameter value: the knot vector u0 ≤ u1 ≤ … on the strip (“${KNOT_WORDS.continuation}” in a uniform B-spline, NURBS allow “${KNOT_WORDS.continuationNurbs}”). The curve’s points at those values, P(uj), are where its pieces join. ` +
       `The lecture notes call knots the points a spline is made from, “${KNOT_WORDS.lectureControl}”: their spline patches join at them (“${KNOT_WORDS.lectureJoin}”), and a cubic Bézier curve “${KNOT_WORDS.lectureBezier}”, its control points. The “Splines” slides speak of “${KNOT_WORDS.splineSlides}”. ` +
-      'The lecture slides do not use the word: their road’s pieces meet at parameter values p̄i, xi(p̄i) = xi+1(p̄i), knots in the first sense. ' +
+      'The lecture slides do not use the word: their road’s pieces meet at parameter values p̄i, “xi(p̄i) = xi+1(p̄i)”, knots in the first sense. ' +
       'On a B-spline the two are different points, except where the knots make one the other: at clamped ends, or at a knot repeated p times. Drag the knots on the strip: the joins slide along the curve while the control points stay.',
   },
   continuity: {

@@ -163,7 +163,7 @@ export function drawProperties(painter: Painter, m: PropertiesModel, info: DrawI
       painter,
       props.image,
       theme.polygon,
-      props.image.map((_, i) => `Ax_{${i}}`),
+      props.image.map((_, i) => `AP_{${i}}`),
       info,
     );
     props.imageSamples.forEach((point) =>

@@ -29,7 +29,7 @@ export type UniformCurve = Curve & { beziers: Point[][] };
 type CurveFields = Pick<BSplineState, 'part' | 'points'>;
 
 /**
- * The uniform cubic in the slides' matrix form: segment i (Q_{i+3}) blends x_i … x_{i+3} with the 1/6
+ * The uniform cubic in the slides' matrix form: segment i (Q_{i+3}) blends P_i … P_{i+3} with the 1/6
  * matrix. It reads only the points and whether the curve is closed.
  */
 export const uniformCurve = memoOn<CurveFields, keyof CurveFields, UniformCurve>(

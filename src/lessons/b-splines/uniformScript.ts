@@ -25,20 +25,20 @@ export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
   step(
     'points',
     ({ state }) =>
-      `The m + 1 = ${state.points.length} control points x0 … x${state.points.length - 1}`,
+      `The m + 1 = ${state.points.length} control points P0 … P${state.points.length - 1}`,
   ),
   step('polygon', ({ state }) => {
     const n = state.points.length;
     return closed(state)
-      ? `Closed: after x${n - 1} come x0, x1, x2 again (x${n} = x0, x${n + 1} = x1, x${n + 2} = x2)`
+      ? `Closed: after P${n - 1} come P0, P1, P2 again (P${n} = P0, P${n + 1} = P1, P${n + 2} = P2)`
       : 'The control polygon: the curve will follow it, but pass through none of its points';
   }),
   step(
     'segment',
     ({ model: m }) =>
-      `Segment ${segmentName(m.segment)} blends ${m.segments[m.segment].points.map((j) => `x${j}`).join(', ')} with the four bases B0(t) … B3(t)`,
+      `Segment ${segmentName(m.segment)} blends ${m.segments[m.segment].points.map((j) => `P${j}`).join(', ')} with the four bases B0(t) … B3(t)`,
     ({ model: m }) =>
-      `\\begin{aligned}${basesTex(m.local)} \\\\ ${segmentLabel(m.segment)}(${n3(m.local)}) &= ${blend(m.basis, (j) => `x_{${m.owner[j]}}`)} = ${pt(m.point)}\\end{aligned}`,
+      `\\begin{aligned}${basesTex(m.local)} \\\\ ${segmentLabel(m.segment)}(${n3(m.local)}) &= ${blend(m.basis, (j) => `P_{${m.owner[j]}}`)} = ${pt(m.point)}\\end{aligned}`,
   ),
   step(
     'segments',
@@ -55,10 +55,10 @@ export const uniformScript = script<BSplineState, UniformModel, UniformReveal>(
   ),
   step(
     'joints',
-    'Each joint is (x(i−1) + 4x(i) + x(i+1))/6; P(s) runs along the whole curve as t moves',
+    'Each joint is (P(i−1) + 4Pi + P(i+1))/6; P(s) runs along the whole curve as t moves',
     ({ model: m }) => {
       const i = m.segment;
-      const [a, b, c] = [0, 1, 2].map((k) => `x_{${m.owner[i + k]}}`);
+      const [a, b, c] = [0, 1, 2].map((k) => `P_{${m.owner[i + k]}}`);
       return `${segmentLabel(i)}(0) = \\tfrac16(${a} + 4${b} + ${c}) = ${pt(m.beziers[i][0])}`;
     },
   ),
