@@ -311,13 +311,17 @@ export class FigureView<S, M> {
     painter.clear();
     if (this.spec.kind === 'geometry' && !info.thumbnail) painter.grid();
     if (!info.thumbnail) this.drawGhost(surface, theme, info);
+    painter.holdLabels();
     this.spec.draw(painter, model, info);
     const trail = info.thumbnail ? null : this.host.trail(this.spec.id);
     if (trail && trail.length > 1)
       painter.polyline(trail, { color: theme.accent, width: theme.sizes.line, alpha: 0.8 });
     if (!info.thumbnail) drawMarks(painter, this.host.marks(this.spec.id), theme);
     const handles = this.handlesFor(model);
-    if (info.thumbnail) return painter;
+    if (info.thumbnail) {
+      painter.placeLabels();
+      return painter;
+    }
     drawHandles(painter, handles, (handle) =>
       this.dragging?.drag.id === handle.id
         ? 'drag'
@@ -327,6 +331,7 @@ export class FigureView<S, M> {
             ? 'hover'
             : 'idle',
     );
+    painter.placeLabels();
     this.spec.drawOver?.(painter, model, info);
     return painter;
   }

@@ -59,13 +59,17 @@ export function drawHeadless<S, M>(
   painter.clear();
   const info = { hover: null, thumbnail };
   if (figure.kind === 'geometry' && !thumbnail) painter.grid();
+  // Labels are placed once the figure and its handles are down, as on the page.
+  painter.holdLabels();
   figure.draw(painter, model, info);
   const handles = figure.handles?.(model) ?? [];
   if (thumbnail) {
     for (const handle of handles)
       painter.handle(handle.position, { color: handle.color, radius: 3.5 });
+    painter.placeLabels();
   } else {
     drawHandles(painter, handles);
+    painter.placeLabels();
     figure.drawOver?.(painter, model, info);
   }
   return { svg, painter, handles, view };

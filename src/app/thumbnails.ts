@@ -17,7 +17,16 @@ export function renderThumbnail(lesson: AnyLesson, dark: boolean): string {
   const base = makeTheme(dark, false);
   const theme = {
     ...base,
-    sizes: { ...base.sizes, curve: 2.5, line: 1.25, point: 3, handle: 4, label: 10, small: 9 },
+    sizes: {
+      ...base.sizes,
+      curve: 2.5,
+      line: 1.25,
+      point: 3,
+      handle: 4,
+      label: 10,
+      small: 9,
+      minText: 0,
+    },
   };
   const state = lesson.normalize
     ? lesson.normalize(defaultsOf(lesson.schema)).state

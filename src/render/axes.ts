@@ -116,6 +116,8 @@ export function drawPlotAxes(
   c.restore();
   const fmt = (n: number) => String(Number(n.toFixed(6)));
   const muted = { size: small, color: theme.muted };
+  // A number stays at its tick, or is left out where a handle or a curve covers it.
+  const tick = { ...muted, fixed: true };
   // A short plot (a phone's strip) keeps every grid line but labels every
   // k-th tick, so no two numbers overlap: each label at its own tick still.
   const xEvery = labelEvery(
@@ -129,12 +131,12 @@ export function drawPlotAxes(
   for (const x of xs) {
     if (Math.round(x / xStep) % xEvery !== 0) continue;
     const [sx, sy] = v.toScreen([x, bounds.minY]);
-    painter.screenLabel(fmt(x), sx, sy + small * 0.9, { ...muted, align: 'center' });
+    painter.screenLabel(fmt(x), sx, sy + small * 0.9, { ...tick, align: 'center' });
   }
   for (const y of ys) {
     if (Math.round(y / yStep) % yEvery !== 0) continue;
     const [sx, sy] = v.toScreen([bounds.minX, y]);
-    painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...muted, align: 'right' });
+    painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...tick, align: 'right' });
   }
   if (xName) {
     // On the row of the tick numbers, midway between the last two: clear of

@@ -18,23 +18,28 @@ export function drawHandles(
   stateOf: (handle: Handle) => HandleState = () => 'idle',
 ): void {
   const theme = painter.theme;
+  const radius = (handle: Handle, state: HandleState) =>
+    // A small handle grows to full size while it is held, hovered or focused.
+    handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : theme.sizes.handle;
   for (const handle of handles) {
     const state = stateOf(handle);
     painter.handle(handle.position, {
       color: handle.color,
       shape: handle.shape,
       state,
-      // A small handle grows to full size while it is held, hovered or focused.
-      radius: handle.small && state === 'idle' ? theme.sizes.handle * 0.5 : undefined,
+      radius: radius(handle, state),
     });
-    if (handle.showLabel !== false && painter.show.labels) {
-      painter.label(handle.label, handle.position, {
-        dx: theme.sizes.handle + 4,
-        dy: -(theme.sizes.handle + theme.sizes.label * 0.45),
-        color: handle.color ?? theme.ink,
-        halo: true,
-        bold: true,
-      });
-    }
+  }
+  // The names after every handle is down: each goes to the first side of its
+  // point where no line, point or other name runs through it.
+  if (!painter.show.labels) return;
+  for (const handle of handles) {
+    if (handle.showLabel === false) continue;
+    painter.label(handle.label, handle.position, {
+      around: radius(handle, stateOf(handle)) + theme.sizes.line,
+      color: handle.color ?? theme.ink,
+      halo: true,
+      bold: true,
+    });
   }
 }

@@ -5,6 +5,7 @@
  * can check that no two overlap.
  */
 import { say } from './notation';
+import type { Box } from './ink';
 import type { Painter } from './painter';
 
 export interface LabelStyle {
@@ -20,6 +21,14 @@ export interface LabelStyle {
   halo?: boolean;
   /** Draw a boxed label (background box with border). */
   box?: boolean;
+  /**
+   * The anchor is a point drawn with this radius (px), and the label goes
+   * beside it on whichever side is clear: above right first, then below
+   * right, above left, below left, right, left, above, below.
+   */
+  around?: number;
+  /** It stays where it is put (an axis number at its tick), or is left out. */
+  fixed?: boolean;
 }
 
 /** Where a label went, in screen pixels. */
@@ -29,6 +38,16 @@ export interface LabelBox {
   y: number;
   width: number;
   height: number;
+  /** Drawn on a box of its own (a boxed value, a note), which covers what lies under it. */
+  boxed?: boolean;
+}
+
+/**
+ * The part of a label's box its letters fill (capitals to the foot of a
+ * subscript), without the line spacing around them: what no stroke may cross.
+ */
+export function glyphBox(b: LabelBox): Box {
+  return { x: b.x, y: b.y + b.height * 0.18, width: b.width, height: b.height * 0.7 };
 }
 
 /** Splits `P_{1,2}x_3` into runs of normal and subscript text. */
@@ -65,6 +84,58 @@ function overlaps(b: LabelBox, x: number, y: number, width: number, height: numb
   return w > 1 && h > 1;
 }
 
+/** The fonts and runs of a label, and its width in pixels. */
+function measure(painter: Painter, text: string, style: LabelStyle) {
+  const theme = painter.theme;
+  const c = painter.ctx;
+  // No text under the theme's least size, subscripts included.
+  const least = theme.sizes.minText ?? 0;
+  const size = Math.max(style.size ?? theme.sizes.label, least);
+  const runs = splitSubscripts(say(text));
+  const weight = style.bold ? 'bold ' : '';
+  const mainFont = `${weight}${size}px ${theme.fontFamily}`;
+  const subFont = `${weight}${Math.max(Math.round(size * 0.78), least)}px ${theme.fontFamily}`;
+  c.save();
+  const widths = runs.map((run) => {
+    c.font = run.sub ? subFont : mainFont;
+    return c.measureText(run.text).width;
+  });
+  c.restore();
+  const total = widths.reduce((a, b) => a + b, 0);
+  return { size, runs, mainFont, subFont, widths, total };
+}
+
+/** How wide a label will be (px), before it is placed. */
+export function labelWidth(painter: Painter, text: string, style: LabelStyle = {}): number {
+  return measure(painter, text, style).total;
+}
+
+/**
+ * Places beside a point drawn with radius `r` at (x, y), in the order tried:
+ * [left, middle] of the label.
+ */
+function spotsAround(x: number, y: number, r: number, total: number, size: number) {
+  const spots: [number, number][] = [];
+  // Close beside the point first, then a little farther out (past a ring or
+  // a line that hugs it).
+  for (const far of [0, size * 0.7]) {
+    const d = r * 0.75 + 3 + far;
+    const up = y - d - size * 0.45;
+    const down = y + d + size * 0.45;
+    spots.push(
+      [x + d, up],
+      [x + d, down],
+      [x - d - total, up],
+      [x - d - total, down],
+      [x + r + far + size * 0.3, y],
+      [x - r - far - size * 0.3 - total, y],
+      [x - total / 2, y - r - far - size * 0.75],
+      [x - total / 2, y + r + far + size * 0.75],
+    );
+  }
+  return spots;
+}
+
 /** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
 export function drawScreenLabel(
   painter: Painter,
@@ -73,28 +144,27 @@ export function drawScreenLabel(
   y: number,
   style: LabelStyle = {},
 ): { width: number } {
-  const c = painter.ctx;
   const theme = painter.theme;
   const view = painter.view;
-  const size = style.size ?? theme.sizes.label;
+  const { size, runs, mainFont, subFont, widths, total } = measure(painter, text, style);
   text = say(text);
-  const runs = splitSubscripts(text);
-  const weight = style.bold ? 'bold ' : '';
-  const mainFont = `${weight}${size}px ${theme.fontFamily}`;
-  const subFont = `${weight}${Math.round(size * 0.72)}px ${theme.fontFamily}`;
-  c.save();
-  c.setLineDash([]);
-  c.globalAlpha = 1;
-  const widths = runs.map((run) => {
-    c.font = run.sub ? subFont : mainFont;
-    return c.measureText(run.text).width;
-  });
-  const total = widths.reduce((a, b) => a + b, 0);
   const align = style.align ?? 'left';
-  let left =
-    align === 'center' ? x - total / 2 : align === 'right' || align === 'end' ? x - total : x;
   const baseline = style.baseline ?? 'middle';
-  let middleY = baseline === 'top' ? y + size / 2 : baseline === 'bottom' ? y - size / 2 : y;
+  const around = style.around ? spotsAround(x, y, style.around, total, size) : null;
+  let left = around
+    ? around[0][0]
+    : align === 'center'
+      ? x - total / 2
+      : align === 'right' || align === 'end'
+        ? x - total
+        : x;
+  let middleY = around
+    ? around[0][1]
+    : baseline === 'top'
+      ? y + size / 2
+      : baseline === 'bottom'
+        ? y - size / 2
+        : y;
   // Keep the whole label inside the figure rather than cut at its edge.
   const margin = 2 + (style.box ? size * 0.35 : 0);
   const inside = (l: number, m: number): [number, number] => [
@@ -105,12 +175,19 @@ export function drawScreenLabel(
   // A label never lands on one already placed this frame: it moves to the
   // nearest free spot around its place (above, below, beside), and if all of
   // them are taken it is left out rather than drawn unreadably on another.
+  // Of the free spots it takes the first where no stroke drawn so far runs
+  // through its letters (a boxed label covers what is under it).
   const height = size * 1.3;
   const free = (l: number, m: number) =>
     !painter.labels.some((b) => overlaps(b, l, m - size * 0.65, total, height));
-  if (!free(left, middleY)) {
+  const clear = (l: number, m: number) =>
+    free(l, m) &&
+    (style.box === true ||
+      !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height })));
+  if (!clear(left, middleY)) {
+    if (style.fixed) return { width: 0 };
     const gap = size * 0.3;
-    const spot = [
+    const shifts = [
       [0, -height],
       [0, height],
       [total + gap, 0],
@@ -121,16 +198,29 @@ export function drawScreenLabel(
       [-(total + gap), height],
       [0, -2 * height],
       [0, 2 * height],
-    ]
-      .map(([dx, dy]) => inside(left + dx, middleY + dy))
-      .find(([l, m]) => free(l, m));
-    if (!spot) {
-      c.restore();
-      return { width: 0 };
-    }
+    ];
+    const spots = (around ?? shifts.map(([dx, dy]) => [left + dx, middleY + dy])).map(([l, m]) =>
+      inside(l, m),
+    );
+    // No clear spot: its own place if no label is there, else the nearest free one.
+    const spot =
+      spots.find(([l, m]) => clear(l, m)) ??
+      (free(left, middleY) ? [left, middleY] : spots.find(([l, m]) => free(l, m)));
+    if (!spot) return { width: 0 };
     [left, middleY] = spot;
   }
-  painter.labels.push({ text, x: left, y: middleY - size * 0.65, width: total, height });
+  const c = painter.ctx;
+  c.save();
+  c.setLineDash([]);
+  c.globalAlpha = 1;
+  painter.labels.push({
+    text,
+    x: left,
+    y: middleY - size * 0.65,
+    width: total,
+    height,
+    ...(style.box ? { boxed: true } : {}),
+  });
   if (style.box) {
     const pad = size * 0.35;
     const box: [number, number, number, number] = [
@@ -200,7 +290,7 @@ export function drawNote(
     painter.labels.filter((b) => overlaps(b, pad, y, width + 2 * pad, height)).length;
   const foot = painter.view.height - height - pad;
   const top = style.top ?? (clash(pad) > 0 && foot > pad && clash(foot) < clash(pad) ? foot : pad);
-  painter.labels.push({ text, x: pad, y: top, width: width + 2 * pad, height });
+  painter.labels.push({ text, x: pad, y: top, width: width + 2 * pad, height, boxed: true });
   c.setLineDash([]);
   c.globalAlpha = 0.94;
   c.fillStyle = theme.labelHalo;

@@ -1,3 +1,4 @@
+import { Ink } from './ink';
 import { type ClipRect, circleVisible, clipCubic, clipPolygon, clipPolyline } from './clip';
 import { drawGrid, drawPlotAxes } from './axes';
 import { bezierPoint } from '../math';
@@ -8,6 +9,7 @@ import {
   drawLabelClear,
   drawNote,
   drawScreenLabel,
+  labelWidth,
 } from './labels';
 import type { Bounds, Projection } from './projection';
 import type { DrawingSurface } from './surface';
@@ -26,8 +28,10 @@ export interface StrokeStyle {
   /**
    * `curve`: the result the lesson is about (the spline, P(t)'s curve). The
    * presenter can hide it ("predict, then show"); mark the main curve so.
+   * `grid`: a background of lines (a pixel grid), which labels may sit on as
+   * they sit on the figure's own grid.
    */
-  role?: 'curve';
+  role?: 'curve' | 'grid';
 }
 
 /** What the presenter lets the figure show ("predict, then show" hides some). */
@@ -65,6 +69,10 @@ const MARGIN = 64;
 export class Painter {
   /** Every label placed this frame, in screen pixels (for overlap checks). */
   readonly labels: LabelBox[] = [];
+  /** Every stroke and disc drawn this frame, in screen pixels: where labels must not sit. */
+  readonly ink = new Ink();
+  /** Labels waiting for the figure's ink to be down (see holdLabels), in the order given. */
+  private held: (() => void)[] | null = null;
   readonly clip: ClipRect;
   private scratch = new Float64Array(256);
 
@@ -154,7 +162,12 @@ export class Painter {
     this.applyStroke(style, this.sizes.curve, this.theme.curve);
     c.beginPath();
     let drawn = 0;
-    for (const [a, b] of pairs) drawn += clipPolyline(this.project([a, b]), this.clip, c);
+    const half = (style.width ?? this.sizes.curve) / 2;
+    for (const [a, b] of pairs) {
+      const xy = this.project([a, b]);
+      drawn += clipPolyline(xy, this.clip, c);
+      if (style.role !== 'grid') this.ink.segment(xy[0], xy[1], xy[2], xy[3], half);
+    }
     if (drawn > 0) c.stroke();
     c.restore();
   }
@@ -177,6 +190,7 @@ export class Painter {
     c.beginPath();
     if (clipPolyline(xy, this.clip, c) > 0) c.stroke();
     c.restore();
+    if (style.role !== 'grid') this.ink.polyline(xy, (style.width ?? this.sizes.curve) / 2);
   }
 
   /** A polyline from interleaved 2D coordinates [x0, y0, x1, y1, …]: for big samples. */
@@ -212,7 +226,7 @@ export class Painter {
     const q = new Array<number>(8);
     for (const seg of segments) {
       if (!this.view.affine) {
-        drawn = this.flattenedCubic(seg) || drawn;
+        drawn = this.flattenedCubic(seg, (style.width ?? this.sizes.curve) / 2) || drawn;
         pen = null;
         continue;
       }
@@ -228,18 +242,35 @@ export class Painter {
       const end = clipCubic(q, this.clip, c, pen);
       if (end) drawn = true;
       pen = end;
+      this.inkCubic(q, (style.width ?? this.sizes.curve) / 2);
     }
     if (drawn) c.stroke();
     c.restore();
   }
 
   /** A cubic seen through a projection that bends lines (perspective): drawn as 48 chords. */
-  private flattenedCubic(seg: readonly P[]): boolean {
+  private flattenedCubic(seg: readonly P[], half: number): boolean {
     // A segment with a coordinate that is not a number draws nothing (the maths would refuse it).
     if (!seg.every((p) => p.every(Number.isFinite))) return false;
     const samples: P[] = [];
     for (let i = 0; i <= 48; i++) samples.push(bezierPoint(seg, i / 48));
-    return clipPolyline(this.project(samples), this.clip, this.ctx) > 0;
+    const xy = this.project(samples);
+    this.ink.polyline(xy, half);
+    return clipPolyline(xy, this.clip, this.ctx) > 0;
+  }
+
+  /** A screen cubic's ink, as 12 chords (within a pixel or so of the curve at figure sizes). */
+  private inkCubic(q: readonly number[], half: number): void {
+    let [px, py] = [q[0], q[1]];
+    for (let i = 1; i <= 12; i++) {
+      const t = i / 12;
+      const s = 1 - t;
+      const [a, b, c, d] = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
+      const x = a * q[0] + b * q[2] + c * q[4] + d * q[6];
+      const y = a * q[1] + b * q[3] + c * q[5] + d * q[7];
+      this.ink.segment(px, py, x, y, half);
+      [px, py] = [x, y];
+    }
   }
 
   segment(a: P, b: P, style: StrokeStyle = {}): void {
@@ -309,6 +340,7 @@ export class Painter {
     c.beginPath();
     const shaft = [ax, ay, bx - ux * head * 0.6, by - uy * head * 0.6];
     const drawn = clipPolyline(shaft, this.clip, c) > 0;
+    this.ink.polyline([ax, ay, bx, by], (style.width ?? this.sizes.line) / 2 + head * 0.2);
     if (drawn) c.stroke();
     if (circleVisible(bx, by, head, this.clip)) {
       c.setLineDash([]);
@@ -327,6 +359,7 @@ export class Painter {
   dot(p: P, color: string = this.theme.ink, radius: number = this.sizes.point): void {
     const [x, y] = this.view.toScreen(p);
     if (!circleVisible(x, y, radius, this.clip)) return;
+    this.ink.disc(x, y, radius);
     const c = this.ctx;
     c.save();
     c.fillStyle = color;
@@ -354,6 +387,15 @@ export class Painter {
     c.arc(x, y, radius, 0, Math.PI * 2);
     c.stroke();
     c.restore();
+    this.inkCircle(x, y, radius, (style.width ?? this.sizes.thin) / 2);
+  }
+
+  /** A circle's ink: its rim as 32 chords (a label may sit inside a ring). */
+  private inkCircle(x: number, y: number, r: number, half: number): void {
+    const xy: number[] = [];
+    for (let i = 0; i <= 32; i++)
+      xy.push(x + r * Math.cos((i * Math.PI) / 16), y + r * Math.sin((i * Math.PI) / 16));
+    this.ink.polyline(xy, half);
   }
 
   /** A cross of half-width `size` pixels, e.g. a guess placed on the figure. */
@@ -370,6 +412,7 @@ export class Painter {
     c.lineTo(x - size, y + size);
     c.stroke();
     c.restore();
+    this.ink.disc(x, y, size);
   }
 
   /**
@@ -390,8 +433,10 @@ export class Painter {
     c.save();
     this.applyStroke(style, this.sizes.line, this.theme.ink);
     c.beginPath();
-    if (r < 4 * half) c.arc(x, y, r, 0, Math.PI * 2);
-    else {
+    if (r < 4 * half) {
+      c.arc(x, y, r, 0, Math.PI * 2);
+      this.inkCircle(x, y, r, (style.width ?? this.sizes.line) / 2);
+    } else {
       // Only the arc near the screen: its angular width shrinks as the circle grows.
       const toward = Math.atan2(cy - y, cx - x);
       const spread = Math.min(Math.PI, (2 * half) / r);
@@ -401,6 +446,7 @@ export class Painter {
         xy.push(x + r * Math.cos(a), y + r * Math.sin(a));
       }
       clipPolyline(xy, this.clip, c);
+      this.ink.polyline(xy, (style.width ?? this.sizes.line) / 2);
     }
     c.stroke();
     c.restore();
@@ -414,6 +460,7 @@ export class Painter {
       (style.radius ?? this.sizes.handle) *
       (state === 'drag' ? 1.25 : state === 'hover' ? 1.15 : 1);
     if (!circleVisible(x, y, r * 2, this.clip)) return;
+    this.ink.disc(x, y, r * (style.shape === 'diamond' ? 1.3 : 1) + this.sizes.line);
     const c = this.ctx;
     const stroke = style.color ?? this.theme.handleStroke;
     c.save();
@@ -476,26 +523,47 @@ export class Painter {
     return drawNote(this, text, style);
   }
 
+  /**
+   * From now until `placeLabels`, labels wait: they are placed after the
+   * figure, its handles and their names are drawn, so each sees all the ink
+   * it must keep clear of (a curve drawn after a label used to run through it).
+   */
+  holdLabels(): void {
+    this.held = [];
+  }
+
+  /** Places the labels held back, in the order they were given, on top of the figure. */
+  placeLabels(): void {
+    const held = this.held;
+    this.held = null;
+    held?.forEach((place) => place());
+  }
+
+  /** Runs `place` now, or when the held labels are placed. */
+  private placing(place: () => void): void {
+    if (this.held) this.held.push(place);
+    else place();
+  }
+
   /** Labels beside a plot cursor at x = `at` (world), pushed apart so none covers another. */
   cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
-    drawCursorLabels(
-      this,
-      at,
-      entries.filter((e) => !this.labelHidden(e.text)),
-    );
+    const shown = entries.filter((e) => !this.labelHidden(e.text));
+    this.placing(() => drawCursorLabels(this, at, shown));
   }
 
   /** A label beside `p` on whichever side lies farthest from the `avoid` points. */
   labelClear(text: string, p: P, avoid: readonly P[], style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
     if (!this.onScreen(x, y) || this.labelHidden(text)) return;
-    drawLabelClear(this, text, [x, y], avoid, style);
+    this.placing(() => drawLabelClear(this, text, [x, y], avoid, style));
   }
 
-  /** A label at screen coordinates (pixels): legends, captions. */
+  /** A label at screen coordinates (pixels): legends, captions. Returns its width. */
   screenLabel(text: string, x: number, y: number, style: LabelStyle = {}): { width: number } {
     if (this.labelHidden(text)) return { width: 0 };
-    return drawScreenLabel(this, text, x, y, style);
+    if (!this.held) return drawScreenLabel(this, text, x, y, style);
+    this.held.push(() => drawScreenLabel(this, text, x, y, style));
+    return { width: labelWidth(this, text, style) };
   }
 
   /** Light grid with axes through the origin (2D geometry figures), visible lines only. */

@@ -19,6 +19,11 @@ export interface Sizes {
   label: number;
   /** Small text: axis numbers. */
   small: number;
+  /**
+   * No text on a figure is set smaller, subscripts included (px): 28 on the
+   * projector (read from 15 m), 12 on a screen; none for thumbnails.
+   */
+  minText?: number;
 }
 
 export interface Theme {
@@ -93,8 +98,8 @@ const DARK_STRONG = [
 
 export function makeTheme(dark: boolean, projector: boolean): Theme {
   const sizes: Sizes = projector
-    ? { curve: 7, line: 4.5, thin: 4, handle: 14, point: 9, label: 30, small: 28 }
-    : { curve: 3, line: 1.75, thin: 1, handle: 8, point: 5, label: 15, small: 12 };
+    ? { curve: 7, line: 4.5, thin: 4, handle: 14, point: 9, label: 36, small: 28, minText: 28 }
+    : { curve: 3, line: 1.75, thin: 1, handle: 8, point: 5, label: 15, small: 12, minText: 12 };
   if (dark) {
     return {
       dark,
@@ -171,7 +176,16 @@ export function makePaperTheme(): Theme {
     grid: '#e2e2e2',
     axis: '#555555',
     curveFaint: '#8c8c8c',
-    sizes: { curve: 2.4, line: 1.5, thin: 1, handle: 5.5, point: 3.5, label: 13, small: 10.5 },
+    sizes: {
+      curve: 2.4,
+      line: 1.5,
+      thin: 1,
+      handle: 5.5,
+      point: 3.5,
+      label: 13,
+      small: 10.5,
+      minText: 8,
+    },
     dashOf: (colour) => {
       const dash = dashes.get(colour.toLowerCase());
       return dash ? [...dash] : undefined;

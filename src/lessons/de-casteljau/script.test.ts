@@ -1,12 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
+import { drawHeadless } from '../../app/headless';
 import type { LabelBox } from '../../render/labels';
-import { Painter } from '../../render/painter';
-import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
-import { Viewport } from '../../render/viewport';
 import { constructionFigure } from './figure';
-import { handleLabelBoxes } from '../../kit/labels';
 import lesson from './lesson';
 import type { DeCasteljauModel } from './model';
 import { checkScript, drawState } from '../../kit/scriptChecks';
@@ -162,12 +159,15 @@ describe('the script of the de Casteljau construction', () => {
   it('labels the crowded levels of the loop apart, and clear of the handles’ labels', () => {
     for (const preset of lesson.scenes!) {
       const m = derive(preset.apply(defaultsOf(schema)));
-      const view = new Viewport();
-      view.resize(900, 560);
-      view.fit(constructionFigure.bounds(m), 40, true);
-      const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
-      constructionFigure.draw(painter, m, { hover: null, thumbnail: false });
-      const boxes = [...handleLabelBoxes(painter, m.state.p), ...painter.labels];
+      // As the page draws it: the construction, the handles and their names.
+      const figure = lesson.figures.find((f) => f.id === constructionFigure.id)!;
+      const { painter } = drawHeadless(figure, m, {
+        width: 900,
+        height: 560,
+        theme: makeTheme(false, false),
+      });
+      const boxes = painter.labels;
+      expect(boxes.filter((b) => /^P_\{\d\}$/.test(b.text)).length, preset.id).toBeGreaterThan(0);
       const overlap = (a: LabelBox, b: LabelBox) =>
         Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x) > 1 &&
         Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y) > 1;

@@ -32,7 +32,7 @@ export function pixelGrid(painter: Painter, size: RasterSize): void {
   const theme = painter.theme;
   const { zoom, left, bottom, width, height } = size;
   const spacing = 1 / zoom / painter.view.worldLength(1);
-  const style = { color: theme.axis, width: 1, alpha: 0.55 };
+  const style = { color: theme.axis, width: 1, alpha: 0.55, role: 'grid' as const };
   const [x0, y0, x1, y1] = [
     left / zoom,
     bottom / zoom,

@@ -1,0 +1,178 @@
+/**
+ * The ink of one frame: every stroke and disc the painter put on screen, in
+ * screen pixels, so that a label can be placed where nothing runs through its
+ * letters, and a test can ask of every label whether something does.
+ *
+ * Segments are kept flat (x1, y1, x2, y2, half width) and found through a
+ * coarse grid of cells built only when a label asks, so recording costs a
+ * few stores per segment on the hot path and a question costs the cells
+ * under one label.
+ */
+
+/** A screen rectangle. */
+export interface Box {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+const CELL = 48;
+const STRIDE = 5;
+
+export class Ink {
+  private segs = new Float64Array(STRIDE * 256);
+  private count = 0;
+  private readonly discs: number[] = [];
+  /** Cell key → indices of the segments whose box touches the cell. */
+  private readonly cells = new Map<number, number[]>();
+  /** Segments already in `cells`. */
+  private indexed = 0;
+  /** Segments too long to index cell by cell (a point a million away): always tested. */
+  private readonly long: number[] = [];
+
+  /** How many segments were recorded (for tests). */
+  get segments(): number {
+    return this.count;
+  }
+
+  segment(x1: number, y1: number, x2: number, y2: number, halfWidth: number): void {
+    if (!(Number.isFinite(x1) && Number.isFinite(y1) && Number.isFinite(x2) && Number.isFinite(y2)))
+      return;
+    if (this.segs.length < STRIDE * (this.count + 1)) {
+      const grown = new Float64Array(this.segs.length * 2);
+      grown.set(this.segs);
+      this.segs = grown;
+    }
+    const k = STRIDE * this.count++;
+    this.segs[k] = x1;
+    this.segs[k + 1] = y1;
+    this.segs[k + 2] = x2;
+    this.segs[k + 3] = y2;
+    this.segs[k + 4] = halfWidth;
+  }
+
+  /** A polyline from interleaved screen coordinates [x0, y0, x1, y1, …]. */
+  polyline(xy: ArrayLike<number>, halfWidth: number, closed = false): void {
+    const n = xy.length >> 1;
+    for (let i = 1; i < n; i++)
+      this.segment(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1], halfWidth);
+    if (closed && n > 2) this.segment(xy[2 * n - 2], xy[2 * n - 1], xy[0], xy[1], halfWidth);
+  }
+
+  /** A filled or stroked disc (a point, a handle, a ring's outer edge). */
+  disc(x: number, y: number, radius: number): void {
+    if (Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(radius))
+      this.discs.push(x, y, radius);
+  }
+
+  private key(cx: number, cy: number): number {
+    return (cx + 4096) * 8192 + (cy + 4096);
+  }
+
+  private index(): void {
+    const s = this.segs;
+    for (; this.indexed < this.count; this.indexed++) {
+      const k = STRIDE * this.indexed;
+      const w = s[k + 4];
+      const x0 = Math.floor((Math.min(s[k], s[k + 2]) - w) / CELL);
+      const x1 = Math.floor((Math.max(s[k], s[k + 2]) + w) / CELL);
+      const y0 = Math.floor((Math.min(s[k + 1], s[k + 3]) - w) / CELL);
+      const y1 = Math.floor((Math.max(s[k + 1], s[k + 3]) + w) / CELL);
+      // A segment far off screen (a point a million away) is not indexed cell by cell.
+      if (x1 - x0 > 200 || y1 - y0 > 200) {
+        this.long.push(this.indexed);
+        continue;
+      }
+      for (let cx = x0; cx <= x1; cx++)
+        for (let cy = y0; cy <= y1; cy++) {
+          const key = this.key(cx, cy);
+          const list = this.cells.get(key);
+          if (list) list.push(this.indexed);
+          else this.cells.set(key, [this.indexed]);
+        }
+    }
+  }
+
+  /** Does segment i, thickened by its half width, touch the box? */
+  private touches(i: number, b: Box): boolean {
+    const s = this.segs;
+    const k = STRIDE * i;
+    const w = s[k + 4];
+    return segmentMeetsBox(s[k], s[k + 1], s[k + 2], s[k + 3], {
+      x: b.x - w,
+      y: b.y - w,
+      width: b.width + 2 * w,
+      height: b.height + 2 * w,
+    });
+  }
+
+  /** Does any stroke or disc of this frame run through the box? */
+  crosses(b: Box): boolean {
+    return this.crossing(b) !== null;
+  }
+
+  /** The first stroke or disc through the box, said in words (for a test's message), or null. */
+  crossing(b: Box): string | null {
+    this.index();
+    for (let i = 0; i < this.discs.length; i += 3) {
+      const [x, y, r] = [this.discs[i], this.discs[i + 1], this.discs[i + 2]];
+      const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
+      const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
+      if (dx * dx + dy * dy < r * r) return `a disc at (${x.toFixed(0)}, ${y.toFixed(0)})`;
+    }
+    const seen = new Set<number>();
+    const test = (i: number): string | null => {
+      if (seen.has(i)) return null;
+      seen.add(i);
+      if (!this.touches(i, b)) return null;
+      const s = this.segs;
+      const k = STRIDE * i;
+      return `a stroke from (${s[k].toFixed(0)}, ${s[k + 1].toFixed(0)}) to (${s[k + 2].toFixed(0)}, ${s[k + 3].toFixed(0)})`;
+    };
+    for (const i of this.long) {
+      const hit = test(i);
+      if (hit) return hit;
+    }
+    const x0 = Math.floor(b.x / CELL);
+    const x1 = Math.floor((b.x + b.width) / CELL);
+    const y0 = Math.floor(b.y / CELL);
+    const y1 = Math.floor((b.y + b.height) / CELL);
+    for (let cx = x0; cx <= x1; cx++)
+      for (let cy = y0; cy <= y1; cy++)
+        for (const i of this.cells.get(this.key(cx, cy)) ?? []) {
+          const hit = test(i);
+          if (hit) return hit;
+        }
+    return null;
+  }
+}
+
+/** Does the segment from (ax, ay) to (bx, by) meet the box (Liang–Barsky)? */
+export function segmentMeetsBox(ax: number, ay: number, bx: number, by: number, b: Box): boolean {
+  let t0 = 0;
+  let t1 = 1;
+  const dx = bx - ax;
+  const dy = by - ay;
+  const edges: [number, number][] = [
+    [-dx, ax - b.x],
+    [dx, b.x + b.width - ax],
+    [-dy, ay - b.y],
+    [dy, b.y + b.height - ay],
+  ];
+  for (const [p, q] of edges) {
+    if (p === 0) {
+      if (q < 0) return false;
+      continue;
+    }
+    const t = q / p;
+    if (p < 0) {
+      if (t > t1) return false;
+      if (t > t0) t0 = t;
+    } else {
+      if (t < t0) return false;
+      if (t < t1) t1 = t;
+    }
+  }
+  return t0 <= t1;
+}
