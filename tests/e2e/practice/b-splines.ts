@@ -18,11 +18,11 @@ const blend = (p: readonly Pair[], t: number): Pair => {
 
 export default [
   {
-    // Seed 1: x0 … x3 = (0, 4), (3, 1), (4, 4), (7, 0); B(0.5) = (1, 23, 23, 1)/48:
+    // Seed 1: P0 … P3 = (0, 4), (3, 1), (4, 4), (7, 0); B(0.5) = (1, 23, 23, 1)/48:
     // Q₃(0.5) = ((0 + 69 + 92 + 7)/48, (4 + 23 + 92 + 0)/48) = (3.5, 119/48) ≈ (3.5, 2.479).
     id: 'segment-point',
     seed: 1,
-    prompt: ['Segment Q₃ blends x₀ … x₃', 'Q₃(0.5)', 'within 0.3'],
+    prompt: ['Segment Q₃ blends P₀ … P₃', 'Q₃(0.5)', 'within 0.3'],
     answer: {
       point: blend(
         [
@@ -49,11 +49,11 @@ export default [
     },
   },
   {
-    // Seed 1: x3 = (6, 1) on knots 0 … 10 (cubic). u4 = u5 = u6 = 5 leaves only N(3,3) = 1 at u = 5,
-    // so C(5) = x3: drag u4 onto u5 (at 5), then u6 onto them (each snaps onto its neighbour).
+    // Seed 1: P3 = (6, 1) on knots 0 … 10 (cubic). u4 = u5 = u6 = 5 leaves only N(3,3) = 1 at u = 5,
+    // so P(5) = P3: drag u4 onto u5 (at 5), then u6 onto them (each snaps onto its neighbour).
     id: 'through-point',
     seed: 1,
-    prompt: ['passes through x₃', 'within 0.15'],
+    prompt: ['passes through P₃', 'within 0.15'],
     answer: {
       moves: [
         { figure: 'knots', handle: 'u4', to: [5, 0] },

@@ -1,6 +1,6 @@
 import type { PracticeCase } from './types';
 
-// The patch x(u, v) = Σm Σn fm(u) fn(v) x(m,n) written out here (nothing
+// The patch P(u, v) = Σm Σn fm(u) fn(v) P(m,n) written out here (nothing
 // imported from src/), with fk the cubic Bernstein functions.
 // The patch figure is in space: its points here are x and y on the plane z = 0
 // (the flat net lies there; the moved point of the join keeps its z, which is 0).
@@ -41,7 +41,7 @@ const FLAT: Triple[][] = [
   ],
 ];
 
-/** Seed 1's heights: 0 but at the inner points x₁,₁ = 2, x₁,₂ = 1, x₂,₁ = 2, x₂,₂ = 3. */
+/** Seed 1's heights: 0 but at the inner points P₁,₁ = 2, P₁,₂ = 1, P₂,₁ = 2, P₂,₂ = 3. */
 const RAISED: Triple[][] = [0, 1, 2, 3].map((m) =>
   [0, 1, 2, 3].map((n): Triple => [
     m,
@@ -60,10 +60,10 @@ const [x, y] = patch(FLAT, 0.75, 0.5);
 export default [
   {
     // Seed 1: rows at v = ½ by (1, 3, 3, 1)/8: r0 … r3 = (3, 36)/8, (20, 36)/8, (44, 35)/8, (70, 33)/8;
-    // at u = ¾ by (1, 9, 27, 27)/64: x(0.75, 0.5) = (3261, 2196)/512 ≈ (6.369, 4.289).
+    // at u = ¾ by (1, 9, 27, 27)/64: P(0.75, 0.5) = (3261, 2196)/512 ≈ (6.369, 4.289).
     id: 'patch-point',
     seed: 1,
-    prompt: ['flat in the plane z = 0', 'x(0.75, 0.5)', 'within 0.3'],
+    prompt: ['flat in the plane z = 0', 'P(0.75, 0.5)', 'within 0.3'],
     answer: { point: [x, y] },
   },
   {
@@ -73,18 +73,18 @@ export default [
     id: 'patch-height',
     seed: 1,
     prompt: [
-      'x₁,₁ at z = 2, x₁,₂ at z = 1, x₂,₁ at z = 2, x₂,₂ at z = 3',
+      'P₁,₁ at z = 2, P₁,₂ at z = 1, P₂,₁ at z = 2, P₂,₂ at z = 3',
       'z(0.75, 0.4)',
       'within 0.001',
     ],
     answer: { numbers: [patch(RAISED, 0.75, 0.4)[2]], wrong: [patch(RAISED, 0.4, 0.75)[2]] },
   },
   {
-    // Seed 1: x₂,₃ = (2, 3, 0) and x₃,₃ = y₀,₃ = (3, 3, 0), so C¹ needs y₁,₃ = 2x₃,₃ − x₂,₃ = (4, 3, 0);
-    // it is posed at (4, 2.5, 0). Its handle is y3 (y's rows 1 … 3 in order: y₁,₃ is the fourth).
+    // Seed 1: P₂,₃ = (2, 3, 0) and P₃,₃ = Q₀,₃ = (3, 3, 0), so C¹ needs Q₁,₃ = 2P₃,₃ − P₂,₃ = (4, 3, 0);
+    // it is posed at (4, 2.5, 0). Its handle is y3 (Q's rows 1 … 3 in order: Q₁,₃ is the fourth).
     id: 'smooth-join',
     seed: 1,
-    prompt: ['y₁,₀ … y₁,₃', 'join C¹', 'within 0.1'],
+    prompt: ['Q₁,₀ … Q₁,₃', 'join C¹', 'within 0.1'],
     answer: { moves: [{ figure: 'patch', handle: 'y3', to: [2 * 3 - 2, 2 * 3 - 3] }] },
   },
 ] satisfies PracticeCase[];
