@@ -90,10 +90,7 @@ export class FigureView<S, M> {
     this.element.className = `figure figure-${spec.kind}`;
     this.element.dataset.figure = spec.id;
     this.element.style.flexGrow = String(spec.weight ?? 1);
-    if (spec.height) {
-      this.element.style.flex = `0 0 ${spec.height}px`;
-      this.element.style.minHeight = `${spec.height}px`;
-    }
+    if (spec.height) this.stripHeight(host.theme());
     if (spec.aspect) this.element.style.aspectRatio = String(spec.aspect);
     this.canvas = document.createElement('canvas');
     this.canvas.setAttribute('role', 'img');
@@ -230,6 +227,14 @@ export class FigureView<S, M> {
     this.fitted = true;
   }
 
+  /** A strip of fixed height, taller on the projector as its text and handles are. */
+  private stripHeight(theme: Theme): void {
+    const height = `${Math.round(this.spec.height! * (theme.sizes.strip ?? 1))}px`;
+    if (this.element.style.minHeight === height) return;
+    this.element.style.flex = `0 0 ${height}`;
+    this.element.style.minHeight = height;
+  }
+
   /** Sizes the canvas to its box (device pixels); true if the size changed. */
   private sizeCanvas(): boolean {
     const rect = this.box ?? this.element.getBoundingClientRect();
@@ -255,8 +260,9 @@ export class FigureView<S, M> {
 
   /** Draws the model to the canvas. */
   draw(model: M): void {
-    if (this.sizeCanvas() && !this.userView) this.fitted = false;
     const theme = this.host.theme();
+    if (this.spec.height) this.stripHeight(theme);
+    if (this.sizeCanvas() && !this.userView) this.fitted = false;
     const alwaysFit = this.spec.kind === 'plot' || this.spec.kind === 'drawing';
     if (!this.fitted || alwaysFit) this.applyFit(model, theme);
     const ctx = this.canvas.getContext('2d');
@@ -331,8 +337,8 @@ export class FigureView<S, M> {
             ? 'hover'
             : 'idle',
     );
-    painter.placeLabels();
     this.spec.drawOver?.(painter, model, info);
+    painter.placeLabels();
     return painter;
   }
 

@@ -69,8 +69,8 @@ export function drawHeadless<S, M>(
     painter.placeLabels();
   } else {
     drawHandles(painter, handles);
-    painter.placeLabels();
     figure.drawOver?.(painter, model, info);
+    painter.placeLabels();
   }
   return { svg, painter, handles, view };
 }

@@ -21,6 +21,7 @@ import type { Point } from '../math';
 import type { ExerciseSpec } from './exercise';
 import type { Letter } from '../render/notation';
 import type { Painter } from '../render/painter';
+import { boundsOf, unionBounds } from '../render/projection';
 import type { PointList } from './pointList';
 import type { Script, Revealed } from './script';
 
@@ -166,9 +167,25 @@ function shellFigure<S, M extends { state: S }>(figure: KitFigure<S, M>): Figure
     ).flat();
   };
   if (points.length === 0 && !addTo) return rest;
+  const handles = (model: M): Handle[] => [
+    ...listed(model.state),
+    ...(figure.handles?.(model) ?? []),
+  ];
   return {
     ...rest,
-    handles: (model: M): Handle[] => [...listed(model.state), ...(figure.handles?.(model) ?? [])],
+    // A figure in the plane or in space is fitted to take in every handle it
+    // shows, as well as its subject: a point that can be moved is on screen.
+    bounds:
+      rest.kind === 'plot' || rest.kind === 'drawing'
+        ? rest.bounds
+        : (model: M) => {
+            const subject = rest.bounds(model);
+            const shown = handles(model);
+            return shown.length
+              ? unionBounds(subject, boundsOf(shown.map((h) => h.position)))
+              : subject;
+          },
+    handles,
     moveHandle(state: S, id: string, to: Point, model: M): S {
       const found = owner(points, id);
       if (found) return found.list.move(state, found.index, to);

@@ -5,7 +5,7 @@
  * can check that no two overlap.
  */
 import { say } from './notation';
-import type { Box } from './ink';
+import { type Box, segmentMeetsBox } from './ink';
 import type { Painter } from './painter';
 
 export interface LabelStyle {
@@ -29,6 +29,11 @@ export interface LabelStyle {
   around?: number;
   /** It stays where it is put (an axis number at its tick), or is left out. */
   fixed?: boolean;
+  /**
+   * It is part of a box already drawn and registered (a legend's names): it
+   * goes exactly where it is put, and the box stands for it among the labels.
+   */
+  inBox?: boolean;
 }
 
 /** Where a label went, in screen pixels. */
@@ -136,6 +141,53 @@ function spotsAround(x: number, y: number, r: number, total: number, size: numbe
   return spots;
 }
 
+/**
+ * Places farther from a label's anchor (its centre at (ax, ay)), ring after
+ * ring, each ring's twelve directions from above round clockwise: [left,
+ * middle] of the label.
+ */
+function farSpots(ax: number, ay: number, total: number, height: number): [number, number][] {
+  const spots: [number, number][] = [];
+  for (const reach of [1.6, 2.4, 3.4]) {
+    for (let k = 0; k < 12; k++) {
+      const angle = -Math.PI / 2 + (k * Math.PI) / 6;
+      const cx = ax + Math.cos(angle) * (reach * height + total / 2);
+      const cy = ay + Math.sin(angle) * reach * height;
+      spots.push([cx - total / 2, cy]);
+    }
+  }
+  return spots;
+}
+
+/** The point of a box nearest to (x, y). */
+function nearestOnBox(x: number, y: number, box: Box): [number, number] {
+  return [
+    Math.max(box.x, Math.min(x, box.x + box.width)),
+    Math.max(box.y, Math.min(y, box.y + box.height)),
+  ];
+}
+
+/** A thin line from a label's anchor to the nearest point of its box (when it had to move away). */
+function drawLeader(painter: Painter, [ax, ay]: [number, number], box: Box, color?: string): void {
+  const [ex, ey] = nearestOnBox(ax, ay, box);
+  // It stops a little short of the label's box.
+  const length = Math.hypot(ex - ax, ey - ay);
+  const k = length > 4 ? (length - 4) / length : 0;
+  const [bx, by] = [ax + (ex - ax) * k, ay + (ey - ay) * k];
+  const c = painter.ctx;
+  c.save();
+  c.setLineDash([]);
+  c.globalAlpha = 0.7;
+  c.strokeStyle = color ?? painter.theme.ink;
+  c.lineWidth = Math.max(1, painter.theme.sizes.thin * 0.6);
+  c.beginPath();
+  c.moveTo(ax, ay);
+  c.lineTo(bx, by);
+  c.stroke();
+  c.restore();
+  painter.ink.segment(ax, ay, bx, by, c.lineWidth / 2);
+}
+
 /** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
 export function drawScreenLabel(
   painter: Painter,
@@ -184,7 +236,8 @@ export function drawScreenLabel(
     free(l, m) &&
     (style.box === true ||
       !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height })));
-  if (!clear(left, middleY)) {
+  let boxed = style.box === true;
+  if (!style.inBox && !clear(left, middleY)) {
     if (style.fixed) return { width: 0 };
     const gap = size * 0.3;
     const shifts = [
@@ -202,26 +255,52 @@ export function drawScreenLabel(
     const spots = (around ?? shifts.map(([dx, dy]) => [left + dx, middleY + dy])).map(([l, m]) =>
       inside(l, m),
     );
-    // No clear spot: its own place if no label is there, else the nearest free one.
-    const spot =
-      spots.find(([l, m]) => clear(l, m)) ??
-      (free(left, middleY) ? [left, middleY] : spots.find(([l, m]) => free(l, m)));
+    // None near: farther out, tied to its place by a leader line; failing
+    // that, its own place if no label is there, else the nearest free one.
+    const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];
+    let leader: [number, number] | null = null;
+    let spot = spots.find(([l, m]) => clear(l, m));
+    if (!spot && !style.box) {
+      // The leader may cross lines, but no label.
+      const leaderClear = (l: number, m: number) => {
+        const end = nearestOnBox(ax, ay, { x: l, y: m - size * 0.65, width: total, height });
+        return !painter.labels.some(
+          (b) => !b.boxed && segmentMeetsBox(ax, ay, end[0], end[1], glyphBox(b)),
+        );
+      };
+      spot = farSpots(ax, ay, total, height)
+        .map(([l, m]) => inside(l, m))
+        .find(([l, m]) => clear(l, m) && leaderClear(l, m));
+      if (spot) leader = [ax, ay];
+    }
+    // Nowhere clear within reach: it keeps a free place and is boxed, so the
+    // lines under it cannot be read as part of it.
+    if (!spot) boxed = true;
+    spot ??= free(left, middleY) ? [left, middleY] : spots.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };
     [left, middleY] = spot;
+    if (leader)
+      drawLeader(
+        painter,
+        leader,
+        { x: left, y: middleY - size * 0.65, width: total, height },
+        style.color,
+      );
   }
   const c = painter.ctx;
   c.save();
   c.setLineDash([]);
   c.globalAlpha = 1;
-  painter.labels.push({
-    text,
-    x: left,
-    y: middleY - size * 0.65,
-    width: total,
-    height,
-    ...(style.box ? { boxed: true } : {}),
-  });
-  if (style.box) {
+  if (!style.inBox)
+    painter.labels.push({
+      text,
+      x: left,
+      y: middleY - size * 0.65,
+      width: total,
+      height,
+      ...(boxed ? { boxed: true } : {}),
+    });
+  if (boxed) {
     const pad = size * 0.35;
     const box: [number, number, number, number] = [
       left - pad,
@@ -244,7 +323,7 @@ export function drawScreenLabel(
   runs.forEach((run, i) => {
     c.font = run.sub ? subFont : mainFont;
     const textY = run.sub ? middleY + size * 0.3 : middleY;
-    if (style.halo && !style.box) {
+    if (style.halo && !boxed) {
       // A halo that follows the glyphs, as map labels have: it keeps the text
       // readable over lines without blanking out a rectangle of the figure.
       c.strokeStyle = theme.labelHalo;
@@ -307,48 +386,6 @@ export function drawNote(
   lines.forEach((line, i) => c.fillText(line, 2 * pad, top + pad / 2 + (i + 0.5) * lineHeight));
   c.restore();
   return top + height + pad;
-}
-
-/**
- * Labels beside a plot cursor at x = `at` (world), one per value (e.g. the
- * weights `L_2 = 0.81`), each at its value's height but pushed apart so none
- * covers another.
- */
-export function drawCursorLabels(
-  painter: Painter,
-  at: number,
-  entries: readonly { y: number; text: string; color: string }[],
-): void {
-  const view = painter.view;
-  const sizes = painter.theme.sizes;
-  const size = sizes.small;
-  const gap = size * 1.3;
-  const [x] = view.toScreen([at, 0]);
-  const placed = entries
-    .map((entry) => ({ ...entry, sy: view.toScreen([at, entry.y])[1] }))
-    .sort((a, b) => a.sy - b.sy);
-  // Top down, push each label below the one above it; then bottom up, keep
-  // them above the axis numbers and the cursor's handle, pushing up in turn.
-  const top = size;
-  const bottom = view.height - size * 3.2;
-  for (let i = 0; i < placed.length; i++) {
-    placed[i].sy = Math.max(placed[i].sy, i ? placed[i - 1].sy + gap : top);
-  }
-  for (let i = placed.length - 1; i >= 0; i--) {
-    placed[i].sy = Math.min(placed[i].sy, i < placed.length - 1 ? placed[i + 1].sy - gap : bottom);
-  }
-  // Near the right edge, write them on the left of the cursor.
-  const left = x > view.width * 0.75;
-  for (const label of placed) {
-    // Clear of the cursor's handle, which may sit on the cursor line.
-    const offset = sizes.handle + 6;
-    drawScreenLabel(painter, label.text, left ? x - offset : x + offset, label.sy, {
-      color: label.color,
-      halo: true,
-      size,
-      align: left ? 'right' : 'left',
-    });
-  }
 }
 
 /**

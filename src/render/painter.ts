@@ -5,7 +5,6 @@ import { bezierPoint } from '../math';
 import {
   type LabelBox,
   type LabelStyle,
-  drawCursorLabels,
   drawLabelClear,
   drawNote,
   drawScreenLabel,
@@ -539,16 +538,10 @@ export class Painter {
     held?.forEach((place) => place());
   }
 
-  /** Runs `place` now, or when the held labels are placed. */
-  private placing(place: () => void): void {
+  /** Runs `place` now, or when the held labels are placed (a legend drawn over the figure). */
+  placing(place: () => void): void {
     if (this.held) this.held.push(place);
     else place();
-  }
-
-  /** Labels beside a plot cursor at x = `at` (world), pushed apart so none covers another. */
-  cursorLabels(at: number, entries: readonly { y: number; text: string; color: string }[]): void {
-    const shown = entries.filter((e) => !this.labelHidden(e.text));
-    this.placing(() => drawCursorLabels(this, at, shown));
   }
 
   /** A label beside `p` on whichever side lies farthest from the `avoid` points. */

@@ -24,6 +24,8 @@ export interface Sizes {
    * projector (read from 15 m), 12 on a screen; none for thumbnails.
    */
   minText?: number;
+  /** How much taller a strip of fixed height is drawn (its handles and text are larger on the projector). */
+  strip?: number;
 }
 
 export interface Theme {
@@ -98,7 +100,17 @@ const DARK_STRONG = [
 
 export function makeTheme(dark: boolean, projector: boolean): Theme {
   const sizes: Sizes = projector
-    ? { curve: 7, line: 4.5, thin: 4, handle: 14, point: 9, label: 36, small: 28, minText: 28 }
+    ? {
+        curve: 7,
+        line: 4.5,
+        thin: 4,
+        handle: 14,
+        point: 9,
+        label: 36,
+        small: 28,
+        minText: 28,
+        strip: 2.2,
+      }
     : { curve: 3, line: 1.75, thin: 1, handle: 8, point: 5, label: 15, small: 12, minText: 12 };
   if (dark) {
     return {

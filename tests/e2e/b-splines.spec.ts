@@ -28,7 +28,7 @@ test('local control: moving one point changes only its segments of the uniform c
   await page.getByRole('button', { name: /new “before”/ }).click();
   await expect(value(page, /^segments changed/)).toHaveText('0 of 7');
   const before = (await linkState(page)).p;
-  await page.getByRole('button', { name: /^x9 at/ }).focus();
+  await page.getByRole('button', { name: /^P9 at/ }).focus();
   await page.keyboard.press('ArrowUp');
   await expectHash(page, 'p', (v) => v !== before);
   // The last point acts on the last segment only.
@@ -48,7 +48,7 @@ test('clamped knots interpolate the end points; a knot of multiplicity p passes 
 
   await openScene(page, 'Repeated knots', 'repeated');
   const join = await value(page, /^knot 1\.000 ×3/).innerText();
-  expect(join).toMatch(/^C0, through x3: distance /);
+  expect(join).toMatch(/^C0, through P3: distance /);
   expect(Number(join.split('distance ')[1])).toBeLessThan(1e-12);
 });
 
@@ -104,8 +104,8 @@ test('NURBS: the circle is exact, and a projective map with the weights keeps th
   expect(Number(off)).toBeLessThan(1e-9);
   expect(Number(await value(page, /^all weights 1/).innerText())).toBeGreaterThan(0.1);
   await openScene(page, 'Projective map', 'projective');
-  expect(Number(await value(page, /^H\(C\) vs NURBS/).innerText())).toBeLessThan(1e-9);
-  expect(Number(await value(page, /^H\(C\) vs old weights/).innerText())).toBeGreaterThan(0.05);
+  expect(Number(await value(page, /^H\(P\) vs NURBS/).innerText())).toBeLessThan(1e-9);
+  expect(Number(await value(page, /^H\(P\) vs old weights/).innerText())).toBeGreaterThan(0.05);
 });
 
 test('NURBS: dragging a halo outwards raises that weight alone and pulls the curve toward its point', async ({
@@ -127,7 +127,7 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
   const closedForm = (w3: number) =>
     [0, 1].map((d) => (4 * p[2][d] + 4 * w3 * p[3][d] + p[4][d]) / (5 + 4 * w3));
   const gap = (a: number[], b: readonly number[]) => Math.hypot(a[0] - b[0], a[1] - b[1]);
-  const curvePoint = async () => point(await value(page, /^C\(u\)/).innerText());
+  const curvePoint = async () => point(await value(page, /^P\(u\)/).innerText());
   const before = await curvePoint();
   expect(gap(before, closedForm(1))).toBeLessThan(1e-4);
 
@@ -137,9 +137,9 @@ test('NURBS: dragging a halo outwards raises that weight alone and pulls the cur
     return [box.x + box.width / 2, box.y + box.height / 2];
   };
   const [s0, s6, [cx, cy]] = [
-    await centre(/^x0 at/),
-    await centre(/^x6 at/),
-    await centre(/^x3 at/),
+    await centre(/^P0 at/),
+    await centre(/^P6 at/),
+    await centre(/^P3 at/),
   ];
   const scale = gap(s0, s6) / gap(p[0], p[6]);
   // A halo unit is 6% of the diagonal of the points' box (10 × 4); weight 1 is one unit.
@@ -183,16 +183,16 @@ test('the notes: a key to their symbols, and beside the closed scene’s three w
   await openScene(page, 'Closed B-spline', 'closed');
   await expect(slip).toBeVisible();
   await expect(slip).toContainText(
-    'closing it takes three, x(m+1) = x0, x(m+2) = x1 and x(m+3) = x2',
+    'closing it takes three, P(m+1) = P0, P(m+2) = P1 and P(m+3) = P2',
   );
   await page.keyboard.press('PageDown');
   await expectHash(page, 'k', (v) => v === '1');
   await expect(page.locator('.step-status')).toContainText(
-    'Closed: after x5 come x0, x1, x2 again (x6 = x0, x7 = x1, x8 = x2)',
+    'Closed: after P5 come P0, P1, P2 again (P6 = P0, P7 = P1, P8 = P2)',
   );
   await openScene(page, 'Knots and Cox–de Boor', 'knots');
   await expect(slip).toBeHidden();
-  await expect(page.locator('.step-status')).toContainText('The m + 1 = 7 control points x0 … x6');
+  await expect(page.locator('.step-status')).toContainText('The m + 1 = 7 control points P0 … P6');
 });
 
 test('the uniform cubic bases, derived row by row on the equally spaced knots: their values are the triangle’s', async ({

@@ -15,7 +15,7 @@ const netFromLink = async (page: Page) => netOf((await linkState(page)).x);
 /** A row of the "three ways" table, read from the page: [x, y, z]. */
 async function readPoint(page: Page, row: RegExp): Promise<number[]> {
   const cells = page
-    .getByRole('table', { name: 'The point x(u, v) three ways' })
+    .getByRole('table', { name: 'The point P(u, v) three ways' })
     .getByRole('row', { name: row })
     .locator('td');
   const texts = await cells.allTextContents();
@@ -44,7 +44,7 @@ test.beforeEach(async ({ page }) => {
   await expect(figure(page)).toBeVisible();
 });
 
-test('u, v and the camera: the point read from the page is x(u, v), three ways, and the weights sum to 1', async ({
+test('u, v and the camera: the point read from the page is P(u, v), three ways, and the weights sum to 1', async ({
   page,
 }) => {
   await expectPointMatches(page);
@@ -76,7 +76,7 @@ test('u, v and the camera: the point read from the page is x(u, v), three ways, 
 
 test('Shift-dragging a control point moves it along one axis only', async ({ page }) => {
   await page.getByRole('button', { name: 'The patch' }).click();
-  const handle = page.getByRole('button', { name: /^x1,1 at/ });
+  const handle = page.getByRole('button', { name: /^P1,1 at/ });
   const box = (await handle.boundingBox())!;
   const x = box.x + box.width / 2;
   const y = box.y + box.height / 2;
@@ -95,7 +95,7 @@ test('Shift-dragging a control point moves it along one axis only', async ({ pag
   expect(after[1]).toBe(before[1]);
   expect(after[2]).toBeGreaterThan(before[2]);
   // The table and the other 15 points follow the link.
-  await expect(page.getByRole('textbox', { name: 'x1,1 (x, y, z)' })).toHaveValue(
+  await expect(page.getByRole('textbox', { name: 'P1,1 (x, y, z)' })).toHaveValue(
     after.map((v) => String(Number(v.toPrecision(10)))).join(', '),
   );
   await expectPointMatches(page);
@@ -103,12 +103,12 @@ test('Shift-dragging a control point moves it along one axis only', async ({ pag
 
 test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => {
   const before = await pixels(page);
-  const cell = page.getByRole('textbox', { name: 'x2,1 (x, y, z)' });
+  const cell = page.getByRole('textbox', { name: 'P2,1 (x, y, z)' });
   await cell.fill('2, 1, -1.25');
   await cell.press('Enter');
   await expectHash(page, 'x', (v) => netOf(v)[2][1].join(',') === '2,1,-1.25');
   await expect(
-    page.getByRole('button', { name: /^x2,1 at \(2\.00, 1\.00, -1\.25\)/ }),
+    page.getByRole('button', { name: /^P2,1 at \(2\.00, 1\.00, -1\.25\)/ }),
   ).toBeAttached();
   expect(await pixels(page)).not.toBe(before);
   await expectPointMatches(page);
@@ -118,7 +118,7 @@ test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => 
   await cell.press('Enter');
   await expect(cell).toHaveValue('2, 1, -1.25');
   await expect(
-    page.getByRole('status').filter({ hasText: /^x2,1: type three numbers/ }),
+    page.getByRole('status').filter({ hasText: /^P2,1: type three numbers/ }),
   ).toBeVisible();
   // Said under the table, not in the page's notices, which would push the
   // figures down: the figure keeps its size, so the link shows the same picture.
@@ -158,10 +158,10 @@ test('each net worth seeing opens with its own idea; a net edited away from it w
   await page.keyboard.press('End');
   await expectHash(page, 'k', (v) => v === '5');
   // Lift a border point: no longer the bump, a patch like any other, at the same step.
-  await page.getByRole('button', { name: /^x0,1 at/ }).focus();
+  await page.getByRole('button', { name: /^P0,1 at/ }).focus();
   await page.keyboard.press('Control+ArrowUp');
   await expectHash(page, 'x', (v) => netOf(v)[0][1][2] > 0);
-  await expect(caption).toContainText('The patch, and the point x(0.5, 0.5) on it');
+  await expect(caption).toContainText('The patch, and the point P(0.5, 0.5) on it');
 });
 
 test('beside the scene that builds the curve in u, the slides’ “for 0 ≤ v ≤ 1”, said kindly', async ({
@@ -180,7 +180,7 @@ test('two patches: moving a point next to the edge breaks C¹', async ({ page })
   await page.getByRole('button', { name: 'Two patches, C¹' }).click();
   await page.keyboard.press('End');
   await expect(page.getByText(/collinear and equally long: C¹/).first()).toBeVisible();
-  const handle = page.getByRole('button', { name: /^y1,1 at/ });
+  const handle = page.getByRole('button', { name: /^Q1,1 at/ });
   await handle.focus();
   await page.keyboard.press('Control+ArrowUp');
   await expect(page.getByText(/not collinear: C⁰ only/).first()).toBeVisible();

@@ -1,5 +1,7 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
+import { valueColumn } from '../../kit/plotMarks';
+import type { Bounds } from '../../render/projection';
 import type { Painter } from '../../render/painter';
 import { hoveredPoint } from './drawParts';
 import { segmentIds } from './ids';
@@ -116,7 +118,19 @@ function drawSegmentBases(painter: Painter, m: BSplineModel, i: number, info: Dr
     width: theme.sizes.line,
   });
   for (const e of entries) painter.dot([m.u, e.y], e.color, theme.sizes.point);
-  if (!info.thumbnail) painter.cursorLabels(m.u, entries);
+  if (!info.thumbnail) valuesAt(painter, m.u, basisBounds(m), entries);
+}
+
+/** The values at the cursor, boxed in the plot's top corner away from it (off the curves they name). */
+function valuesAt(
+  painter: Painter,
+  at: number,
+  bounds: Bounds,
+  entries: readonly { y: number; text: string; color: string }[],
+): void {
+  const top = painter.view.toScreen([bounds.minX, bounds.maxY])[1];
+  const sorted = [...entries].sort((a, b) => b.y - a.y);
+  valueColumn(painter, at, bounds, Math.max(top, 0), sorted);
 }
 
 function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
@@ -158,14 +172,14 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
     color: theme.accent,
     width: theme.sizes.line,
   });
-  const values = m.table[r];
-  const entries = values.flatMap((v, i) =>
+  const row = m.table[r];
+  const entries = row.flatMap((v, i) =>
     v > 0
       ? [{ y: v, text: `N_{${i},${r}} = ${v.toFixed(3)}`, color: painter.color(owner(i)) }]
       : [],
   );
   for (const e of entries) painter.dot([u, e.y], e.color, theme.sizes.point);
-  if (!info.thumbnail) painter.cursorLabels(u, entries);
+  if (!info.thumbnail) valuesAt(painter, u, bounds, entries);
 }
 
 export const basisFigure: KitFigure<BSplineState, BSplineModel> = {

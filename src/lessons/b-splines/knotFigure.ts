@@ -1,5 +1,6 @@
 import type { Handle } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
+import { drawLegend } from '../../kit/legend';
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import { knotIds } from './ids';
@@ -63,19 +64,24 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
       if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;
       lastX = x;
       const text = count > 1 ? `u_{${j}…${j + count - 1}} ×${count}` : `u_{${j}}`;
+      // Below the line, clear of the knot's diamond.
       painter.label(text, [u, 0], {
         dx: 0,
-        dy: 28,
+        dy: theme.sizes.handle * 1.3 + size * 0.8,
         color: count > 1 ? theme.accent : theme.muted,
         align: 'center',
         size,
       });
     }
     if (!info.thumbnail && uStep(m) > 0 && uniform) {
-      painter.screenLabel('uniform knots (the slides’ matrix form)', 8, 14, {
-        color: theme.muted,
-        size: theme.sizes.label * 0.75,
-      });
+      drawLegend(
+        painter,
+        [{ text: 'uniform knots (the slides’ matrix form)', color: theme.muted }],
+        {
+          top: 2,
+          size: theme.sizes.label * 0.75,
+        },
+      );
     }
   },
   handles(m) {

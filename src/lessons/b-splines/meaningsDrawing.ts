@@ -1,16 +1,11 @@
 import type { DrawInfo } from '../../app/lesson';
 import { words } from '../../kit/format';
+import { drawLegend } from '../../kit/legend';
 import { pointBetween } from '../../math';
 import type { Painter } from '../../render/painter';
 import { drawCursor, drawPolygon, drawSegments, ringHovered } from './drawParts';
 import { nearestControl } from './meaningsGeometry';
 import type { MeaningsModel } from './model';
-
-/** The figure's key to the two kinds of ring, one line per meaning in its ring's colour, top left (pixels). */
-function legend(painter: Painter, line: number, text: string, color: string): void {
-  const size = painter.theme.sizes.label * 0.8;
-  painter.screenLabel(text, 8, size * (1.2 + 1.5 * line), { color, size, halo: true });
-}
 
 /**
  * The two meanings of “knots” on one curve: the curve over its knot values,
@@ -40,21 +35,27 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
   if (shown.has('lecture')) {
     for (const k of m.knotPoints)
       painter.ring(k.at, joinRing, { color: theme.ink, width: theme.sizes.line * 1.5 });
-    if (!info.thumbnail)
-      legend(
-        painter,
-        0,
-        'P(u) at the knots, where the pieces join: the lecture notes’ knots',
-        theme.ink,
-      );
   }
   const controlRing = theme.sizes.handle * 2.8;
   if (shown.has('controls')) {
     for (const x of points)
       painter.ring(x, controlRing, { color: theme.polygon, width: theme.sizes.line * 1.5 });
-    if (!info.thumbnail)
-      legend(painter, 1, 'control points: the “Splines” slides’ knots', theme.polygon);
   }
+  // The key to the two kinds of ring, one line per meaning in its ring's colour.
+  if (!info.thumbnail)
+    drawLegend(painter, [
+      ...(shown.has('lecture')
+        ? [
+            {
+              text: 'P(u) at the knots, where the pieces join: the lecture notes’ knots',
+              color: theme.ink,
+            },
+          ]
+        : []),
+      ...(shown.has('controls')
+        ? [{ text: 'control points: the “Splines” slides’ knots', color: theme.polygon }]
+        : []),
+    ]);
   if (shown.has('meet')) {
     const meet = m.knotPoints.filter((k) => k.on !== null);
     for (const k of meet)

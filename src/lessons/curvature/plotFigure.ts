@@ -2,6 +2,7 @@ import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, niceStep } from '../../render/projection';
 import { words } from '../../kit/format';
+import { valueColumn } from '../../kit/plotMarks';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
 import { drawJoinMarks, joinSeries } from './joinsMarks';
@@ -113,16 +114,17 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
     const entries = cursorValues(m).filter((e) => shown.some((s) => s.name === e.name));
     for (const e of entries)
       if (e.y >= bounds.minY && e.y <= bounds.maxY) painter.dot([t, e.y], painter.color(e.colour));
+    // The values at the cursor, boxed in the top corner away from it, off the curves they name.
     if (!info.thumbnail)
-      painter.cursorLabels(
+      valueColumn(
+        painter,
         t,
+        bounds,
+        Math.max(painter.view.toScreen([bounds.minX, bounds.maxY])[1], 0),
         entries
           .filter((e) => e.y >= bounds.minY && e.y <= bounds.maxY)
-          .map((e) => ({
-            y: e.y,
-            text: `${e.name} = ${words(e.y)}`,
-            color: painter.color(e.colour),
-          })),
+          .sort((a, b) => b.y - a.y)
+          .map((e) => ({ text: `${e.name} = ${words(e.y)}`, color: painter.color(e.colour) })),
       );
   },
   handles: (m) => [

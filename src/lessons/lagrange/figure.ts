@@ -1,4 +1,5 @@
 import type { KitFigure } from '../../kit/lesson';
+import { drawLegend } from '../../kit/legend';
 import type { Painter } from '../../render/painter';
 import { seriesDash } from '../../kit/seriesColours';
 import { type LagrangeModel, basisId } from './model';
@@ -83,25 +84,25 @@ function drawSpline(painter: Painter, m: LagrangeModel) {
 /** What each line is, in the top left corner (screen pixels). */
 function legend(painter: Painter, m: LagrangeModel, top: number) {
   const theme = painter.theme;
-  const size = theme.sizes.label;
-  const x = size * 0.8;
-  let y = top + size * 0.8;
-  const entry = (text: string, color: string, dashed = false) => {
-    const c = painter.ctx;
-    c.save();
-    c.strokeStyle = color;
-    c.lineWidth = theme.sizes.curve;
-    c.setLineDash(dashed ? [theme.sizes.curve * 2, theme.sizes.curve * 1.2] : []);
-    c.beginPath();
-    c.moveTo(x, y);
-    c.lineTo(x + size * 1.6, y);
-    c.stroke();
-    c.restore();
-    painter.screenLabel(text, x + size * 2.1, y, { halo: true });
-    y += size * 1.5;
-  };
-  entry(`Lagrange polynomial, degree ${m.n}`, theme.curve);
-  if (m.comparison && m.shown.has('piece')) entry('natural cubic spline', painter.color(2), true);
-  if (m.comparison && m.shown.has('coupled'))
-    entry(`spline with P${m.comparison.moved} moved`, theme.muted, true);
+  const dashed = (color: string) => ({
+    color,
+    width: theme.sizes.curve,
+    dash: [theme.sizes.curve * 2, theme.sizes.curve * 1.2],
+  });
+  drawLegend(
+    painter,
+    [
+      {
+        text: `Lagrange polynomial, degree ${m.n}`,
+        line: { color: theme.curve, width: theme.sizes.curve },
+      },
+      ...(m.comparison && m.shown.has('piece')
+        ? [{ text: 'natural cubic spline', line: dashed(painter.color(2)) }]
+        : []),
+      ...(m.comparison && m.shown.has('coupled')
+        ? [{ text: `spline with P${m.comparison.moved} moved`, line: dashed(theme.muted) }]
+        : []),
+    ],
+    { top, size: theme.sizes.label },
+  );
 }

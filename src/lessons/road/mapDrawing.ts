@@ -1,4 +1,5 @@
 import type { Point } from '../../math';
+import { drawLegend as drawKey } from '../../kit/legend';
 import type { Painter } from '../../render/painter';
 import type { OverlayCurve } from './model';
 import { type CurvatureComb, TICK_STRIDE } from './roadMarks';
@@ -47,46 +48,15 @@ export function drawOverlayCurve(painter: Painter, curve: OverlayCurve): void {
 
 /** The legend of the overlay, top left: a line sample and the name of each curve. Returns the y below it. */
 export function drawLegend(painter: Painter, curves: readonly OverlayCurve[]): number {
-  const { theme, view } = painter;
-  const size = theme.sizes.small * 1.05;
-  const lineHeight = size * 1.45;
-  const left = size * 0.8;
-  const sample = size * 2.6;
-  let y = size * 1.2;
-  const name = (curve: OverlayCurve) =>
-    CURVES[curve.index].name + (curve.road.kind === 'missing' ? ' (not drawn)' : '');
-  const width = Math.max(...curves.map((curve) => measure(painter, name(curve), size)));
-  painter.ctx.save();
-  painter.ctx.globalAlpha = 0.9;
-  painter.ctx.fillStyle = theme.labelHalo;
-  painter.ctx.fillRect(
-    left - size * 0.4,
-    y - lineHeight * 0.6,
-    sample + width + size * 1.6,
-    lineHeight * curves.length + size * 0.2,
-  );
-  painter.ctx.restore();
-  for (const curve of curves) {
-    painter.polyline(
-      [view.toWorld([left, y]), view.toWorld([left + sample, y])],
-      overlayStyle(painter, curve.index),
-    );
-    painter.screenLabel(name(curve), left + sample + size * 0.5, y, {
-      size,
+  const theme = painter.theme;
+  return drawKey(
+    painter,
+    curves.map((curve) => ({
+      text: CURVES[curve.index].name + (curve.road.kind === 'missing' ? ' (not drawn)' : ''),
       color: curve.road.kind === 'missing' ? theme.muted : theme.ink,
-    });
-    y += lineHeight;
-  }
-  return y;
-}
-
-function measure(painter: Painter, text: string, size: number): number {
-  const c = painter.ctx;
-  c.save();
-  c.font = `${size}px ${painter.theme.fontFamily}`;
-  const width = c.measureText(text).width;
-  c.restore();
-  return width;
+      line: overlayStyle(painter, curve.index),
+    })),
+  );
 }
 
 /** The ticks of p̄ across the road (see parameterTicks): long at the villages, short between. */

@@ -1,0 +1,120 @@
+/**
+ * What a lecturer sees at every step of every scene of every lesson, drawn
+ * headless through the recording context at presenter size (the projector's
+ * theme, figures sharing a 1900 × 800 px row by their weights, as presenter
+ * view lays them out at 1920 × 1080):
+ *
+ * - no text on a figure under 28 px, and point labels at 36 px or more (the
+ *   subscript is what tells P₁,₀ from P₁,₁, so it is held to 28 px too);
+ * - no label's letters crossed by a stroke or a disc, drawn before it or
+ *   after (the painter's own record of its ink), and no label on another;
+ * - every handle of the step inside its figure;
+ * - every press changes what the room sees besides the caption: a figure or
+ *   the step's formula.
+ */
+import { describe, expect, it } from 'vitest';
+import type { AnyLesson } from '../src/app/lesson';
+import { normalizeState } from '../src/app/lessonState';
+import { lessons } from '../src/app/registry';
+import { defaultsOf } from '../src/app/urlState';
+import { drawHeadless } from '../src/app/headless';
+import { glyphBox } from '../src/render/labels';
+import { makeTheme } from '../src/render/theme';
+
+const theme = makeTheme(false, true);
+const ROW = { width: 1900, height: 800 };
+/** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
+const MIN_TEXT = 28;
+const MIN_POINT_LABEL = 36;
+
+interface Drawn {
+  svg: string;
+  problems: string[];
+}
+
+/** Every figure the state's scene shows, drawn as the projector shows it, with what is wrong in it. */
+function drawStep(lesson: AnyLesson, state: unknown): Drawn {
+  const model = lesson.derive(state);
+  const shownIds = lesson.figuresShown?.(state) ?? null;
+  const figures = lesson.figures.filter((f) => !shownIds || shownIds.includes(f.id));
+  const total = figures.reduce((sum, f) => sum + (f.weight ?? 1), 0);
+  const problems: string[] = [];
+  let svg = '';
+  for (const figure of figures) {
+    const width = Math.round((ROW.width * (figure.weight ?? 1)) / total);
+    // A strip of fixed height is drawn as tall as the projector draws it.
+    const height = figure.height
+      ? Math.round(figure.height * (theme.sizes.strip ?? 1))
+      : ROW.height;
+    const {
+      svg: context,
+      painter,
+      handles,
+      view,
+    } = drawHeadless(figure, model, {
+      width,
+      height,
+      theme,
+    });
+    const drawing = context.toSvg(width, height);
+    svg += drawing;
+    const at = `${figure.id}:`;
+    for (const [, size, text] of drawing.matchAll(/<text[^>]*font-size="([\d.]+)"[^>]*>([^<]*)</g))
+      if (Number(size) < MIN_TEXT - 0.5) problems.push(`${at} “${text}” at ${size} px`);
+    const labels = painter.labels;
+    for (const label of labels) {
+      if (label.boxed) continue;
+      const through = painter.ink.crossing(glyphBox(label));
+      if (through) problems.push(`${at} ${through} through “${label.text}”`);
+    }
+    for (let i = 0; i < labels.length; i++)
+      for (let j = i + 1; j < labels.length; j++) {
+        const [a, b] = [labels[i], labels[j]];
+        const w = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
+        const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
+        if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
+      }
+    for (const handle of handles) {
+      const [x, y] = view.toScreen(handle.position);
+      if (!(x >= 0 && y >= 0 && x <= width && y <= height))
+        problems.push(`${at} handle ${handle.id} outside, at (${x.toFixed(0)}, ${y.toFixed(0)})`);
+    }
+  }
+  return { svg, problems };
+}
+
+describe('presenter sizes', () => {
+  it('a point’s label is 36 px and its subscript 28 px on the projector', () => {
+    expect(theme.sizes.label).toBeGreaterThanOrEqual(MIN_POINT_LABEL);
+    expect(theme.sizes.small).toBeGreaterThanOrEqual(MIN_TEXT);
+  });
+});
+
+describe('every step of every scene, as the room sees it', () => {
+  for (const meta of lessons) {
+    it(`${meta.slug}: legible, clear of strokes, handles inside, and every press shows something new`, async () => {
+      const lesson = await meta.load();
+      const steps = lesson.steps!;
+      const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
+      const found: string[] = [];
+      for (const scene of lesson.scenes ?? []) {
+        const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
+        const count = steps.count(opened);
+        let before: string | null = null;
+        for (let k = 0; k <= count; k++) {
+          const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
+          const { svg, problems } = drawStep(lesson, state);
+          for (const problem of problems) found.push(`${scene.id} step ${k}: ${problem}`);
+          // What the room sees besides the caption: the figures and the step's formula.
+          const seen = `${svg}\n${steps.formula?.(lesson.derive(state), state) ?? ''}`;
+          if (before !== null && seen === before)
+            found.push(
+              `${scene.id} step ${k}: the figures and formula are the same as step ${k - 1}’s`,
+            );
+          before = seen;
+        }
+      }
+      expect(found).toEqual([]);
+    }, 120_000);
+  }
+});
