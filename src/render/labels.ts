@@ -228,14 +228,13 @@ export function drawScreenLabel(
   // nearest free spot around its place (above, below, beside), and if all of
   // them are taken it is left out rather than drawn unreadably on another.
   // Of the free spots it takes the first where no stroke drawn so far runs
-  // through its letters (a boxed label covers what is under it).
+  // through its letters (a boxed one too: its box would hide what it covers).
   const height = size * 1.3;
   const free = (l: number, m: number) =>
     !painter.labels.some((b) => overlaps(b, l, m - size * 0.65, total, height));
   const clear = (l: number, m: number) =>
     free(l, m) &&
-    (style.box === true ||
-      !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height })));
+    !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }));
   let boxed = style.box === true;
   if (!style.inBox && !clear(left, middleY)) {
     if (style.fixed) return { width: 0 };
