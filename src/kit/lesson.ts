@@ -173,10 +173,12 @@ function shellFigure<S, M extends { state: S }>(figure: KitFigure<S, M>): Figure
   ];
   return {
     ...rest,
-    // A figure in the plane or in space is fitted to take in every handle it
-    // shows, as well as its subject: a point that can be moved is on screen.
+    // A figure in the plane is fitted to take in every handle it shows, as
+    // well as its subject: a point that can be moved is on screen. (A figure
+    // in space fits a sphere round its box, which its handles' far corners
+    // would only shrink; it turns to show what it hides.)
     bounds:
-      rest.kind === 'plot' || rest.kind === 'drawing'
+      rest.kind !== 'geometry'
         ? rest.bounds
         : (model: M) => {
             const subject = rest.bounds(model);

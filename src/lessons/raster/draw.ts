@@ -1,4 +1,5 @@
 import type { Point } from '../../math';
+import { labelWidth } from '../../render/labels';
 import type { Painter } from '../../render/painter';
 import type { Polyline } from './model';
 import type { Pixel, RasterSize } from './raster';
@@ -98,6 +99,24 @@ export function drawCurve(painter: Painter, curve: Float64Array, faint = false):
 
 /** A heading at the figure's top left. */
 export function heading(painter: Painter, text: string): void {
-  const size = painter.theme.sizes.label;
-  painter.screenLabel(text, size * 0.6, size * 1.1, { bold: true, halo: true, size });
+  const { sizes } = painter.theme;
+  const room = painter.view.width - sizes.label * 1.2;
+  const width = (line: string, size: number) => labelWidth(painter, line, { bold: true, size });
+  // As large as fits the figure's width, down to the least size; then on two lines.
+  const least = sizes.minText ?? sizes.small;
+  const fit = (line: string) =>
+    Math.max(least, Math.min(sizes.label, (sizes.label * room) / width(line, sizes.label)));
+  const split = text.indexOf(': ');
+  const lines =
+    width(text, fit(text)) <= room || split < 0
+      ? [text]
+      : [text.slice(0, split + 1), text.slice(split + 2)];
+  const size = Math.min(...lines.map(fit));
+  lines.forEach((line, i) =>
+    painter.screenLabel(line, sizes.label * 0.6, size * (1.1 + 1.3 * i), {
+      bold: true,
+      halo: true,
+      size,
+    }),
+  );
 }
