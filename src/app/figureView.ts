@@ -5,7 +5,7 @@ import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
 import { OrbitCamera } from '../render/orbitCamera';
 import { Painter, type Shown, SHOW_ALL } from '../render/painter';
 import { drawHandles, plainLabel } from '../render/handles';
-import type { LabelBox } from '../render/labels';
+import { type LabelBox, glyphBox } from '../render/labels';
 import type { Projection } from '../render/projection';
 import type { DrawingSurface } from '../render/surface';
 import type { Theme } from '../render/theme';
@@ -78,6 +78,8 @@ export class FigureView<S, M> {
   private size = { width: 0, height: 0 };
   /** Where the last frame put its labels (screen pixels): for the overlap check. */
   labels: readonly LabelBox[] = [];
+  /** The last frame's painter, with its ink: which labels a stroke runs through, asked by tests. */
+  private painted: Painter | null = null;
   /** The figure's box as last observed (CSS pixels), or null before the first observation. */
   private box: { width: number; height: number } | null = null;
 
@@ -269,8 +271,19 @@ export class FigureView<S, M> {
     if (!ctx) return;
     const dpr = window.devicePixelRatio || 1;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    this.labels = this.render(ctx, model, theme, this.host.info(), this.host.shown()).labels;
+    this.painted = this.render(ctx, model, theme, this.host.info(), this.host.shown());
+    this.labels = this.painted.labels;
     this.syncKeys();
+  }
+
+  /** The last frame's labels that a stroke or a point runs through, with what does (for tests). */
+  crossedLabels(): string[] {
+    const painter = this.painted;
+    if (!painter) return [];
+    return painter.labels.flatMap((label) => {
+      const through = label.boxed ? null : painter.ink.crossing(glyphBox(label));
+      return through ? [`${through} through “${label.text}”`] : [];
+    });
   }
 
   /** The presenter's ghost: the kept model drawn faintly, without labels or handles. */

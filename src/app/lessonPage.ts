@@ -606,12 +606,19 @@ export class LessonPage<S, M> {
   }
 
   /** Each figure's labels as last drawn, with its size: for the overlap check. */
-  labelBoxes(): { figure: string; width: number; height: number; labels: readonly LabelBox[] }[] {
+  labelBoxes(): {
+    figure: string;
+    width: number;
+    height: number;
+    labels: readonly LabelBox[];
+    crossed: string[];
+  }[] {
     return this.figures.map((f) => ({
       figure: f.spec.id,
       width: f.view.width,
       height: f.view.height,
       labels: f.labels,
+      crossed: f.crossedLabels(),
     }));
   }
 

@@ -8,6 +8,7 @@
  * few stores per segment on the hot path and a question costs the cells
  * under one label.
  */
+import { clipSegment } from './clip';
 
 /** A screen rectangle. */
 export interface Box {
@@ -148,31 +149,8 @@ export class Ink {
   }
 }
 
-/** Does the segment from (ax, ay) to (bx, by) meet the box (Liang–Barsky)? */
+/** Does the segment from (ax, ay) to (bx, by) meet the box? */
 export function segmentMeetsBox(ax: number, ay: number, bx: number, by: number, b: Box): boolean {
-  let t0 = 0;
-  let t1 = 1;
-  const dx = bx - ax;
-  const dy = by - ay;
-  const edges: [number, number][] = [
-    [-dx, ax - b.x],
-    [dx, b.x + b.width - ax],
-    [-dy, ay - b.y],
-    [dy, b.y + b.height - ay],
-  ];
-  for (const [p, q] of edges) {
-    if (p === 0) {
-      if (q < 0) return false;
-      continue;
-    }
-    const t = q / p;
-    if (p < 0) {
-      if (t > t1) return false;
-      if (t > t0) t0 = t;
-    } else {
-      if (t < t0) return false;
-      if (t < t1) t1 = t;
-    }
-  }
-  return t0 <= t1;
+  const rect = { minX: b.x, minY: b.y, maxX: b.x + b.width, maxY: b.y + b.height };
+  return clipSegment(ax, ay, bx, by, rect) !== null;
 }

@@ -279,21 +279,7 @@ export class Painter {
   /** A filled polygon (convex hull, a region), optionally outlined. */
   polygon(points: readonly P[], fill: string, alpha = 0.15, outline?: StrokeStyle): void {
     if (points.length < 3) return;
-    const screen = clipPolygon(
-      points.map((p) => this.view.toScreen(p)),
-      this.clip,
-    );
-    if (screen.length >= 3) {
-      const c = this.ctx;
-      c.save();
-      c.globalAlpha = alpha;
-      c.fillStyle = fill;
-      c.beginPath();
-      screen.forEach(([x, y], i) => (i === 0 ? c.moveTo(x, y) : c.lineTo(x, y)));
-      c.closePath();
-      c.fill();
-      c.restore();
-    }
+    this.facets([{ points, fill, alpha }]);
     if (outline) this.polyline(points, outline, true);
   }
 

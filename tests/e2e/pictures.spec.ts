@@ -2,10 +2,12 @@
  * Pictures that are checked, for every lesson and every scene, at its last
  * step, in normal view (1400×850) and presenter view (1920×1080):
  *
- * - no label covers another or leaves its figure, from the painter's own
- *   placement data (what each frame recorded), not from pixels;
+ * - no label covers another, leaves its figure or has a line or a point
+ *   through its letters, from the painter's own placement data and record of
+ *   its ink (what each frame recorded), not from pixels;
  * - every live formula has its numbers filled in (what a screen reader reads);
- * - in presenter view, the caption's formula is seen whole, not cut at its foot;
+ * - in presenter view, the caption's formula is seen whole, not cut at its foot,
+ *   and the figures keep their size through every step of the scene;
  * - the drawing matches its reviewed reference image (Playwright's
  *   toHaveScreenshot, with a small tolerance). The comparison is of the
  *   figures with their labels hidden (presenter key A): what is compared is
@@ -33,15 +35,29 @@ interface Placed {
   width: number;
   height: number;
   labels: { text: string; x: number; y: number; width: number; height: number }[];
+  /** Labels a stroke or a point of the same frame runs through, by the painter's record of its ink. */
+  crossed: string[];
 }
 
-/** Labels on top of each other (by more than a pixel each way), or outside their figure. */
+/**
+ * Labels on top of each other (by more than a pixel each way), outside their
+ * figure, or with a line or a point running through their letters, in the
+ * figures on screen.
+ */
 async function labelProblems(page: Page): Promise<string[]> {
-  const figures = await page.evaluate(() =>
-    (window as unknown as { splineLab: { labels(): Placed[] } }).splineLab.labels(),
-  );
+  const figures = await page.evaluate(() => {
+    const shown = new Set(
+      [...document.querySelectorAll<HTMLCanvasElement>('canvas[data-figure]')]
+        .filter((c) => c.checkVisibility())
+        .map((c) => c.dataset.figure),
+    );
+    return (window as unknown as { splineLab: { labels(): Placed[] } }).splineLab
+      .labels()
+      .filter((f) => shown.has(f.figure));
+  });
   const problems: string[] = [];
-  for (const { figure, width, height, labels } of figures) {
+  for (const { figure, width, height, labels, crossed } of figures) {
+    for (const line of crossed) problems.push(`${figure}: ${line}`);
     for (const b of labels)
       if (b.x < -1 || b.y < -1 || b.x + b.width > width + 1 || b.y + b.height > height + 1)
         problems.push(`${figure}: “${b.text}” outside the figure`);
@@ -56,6 +72,18 @@ async function labelProblems(page: Page): Promise<string[]> {
   }
   return problems;
 }
+
+/** The sizes of the figures on screen, in CSS pixels, e.g. "main 1280×700, basis 620×700". */
+const figureSizes = (page: Page) =>
+  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
+    canvases
+      .filter((c) => c.checkVisibility())
+      .map((c) => {
+        const box = c.getBoundingClientRect();
+        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
+      })
+      .join(', '),
+  );
 
 for (const slug of slugs) {
   for (const mode of ['normal', 'presenter'] as const) {
@@ -82,6 +110,24 @@ for (const slug of slugs) {
         await page.evaluate((scene) => {
           document.querySelector<HTMLButtonElement>(`button[data-scene="${scene}"]`)!.click();
         }, id);
+        if (mode === 'presenter') {
+          // The figure keeps its size through the scene's steps (#19): every
+          // press from the first step to the last, read from the canvases' boxes.
+          await page.keyboard.press('Home');
+          await settled(page);
+          const count = Number(
+            /Step \d+\/(\d+)/.exec((await page.locator('.step-status').textContent()) ?? '')?.[1] ??
+              0,
+          );
+          const first = await figureSizes(page);
+          for (let k = 1; k <= count; k++) {
+            await page.keyboard.press('PageDown');
+            await settled(page);
+            const now = await figureSizes(page);
+            if (now !== first)
+              problems.push(`${id}: step ${k}'s figures are ${now}, step 0's ${first}`);
+          }
+        }
         await page.keyboard.press('End');
         await page.mouse.move(0, 0);
         await settled(page);

@@ -1,0 +1,61 @@
+import { describe, expect, it } from 'vitest';
+import { Ink, segmentMeetsBox } from './ink';
+import { Painter } from './painter';
+import { SvgContext } from './svgContext';
+import { makeTheme } from './theme';
+import { Viewport } from './viewport';
+
+const box = { x: 10, y: 10, width: 20, height: 10 };
+
+describe('Ink: what a frame put on screen, asked box by box', () => {
+  it('finds a stroke through a box, and none that passes by (worked by hand)', () => {
+    // y = x through (10, 10) … (20, 20): it enters the box at its top left corner.
+    expect(segmentMeetsBox(0, 0, 40, 40, box)).toBe(true);
+    // A line below the box, and one that stops short of it.
+    expect(segmentMeetsBox(0, 25, 40, 25, box)).toBe(false);
+    expect(segmentMeetsBox(0, 15, 9, 15, box)).toBe(false);
+    // A line wholly inside.
+    expect(segmentMeetsBox(12, 12, 14, 14, box)).toBe(true);
+  });
+
+  it('counts a stroke’s width and a disc’s radius', () => {
+    const ink = new Ink();
+    ink.segment(0, 24, 40, 24, 1);
+    expect(ink.crosses(box)).toBe(false);
+    const thick = new Ink();
+    thick.segment(0, 24, 40, 24, 4.5);
+    expect(thick.crosses(box)).toBe(true);
+    const dot = new Ink();
+    dot.disc(35, 15, 4);
+    expect(dot.crosses(box)).toBe(false);
+    dot.disc(35, 15, 6);
+    expect(dot.crossing(box)).toMatch(/disc at \(35, 15\)/);
+  });
+
+  it('finds a segment that spans far beyond the screen (a point a million away)', () => {
+    const ink = new Ink();
+    ink.segment(-1e6, 15, 1e6, 15, 1);
+    expect(ink.crosses(box)).toBe(true);
+  });
+
+  it('records what the painter strokes, but not a background grid', () => {
+    const view = new Viewport();
+    view.resize(100, 100);
+    view.fit({ minX: 0, minY: 0, maxX: 100, maxY: 100 }, 0, true);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    painter.polyline([
+      [0, 50],
+      [100, 50],
+    ]);
+    const before = painter.ink.segments;
+    expect(before).toBe(1);
+    painter.polyline(
+      [
+        [0, 20],
+        [100, 20],
+      ],
+      { role: 'grid' },
+    );
+    expect(painter.ink.segments).toBe(before);
+  });
+});
