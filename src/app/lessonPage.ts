@@ -373,9 +373,25 @@ export class LessonPage<S, M> {
     }
     if (!document.documentElement.classList.contains('projector')) return;
     const scene = scenes[this.store.scene];
-    const sceneText = scene
-      ? `${scene.label} · ${scenes.length > 1 ? `scene ${this.store.scene + 1}/${scenes.length}, ` : ''}step ${k}/${count}`
-      : '';
+    const sceneAt = (k: number) =>
+      scene
+        ? `${scene.label} · ${scenes.length > 1 ? `scene ${this.store.scene + 1}/${scenes.length}, ` : ''}step ${k}/${count}`
+        : '';
+    const sceneText = sceneAt(k);
+    // One caption height for the whole scene: the figure keeps its size as the clicker steps.
+    if (steps)
+      this.presenter.reserveFor(
+        `${this.store.scene}/${count}/${window.innerWidth}/${this.element.classList.contains('panel-shown')}`,
+        count,
+        (j) => {
+          const at = { ...this.store.state, [steps.key]: j } as S;
+          return {
+            scene: sceneAt(j),
+            step: steps.describe(at, j),
+            formula: steps.formula?.(this.model(at), at) ?? null,
+          };
+        },
+      );
     if (this.asking && key !== this.askedAt) {
       this.asking = false;
       this.presenter.asking(false);

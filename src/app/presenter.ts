@@ -6,7 +6,10 @@
  * with, and a trail of the moving point.
  */
 import type { Shown } from '../render/painter';
-import { LiveFormula } from '../render/formula';
+import katex from 'katex';
+import { markForFit, fitToWidth } from '../render/fit';
+import { LiveFormula, filled, typesetSoon } from '../render/formula';
+import { sayTex } from '../render/notation';
 import { type FormulaParts, slotNumbers } from '../render/formulaParts';
 import { h, setHidden, setText } from './dom';
 import type { PresenterTool } from './keymap';
@@ -26,6 +29,15 @@ const TOOLS: readonly [PresenterTool, string, string][] = [
 /** Milliseconds the laser dot stays bright after the pointer stops. */
 const LASER_FADE_MS = 1200;
 
+/**
+ * The most of the screen's height a caption reserves for its scene: with the
+ * figure at three quarters of a 1920 × 1080 screen or more (#19), the rest is
+ * the caption's.
+ */
+const CAPTION_SHARE = 0.22;
+/** Pixels a reservation keeps above its tallest measured step. */
+const HEADROOM = 10;
+
 export class Presenter {
   /** The caption over the figures: the scene, the step in words, its formula. */
   readonly caption: HTMLElement;
@@ -44,6 +56,21 @@ export class Presenter {
   private readonly sceneText: HTMLElement;
   private readonly stepText: HTMLElement;
   private readonly formulaBox: HTMLElement;
+  /** A hidden copy of the caption, where each step of a scene is measured (see reserveFor). */
+  private readonly twin = h(
+    'div',
+    { class: 'caption caption-twin', 'aria-hidden': 'true' },
+    h(
+      'p',
+      { class: 'caption-text' },
+      h('span', { class: 'caption-scene' }),
+      h('span', { class: 'caption-step' }),
+    ),
+    h('div', { class: 'caption-formula' }, h('div', {})),
+  );
+  private reservedFor = '';
+  private reserved = 0;
+  private readonly measureJobs: object[] = [];
   /** The step's formula: its shape typeset once, its numbers written as text during a drag. */
   private readonly formula = new LiveFormula(true);
   private readonly blankCover: HTMLElement;
@@ -160,6 +187,65 @@ export class Presenter {
     this.caption.classList.toggle('asking', on);
   }
 
+  /**
+   * Holds the caption at the height of the tallest of a scene's steps, so the
+   * figure under it keeps one size through the scene (#19). Each step's words
+   * and formula are set in a hidden twin of the caption and measured, one per
+   * typeset slot (a formula can take a frame's budget on its own); `key` says
+   * which scene and screen the reservation is for, and `stepAt(k)` gives step
+   * k's caption when its turn comes.
+   */
+  reserveFor(
+    key: string,
+    count: number,
+    stepAt: (k: number) => { scene: string; step: string; formula: string | FormulaParts | null },
+  ): void {
+    if (key === this.reservedFor) return;
+    this.reservedFor = key;
+    this.reserved = 0;
+    this.caption.style.minHeight = '';
+    for (let k = 0; k <= count; k++) {
+      const owner = (this.measureJobs[k] ??= {});
+      typesetSoon(owner, () => {
+        if (this.reservedFor !== key) return;
+        // No more than a quarter of the screen less the figure's due: a taller
+        // step's formula takes its own room on that step alone.
+        const cap = window.innerHeight * CAPTION_SHARE;
+        // A few pixels to spare: the live caption's numbers are set as text, and
+        // its lines can come out a hair taller than the twin's.
+        const height = Math.min(cap, this.measureCaption(stepAt(k)) + HEADROOM);
+        if (height > this.reserved) {
+          this.reserved = height;
+          this.caption.style.minHeight = `${Math.ceil(height)}px`;
+        }
+      });
+    }
+  }
+
+  /** The height of a caption with these words and formula, at the caption's width. */
+  private measureCaption(step: {
+    scene: string;
+    step: string;
+    formula: string | FormulaParts | null;
+  }): number {
+    const twin = this.twin;
+    if (!twin.isConnected) this.caption.after(twin);
+    twin.style.width = `${this.caption.getBoundingClientRect().width}px`;
+    const [scene, words] = twin.querySelectorAll('span');
+    setText(scene, step.scene);
+    setText(words, step.step);
+    const box = twin.querySelector<HTMLElement>('.caption-formula')!;
+    const math = box.firstElementChild as HTMLElement;
+    setHidden(box, !step.formula);
+    if (step.formula) {
+      const tex = typeof step.formula === 'string' ? step.formula : filled(step.formula);
+      katex.render(sayTex(tex), math, { throwOnError: false, displayMode: true, strict: false });
+      markForFit(math);
+      fitToWidth(twin);
+    }
+    return twin.getBoundingClientRect().height;
+  }
+
   setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
     setText(this.sceneText, scene);
     setText(this.stepText, step);
@@ -181,6 +267,7 @@ export class Presenter {
     this.listening.abort();
     window.clearTimeout(this.laserTimer);
     this.blankCover.remove();
+    this.twin.remove();
     this.ink.destroy();
   }
 }

@@ -54,7 +54,11 @@ function run(job: () => void): void {
   lastJob = performance.now() - start;
 }
 
-function typesetSoon(owner: object, job: () => void): void {
+/**
+ * Runs `job` (a typeset, a measurement of one) now or, past this frame's
+ * budget, in a later frame's: the last job given for an owner wins.
+ */
+export function typesetSoon(owner: object, job: () => void): void {
   waiting.delete(owner);
   if (overBudget()) {
     waiting.set(owner, job);

@@ -6,7 +6,9 @@
  *   through its letters, from the painter's own placement data and record of
  *   its ink (what each frame recorded), not from pixels;
  * - every live formula has its numbers filled in (what a screen reader reads);
- * - in presenter view, the caption's formula is seen whole, not cut at its foot;
+ * - in presenter view, the caption's formula is seen whole, not cut at its foot,
+ *   and the figures keep one size through every step of a scene (but a step
+ *   whose caption is taller than the 22% of the screen a caption reserves);
  * - the drawing matches its reviewed reference image (Playwright's
  *   toHaveScreenshot, with a small tolerance). The comparison is of the
  *   figures with their labels hidden (presenter key A): what is compared is
@@ -72,6 +74,32 @@ async function labelProblems(page: Page): Promise<string[]> {
   return problems;
 }
 
+/** The sizes of the figures on screen, in CSS pixels, e.g. "main 1280×700, basis 620×700". */
+const figureSizes = (page: Page) =>
+  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
+    canvases
+      .filter((c) => c.checkVisibility())
+      .map((c) => {
+        const box = c.getBoundingClientRect();
+        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
+      })
+      .join(', '),
+  );
+
+/** Is the caption taller than a caption may reserve (22% of the screen)? */
+const captionOverReserve = (page: Page) =>
+  page.evaluate(() => {
+    const caption = document.querySelector('[data-caption]');
+    return !!caption && caption.getBoundingClientRect().height > window.innerHeight * 0.22 + 1;
+  });
+
+/** Steps whose caption is taller than the reserve, by scene: said in the test's output. */
+const longCaptions: string[] = [];
+test.afterAll(() => {
+  if (longCaptions.length)
+    console.log(`Steps whose caption outgrows the reserve:\n${longCaptions.join('\n')}`);
+});
+
 for (const slug of slugs) {
   for (const mode of ['normal', 'presenter'] as const) {
     test(`${slug}, ${mode} view: every scene's labels stand clear, its formulas are filled in and its drawing matches the reference`, async ({
@@ -97,6 +125,35 @@ for (const slug of slugs) {
         await page.evaluate((scene) => {
           document.querySelector<HTMLButtonElement>(`button[data-scene="${scene}"]`)!.click();
         }, id);
+        if (mode === 'presenter') {
+          // The figure keeps its size through the scene's steps (#19): the
+          // caption holds the height of the scene's tallest step, up to 22% of
+          // the screen; only a step whose own caption is taller than that may
+          // take more room, on that step alone. Read from the page's boxes.
+          await page.keyboard.press('Home');
+          await settled(page);
+          const status = (await page.locator('.step-status').textContent()) ?? '';
+          const count = Number(/Step \d+\/(\d+)/.exec(status)?.[1] ?? 0);
+          const sizes: string[] = [];
+          const tall: boolean[] = [];
+          for (let k = 0; k <= count; k++) {
+            if (k > 0) {
+              await page.keyboard.press('PageDown');
+              await settled(page);
+            }
+            sizes.push(await figureSizes(page));
+            tall.push(await captionOverReserve(page));
+          }
+          const usual = sizes.find((_, k) => !tall[k]) ?? sizes[0];
+          sizes.forEach((size, k) => {
+            if (size !== usual && !tall[k])
+              problems.push(`${id}: step ${k}'s figures are ${size}, the scene's ${usual}`);
+          });
+          if (tall.some(Boolean))
+            longCaptions.push(
+              `${slug} ${id}: ${tall.flatMap((t, k) => (t ? [k] : [])).join(', ')}`,
+            );
+        }
         await page.keyboard.press('End');
         await page.mouse.move(0, 0);
         await settled(page);
