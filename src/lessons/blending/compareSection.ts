@@ -23,7 +23,7 @@ const CHOICES: { value: Comparison; label: string }[] = [
 const EXPLAIN: Record<Comparison, string> = {
   none: 'Pick a basis to draw it dashed on the same axes as the Bernstein functions.',
   hermite:
-    'The Hermite bases weight the two end points P0, PN and the two end gradients P′0, P′N of one cubic patch (the lecture’s equation 7). H0 + H1 = 1, and H2 = μ(1−μ)² is never negative, but H3 = −μ²(1−μ) is below zero on the whole of (0, 1): H2 and H3 weight vectors, not points, so there is no convex hull to stay in. For the cubic, P′0 = 3(P1 − P0) and P′3 = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
+    'The Hermite bases weight the two end points P0, PN and the two end gradients D0, DN of one cubic patch (the lecture’s equation 7). H0 + H1 = 1, and H2 = μ(1−μ)² is never negative, but H3 = −μ²(1−μ) is below zero on the whole of (0, 1): H2 and H3 weight vectors, not points, so there is no convex hull to stay in. For the cubic, D0 = 3(P1 − P0) and D3 = 3(P3 − P2) (arrows in the figure) give exactly the same curve.',
   bspline:
     'The four blending functions of one uniform cubic B-spline segment, which weight four consecutive points. Like Bernstein’s they are never negative and sum to 1, so the curve stays in the convex hull; but none of them reaches 1, so the curve passes through no control point. Dashed in the figure: the uniform B-spline of these control points.',
   lagrange:

@@ -18,7 +18,7 @@ export interface ComparedShape extends Family {
   kind: Kind;
   /** The dashed curve these functions give with the control points, if they weight points. */
   curve: Point[] | null;
-  /** Hermite data of the cubic: P0 → P0 + P′0 and P3 → P3 + P′3 (for N = 3). */
+  /** Hermite data of the cubic: P0 → P0 + D0 and P3 → P3 + D3 (for N = 3). */
   arrows: [Point, Point][];
   /** Lagrange: the share of the curve's samples outside the control points' convex hull. */
   outside: number | null;
@@ -86,7 +86,7 @@ export function comparedAt(shape: ComparedShape, p: readonly Point[], mu: number
   };
 }
 
-/** The end gradients P′0 = 3(P1 − P0) and P′3 = 3(P3 − P2) at true length: the H2, H3 data. */
+/** The end gradients D0 = 3(P1 − P0) and D3 = 3(P3 − P2) at true length: the H2, H3 data. */
 function hermiteArrows(p: readonly Point[]): [Point, Point][] {
   const [x0, d0, x1, d1] = bezierToHermite(p);
   return [

@@ -130,12 +130,12 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   addTo: controlPoints,
 };
 
-/** The Hermite data of the same cubic, P′0 and P′3 at true length, labelled. */
+/** The Hermite data of the same cubic, the gradients D0 and D3 at true length, labelled. */
 function drawHermiteData(painter: Painter, compared: Compared): void {
   const theme = painter.theme;
   compared.arrows.forEach(([from, tip], end) => {
     painter.arrow(from, tip, { color: theme.accent, width: theme.sizes.line });
-    painter.label(end === 0 ? "P_0'" : "P_3'", tip, {
+    painter.label(end === 0 ? 'D_0' : 'D_3', tip, {
       dx: 6,
       dy: -theme.sizes.label * 0.7,
       color: theme.accent,

@@ -15,7 +15,7 @@ export const SAMPLES = 400;
 export interface Family {
   /** Lecture names with subscripts, one per function: `H_0`, `W_{3,1}`, `L_{2}`. */
   labels: string[];
-  /** What each function weights: `P_{0}`, `P_0'`. */
+  /** What each function weights: `P_{0}`, `D_0`. */
   weights: string[];
   /** Palette index of each function. */
   colors: number[];
@@ -49,10 +49,10 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
         values: (mu) => bernsteinBasis(n, mu),
       };
     case 'hermite':
-      // The lecture's names for the patch's data: its end points and their gradients P′.
+      // The patch's data: its end points and their gradients D, as the Hermite lesson names them.
       return {
         labels: ['H_0', 'H_1', 'H_2', 'H_3'],
-        weights: ['P_0', `P_{${n}}`, "P_0'", `P_{${n}}'`],
+        weights: ['P_0', `P_{${n}}`, 'D_0', `D_{${n}}`],
         colors: hermiteColors(n),
         values: hermiteBasis,
       };

@@ -8,7 +8,10 @@ export const NOTES_KEY: readonly (readonly [string, string])[] = [
   ['Pᵢ', 'xₙ in the lecture slides, xᵢ in the continuation notes'],
   ['W(N, i, μ)', 'fₙ(u) in the lecture slides, Bᵢ(t) in the continuation notes'],
   ['P(μ) = U M P', 'x(u) = U M_Bezier X in the lecture slides'],
-  ['P′₀, P′₃ (Hermite)', 'x′₀, x′₁ in the continuation notes'],
+  [
+    'D₀, D₃: the gradients at P₀ and P₃ (Hermite), as in the Hermite lesson',
+    'P′₀, P′₁ in the lecture notes (equations 6 and 7); Dᵢ in the lecture slides; x′₀, x′₁ in the continuation notes',
+  ],
 ];
 
 /**

@@ -125,7 +125,7 @@ export const hermiteScript: Script = script<BlendingState, BlendingModel, Reveal
       const [[from0, tip0], [from1, tip1]] = model.compared!.arrows;
       const d = (a: readonly number[], b: readonly number[]) =>
         texPoint([b[0] - a[0], b[1] - a[1]], 2);
-      return `P_0' = 3(P_1 - P_0) = ${d(from0, tip0)},\\quad P_3' = 3(P_3 - P_2) = ${d(from1, tip1)}`;
+      return `D_0 = 3(P_1 - P_0) = ${d(from0, tip0)},\\quad D_3 = 3(P_3 - P_2) = ${d(from1, tip1)}`;
     },
   ),
   repeat(

@@ -78,7 +78,7 @@ describe('the Compare scenes start where their own idea starts (issue #20)', () 
   it('Hermite: the end gradients of the lecture cubic, 3(P1 − P0) = (3, 6) and 3(P3 − P2) = (3, −6)', () => {
     const [, , tangents] = walk(opened('hermite'));
     expect(tangents[1]).toBe(
-      "P_0' = 3(P_1 - P_0) = (3.00,\\ 6.00),\\quad P_3' = 3(P_3 - P_2) = (3.00,\\ -6.00)",
+      'D_0 = 3(P_1 - P_0) = (3.00,\\ 6.00),\\quad D_3 = 3(P_3 - P_2) = (3.00,\\ -6.00)',
     );
   });
 
