@@ -57,16 +57,18 @@ export class Presenter {
   private readonly stepText: HTMLElement;
   private readonly formulaBox: HTMLElement;
   /** A hidden copy of the caption, where each step of a scene is measured (see reserveFor). */
+  // Its own class names (the caption's are the tests' and tools' handle on the
+  // caption), styled as the caption's in styles.css.
   private readonly twin = h(
     'div',
-    { class: 'caption caption-twin', 'aria-hidden': 'true' },
+    { class: 'caption-twin', 'aria-hidden': 'true' },
     h(
       'p',
       { class: 'caption-text' },
-      h('span', { class: 'caption-scene' }),
-      h('span', { class: 'caption-step' }),
+      h('span', { class: 'twin-scene' }),
+      h('span', { class: 'twin-step' }),
     ),
-    h('div', { class: 'caption-formula' }, h('div', {})),
+    h('div', { class: 'twin-formula' }, h('div', {})),
   );
   private reservedFor = '';
   private reserved = 0;
@@ -234,7 +236,7 @@ export class Presenter {
     const [scene, words] = twin.querySelectorAll('span');
     setText(scene, step.scene);
     setText(words, step.step);
-    const box = twin.querySelector<HTMLElement>('.caption-formula')!;
+    const box = twin.querySelector<HTMLElement>('.twin-formula')!;
     const math = box.firstElementChild as HTMLElement;
     setHidden(box, !step.formula);
     if (step.formula) {
