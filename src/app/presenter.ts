@@ -231,7 +231,7 @@ export class Presenter {
     formula: string | FormulaParts | null;
   }): number {
     const twin = this.twin;
-    if (!twin.isConnected) this.caption.after(twin);
+    this.caption.after(twin);
     twin.style.width = `${this.caption.getBoundingClientRect().width}px`;
     const [scene, words] = twin.querySelectorAll('span');
     setText(scene, step.scene);
@@ -245,7 +245,11 @@ export class Presenter {
       markForFit(math);
       fitToWidth(twin);
     }
-    return twin.getBoundingClientRect().height;
+    const height = twin.getBoundingClientRect().height;
+    // Out of the page between measurements: no stale copy of a step's words
+    // for a reader, a search or a test to find beside the caption.
+    twin.remove();
+    return height;
   }
 
   setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
