@@ -76,12 +76,15 @@ export class Ink {
     for (; this.indexed < this.count; this.indexed++) {
       const k = STRIDE * this.indexed;
       const w = s[k + 4];
-      const x0 = Math.floor((Math.min(s[k], s[k + 2]) - w) / CELL);
-      const x1 = Math.floor((Math.max(s[k], s[k + 2]) + w) / CELL);
-      const y0 = Math.floor((Math.min(s[k + 1], s[k + 3]) - w) / CELL);
-      const y1 = Math.floor((Math.max(s[k + 1], s[k + 3]) + w) / CELL);
-      // A segment far off screen (a point a million away) is not indexed cell by cell.
-      if (x1 - x0 > 200 || y1 - y0 > 200) {
+      // Cells only where a label can be: on a screen of up to 96 cells a side.
+      const cell = (v: number) => Math.max(-2, Math.min(96, Math.floor(v / CELL)));
+      const x0 = cell(Math.min(s[k], s[k + 2]) - w);
+      const x1 = cell(Math.max(s[k], s[k + 2]) + w);
+      const y0 = cell(Math.min(s[k + 1], s[k + 3]) - w);
+      const y1 = cell(Math.max(s[k + 1], s[k + 3]) + w);
+      // A long segment (zoomed far in, a point a million away) is tested
+      // directly rather than entered in hundreds of cells.
+      if ((x1 - x0 + 1) * (y1 - y0 + 1) > 64) {
         this.long.push(this.indexed);
         continue;
       }
