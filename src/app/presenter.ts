@@ -7,7 +7,7 @@
  */
 import type { Shown } from '../render/painter';
 import katex from 'katex';
-import { markForFit, fitToWidth } from '../render/fit';
+import { markForFit, fitToWidth, contentWidth } from '../render/fit';
 import { LiveFormula, filled, typesetSoon } from '../render/formula';
 import { sayTex } from '../render/notation';
 import { type FormulaParts, slotNumbers } from '../render/formulaParts';
@@ -34,7 +34,7 @@ const LASER_FADE_MS = 1200;
  * figure at three quarters of a 1920 × 1080 screen or more (#19), the rest is
  * the caption's.
  */
-const CAPTION_SHARE = 0.22;
+const CAPTION_SHARE = 0.24;
 /** Pixels a reservation keeps above its tallest measured step. */
 const HEADROOM = 10;
 
@@ -71,6 +71,9 @@ export class Presenter {
     h('div', { class: 'twin-formula' }, h('div', {})),
   );
   private reservedFor = '';
+  /** The words and formula shape the caption was last arranged for. */
+  private arrangedFor = '';
+  private readonly arranging = {};
   private reserved = 0;
   private readonly measureJobs: object[] = [];
   /** The step's formula: its shape typeset once, its numbers written as text during a drag. */
@@ -245,6 +248,7 @@ export class Presenter {
       markForFit(math);
       fitToWidth(twin);
     }
+    arrange(twin, box);
     const height = twin.getBoundingClientRect().height;
     // Out of the page between measurements: no stale copy of a step's words
     // for a reader, a search or a test to find beside the caption.
@@ -253,10 +257,19 @@ export class Presenter {
   }
 
   setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
+    const words = `${scene}\n${step}`;
     setText(this.sceneText, scene);
     setText(this.stepText, step);
-    if (formula) this.formula.set(typeof formula === 'string' ? slotNumbers(formula) : formula);
-    setHidden(this.formulaBox, !formula);
+    const parts = formula && (typeof formula === 'string' ? slotNumbers(formula) : formula);
+    if (parts) this.formula.set(parts);
+    setHidden(this.formulaBox, !parts);
+    // Arranged again when the words or the formula's shape change, after the
+    // formula is typeset (the job queues behind it); not as a drag changes its numbers.
+    const shape = `${words}\n${parts ? parts.shape : ''}`;
+    if (shape !== this.arrangedFor) {
+      this.arrangedFor = shape;
+      typesetSoon(this.arranging, () => arrange(this.caption, this.formulaBox));
+    }
   }
 
   private pointAt(e: PointerEvent): void {
@@ -276,6 +289,26 @@ export class Presenter {
     this.twin.remove();
     this.ink.destroy();
   }
+}
+
+/**
+ * Sets a caption's formula beside its words, rather than under them, when
+ * under them the caption would be taller than its share of the screen and
+ * beside them it is lower: a tall, narrow formula (a matrix, a column of
+ * equations) then leaves the figure its room (#19). The formula keeps its
+ * size; the words wrap in the width it leaves them.
+ */
+function arrange(caption: HTMLElement, formulaBox: HTMLElement): void {
+  caption.classList.remove('beside');
+  if (formulaBox.hidden || !caption.getClientRects().length) return;
+  const words = caption.querySelector<HTMLElement>('.caption-text')!;
+  const under = words.offsetHeight + formulaBox.offsetHeight;
+  const room = window.innerHeight * CAPTION_SHARE - HEADROOM;
+  // Beside, the words keep at least two fifths of the caption.
+  if (under <= room || contentWidth(formulaBox) > caption.clientWidth * 0.6) return;
+  caption.classList.add('beside');
+  if (Math.max(words.offsetHeight, formulaBox.offsetHeight) >= under)
+    caption.classList.remove('beside');
 }
 
 /** Freehand ink over the figures, in CSS pixels of the stage; cleared on a new step. */

@@ -60,7 +60,7 @@ export function fitToWidth(root: ParentNode): void {
  * left to the last one's right (its line box is as wide as its container, so
  * measuring that would keep a shrunk formula shrunk), or the first child (a table).
  */
-function contentWidth(el: HTMLElement): number {
+export function contentWidth(el: HTMLElement): number {
   const html = el.querySelector('.katex-html');
   if (!html) return el.firstElementChild?.getBoundingClientRect().width ?? 0;
   let left = Infinity;

@@ -8,7 +8,7 @@
  * - every live formula has its numbers filled in (what a screen reader reads);
  * - in presenter view, the caption's formula is seen whole, not cut at its foot,
  *   and the figures keep one size through every step of a scene (but a step
- *   whose caption is taller than the 22% of the screen a caption reserves);
+ *   whose caption is taller than the 24% of the screen a caption reserves);
  * - the drawing matches its reviewed reference image (Playwright's
  *   toHaveScreenshot, with a small tolerance). The comparison is of the
  *   figures with their labels hidden (presenter key A): what is compared is
@@ -86,11 +86,11 @@ const figureSizes = (page: Page) =>
       .join(', '),
   );
 
-/** Is the caption taller than a caption may reserve (22% of the screen)? */
+/** Is the caption taller than a caption may reserve (24% of the screen)? */
 const captionOverReserve = (page: Page) =>
   page.evaluate(() => {
     const caption = document.querySelector('[data-caption]');
-    return !!caption && caption.getBoundingClientRect().height > window.innerHeight * 0.22 + 1;
+    return !!caption && caption.getBoundingClientRect().height > window.innerHeight * 0.24 + 1;
   });
 
 /** Steps whose caption is taller than the reserve, by scene: said in the test's output. */
@@ -127,7 +127,7 @@ for (const slug of slugs) {
         }, id);
         if (mode === 'presenter') {
           // The figure keeps its size through the scene's steps (#19): the
-          // caption holds the height of the scene's tallest step, up to 22% of
+          // caption holds the height of the scene's tallest step, up to 24% of
           // the screen; only a step whose own caption is taller than that may
           // take more room, on that step alone. Read from the page's boxes.
           await page.keyboard.press('Home');
