@@ -99,12 +99,29 @@ describe('the script of Hermite patches, by named step', () => {
       'The four conditions as one matrix, the data in the order P₀, D₀, P₁, D₁',
     );
     expect(caption(atStep('patch'))).toBe(
-      'Patch 1 of 1, from P₀ to P₁: the inverse matrix turns its data into a₀ … a₃',
+      'Patch 1 of 1, from P₀ to P₁: the inverse matrix gives a₀ … a₃',
     );
     expect(caption(atStep('pointWeights'))).toBe(
       'Read down the columns of the inverse: H₀ and H₁ weight the end points, and H₀ + H₁ = 1',
     );
     expect(caption(atStep('pointAtMu'))).toBe('P(μ) on patch 1: H₀P₀ + H₁P₁ + H₂D₀ + H₃D₁');
+  });
+
+  it('says each patch of several in one line of presenter view, with the scene beside it (#19)', () => {
+    // The "several" scenes: five points, four patches, solved one per press from step 4.
+    const scene = lesson.scenes!.find((one) => one.id === 'catmull-rom')!;
+    const s = scene.apply(lecture()) as HermiteState;
+    const first = construction.stepOf(s, 'patch');
+    expect([0, 1, 2, 3].map((k) => caption({ ...s, step: first + k }))).toEqual([
+      'Patch 1 of 4, from P₀ to P₁: the inverse matrix gives a₀ … a₃',
+      'Patch 2 of 4, from P₁ to P₂: the inverse matrix gives a₀ … a₃',
+      'Patch 3 of 4, from P₂ to P₃: the inverse matrix gives a₀ … a₃',
+      'Patch 4 of 4, from P₃ to P₄: the inverse matrix gives a₀ … a₃',
+    ]);
+    // The Bézier scene's product names the data it multiplies, in the lecture's order.
+    expect(caption(atBezierStep('product'))).toBe(
+      'The inverse matrix times B₀, 3(B₁ − B₀), B₃, 3(B₃ − B₂) gives a₀ … a₃',
+    );
   });
 
   it('says where the Bézier control points are as the figure shows them (B₂ is not an arrow tip)', () => {

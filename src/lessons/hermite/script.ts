@@ -83,7 +83,7 @@ export const construction = script<HermiteState, HermiteModel, Reveal>(
     'patch',
     patchCount,
     ({ index, times }) =>
-      `Patch ${index} of ${times}, ${ends(index - 1)}: the inverse matrix turns its data into a₀ … a₃`,
+      `Patch ${index} of ${times}, ${ends(index - 1)}: the inverse matrix gives a₀ … a₃`,
     ({ model: { patch } }) => filled(inverted(patch.data, patch.coefficients)),
   ),
   step(
@@ -135,7 +135,7 @@ export const bezierScript = script<HermiteState, HermiteModel, Reveal>(
   ),
   step(
     'product',
-    'The inverse matrix times B₀, 3(B₁ − B₀), B₃, 3(B₃ − B₂): the coefficients a₀ … a₃',
+    'The inverse matrix times B₀, 3(B₁ − B₀), B₃, 3(B₃ − B₂) gives a₀ … a₃',
     ({ model: { patch } }) => filled(bezierProduct(patch.data, patch.coefficients, true)),
   ),
   step(
