@@ -8,19 +8,23 @@ import { equalSpacing, pieceAt, pieceTex, uniformPieces } from './uniformPieces'
 /** What the steps of the knot scenes reveal, by name: a row of Cox–de Boor per press. */
 export type KnotReveal = 'points' | 'knots' | 'row' | 'curve';
 
-/** The Cox–de Boor triangle up to row r at u: the non-zero columns i = span − p … span. */
-export function triangleTex(m: BSplineModel, r: number): string {
+/**
+ * The Cox–de Boor triangle up to row r at u: the non-zero columns i = span − p … span.
+ * With `sum`, a last column Σᵢ holds the last row's sum (1 on the curve's interval):
+ * beside the table rather than after it, so the caption stays narrow enough (#19).
+ */
+export function triangleTex(m: BSplineModel, r: number, sum = false): string {
   const p = m.degree;
   const span = m.table[0].indexOf(1);
   const columns = Array.from({ length: p + 1 }, (_, k) => span - p + k);
-  const head = columns.map((i) => `i = ${i}`).join(' & ');
-  const rows = m.table
-    .slice(0, r + 1)
-    .map(
-      (row, q) =>
-        `N_{i,${q}} & ${columns.map((i) => (i >= 0 && i < row.length ? n3(row[i]) : '')).join(' & ')}`,
-    );
-  return `u = ${n3(m.u)}:\\quad\\begin{array}{r|${'c'.repeat(p + 1)}} & ${head} \\\\ \\hline ${rows.join(' \\\\ ')}\\end{array}`;
+  const head = columns.map((i) => `i = ${i}`).join(' & ') + (sum ? ' & \\sum_i' : '');
+  const rows = m.table.slice(0, r + 1).map((row, q) => {
+    const cells = columns.map((i) => (i >= 0 && i < row.length ? n3(row[i]) : ''));
+    if (sum) cells.push(q === r ? n3(row.reduce((a, b) => a + b, 0)) : '');
+    return `N_{i,${q}} & ${cells.join(' & ')}`;
+  });
+  const align = `r|${'c'.repeat(p + 1)}${sum ? '|c' : ''}`;
+  return `u = ${n3(m.u)}:\\quad\\begin{array}{${align}} & ${head} \\\\ \\hline ${rows.join(' \\\\ ')}\\end{array}`;
 }
 
 /** The span [u_j, u_{j+1}) of the cursor: the column where row 0 is 1. */
@@ -86,12 +90,12 @@ export const knotScript = script<BSplineState, KnotModel, KnotReveal>(
     (state) => state.degree + 1,
     ({ model, index }) => rowCaption(model, index - 1),
     ({ model: m, index, times }) => {
-      const p = m.degree;
-      const sum =
-        index === times
-          ? `\\quad \\textstyle\\sum_i N_{i,${p}} = ${n3(m.basis.reduce((a, b) => a + b, 0))}`
-          : '';
-      return (piecesTex(m, index - 1) ?? triangleTex(m, index - 1)) + sum;
+      const last = index === times;
+      const pieces = piecesTex(m, index - 1);
+      // The last row sums to 1: after the pieces, or in the triangle's own Σ column.
+      if (pieces === null) return triangleTex(m, index - 1, last);
+      const sum = `\\quad \\textstyle\\sum_i N_{i,${m.degree}} = ${n3(m.basis.reduce((a, b) => a + b, 0))}`;
+      return last ? pieces + sum : pieces;
     },
   ),
   step(

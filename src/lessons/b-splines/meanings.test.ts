@@ -57,6 +57,29 @@ describe('two meanings of “knots” on one curve', () => {
     expect(knotPoints.map((k) => k.multiplicity)).toEqual([4, 1, 1, 1, 4]);
   });
 
+  it('writes each knot value and its curve point as a two-row table, by hand (#19)', () => {
+    // The clamped points above: u3 = 0 at P0, u4 = ¼ at (2.75, 3.25), u5 = ½ at (27.5/6, 8/6) =
+    // (4.58, 1.33), u6 = ¾ at (6.5417, 0.9167) = (6.54, 0.92), u7 = 1 at P6 = (10, 3.5).
+    const joins = { ...scene, step: stepOf('joins') };
+    expect(steps.formula!(lesson.derive(joins), joins)).toBe(
+      '\\begin{array}{r|ccccc} u & u_{3} = 0 & u_{4} = 0.25 & u_{5} = 0.5 & u_{6} = 0.75 & u_{7} = 1 \\\\ \\hline ' +
+        'P(u) & (0.00,\\ 0.00) & (2.75,\\ 3.25) & (4.58,\\ 1.33) & (6.54,\\ 0.92) & (10.00,\\ 3.50)\\end{array}',
+    );
+    // Ten points on knots 0 … 13: u3 … u10, eight of them: the first three, ⋯, the last two.
+    const ten = normalize({
+      ...scene,
+      points: Array.from({ length: 10 }, (_, i): Point => [i, i % 2]),
+      knots: Array.from({ length: 14 }, (_, j) => j),
+      weights: Array.from({ length: 10 }, () => 1),
+      step: stepOf('joins'),
+    }).state;
+    const many = steps.formula!(lesson.derive(ten), ten)!;
+    expect(many).toMatch(
+      /^\\begin\{array\}\{r\|cccccc\} u & u_\{3\} = 3 & u_\{4\} = 4 & u_\{5\} = 5 & \\cdots & u_\{9\} = 9 & u_\{10\} = 10 \\\\/,
+    );
+    expect(steps.describe(ten, stepOf('joins'))).toContain('P(u₃) … P(u₁₀)');
+  });
+
   it('unclamped knots 0 … 10: only u3 … u7 have curve points, and none is a control point', () => {
     const knots = Array.from({ length: 11 }, (_, j) => j);
     const state = normalize({ ...scene, knots }).state;
@@ -101,7 +124,7 @@ describe('two meanings of “knots” on one curve', () => {
       'Knots in the continuation notes and here: the parameter values u0 ≤ … ≤ u10 on the strip; the curve P(u) runs over them',
     );
     expect(caption('joins')).toBe(
-      'At the knot values the curve’s pieces join: P(u₃), P(u₄), P(u₅), P(u₆), P(u₇), each named after its u on the strip',
+      'At the knot values the curve’s pieces join: P(u₃) … P(u₇), each named after its u on the strip',
     );
     expect(caption('lecture')).toContain(`“${KNOT_WORDS.lectureJoin}”`);
     expect(caption('controls')).toContain(`“${KNOT_WORDS.splineSlides}”`);

@@ -15,6 +15,12 @@ export const knotPointName = (k: KnotPoint) => `P(u${sub(k.index)})`;
 /** The knot points that land on a control point: where the two meanings are one spot. */
 const meeting = (m: MeaningsModel) => m.knotPoints.filter((k) => k.on !== null);
 
+/** The knot points' names, P(u₃) … P(u₇) (the table under the words has each). */
+function joinNames(m: MeaningsModel): string {
+  const names = m.knotPoints.map(knotPointName);
+  return names.length <= 2 ? names.join(' and ') : `${names[0]} … ${names[names.length - 1]}`;
+}
+
 function meetCaption(m: MeaningsModel): string {
   const meet = meeting(m);
   if (meet.length === 0) {
@@ -34,6 +40,24 @@ function meetTex(m: MeaningsModel): string {
     return meet.map((k) => `P(u_{${k.index}}) = P_{${k.on}} = ${pt(k.at)}`).join(',\\quad ');
   const { knot, point, distance } = nearestControl(m.knotPoints, m.state.points);
   return `\\text{nearest: } \\lvert P(u_{${knot.index}}) - P_{${point}} \\rvert = ${n3(distance)}`;
+}
+
+/** Up to this many knot points the table has a column each; beyond, its first three and last two. */
+const FULL_COLUMNS = 6;
+
+/**
+ * Each knot value u_j and the curve's point P(u_j) there, as a two-row table:
+ * one row a column, five rows of P(u_j) = P(u) = (x, y) would crowd the figure (#19).
+ */
+export function joinsTex(m: MeaningsModel): string {
+  const all = m.knotPoints;
+  const shown: (KnotPoint | null)[] =
+    all.length <= FULL_COLUMNS ? all : [...all.slice(0, 3), null, ...all.slice(-2)];
+  const cell = (write: (k: KnotPoint) => string, dots: string) =>
+    shown.map((k) => (k === null ? dots : write(k))).join(' & ');
+  const values = cell((k) => `u_{${k.index}} = ${trimmed(k.u, 3)}`, '\\cdots');
+  const points = cell((k) => pt(k.at), '\\cdots');
+  return `\\begin{array}{r|${'c'.repeat(shown.length)}} u & ${values} \\\\ \\hline P(u) & ${points}\\end{array}`;
 }
 
 /**
@@ -56,11 +80,8 @@ export const meaningsScript = script<BSplineState, MeaningsModel, MeaningsReveal
   step(
     'joins',
     ({ model: m }) =>
-      `At the knot values the curve’s pieces join: ${m.knotPoints.map(knotPointName).join(', ')}, each named after its u on the strip`,
-    ({ model: m }) =>
-      `\\begin{aligned}${m.knotPoints
-        .map((k) => `P(u_{${k.index}}) &= P(${trimmed(k.u, 3)}) = ${pt(k.at)}`)
-        .join(' \\\\ ')}\\end{aligned}`,
+      `At the knot values the curve’s pieces join: ${joinNames(m)}, each named after its u on the strip`,
+    ({ model }) => joinsTex(model),
   ),
   step('lecture', `The lecture notes call such points knots: “${KNOT_WORDS.lectureJoin}”`),
   step(

@@ -89,6 +89,27 @@ describe('the scenes and their named steps', () => {
     expect(lesson.steps!.formula!(derive(knots), knots)).not.toMatch(/sum/);
   });
 
+  it('on clamped knots the last row’s sum is a Σ column of the triangle, not a line after it (#19)', () => {
+    // Clamped knots 0,0,0,0, ¼, ½, ¾, 1,1,1,1 at u = 0.05 (span [u3, u4)), by hand:
+    // row 1: N(2,1) = 0.2/0.25 = 0.8, N(3,1) = 0.05/0.25 = 0.2;
+    // row 2: N(1,2) = 0.8·0.8 = 0.64, N(2,2) = 0.2·0.8 + (0.45/0.5)·0.2 = 0.34, N(3,2) = 0.1·0.2 = 0.02;
+    // row 3: N(0,3) = 0.8·0.64 = 0.512, N(1,3) = 0.2·0.64 + 0.9·0.34 = 0.434,
+    // N(2,3) = 0.1·0.34 + (0.7/0.75)·0.02 = 0.0527, N(3,3) = (0.05/0.75)·0.02 = 0.0013; sum 1.
+    const clamped = sceneState('clamped');
+    const formula = (step: number) =>
+      lesson.steps!.formula!(derive({ ...clamped, step }), { ...clamped, step });
+    expect(formula(5)).toBe(
+      'u = 0.050:\\quad\\begin{array}{r|cccc|c} & i = 0 & i = 1 & i = 2 & i = 3 & \\sum_i \\\\ \\hline ' +
+        'N_{i,0} & 0.000 & 0.000 & 0.000 & 1.000 &  \\\\ ' +
+        'N_{i,1} & 0.000 & 0.000 & 0.800 & 0.200 &  \\\\ ' +
+        'N_{i,2} & 0.000 & 0.640 & 0.340 & 0.020 &  \\\\ ' +
+        'N_{i,3} & 0.512 & 0.434 & 0.053 & 0.001 & 1.000\\end{array}',
+    );
+    // The rows before the last have no Σ column.
+    expect(formula(4)).toMatch(/\\begin\{array\}\{r\|cccc\}/);
+    expect(formula(4)).not.toMatch(/sum/);
+  });
+
   it('the state says which scene it is in', () => {
     for (const scene of SCENES) expect(sceneState(scene.id).part).toBe(scene.id);
     expect(lesson.scenes!.map((scene) => scene.id)).toEqual(SCENES.map((scene) => scene.id));

@@ -123,10 +123,20 @@ describe('the derivation scene', () => {
   });
 
   it('writes each step’s equation with these numbers (y in the caption)', () => {
+    // a and b share the first line: three lines under the words leave the map its room (#19).
     expect(formula(at(3))).toBe(
-      '\\begin{aligned}a_{1} &= y_{1} = 16\\\\ b_{1} &= D_{1} = -0.6507\\\\ ' +
+      '\\begin{aligned}a_{1} &= y_{1} = 16,\\quad b_{1} = D_{1} = -0.6507\\\\ ' +
         'c_{1} &= 3(y_{2} - y_{1}) - 2D_{1} - D_{2} = 3(10 - 16) - 2(-0.6507) - 8.2775 = -24.9761\\\\ ' +
         'd_{1} &= -2(y_{2} - y_{1}) + D_{1} + D_{2} = -2(10 - 16) + (-0.6507) + 8.2775 = 19.6268\\end{aligned}',
+    );
+    // Segment 2: a₂ = 10, b₂ = 1730/209 ≈ 8.2775, c₂ = 7086/209 ≈ 33.9043, d₂ = −4636/209 ≈ −22.1818.
+    expect(formula(at(4))).toBe(
+      '\\begin{aligned}a_{2} &= y_{2} = 10,\\quad b_{2} = D_{2} = 8.2775\\\\ ' +
+        'c_{2} &= 3(y_{3} - y_{2}) - 2D_{2} - D_{3} = 3(30 - 10) - 2(8.2775) - 9.5407 = 33.9043\\\\ ' +
+        'd_{2} &= -2(y_{3} - y_{2}) + D_{2} + D_{3} = -2(30 - 10) + 8.2775 + 9.5407 = -22.1818\\end{aligned}',
+    );
+    expect(steps.describe(at(3), 3)).toBe(
+      'Segment 1, P1 to the join P2: a, b, c, d from heights y and gradients D at its ends',
     );
     expect(formula(at(6))).toBe(
       "y''_{1}(1) = y''_{2}(0):\\quad 2c_{1} + 6d_{1} = 2c_{2}:\\quad 67.8086 = 2(33.9043) = 67.8086",

@@ -113,14 +113,16 @@ function listed(values: readonly FormulaParts[]): FormulaParts {
   return joined([...values.slice(0, 3), tex`\dots`, ...values.slice(-2)], ',\\ ');
 }
 
-/** a … d of segment i from the heights and gradients at its two ends. */
+/**
+ * a … d of segment i from the heights and gradients at its two ends: a and b
+ * share a line, so the caption's three lines leave the map its room (#19).
+ */
 function pieceFormula(c: CoordinateWork, v: string, i: number): FormulaParts {
   const [a, b, cc, d] = c.pieces[i];
   const [y0, y1] = [place(c.values[i]), place(c.values[i + 1])];
   const [D0, D1] = [c.gradients[i], c.gradients[i + 1]];
   const lines = [
-    tex`a_{${i}} &= ${v}_{${i}} = ${number(a)}`,
-    tex`b_{${i}} &= D_{${i}} = ${number(b)}`,
+    tex`a_{${i}} &= ${v}_{${i}} = ${number(a)},\quad b_{${i}} = D_{${i}} = ${number(b)}`,
     tex`c_{${i}} &= 3(${v}_{${i + 1}} - ${v}_{${i}}) - 2D_{${i}} - D_{${i + 1}} = 3(${y1} - ${y0}) - 2${bracket(D0)} - ${term(D1)} = ${number(cc)}`,
     tex`d_{${i}} &= -2(${v}_{${i + 1}} - ${v}_{${i}}) + D_{${i}} + D_{${i + 1}} = -2(${y1} - ${y0}) + ${term(D0)} + ${term(D1)} = ${number(d)}`,
   ];

@@ -50,7 +50,7 @@ export const derivationScript = script<RoadState, RoadModel, Reveal>(
   }),
   joined('left', ({ model }) => {
     const j = joinOf(model);
-    return `Segment ${j - 1}, from P${j - 1} to the join P${j}: a, b, c, d from the heights y and the gradients D at its two ends`;
+    return `Segment ${j - 1}, P${j - 1} to the join P${j}: a, b, c, d from heights y and gradients D at its ends`;
   }),
   joined('right', ({ model }) => {
     const j = joinOf(model);
