@@ -40,13 +40,31 @@ describe('the blending script, step by named step', () => {
       // (0·1 + 1·3 + 3·3 + 4·1) / 8 = 2, (0 + 2·3 + 2·3 + 0) / 8 = 1.5
       [
         'P(μ): the control points averaged with these weights',
-        '\\begin{aligned}P(0.5) &= 0.1250\\,(0.00,\\ 0.00)\\\\ &\\quad + 0.3750\\,(1.00,\\ 2.00)\\\\ &\\quad + 0.3750\\,(3.00,\\ 2.00)\\\\ &\\quad + 0.1250\\,(4.00,\\ 0.00)\\\\ &= (2.0000,\\ 1.5000)\\end{aligned}',
+        // Two terms a line, so the caption leaves the figure its room in presenter view (#19).
+        '\\begin{aligned}P(0.5) &= 0.1250\\,(0.00,\\ 0.00) + 0.3750\\,(1.00,\\ 2.00)\\\\ &\\quad + 0.3750\\,(3.00,\\ 2.00) + 0.1250\\,(4.00,\\ 0.00)\\\\ &= (2.0000,\\ 1.5000)\\end{aligned}',
       ],
       [
         'As μ runs from 0 to 1, P(μ) traces the Bézier curve',
         'P(\\mu) = (1-\\mu)^{3}\\,P_{0} + 3\\mu(1-\\mu)^{2}\\,P_{1} + 3\\mu^{2}(1-\\mu)\\,P_{2} + \\mu^{3}\\,P_{3}',
       ],
     ]);
+  });
+
+  it('sets the weighted sum of N = 6 on two lines of terms, four and three, then the point', () => {
+    // The N = 6 scene at μ = 0.3, W(6, i, 0.3) = C(6, i) 0.3ⁱ 0.7⁶⁻ⁱ by hand:
+    //   0.7⁶ = 0.117649, 6·0.3·0.16807 = 0.302526, 15·0.09·0.2401 = 0.324135,
+    //   20·0.027·0.343 = 0.18522, 15·0.0081·0.49 = 0.059535, 6·0.00243·0.7 = 0.010206,
+    //   0.3⁶ = 0.000729 (they sum to 1).
+    // x = 0.302526·0.5 + 0.324135·2 + 0.18522·3 + 0.059535·4 + 0.010206·5.5 + 0.000729·6 = 1.65384,
+    // y = 0.302526·2.5 + 0.324135·3 + 0.18522·1 + 0.059535·3 + 0.010206·2.5 = 2.11806.
+    const scene = lesson.scenes!.find((s) => s.id === 'degree6')!;
+    const opened = scene.apply(cubic) as BlendingState;
+    const six = { ...opened, step: blendingScript.stepOf(opened, 'point') };
+    expect(six.step).toBe(8);
+    expect(lesson.steps!.formula!(derive(six), six)).toBe(
+      '\\begin{aligned}P(0.3) &= 0.1176\\,(0.00,\\ 0.00) + 0.3025\\,(0.50,\\ 2.50) + 0.3241\\,(2.00,\\ 3.00) + 0.1852\\,(3.00,\\ 1.00)' +
+        '\\\\ &\\quad + 0.0595\\,(4.00,\\ 3.00) + 0.0102\\,(5.50,\\ 2.50) + 0.0007\\,(6.00,\\ 0.00)\\\\ &= (1.6538,\\ 2.1181)\\end{aligned}',
+    );
   });
 
   it('has no comparison step: a comparison walks a script of its own', () => {

@@ -41,7 +41,11 @@ export function weightFormula(n: number, i: number, mu: number): FormulaParts {
 /** Worked-out weights and the point stay readable on screen up to this degree. */
 const SPELL_OUT_UP_TO = 6;
 
-/** P(μ) as the weighted sum, spelt out term by term for small N. */
+/**
+ * P(μ) as the weighted sum, spelt out term by term for small N: the terms on
+ * two lines (half of them each), then the point. One term a line, N = 6 took
+ * eight lines, and in presenter view the caption crowded the figure (#19).
+ */
 export function pointFormula(
   mu: number,
   weights: readonly number[],
@@ -52,7 +56,9 @@ export function pointFormula(
   if (n > SPELL_OUT_UP_TO)
     return tex`P(${liveMu(mu)}) = \sum_{i=0}^{${n}} W(${n},i,${liveMu(mu)})\,P_i = ${livePoint(point, 4)}`;
   const terms = weights.map((w, i) => tex`${live(texNumber(w, 4))}\,${livePoint(p[i], 2)}`);
-  return tex`\begin{aligned}P(${liveMu(mu)}) &= ${joined(terms, '\\\\ &\\quad + ')}\\ &= ${livePoint(point, 4)}\end{aligned}`;
+  const perLine = Math.ceil(terms.length / 2);
+  const lines = [terms.slice(0, perLine), terms.slice(perLine)].map((line) => joined(line, ' + '));
+  return tex`\begin{aligned}P(${liveMu(mu)}) &= ${joined(lines, '\\\\ &\\quad + ')}\\ &= ${livePoint(point, 4)}\end{aligned}`;
 }
 
 /** The matrix M of P(μ) = U M P for degree n (the lecture slides' matrix form, in μ): it depends on n alone. */
