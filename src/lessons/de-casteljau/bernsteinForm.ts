@@ -33,14 +33,23 @@ function numbersTex(m: DeCasteljauModel, r: number): string {
   return `${shown.join(' + ')} = ${exactPoint(m.blends[r][0])}`;
 }
 
-/** Level r's first point expanded back into the control points, with the numbers. */
+/**
+ * Level r's first point expanded back into the control points, with the
+ * numbers: the recursion (1 − t)P_{r−1,0} + tP_{r−1,1}, written out in braces
+ * up to level 3 (the braces are the recursion, so it is not written twice),
+ * the expansion, Σ W(n, i, t) Pᵢ at the last level (beside the expansion,
+ * where one is written out), and the numbers. At most three lines to level
+ * 3: five crowded the figure in presenter view (#19).
+ */
 function levelTex(m: DeCasteljauModel, r: number): string {
   if (r === 1) return `P_{1,i} = (1-t)\\,P_i + t\\,P_{i+1}:\\quad P_{1,0} = ${numbersTex(m, 1)}`;
-  const lines = [`P_{${r},0} &= (1-t)\\,P_{${r - 1},0} + t\\,P_{${r - 1},1}`];
-  if (r <= 3)
-    lines.push(`&= (1-t)\\{${expansionTex(r - 1, 0)}\\} + t\\{${expansionTex(r - 1, 1)}\\}`);
-  if (r === m.n) lines.push(`&= \\sum_{i=0}^{${r}} W(${r},i,t)\\,P_i`);
-  if (r <= WRITTEN_OUT) lines.push(`&= ${expansionTex(r)}`);
+  const lines =
+    r <= 3
+      ? [`P_{${r},0} &= (1-t)\\{${expansionTex(r - 1, 0)}\\} + t\\{${expansionTex(r - 1, 1)}\\}`]
+      : [`P_{${r},0} &= (1-t)\\,P_{${r - 1},0} + t\\,P_{${r - 1},1}`];
+  const sum = `\\textstyle\\sum_{i=0}^{${r}} W(${r},i,t)\\,P_i`;
+  if (r <= WRITTEN_OUT) lines.push(`&= ${expansionTex(r)}${r === m.n ? ` = ${sum}` : ''}`);
+  else if (r === m.n) lines.push(`&= ${sum}`);
   lines.push(`&= ${numbersTex(m, r)}`);
   return `\\begin{aligned}${lines.join('\\\\ ')}\\end{aligned}`;
 }
@@ -69,8 +78,10 @@ export const bernsteinForm = script<DeCasteljauState, DeCasteljauModel, Bernstei
     ({ state, model: m, index: r, times: n }) => {
       if (r === 1)
         return `Level 1 in the control points: each point is ${words(1 - state.t)} of Pᵢ and ${words(state.t)} of Pᵢ₊₁`;
-      const sum = r === n ? ` = Σ W(${n}, i, t) Pᵢ` : ` blends P₀ … P${sub(r)}`;
-      return `Level ${r} expanded: P${sub(r)},₀${sum}, with weights ${weightWords(m.weights[r])}`;
+      // The last level's formula is three tall lines, its weights in the last:
+      // the words keep to one line (#19).
+      if (r === n) return `Level ${r} expanded: P${sub(r)},₀ = Σ W(${n}, i, t) Pᵢ`;
+      return `Level ${r} expanded: P${sub(r)},₀ blends P₀ … P${sub(r)}, with weights ${weightWords(m.weights[r])}`;
     },
     ({ model, index: r }) => levelTex(model, r),
   ),

@@ -166,17 +166,26 @@ describe('the construction expanded back into the Bernstein form', () => {
     // W(2, j, ½) = ¼, ½, ¼: P2,0 = ¼(0, 0) + ½(1, 2) + ¼(3, 2) = (1.25, 1.5).
     expect(m.weights[2]).toEqual([0.25, 0.5, 0.25]);
     expect(m.blends[2][0]).toEqual([1.25, 1.5]);
+    // The braces are the recursion (1 − t)P1,0 + tP1,1 with level 1 written out.
+    expect(formula(opened('bernstein', 2))).toContain(
+      '\\begin{aligned}P_{2,0} &= (1-t)\\{(1-t)\\,P_{0} + t\\,P_{1}\\} + t\\{(1-t)\\,P_{1} + t\\,P_{2}\\}\\\\ &= (1-t)^{2}',
+    );
     expect(formula(opened('bernstein', 2))).toContain(
       '&= 0.25\\cdot(0,\\ 0) + 0.5\\cdot(1,\\ 2) + 0.25\\cdot(3,\\ 2) = (1.25,\\ 1.5)',
     );
     // W(3, i, ½) = ⅛, ⅜, ⅜, ⅛: the slides' Example 4.18.
     expect(m.weights[3]).toEqual([0.125, 0.375, 0.375, 0.125]);
     expect(m.weights[3]).toEqual([0, 1, 2, 3].map((i) => bernstein(3, i, 0.5)));
-    expect(caption(opened('bernstein', 3))).toBe(
-      'Level 3 expanded: P₃,₀ = Σ W(3, i, t) Pᵢ, with weights 0.125, 0.375, 0.375, 0.125',
-    );
-    expect(formula(opened('bernstein', 3))).toContain(
-      '&= (1-t)^{3}\\,P_{0} + 3t(1-t)^{2}\\,P_{1} + 3t^{2}(1-t)\\,P_{2} + t^{3}\\,P_{3}',
+    // The last level in three lines (five crowded the figure in presenter view, #19): the
+    // recursion with level 2 written out in braces, the expansion and Σ, the numbers:
+    // ⅛(0, 0) + ⅜(1, 2) + ⅜(3, 2) + ⅛(4, 0) = ((3 + 9 + 4)/8, (6 + 6)/8) = (2, 1.5).
+    expect(caption(opened('bernstein', 3))).toBe('Level 3 expanded: P₃,₀ = Σ W(3, i, t) Pᵢ');
+    expect(formula(opened('bernstein', 3))).toBe(
+      '\\begin{aligned}' +
+        'P_{3,0} &= (1-t)\\{(1-t)^{2}\\,P_{0} + 2t(1-t)\\,P_{1} + t^{2}\\,P_{2}\\} + t\\{(1-t)^{2}\\,P_{1} + 2t(1-t)\\,P_{2} + t^{2}\\,P_{3}\\}\\\\ ' +
+        '&= (1-t)^{3}\\,P_{0} + 3t(1-t)^{2}\\,P_{1} + 3t^{2}(1-t)\\,P_{2} + t^{3}\\,P_{3} = \\textstyle\\sum_{i=0}^{3} W(3,i,t)\\,P_i\\\\ ' +
+        '&= 0.125\\cdot(0,\\ 0) + 0.375\\cdot(1,\\ 2) + 0.375\\cdot(3,\\ 2) + 0.125\\cdot(4,\\ 0) = (2,\\ 1.5)' +
+        '\\end{aligned}',
     );
     expect(formula(opened('bernstein', 4))).toBe(
       'P_{3,0} = (2,\\ 1.5)\\ \\text{(construction)},\\quad \\sum_{i=0}^{3} W(3,i,t)\\,P_i = (2,\\ 1.5),\\quad \\text{apart by } 0',
