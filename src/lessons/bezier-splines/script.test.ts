@@ -133,7 +133,35 @@ describe('the scripts of the six parts', () => {
       '\\begin{aligned}A - 2B + C &= 0\\\\H - 2I + J &= 0\\end{aligned}',
     );
     expect(steps[6].caption).toBe(
-      'The whole 10 × 10 system with the current numbers (x and y share the matrix)',
+      'The whole 10 × 10 system, joint by joint: the point, C¹, C² (P″ = 0 at the ends); x and y share the matrix',
+    );
+    // The practical's ten equations in four rows, one per joint (ten matrix rows crowded the
+    // figure in presenter view, #19): A, D, G, J are the points (0, 0), (1, 2.5), (4, 2.5),
+    // (5, 0); C¹ at D and G; C² at D and G, and P″ = 0 at A and J.
+    expect(steps[6].formula).toBe(
+      '\\begin{aligned}' +
+        'A &= (0.00,\\ 0.00) & & & A - 2B + C &= 0\\\\' +
+        'D &= (1.00,\\ 2.50) & C - 2D + E &= 0 & B - 2C + 2E - F &= 0\\\\' +
+        'G &= (4.00,\\ 2.50) & F - 2G + H &= 0 & E - 2F + 2H - I &= 0\\\\' +
+        'J &= (5.00,\\ 0.00) & & & H - 2I + J &= 0' +
+        '\\end{aligned}',
+    );
+    // Three points (0, 0), (1, 2.5), (4, 2.5): 7 control points c₀ … c₆, one inner joint c₃.
+    const three = {
+      ...opened('system'),
+      points: [
+        [0, 0],
+        [1, 2.5],
+        [4, 2.5],
+      ],
+      step: 6,
+    };
+    expect(lesson.steps!.formula!(derive(three), three)).toBe(
+      '\\begin{aligned}' +
+        'c_{0} &= (0.00,\\ 0.00) & & & c_{0} - 2c_{1} + c_{2} &= 0\\\\' +
+        'c_{3} &= (1.00,\\ 2.50) & c_{2} - 2c_{3} + c_{4} &= 0 & c_{1} - 2c_{2} + 2c_{4} - c_{5} &= 0\\\\' +
+        'c_{6} &= (4.00,\\ 2.50) & & & c_{4} - 2c_{5} + c_{6} &= 0' +
+        '\\end{aligned}',
     );
     // B = A + D₀/3 of the natural spline through (0, 0), (1, 2.5), (4, 2.5), (5, 0).
     expect(steps[7].formula).toMatch(/^\\begin\{aligned\}&B = \(0\.11,\\ 1\.00\),\\quad C = /);

@@ -1,6 +1,6 @@
 import { sub, texExponent } from '../../kit/format';
 import { script, step } from '../../kit/script';
-import { controlPointName, type Point } from '../../math';
+import { controlPointName, type Point, type SplineEquation } from '../../math';
 import { texNumber, texPoint } from '../../render/formula';
 import type { BezierSplinesModel } from './model';
 import type { BezierSplinesState } from './state';
@@ -44,14 +44,38 @@ const aligned = (rows: string[]) => `\\begin{aligned}${rows.join('\\\\')}\\end{a
 const innerJoints = (s: State) =>
   Array.from({ length: s.points.length - 2 }, (_, i) => 3 * (i + 1));
 
-const matrixTex = (m: Model) => {
+/** One row of the system as its equation: `C - 2D + E &= 0`, `D &= (1.00,\\ 2.50)`. */
+const equationTex = (m: Model, e: SplineEquation) => {
+  const terms = e.coefficients.flatMap((v, j) => (v === 0 ? [] : [{ v, name: texName(m, j) }]));
+  const left = terms
+    .map(({ v, name: x }, k) => {
+      const times = Math.abs(v) === 1 ? '' : num(Math.abs(v), 0);
+      const sign = v < 0 ? '-' : '+';
+      return `${k === 0 ? (v < 0 ? '-' : '') : ` ${sign} `}${times}${x}`;
+    })
+    .join('');
+  return `${left} &= ${e.kind === 'point' ? pt(e.right) : '0'}`;
+};
+
+/**
+ * The whole system, joint by joint (its matrix, 3n + 1 rows, is the panel's
+ * table): a row for each point, its C¹ equation and its C² one, P″ = 0 at the
+ * two ends. Ten matrix rows crowded the figure in presenter view; four rows
+ * of three columns leave it its room (#19).
+ */
+const jointsTex = (m: Model) => {
   const { equations } = m.system;
-  const cell = (v: number) => (v === 0 ? '\\cdot' : num(v, 0));
-  const rows = equations.map(
-    (e, r) =>
-      `${e.coefficients.map(cell).join(' & ')} & ${texName(m, r)} & ${num(e.right[0])} & ${num(e.right[1])}`,
+  const n = (equations.length - 1) / 3;
+  const at = (kinds: SplineEquation['kind'][], i: number) => {
+    const e = equations.find((q) => kinds.includes(q.kind) && q.at === i);
+    // An empty pair of columns where the joint has no such equation.
+    return e ? equationTex(m, e) : '&';
+  };
+  const rows = Array.from(
+    { length: n + 1 },
+    (_, i) => `${at(['point'], i)} & ${at(['C1'], i)} & ${at(['C2', 'natural'], i)}`,
   );
-  return `\\left[\\begin{array}{${'c'.repeat(equations.length)}|c|cc}${rows.join('\\\\')}\\end{array}\\right]`;
+  return aligned(rows);
 };
 
 /** Part 3: the (3n+1) × (3n+1) system for a C² cubic spline, one kind of equation per press. */
@@ -119,9 +143,9 @@ export const system = script<State, Model, SystemReveal>(
     'matrix',
     ({ state }) => {
       const { size } = shape(state);
-      return `The whole ${size} × ${size} system with the current numbers (x and y share the matrix)`;
+      return `The whole ${size} × ${size} system, joint by joint: the point, C¹, C² (P″ = 0 at the ends); x and y share the matrix`;
     },
-    ({ model }) => matrixTex(model),
+    ({ model }) => jointsTex(model),
   ),
   step(
     'solution',
