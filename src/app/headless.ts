@@ -35,10 +35,16 @@ export function fitPadding(
   theme: Theme,
   width: number,
   height: number,
-): number {
-  const room =
-    kind === 'plot' ? theme.sizes.small * 3.2 : theme.sizes.handle * 2 + theme.sizes.label * 1.6;
-  return Math.min(room, 0.12 * Math.min(width, height));
+): number | [number, number] {
+  if (kind !== 'plot') {
+    const room = theme.sizes.handle * 2 + theme.sizes.label * 1.6;
+    return Math.min(room, 0.12 * Math.min(width, height));
+  }
+  // A plot's sides hold its y axis' numbers ("0.25" at the type's size), its
+  // foot and head the x axis' numbers: each by its own length, so a short,
+  // wide strip keeps the room its numbers need beside the axis (#19).
+  const room = theme.sizes.small * 3.2;
+  return [Math.min(room, 0.12 * width), Math.min(room, 0.12 * Math.min(width, height))];
 }
 
 /** Draws one figure of the model, fitted to its bounds as the page fits it, with its handles. */

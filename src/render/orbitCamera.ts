@@ -143,7 +143,8 @@ export class OrbitCamera implements Projection {
     return pixels / (this.scale * this.factor(this.relative(at)[2]));
   }
 
-  fit(bounds: Bounds, padding = 40): void {
+  fit(bounds: Bounds, pad: number | readonly [number, number] = 40): void {
+    const padding = typeof pad === 'number' ? pad : Math.min(...pad);
     const minZ = bounds.minZ ?? 0;
     const maxZ = bounds.maxZ ?? 0;
     this.target = [

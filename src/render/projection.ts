@@ -36,8 +36,8 @@ export interface Projection {
   /** World length of `pixels` screen pixels near `at` (horizontally in 2D). */
   worldLength(pixels: number, at?: WorldPoint): number;
   resize(width: number, height: number): void;
-  /** Shows `bounds` with `padding` pixels around it. */
-  fit(bounds: Bounds, padding: number, uniform?: boolean): void;
+  /** Shows `bounds` with `padding` pixels around it (or [left and right, top and bottom]). */
+  fit(bounds: Bounds, padding: number | readonly [number, number], uniform?: boolean): void;
   /** Drag of empty space: pan in 2D, orbit in space. */
   dragBy(dx: number, dy: number): void;
   zoomAt(screen: readonly number[], factor: number): void;

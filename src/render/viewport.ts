@@ -59,11 +59,12 @@ export class Viewport implements Projection {
    * Shows `bounds` with `padding` pixels around it. With `uniform` (the default
    * for geometry) one unit is as long across as up; plots may stretch.
    */
-  fit(bounds: Bounds, padding = 40, uniform = true): void {
+  fit(bounds: Bounds, padding: number | readonly [number, number] = 40, uniform = true): void {
+    const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
     const spanX = Math.max(bounds.maxX - bounds.minX, 1e-9);
     const spanY = Math.max(bounds.maxY - bounds.minY, 1e-9);
-    const innerW = Math.max(this.width - 2 * padding, 10);
-    const innerH = Math.max(this.height - 2 * padding, 10);
+    const innerW = Math.max(this.width - 2 * padX, 10);
+    const innerH = Math.max(this.height - 2 * padY, 10);
     let sx = innerW / spanX;
     let sy = innerH / spanY;
     if (uniform) {

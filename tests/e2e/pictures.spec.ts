@@ -5,6 +5,8 @@
  * - no label covers another, leaves its figure or has a line or a point
  *   through its letters, from the painter's own placement data and record of
  *   its ink (what each frame recorded), not from pixels;
+ * - every axis number sits at its tick, on its scale, read back from the
+ *   figures' SVG export (axes.ts);
  * - every live formula has its numbers filled in (what a screen reader reads);
  * - in presenter view, the caption's formula is seen whole, not cut at its foot,
  *   and the figures keep one size through every step of a scene (but a step
@@ -19,6 +21,7 @@
  *   node scripts/e2e.mjs tests/e2e/pictures.spec.ts --update-snapshots
  */
 import type { Page } from '@playwright/test';
+import { exportedDrawing, tickProblems } from './axes';
 import { legibleFromTheBackRow } from './clicker';
 import {
   expect,
@@ -158,6 +161,9 @@ for (const slug of slugs) {
         await page.mouse.move(0, 0);
         await settled(page);
         for (const problem of await labelProblems(page)) problems.push(`${id}: ${problem}`);
+        // Axis numbers at their ticks, read back from the drawing the SVG button saves.
+        for (const problem of tickProblems(await exportedDrawing(page)))
+          problems.push(`${id}: ${problem}`);
         // Live formulas are filled in, for screen readers too: no number slot
         // left as its marker (engine issue), whatever the shape of the scene's formulas.
         const unfilled = await page
