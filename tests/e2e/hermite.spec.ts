@@ -226,7 +226,7 @@ test('the script builds the patch from its points, and every scene steps from no
     'The gradients D₀ and D₁, set by hand (arrows drawn a third as long)',
     'Patch 1, from P₀ to P₁: its ends at μ = 0 and μ = 1 give four conditions on a₀ … a₃',
     'The four conditions as one matrix, the data in the order P₀, D₀, P₁, D₁',
-    'Patch 1 of 1, from P₀ to P₁: the inverse matrix turns its data into a₀ … a₃',
+    'Patch 1 of 1, from P₀ to P₁: the inverse matrix gives a₀ … a₃',
     'Read down the columns of the inverse: H₀ and H₁ weight the end points, and H₀ + H₁ = 1',
     'H₂ and H₃ weight the end gradients: H₂ is never negative, H₃ never positive',
     'P(μ) on patch 1: H₀P₀ + H₁P₁ + H₂D₀ + H₃D₁',
