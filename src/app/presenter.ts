@@ -73,11 +73,10 @@ export class Presenter {
   private reservedFor = '';
   /** The words and formula shape the caption was last arranged for. */
   private arrangedFor = '';
-  private readonly arranging = {};
   private reserved = 0;
   private readonly measureJobs: object[] = [];
   /** The step's formula: its shape typeset once, its numbers written as text during a drag. */
-  private readonly formula = new LiveFormula(true);
+  private readonly formula = new LiveFormula(true, () => this.arrange());
   private readonly blankCover: HTMLElement;
   private readonly laserDot: HTMLElement;
   private laserTimer = 0;
@@ -263,13 +262,22 @@ export class Presenter {
     const parts = formula && (typeof formula === 'string' ? slotNumbers(formula) : formula);
     if (parts) this.formula.set(parts);
     setHidden(this.formulaBox, !parts);
-    // Arranged again when the words or the formula's shape change, after the
-    // formula is typeset (the job queues behind it); not as a drag changes its numbers.
+    // Arranged again when the words or the formula's shape change, once the
+    // formula is typeset; not as a drag changes its numbers.
     const shape = `${words}\n${parts ? parts.shape : ''}`;
     if (shape !== this.arrangedFor) {
       this.arrangedFor = shape;
-      typesetSoon(this.arranging, () => arrange(this.caption, this.formulaBox));
+      // A new shape is arranged when it is typeset (the formula calls back).
+      if (!parts || this.formula.typesetShape === parts.shape) this.arrange();
     }
+  }
+
+  private arrange(): void {
+    // At the new formula's own size: a wide formula before it may have left
+    // it shrunk to fit, until the next frame's fit.
+    markForFit(this.formula.element);
+    fitToWidth(this.caption);
+    arrange(this.caption, this.formulaBox);
   }
 
   private pointAt(e: PointerEvent): void {

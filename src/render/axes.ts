@@ -114,7 +114,8 @@ export function drawPlotAxes(
   c.lineTo(lx, ly1);
   c.stroke();
   c.restore();
-  const fmt = (n: number) => String(Number(n.toFixed(6)));
+  // A negative number with a minus sign, as the formulas write it (not a hyphen).
+  const fmt = (n: number) => String(Number(n.toFixed(6))).replace('-', '−');
   const muted = { size: small, color: theme.muted };
   // A number stays at its tick, or is left out where a handle or a curve covers it.
   const tick = { ...muted, fixed: true };

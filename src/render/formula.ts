@@ -126,9 +126,18 @@ export class LiveFormula {
   private slots: { html: Element; mathml: Element | null; text: string }[] = [];
   private annotation: Element | null = null;
 
-  constructor(private readonly display = false) {
+  constructor(
+    private readonly display = false,
+    /** Called each time a new shape has been typeset (its size may have changed). */
+    private readonly typesetDone?: () => void,
+  ) {
     this.element = document.createElement(display ? 'div' : 'span');
     this.element.className = display ? 'formula display live' : 'formula live';
+  }
+
+  /** The shape typeset now (null before the first). */
+  get typesetShape(): string | null {
+    return this.shape;
   }
 
   /** The shape and its numbers, as two arguments or as `FormulaParts` (see formulaParts.ts). */
@@ -147,6 +156,7 @@ export class LiveFormula {
     typesetSoon(this, () => {
       this.typeset(this.latest.shape);
       this.fill(this.latest);
+      this.typesetDone?.();
     });
   }
 
