@@ -300,20 +300,23 @@ export class Presenter {
 }
 
 /**
- * Sets a caption's formula beside its words, rather than under them, when
- * under them the caption would be taller than its share of the screen and
- * beside them it is lower: a tall, narrow formula (a matrix, a column of
- * equations) then leaves the figure its room (#19). The formula keeps its
- * size; the words wrap in the width it leaves them.
+ * Sets a caption's formula beside its words, rather than under them, when it
+ * is tall (more than two and a half lines of words: a matrix, a column of
+ * equations), narrow enough to leave the words two fifths of the width, and
+ * the caption is lower so: the figure then keeps its room (#19). The formula
+ * keeps its size; the words wrap in the width it leaves them. (A rule on the
+ * formula's own height, not the caption's against its reserve, so that the
+ * caption and its measuring twin, whose formulas can differ by a pixel or two,
+ * choose alike.)
  */
 function arrange(caption: HTMLElement, formulaBox: HTMLElement): void {
   caption.classList.remove('beside');
   if (formulaBox.hidden || !caption.getClientRects().length) return;
   const words = caption.querySelector<HTMLElement>('.caption-text')!;
+  const line = parseFloat(getComputedStyle(words).lineHeight) || 40;
   const under = words.offsetHeight + formulaBox.offsetHeight;
-  const room = window.innerHeight * CAPTION_SHARE - HEADROOM;
-  // Beside, the words keep at least two fifths of the caption.
-  if (under <= room || contentWidth(formulaBox) > caption.clientWidth * 0.6) return;
+  if (formulaBox.offsetHeight <= 2.5 * line) return;
+  if (contentWidth(formulaBox) > caption.clientWidth * 0.6) return;
   caption.classList.add('beside');
   if (Math.max(words.offsetHeight, formulaBox.offsetHeight) >= under)
     caption.classList.remove('beside');
