@@ -251,7 +251,7 @@ describe('the continuity scene', () => {
       return steps.describe({ ...scene, step: k }, k);
     };
     expect(caption('linear')).toBe(
-      'Degree 1 on simple knots, at u = 5: P matches left and right, P′ does not: C⁰ = C¹⁻¹, through P4',
+      'Degree 1 on simple knots, at u = 5: P matches left and right, P′ does not: C⁰ = C¹⁻¹, through P₄',
     );
     expect(caption('quadratic')).toBe(
       'Degree 2 on simple knots, at u = 5: P and P′ match left and right, P″ does not: C¹ = C²⁻¹',
@@ -260,10 +260,10 @@ describe('the continuity scene', () => {
       'Degree 3 on simple knots, at u = 5: P, P′ and P″ match left and right, P‴ does not: C² = C³⁻¹',
     );
     expect(caption('double')).toBe(
-      'A double knot at u = 5 (u6 moved onto u5): P and P′ match left and right, P″ does not: C¹ = C³⁻²',
+      'A double knot at u = 5 (u₆ moved onto u₅): P and P′ match left and right, P″ does not: C¹ = C³⁻²',
     );
     expect(caption('triple')).toBe(
-      'A triple knot at u = 5 (u4 and u6 moved onto u5): P matches left and right, P′ does not: C⁰ = C³⁻³, through P3',
+      'A triple knot at u = 5 (u₄ and u₆ moved onto u₅): P matches left and right, P′ does not: C⁰ = C³⁻³, through P₃',
     );
   });
 

@@ -1,4 +1,4 @@
-import { words } from '../../kit/format';
+import { sub, words } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import type { ContinuityCase, JoinCheck } from './continuityGeometry';
 import type { ContinuityModel } from './model';
@@ -49,7 +49,7 @@ function verdict(m: ContinuityModel): string {
 /** What the step did to the knots, in words. */
 function knotsSaid(m: ContinuityModel): string {
   const c = m.watched.u;
-  const u = (j: number) => `u${j}`;
+  const u = (j: number) => `u${sub(j)}`;
   switch (m.knotCase) {
     case 'double':
       return `A double knot at u = ${words(c)} (${u(c + 1)} moved onto ${u(c)})`;
@@ -61,7 +61,7 @@ function knotsSaid(m: ContinuityModel): string {
 }
 
 function caseCaption(m: ContinuityModel): string {
-  const through = m.watched.through === null ? '' : `, through P${m.watched.through}`;
+  const through = m.watched.through === null ? '' : `, through P${sub(m.watched.through)}`;
   return `${knotsSaid(m)}: ${agreement(m.watched)}: ${verdict(m)}${through}`;
 }
 
