@@ -311,15 +311,21 @@ export class Presenter {
  */
 function arrange(caption: HTMLElement, formulaBox: HTMLElement): void {
   caption.classList.remove('beside');
+  formulaBox.style.minWidth = '';
   if (formulaBox.hidden || !caption.getClientRects().length) return;
   const words = caption.querySelector<HTMLElement>('.caption-text')!;
   const line = parseFloat(getComputedStyle(words).lineHeight) || 40;
   const under = words.offsetHeight + formulaBox.offsetHeight;
-  if (formulaBox.offsetHeight <= 2.5 * line) return;
-  if (contentWidth(formulaBox) > caption.clientWidth * 0.6) return;
+  const width = contentWidth(formulaBox);
+  if (formulaBox.offsetHeight <= 2.5 * line || width > caption.clientWidth * 0.6) return;
   caption.classList.add('beside');
-  if (Math.max(words.offsetHeight, formulaBox.offsetHeight) >= under)
+  // Its column as wide as its typeset pieces reach (a sum's limits overhang
+  // the box KaTeX gives it), so the fit never shrinks it below its size.
+  formulaBox.style.minWidth = `${Math.ceil(width) + 4}px`;
+  if (Math.max(words.offsetHeight, formulaBox.offsetHeight) >= under) {
     caption.classList.remove('beside');
+    formulaBox.style.minWidth = '';
+  }
 }
 
 /** Freehand ink over the figures, in CSS pixels of the stage; cleared on a new step. */
