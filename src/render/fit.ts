@@ -32,7 +32,7 @@ export function fitToWidth(root: ParentNode): void {
     box: el.clientWidth,
     scroll: el.scrollWidth,
     width: contentWidth(el),
-    font: parseFloat(getComputedStyle(el).fontSize) || 16,
+    font: smallestFont(el),
   }));
   pending.forEach((el, i) => {
     const { box, scroll, width, font } = sizes[i];
@@ -72,6 +72,16 @@ export function contentWidth(el: HTMLElement): number {
     right = Math.max(right, box.right);
   }
   return right > left ? right - left : 0;
+}
+
+/**
+ * The element's type size, or its table cells' where they are set smaller
+ * (a data table is 0.85 of its box's size): the size the 12 px floor is for.
+ */
+function smallestFont(el: HTMLElement): number {
+  const own = parseFloat(getComputedStyle(el).fontSize) || 16;
+  const cell = el.querySelector('td, th');
+  return cell ? Math.min(own, parseFloat(getComputedStyle(cell).fontSize) || own) : own;
 }
 
 /** Marks everything under `root` that was ever fitted (the panel or the type size changed). */

@@ -1,0 +1,51 @@
+import { readFileSync } from 'node:fs';
+import { expect, settled, test } from './fixtures';
+
+/** Every scene of every lesson, at its first and last step (as tests/links.test.ts keeps them). */
+const links = JSON.parse(readFileSync('tests/scene-links.json', 'utf8')) as Record<
+  string,
+  string[]
+>;
+
+/**
+ * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
+ * first and last step: the page never scrolls sideways, and no text on it,
+ * in the panel or its formulas (subscripts included), is
+ * set under 12 px. Read from the page: the root's scroll width and each shown
+ * text's computed size. (The figures' own text is held to 12 px by the
+ * screen theme's smallest size, as steps.test.ts holds the projector's to 28.)
+ */
+test.use({ viewport: { width: 1366, height: 768 } });
+
+for (const [slug, queries] of Object.entries(links)) {
+  test(`${slug}: at 1366×768 no scene scrolls sideways or sets text under 12 px`, async ({
+    page,
+  }) => {
+    test.setTimeout(90_000);
+    const faults: string[] = [];
+    await page.goto(`./#/${slug}?${queries[0]}`);
+    for (const query of queries) {
+      await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
+      await settled(page);
+      const seen = await page.evaluate(() => {
+        const root = document.documentElement;
+        const small = new Set<string>();
+        const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+        for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+          const text = node.textContent?.trim();
+          const el = node.parentElement;
+          if (!text || !el || !el.checkVisibility({ visibilityProperty: true })) continue;
+          // Assistive copies (KaTeX's MathML, visually hidden names) are not seen.
+          if (el.closest('.katex-mathml, .visually-hidden, [aria-hidden="true"]')) continue;
+          const size = parseFloat(getComputedStyle(el).fontSize);
+          if (size < 11.95) small.add(`${size.toFixed(1)}px “${text.slice(0, 20)}”`);
+        }
+        return { overflow: root.scrollWidth - root.clientWidth, small: [...small] };
+      });
+      const where = `${slug}?${query.slice(0, 60)}`;
+      if (seen.overflow > 0) faults.push(`${where}: the page is ${seen.overflow} px too wide`);
+      for (const s of seen.small) faults.push(`${where}: ${s}`);
+    }
+    expect(faults).toEqual([]);
+  });
+}
