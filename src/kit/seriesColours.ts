@@ -8,9 +8,12 @@ import type { Theme } from '../render/theme';
 /**
  * Palette slots for series drawn beside the accent: every theme's accent
  * (the colour of P(t) and of the parameter's marks) is slot 1 or 4, so a
- * series skips both and never wears the accent's colour.
+ * series skips both and never wears the accent's colour. The first four
+ * (a construction's levels, a family of curves) are blue, green, magenta and
+ * brown: the light blue (slot 5) beside the dark one read as one colour on a
+ * washed-out projector (#19), so it comes later (seriesColours.test.ts).
  */
-const SERIES_SLOTS = [0, 2, 3, 5, 6, 7];
+const SERIES_SLOTS = [0, 2, 3, 7, 5, 6];
 
 /** The k-th colour of a series that never takes the accent's colour. */
 export const seriesColour = (palette: Theme['palette'], k: number) =>
