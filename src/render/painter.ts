@@ -65,6 +65,9 @@ const MARGIN = 64;
  * spline. Everything is cut to the visible rectangle first, so the cost of a
  * frame follows the pixels on screen, not the zoom.
  */
+/** The least opacity of a filled region's tint on the projector. */
+const PROJECTOR_TINT = 0.25;
+
 export class Painter {
   /** Every label placed this frame, in screen pixels (for overlap checks). */
   readonly labels: LabelBox[] = [];
@@ -276,10 +279,15 @@ export class Painter {
     this.polyline([a, b], { width: this.sizes.line, ...style });
   }
 
-  /** A filled polygon (convex hull, a region), optionally outlined. */
+  /**
+   * A filled polygon (convex hull, a region), optionally outlined. On the
+   * projector a tint is at least a quarter opaque: paler, a weak projector
+   * washes it out to the background (#19).
+   */
   polygon(points: readonly P[], fill: string, alpha = 0.15, outline?: StrokeStyle): void {
     if (points.length < 3) return;
-    this.facets([{ points, fill, alpha }]);
+    const tint = this.theme.projector ? Math.max(alpha, PROJECTOR_TINT) : alpha;
+    this.facets([{ points, fill, alpha: tint }]);
     if (outline) this.polyline(points, outline, true);
   }
 
