@@ -25,7 +25,8 @@ export function drawLegend(
   const { theme, view } = painter;
   const size = options.size ?? theme.sizes.small * 1.05;
   const top = options.top ?? size * 0.4;
-  if (!entries.length) return top;
+  // With the labels hidden (predict, then show) a key without its names says nothing.
+  if (!entries.length || !painter.show.labels) return top;
   const lineHeight = size * 1.45;
   const pad = size * 0.45;
   const left = size * 0.4;
