@@ -340,7 +340,15 @@ export function drawScreenLabel(
   return { width: total };
 }
 
-/** A boxed, word-wrapped message across the top of the figure; returns the y below it. */
+/**
+ * A boxed, word-wrapped message in a corner of the figure; returns the y
+ * below it were it at the top left. Given a `top`, it sits there at the left
+ * (notes stacked one under another). Otherwise it waits, as labels do, until
+ * the figure and its handles are drawn, and takes the first corner (top left,
+ * top right, foot left, foot right) where no stroke, point or label runs
+ * under it (#19: across the top it covered control points and villages), or
+ * the top left or the foot, whichever clashes with fewer labels.
+ */
 export function drawNote(
   painter: Painter,
   text: string,
@@ -350,7 +358,9 @@ export function drawNote(
   const theme = painter.theme;
   const size = theme.sizes.label;
   const pad = size * 0.5;
-  const maxWidth = Math.max(size * 6, painter.view.width - 4 * pad);
+  const { width: figureWidth, height: figureHeight } = painter.view;
+  // A corner's note, not a banner: up to three fifths of a wide figure.
+  const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * 0.6));
   c.save();
   c.font = `${size}px ${theme.fontFamily}`;
   const lines: string[] = [];
@@ -361,30 +371,60 @@ export function drawNote(
     else lines.push(word);
   }
   const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
+  c.restore();
   const lineHeight = size * 1.3;
   const height = lines.length * lineHeight + pad;
-  // At the top of the figure, or at its foot if labels already sit up there.
-  const clash = (y: number) =>
-    painter.labels.filter((b) => overlaps(b, pad, y, width + 2 * pad, height)).length;
-  const foot = painter.view.height - height - pad;
-  const top = style.top ?? (clash(pad) > 0 && foot > pad && clash(foot) < clash(pad) ? foot : pad);
-  painter.labels.push({ text, x: pad, y: top, width: width + 2 * pad, height, boxed: true });
-  c.setLineDash([]);
-  c.globalAlpha = 0.94;
-  c.fillStyle = theme.labelHalo;
-  c.fillRect(pad, top, width + 2 * pad, height);
-  c.globalAlpha = 1;
-  c.strokeStyle = style.color ?? theme.accent;
-  c.lineWidth = Math.max(2, theme.sizes.line);
-  c.beginPath();
-  c.rect(pad, top, width + 2 * pad, height);
-  c.stroke();
-  c.fillStyle = theme.ink;
-  c.textAlign = 'left';
-  c.textBaseline = 'middle';
-  lines.forEach((line, i) => c.fillText(line, 2 * pad, top + pad / 2 + (i + 0.5) * lineHeight));
-  c.restore();
-  return top + height + pad;
+  const boxWidth = width + 2 * pad;
+  const clash = (x: number, y: number) =>
+    painter.labels.filter((b) => overlaps(b, x, y, boxWidth, height)).length;
+  const foot = figureHeight - height - pad;
+  const draw = (x: number, top: number) => {
+    painter.labels.push({ text, x, y: top, width: boxWidth, height, boxed: true });
+    c.save();
+    c.setLineDash([]);
+    c.globalAlpha = 0.94;
+    c.fillStyle = theme.labelHalo;
+    c.fillRect(x, top, boxWidth, height);
+    c.globalAlpha = 1;
+    c.strokeStyle = style.color ?? theme.accent;
+    c.lineWidth = Math.max(2, theme.sizes.line);
+    c.beginPath();
+    c.rect(x, top, boxWidth, height);
+    c.stroke();
+    c.font = `${size}px ${theme.fontFamily}`;
+    c.fillStyle = theme.ink;
+    c.textAlign = 'left';
+    c.textBaseline = 'middle';
+    lines.forEach((line, i) => c.fillText(line, x + pad, top + pad / 2 + (i + 0.5) * lineHeight));
+    c.restore();
+  };
+  if (style.top !== undefined) {
+    draw(pad, style.top);
+    return style.top + height + pad;
+  }
+  painter.placing(() => {
+    const right = figureWidth - boxWidth - pad;
+    const corners: [number, number][] = [
+      [pad, pad],
+      [right, pad],
+      [pad, foot],
+      [right, foot],
+    ];
+    const free = corners.find(
+      ([x, y]) =>
+        x >= 0 &&
+        y >= 0 &&
+        clash(x, y) === 0 &&
+        !painter.ink.crosses({ x, y, width: boxWidth, height }),
+    );
+    if (free) draw(free[0], free[1]);
+    else
+      draw(
+        pad,
+        clash(pad, pad) > 0 && foot > pad && clash(pad, foot) < clash(pad, pad) ? foot : pad,
+      );
+  });
+  return pad + height + pad;
 }
 
 /**
