@@ -1,4 +1,4 @@
-import { labelWidth } from '../render/labels';
+import { drawPanelBox, labelWidth } from '../render/labels';
 import type { Painter, StrokeStyle } from '../render/painter';
 
 // A figure's key: which line is which, in a box in its top left corner.
@@ -37,19 +37,12 @@ export function drawLegend(
   const height = entries.length * lineHeight + pad;
   painter.labels.push({ text: 'legend', x: left, y: top, width, height, boxed: true });
   painter.placing(() => {
-    const c = painter.ctx;
-    c.save();
-    c.setLineDash([]);
-    c.globalAlpha = 0.94;
-    c.fillStyle = theme.labelHalo;
-    c.fillRect(left, top, width, height);
-    c.globalAlpha = 1;
-    c.strokeStyle = theme.axis;
-    c.lineWidth = Math.max(1, theme.sizes.thin * 0.5);
-    c.beginPath();
-    c.rect(left, top, width, height);
-    c.stroke();
-    c.restore();
+    drawPanelBox(
+      painter,
+      { x: left, y: top, width, height },
+      theme.axis,
+      Math.max(1, theme.sizes.thin * 0.5),
+    );
     entries.forEach((entry, i) => {
       const y = top + pad / 2 + (i + 0.5) * lineHeight;
       if (entry.line)

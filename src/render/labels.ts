@@ -341,6 +341,31 @@ export function drawScreenLabel(
 }
 
 /**
+ * A box drawn over the figure for words in it (a note, a key): the
+ * background all but opaque, and a border.
+ */
+export function drawPanelBox(
+  painter: Painter,
+  box: { x: number; y: number; width: number; height: number },
+  border: string,
+  borderWidth: number,
+): void {
+  const c = painter.ctx;
+  c.save();
+  c.setLineDash([]);
+  c.globalAlpha = 0.94;
+  c.fillStyle = painter.theme.labelHalo;
+  c.fillRect(box.x, box.y, box.width, box.height);
+  c.globalAlpha = 1;
+  c.strokeStyle = border;
+  c.lineWidth = borderWidth;
+  c.beginPath();
+  c.rect(box.x, box.y, box.width, box.height);
+  c.stroke();
+  c.restore();
+}
+
+/**
  * A boxed, word-wrapped message in a corner of the figure; returns the y
  * below it were it at the top left. Given a `top`, it sits there at the left
  * (notes stacked one under another). Otherwise it waits, as labels do, until
@@ -380,17 +405,13 @@ export function drawNote(
   const foot = figureHeight - height - pad;
   const draw = (x: number, top: number) => {
     painter.labels.push({ text, x, y: top, width: boxWidth, height, boxed: true });
+    drawPanelBox(
+      painter,
+      { x, y: top, width: boxWidth, height },
+      style.color ?? theme.accent,
+      Math.max(2, theme.sizes.line),
+    );
     c.save();
-    c.setLineDash([]);
-    c.globalAlpha = 0.94;
-    c.fillStyle = theme.labelHalo;
-    c.fillRect(x, top, boxWidth, height);
-    c.globalAlpha = 1;
-    c.strokeStyle = style.color ?? theme.accent;
-    c.lineWidth = Math.max(2, theme.sizes.line);
-    c.beginPath();
-    c.rect(x, top, boxWidth, height);
-    c.stroke();
     c.font = `${size}px ${theme.fontFamily}`;
     c.fillStyle = theme.ink;
     c.textAlign = 'left';

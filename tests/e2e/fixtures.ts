@@ -1,5 +1,5 @@
 import { test as base, expect, type Page } from '@playwright/test';
-import { existsSync, mkdirSync, readdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync } from 'node:fs';
 
 /**
  * Every browser test runs under watch: a console error, an uncaught exception
@@ -123,4 +123,30 @@ export async function inLecturesLetter(page: Page): Promise<void> {
     if (!('letter' in settings))
       localStorage.setItem(key, JSON.stringify({ ...settings, letter: 'mu' }));
   });
+}
+
+/** Every scene of every lesson, at its first and last step (as tests/links.test.ts keeps them). */
+export const sceneLinks = JSON.parse(readFileSync('tests/scene-links.json', 'utf8')) as Record<
+  string,
+  string[]
+>;
+
+/**
+ * Opens each of a lesson's scene links in turn (first and last step of every
+ * scene), settled, and lets `look` measure it; what it finds is collected.
+ */
+export async function eachSceneEnd(
+  page: Page,
+  slug: string,
+  look: (where: string) => Promise<string[]>,
+): Promise<string[]> {
+  const faults: string[] = [];
+  const queries = sceneLinks[slug];
+  await page.goto(`./#/${slug}?${queries[0]}`);
+  for (const query of queries) {
+    await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
+    await settled(page);
+    faults.push(...(await look(`${slug}?${query}`)));
+  }
+  return faults;
 }

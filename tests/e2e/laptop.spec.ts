@@ -1,11 +1,4 @@
-import { readFileSync } from 'node:fs';
-import { expect, settled, test } from './fixtures';
-
-/** Every scene of every lesson, at its first and last step (as tests/links.test.ts keeps them). */
-const links = JSON.parse(readFileSync('tests/scene-links.json', 'utf8')) as Record<
-  string,
-  string[]
->;
+import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
 
 /**
  * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
@@ -17,16 +10,12 @@ const links = JSON.parse(readFileSync('tests/scene-links.json', 'utf8')) as Reco
  */
 test.use({ viewport: { width: 1366, height: 768 } });
 
-for (const [slug, queries] of Object.entries(links)) {
+for (const slug of Object.keys(sceneLinks)) {
   test(`${slug}: at 1366×768 no scene scrolls sideways or sets text under 12 px`, async ({
     page,
   }) => {
     test.setTimeout(90_000);
-    const faults: string[] = [];
-    await page.goto(`./#/${slug}?${queries[0]}`);
-    for (const query of queries) {
-      await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
-      await settled(page);
+    const faults = await eachSceneEnd(page, slug, async (where) => {
       const seen = await page.evaluate(() => {
         const root = document.documentElement;
         const small = new Set<string>();
@@ -42,10 +31,11 @@ for (const [slug, queries] of Object.entries(links)) {
         }
         return { overflow: root.scrollWidth - root.clientWidth, small: [...small] };
       });
-      const where = `${slug}?${query.slice(0, 60)}`;
-      if (seen.overflow > 0) faults.push(`${where}: the page is ${seen.overflow} px too wide`);
-      for (const s of seen.small) faults.push(`${where}: ${s}`);
-    }
+      return [
+        ...(seen.overflow > 0 ? [`${where}: the page is ${seen.overflow} px too wide`] : []),
+        ...seen.small.map((s) => `${where}: ${s}`),
+      ];
+    });
     expect(faults).toEqual([]);
   });
 }

@@ -1,12 +1,5 @@
 import type { Page } from '@playwright/test';
-import { readFileSync } from 'node:fs';
-import { expect, settled, test } from './fixtures';
-
-/** Every scene of every lesson, at its first and last step (as tests/links.test.ts keeps them). */
-const links = JSON.parse(readFileSync('tests/scene-links.json', 'utf8')) as Record<
-  string,
-  string[]
->;
+import { eachSceneEnd, expect, sceneLinks, settled, test } from './fixtures';
 
 /**
  * A student on a phone, in every scene of every lesson, at its first and
@@ -76,24 +69,21 @@ function measure(page: Page) {
 for (const phone of PHONES) {
   test.describe(`a phone of ${phone.width}×${phone.height}`, () => {
     test.use({ viewport: phone, hasTouch: true, isMobile: true });
-    for (const [slug, queries] of Object.entries(links)) {
+    for (const slug of Object.keys(sceneLinks)) {
       test(`${slug}: every scene fits the screen, keeps its controls by the figure, and has 44 px targets`, async ({
         page,
       }) => {
         test.setTimeout(90_000);
-        const faults: string[] = [];
-        await page.goto(`./#/${slug}?${queries[0]}`);
-        for (const query of queries) {
-          await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
-          await settled(page);
+        const faults = await eachSceneEnd(page, slug, async (where) => {
           const seen = await measure(page);
-          const where = `${slug}?${query}`;
-          if (seen.overflow > 0) faults.push(`${where}: the page is ${seen.overflow} px too wide`);
-          if (seen.figure !== true) faults.push(`${where}: the figure is not on the first screen`);
-          if (seen.next === false) faults.push(`${where}: Next is below the first screen`);
-          if (seen.slider === false) faults.push(`${where}: the slider is below the first screen`);
-          for (const target of seen.small) faults.push(`${where}: small target ${target}`);
-        }
+          const found: string[] = [];
+          if (seen.overflow > 0) found.push(`${where}: the page is ${seen.overflow} px too wide`);
+          if (seen.figure !== true) found.push(`${where}: the figure is not on the first screen`);
+          if (seen.next === false) found.push(`${where}: Next is below the first screen`);
+          if (seen.slider === false) found.push(`${where}: the slider is below the first screen`);
+          for (const target of seen.small) found.push(`${where}: small target ${target}`);
+          return found;
+        });
         expect(faults).toEqual([]);
       });
     }
