@@ -29,3 +29,13 @@ describe('the sampled basis rows', () => {
     expect(step[step.length - 2]).toBe(5);
   });
 });
+
+describe('the ends of the knot range, in floating point', () => {
+  it('samples up to the last knot, not a rounding past it (u₀ + width can be 13.781000000000002)', () => {
+    // −2.979 + (13.781 − (−2.979)) = 13.781000000000002 in doubles: worked in node.
+    const knots = [-2.979, -2.979, -2.979, -2.979, 5, 13.781, 13.781, 13.781, 13.781];
+    const rows = basisRows(knots, 3);
+    const us = rows[0][0].filter((_, k) => k % 2 === 0);
+    expect(Math.max(...us)).toBeLessThanOrEqual(13.781);
+  });
+});

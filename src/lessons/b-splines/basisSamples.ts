@@ -24,7 +24,9 @@ function sampleRows(knots: readonly number[], degree: number): Float64Array[][] 
   const first = knots[0];
   const width = knots[knots.length - 1] - first;
   const us = new Set<number>();
-  for (let k = 0; k <= STEPS; k++) us.add(first + (width * k) / STEPS);
+  const end = knots[knots.length - 1];
+  // first + width can round past the last knot (−2.979 + 16.76 = 13.781000000000002).
+  for (let k = 0; k <= STEPS; k++) us.add(Math.min(end, first + (width * k) / STEPS));
   for (const knot of knots) {
     us.add(knot);
     if (knot > first) us.add(knot - width * 1e-9);

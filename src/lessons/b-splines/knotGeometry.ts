@@ -67,7 +67,8 @@ export const knotCurve = memoOn<KnotFields, keyof KnotFields, KnotCurve>(
 /** The cursor at t: u = u_p + t·(u_{m+1} − u_p), its segment, the Cox–de Boor triangle there. */
 export function knotCursor({ curve, at }: KnotCurve, t: number): Cursor {
   const { domain, knots, degree, segments } = curve;
-  const u = domain[0] + t * (domain[1] - domain[0]);
+  // Within the domain, though u₀ + 1·(u₁ − u₀) can round past its end (−8.831 + 9.561 = 0.7300000000000004).
+  const u = Math.min(domain[1], Math.max(domain[0], domain[0] + t * (domain[1] - domain[0])));
   const table = coxDeBoorTable(knots, degree, u);
   let segment = 0;
   while (segment + 1 < segments.length && segments[segment + 1].from <= u) segment++;
