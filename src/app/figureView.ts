@@ -80,6 +80,8 @@ export class FigureView<S, M> {
   labels: readonly LabelBox[] = [];
   /** The last frame's painter, with its ink: which labels a stroke runs through, asked by tests. */
   private painted: Painter | null = null;
+  /** What the canvas's picture was drawn from (`drawnFromNow`), or null. */
+  private drawnFrom: readonly unknown[] | null = null;
   /** The figure's box as last observed (CSS pixels), or null before the first observation. */
   private box: { width: number; height: number } | null = null;
 
@@ -106,7 +108,7 @@ export class FigureView<S, M> {
       remove: spec.removeHandle ? (id) => this.remove(id) : undefined,
       focus: (id) => {
         this.focused = id;
-        host.invalidate(this);
+        this.redrawSoon();
       },
     });
     const movable = spec.kind === 'geometry' || spec.kind === 'space';
@@ -143,7 +145,7 @@ export class FigureView<S, M> {
     this.resizeObserver = new ResizeObserver(([entry]) => {
       // The size is read here, once per change, never while drawing a frame.
       this.box = { width: entry.contentRect.width, height: entry.contentRect.height };
-      host.invalidate(this);
+      this.redrawSoon();
     });
     this.resizeObserver.observe(this.element);
   }
@@ -161,7 +163,7 @@ export class FigureView<S, M> {
   private moveView(change: () => void): void {
     change();
     this.userView = true;
-    this.host.invalidate(this);
+    this.redrawSoon();
     this.host.viewChanged();
   }
 
@@ -170,7 +172,7 @@ export class FigureView<S, M> {
     const changed = this.userView;
     this.userView = false;
     this.fitted = false;
-    this.host.invalidate(this);
+    this.redrawSoon();
     if (changed) this.host.viewChanged();
   }
 
@@ -213,13 +215,13 @@ export class FigureView<S, M> {
     if (this.view instanceof OrbitCamera && this.view.decodeAngles(text)) {
       this.userView = false;
       this.fitted = false;
-      this.host.invalidate(this);
+      this.redrawSoon();
       return true;
     }
     const ok = this.view.decode(text);
     this.userView = ok;
     this.fitted = true;
-    this.host.invalidate(this);
+    this.redrawSoon();
     return ok;
   }
 
@@ -261,10 +263,20 @@ export class FigureView<S, M> {
   }
 
   /** Draws the model to the canvas. */
-  draw(model: M): void {
+  /**
+   * Draws the figure for `model`, unless it would draw the very picture on its
+   * canvas now (see `FigureSpec.drawnFrom`): a plot of basis functions is not
+   * drawn again while a point it does not depend on is dragged. `fresh`
+   * draws whatever it was drawn from (settings changed).
+   */
+  draw(model: M, fresh = false): void {
     const theme = this.host.theme();
     if (this.spec.height) this.stripHeight(theme);
-    if (this.sizeCanvas() && !this.userView) this.fitted = false;
+    const resized = this.sizeCanvas();
+    if (resized && !this.userView) this.fitted = false;
+    const from = this.drawnFromNow(model, theme);
+    if (!fresh && !resized && from && this.drawnFrom && sameValues(from, this.drawnFrom)) return;
+    this.drawnFrom = from;
     const alwaysFit = this.spec.kind === 'plot' || this.spec.kind === 'drawing';
     if (!this.fitted || alwaysFit) this.applyFit(model, theme);
     const ctx = this.canvas.getContext('2d');
@@ -274,6 +286,27 @@ export class FigureView<S, M> {
     this.painted = this.render(ctx, model, theme, this.host.info(), this.host.shown());
     this.labels = this.painted.labels;
     this.syncKeys();
+  }
+
+  /**
+   * What the picture is drawn from now, when the figure says (else null: it is
+   * drawn every frame): its own values, and the theme, the pointer's hover
+   * and the step. A ghost, a trail or practice marks are drawn every time.
+   */
+  private drawnFromNow(model: M, theme: Theme): readonly unknown[] | null {
+    const own = this.spec.drawnFrom?.(model);
+    if (!own) return null;
+    const id = this.spec.id;
+    if (this.host.ghost() !== null || this.host.trail(id) || this.host.marks(id).length)
+      return null;
+    const { curve, labels, numbers } = this.host.shown();
+    return [theme, this.host.info().hover, curve, labels, numbers, ...own];
+  }
+
+  /** The figure's view changed (zoom, pan, a drag's end): draw it in the next frame. */
+  private redrawSoon(): void {
+    this.drawnFrom = null;
+    this.host.invalidate(this);
   }
 
   /** The last frame's labels that a stroke or a point runs through, with what does (for tests). */
@@ -386,7 +419,7 @@ export class FigureView<S, M> {
       key: `drag:${++dragSerial}`,
     };
     this.canvas.classList.add('dragging');
-    this.host.invalidate(this);
+    this.redrawSoon();
   }
 
   private dragMove(at: Screen, shift: boolean): void {
@@ -406,7 +439,7 @@ export class FigureView<S, M> {
     const handle = id ? this.handlesFor(this.host.model()).find((h) => h.id === id) : undefined;
     if (handle)
       this.host.announce(`${plainLabel(handle.label)} moved to ${fmtPoint(handle.position)}`);
-    this.host.invalidate(this);
+    this.redrawSoon();
   }
 
   private hover(at: Screen | null): void {
@@ -484,4 +517,9 @@ function drawMarks(painter: Painter, marks: readonly FigureMark[], theme: Theme)
   if (guess)
     painter.cross(guess.at, size * 1.2, { color: theme.accent, width: theme.sizes.line * 1.6 });
   for (const mark of marks) painter.labelClear(mark.label, mark.at, []);
+}
+
+/** Whether two lists hold the same values (by identity, as states are never mutated). */
+function sameValues(a: readonly unknown[], b: readonly unknown[]): boolean {
+  return a.length === b.length && a.every((value, i) => Object.is(value, b[i]));
 }

@@ -64,6 +64,13 @@ export interface FigureSpec<S, M = S> {
   /** What "fit view" shows (and plots and drawings always show). */
   bounds(model: M): Bounds;
   draw(painter: Painter, model: M, info: DrawInfo): void;
+  /**
+   * The values the picture is drawn from (by identity), besides the theme,
+   * the pointer's hover, the presenter's tools, the canvas's size and view:
+   * while they are the same, the canvas is not drawn again (a basis plot
+   * while a control point is dragged). Leave it out to draw every frame.
+   */
+  drawnFrom?(model: M): readonly unknown[];
   /** Marks that must stay visible over the handles and their labels (e.g. the arrow just computed). */
   drawOver?(painter: Painter, model: M, info: DrawInfo): void;
   handles?(model: M): Handle[];

@@ -7,7 +7,12 @@
  */
 import { parseHash } from './router';
 import { fitToWidth, refitAll } from '../render/fit';
-import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
+import {
+  closeTypesetBudget,
+  holdCopiesWhilePressed,
+  openTypesetBudget,
+  typesetWaiting,
+} from '../render/formula';
 import type { LabelBox } from '../render/labels';
 import type { Theme } from '../render/theme';
 import { ParameterControl } from './controls';
@@ -69,6 +74,8 @@ export class LessonPage<S, M> {
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
   private frame = 0;
+  /** Undoes holdCopiesWhilePressed (formula.ts). */
+  private readonly releaseCopies: () => void;
   // What the next frame must do.
   private drawnState: S | null = null;
   private panelState: S | null = null;
@@ -261,6 +268,7 @@ export class LessonPage<S, M> {
     this.panel.element.classList.add('panel-pending');
     // Formula fonts arriving late change widths measured before them: fit again.
     document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
+    this.releaseCopies = holdCopiesWhilePressed(window);
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     this.unsubscribe = this.store.subscribe(() => {
@@ -501,7 +509,7 @@ export class LessonPage<S, M> {
       if (figure.element.hidden) continue;
       if (!all && !this.dirtyFigures.has(figure)) continue;
       const from = performance.now();
-      figure.draw(model);
+      figure.draw(model, this.refreshAll);
       performance.measure(`${FRAME}:figure:${figure.spec.id}`, { start: from });
     }
     this.dirtyFigures.clear();
@@ -817,6 +825,7 @@ export class LessonPage<S, M> {
     this.panelResize.disconnect();
     this.aboveStage.disconnect();
     document.fonts?.removeEventListener('loadingdone', this.fontsLoaded);
+    this.releaseCopies();
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();
     this.presenter.destroy();

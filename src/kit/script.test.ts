@@ -109,4 +109,30 @@ describe('a script of named steps', () => {
       }),
     );
   });
+
+  it('gives two Revealed the same key exactly when they show the same (property)', () => {
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 0, max: 6 }),
+        fc.integer({ min: 0, max: 6 }),
+        fc.integer({ min: 0, max: 9 }),
+        fc.integer({ min: 0, max: 9 }),
+        (n1, n2, k1, k2) => {
+          const [a, b] = [construction.shown({ n: n1 }, k1), construction.shown({ n: n2 }, k2)];
+          const names = ['points', 'polygon', 'level', 'curve'] as const;
+          const same =
+            a.k === b.k &&
+            a.lastStep === b.lastStep &&
+            a.name === b.name &&
+            a.index === b.index &&
+            names.every((name) => a.count(name) === b.count(name));
+          expect(a.key === b.key).toBe(same);
+          // Made once: the same string each time it is read.
+          expect(a.key).toBe(a.key);
+        },
+      ),
+    );
+    // Level 2 of 3 and level 2 of 4 are the same press in different scripts.
+    expect(construction.shown({ n: 3 }, 3).key).not.toBe(construction.shown({ n: 4 }, 3).key);
+  });
 });

@@ -93,6 +93,17 @@ export class Revealed<N extends string = string> {
   get last(): boolean {
     return this.k >= this.lastStep;
   }
+
+  /**
+   * One string for everything this says (two Revealed with the same key show
+   * the same), for a figure's `drawnFrom`: made once per state's Revealed.
+   */
+  get key(): string {
+    this.keyText ??= [this.k, this.lastStep, this.name, this.index, ...this.reached].join('|');
+    return this.keyText;
+  }
+
+  private keyText: string | undefined;
 }
 
 /** Where step k falls: its declaration, and which repeat of it. */

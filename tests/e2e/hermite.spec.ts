@@ -87,6 +87,64 @@ test('dragging a gradient tip sets D = 3 × (tip − P), and the matrix solve fo
   await snapshot(page, 'hermite-dragged-gradient');
 });
 
+test('while a point is dragged the basis plot is left as it is, and the formulas’ MathML catches up on release', async ({
+  page,
+}) => {
+  await settled(page);
+  // Count the figures' draws: a canvas is drawn through getContext, and only then.
+  await page.evaluate(() => {
+    for (const canvas of document.querySelectorAll<HTMLCanvasElement>('canvas[data-figure]')) {
+      const get = canvas.getContext.bind(canvas);
+      canvas.dataset.draws = '0';
+      canvas.getContext = ((...args: Parameters<typeof get>) => {
+        canvas.dataset.draws = String(Number(canvas.dataset.draws) + 1);
+        return get(...args);
+      }) as typeof canvas.getContext;
+    }
+  });
+  const draws = (figure: string) =>
+    page
+      .locator(`canvas[data-figure="${figure}"]`)
+      .evaluate((c: HTMLCanvasElement) => Number(c.dataset.draws));
+  const p0 = (await linkState(page)).p.split(';')[0];
+  const point = page.getByRole('button', { name: /^P0 at/ });
+  const box = (await point.boundingBox())!;
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  // Taking the point changes what the pointer is over: every figure is drawn once for that.
+  await page.mouse.move(x + 5, y + 5);
+  await expect.poll(() => draws('patches')).toBeGreaterThan(0);
+  const basisBefore = await draws('basis');
+  const patchesBefore = await draws('patches');
+  await page.mouse.move(x + 60, y - 40, { steps: 6 });
+  await expect.poll(() => draws('patches')).toBeGreaterThan(patchesBefore);
+  // H0 … H3 do not depend on the points: the plot was not drawn again.
+  expect(await draws('basis')).toBe(basisBefore);
+  await page.mouse.up();
+  await expectHash(page, 'p', (v) => v.split(';')[0] !== p0);
+  expect(await page.locator('aside .formula.live [data-slot]').count()).toBeGreaterThan(4);
+  // Every live formula's copy for assistive tools and copying says the numbers it shows.
+  const disagreeing = () =>
+    page.locator('aside .formula.live').evaluateAll((all) =>
+      all.flatMap((formula) => {
+        const tex = (formula.querySelector('annotation')?.textContent ?? '').replace(/-/g, '−');
+        // Each number shown is in the TeX as often (a matrix's HTML goes column by column).
+        const inTex = tex.match(/−?\d+(?:\.\d+)?/g) ?? [];
+        const shown = [...formula.querySelectorAll('[data-slot]')].map((s) => s.textContent ?? '');
+        const count = (all: string[], text: string) => all.filter((t) => t === text).length;
+        const missing = shown.filter((text) => count(shown, text) > count(inTex, text));
+        if (missing.length) return [`${missing.join(', ')} not in ${tex}`];
+        return [];
+      }),
+    );
+  await expect.poll(disagreeing).toEqual([]);
+  // A change of μ does change the plot.
+  const basisNow = await draws('basis');
+  await page.getByRole('slider', { name: 'μ' }).fill('0.8');
+  await expect.poll(() => draws('basis')).toBeGreaterThan(basisNow);
+});
+
 test('a gradient tip moves with the keyboard too', async ({ page }) => {
   await page.getByRole('button', { name: /^D1 at/ }).focus();
   await page.keyboard.press('ArrowUp');

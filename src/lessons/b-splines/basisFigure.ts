@@ -182,6 +182,20 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   if (!info.thumbnail) valuesAt(painter, u, bounds, entries);
 }
 
+/**
+ * What the basis plot and the knot strip are drawn from: everything but where
+ * the control points are (their number sets m), so dragging one draws neither.
+ */
+export const drawnFromAllButPoints = ({ state, shown }: BSplineModel): readonly unknown[] => [
+  state.part,
+  state.t,
+  state.degree,
+  state.knots,
+  state.weights,
+  state.points.length,
+  shown.key,
+];
+
 export const basisFigure: KitFigure<BSplineState, BSplineModel> = {
   id: 'basis',
   title: 'The B-spline basis functions, with the cursor at the parameter',
@@ -189,6 +203,7 @@ export const basisFigure: KitFigure<BSplineState, BSplineModel> = {
   weight: 1,
   bounds: basisBounds,
   draw: drawBasis,
+  drawnFrom: drawnFromAllButPoints,
   handles: (m) => [
     {
       id: 'cursor',

@@ -6,6 +6,7 @@ import type { Bounds } from '../../render/projection';
 import { knotIds } from './ids';
 import { knotRuns } from './knotGeometry';
 import type { BSplineModel } from './model';
+import { drawnFromAllButPoints } from './basisFigure';
 import { plotRange, uStep } from './plotRange';
 import { type BSplineState, isUniformPart } from './state';
 
@@ -44,6 +45,7 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
   kind: 'plot',
   height: 64,
   bounds: stripBounds,
+  drawnFrom: drawnFromAllButPoints,
   draw(painter, m, info) {
     const theme = painter.theme;
     const { minX, maxX } = stripBounds(m);

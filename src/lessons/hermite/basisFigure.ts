@@ -34,6 +34,8 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
   title: 'The Hermite basis functions H0 to H3, with the cursor at μ',
   kind: 'plot',
   bounds: () => BOUNDS,
+  // H0 … H3 and their values at μ: the points and gradients do not change them.
+  drawnFrom: (m) => [m.state.mu, m.shown.key],
   draw(painter, m, info) {
     const theme = painter.theme;
     const mu = m.state.mu;
