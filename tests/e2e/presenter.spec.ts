@@ -141,7 +141,10 @@ test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by t
       for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
       return n;
     });
+  // No layer over the figures until there is ink: a blank one costs every frame a copy of it.
+  await expect(ink).toBeHidden();
   await page.keyboard.press('i');
+  await expect(ink).toBeVisible();
   await page.mouse.move(box.x + 100, box.y + 100);
   await page.mouse.down();
   await page.mouse.move(box.x + 300, box.y + 200, { steps: 8 });
@@ -150,6 +153,8 @@ test('presenter tools: hide and reveal the curve, ghost, laser, ink cleared by t
   await page.keyboard.press('PageUp');
   await settled(page);
   expect(await inked()).toBe(0);
+  await page.keyboard.press('i');
+  await expect(ink).toBeHidden();
 });
 
 test('Q asks the room to predict the next step; the next press reveals it', async ({ page }) => {
