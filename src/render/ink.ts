@@ -119,24 +119,44 @@ export class Ink {
   /** The first stroke or disc through the box, said in words (for a test's message), or null. */
   crossing(b: Box): string | null {
     this.index();
-    for (let i = 0; i < this.discs.length; i += 3) {
-      const [x, y, r] = [this.discs[i], this.discs[i + 1], this.discs[i + 2]];
-      const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
-      const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
-      if (dx * dx + dy * dy < r * r) return `a disc at (${x.toFixed(0)}, ${y.toFixed(0)})`;
-    }
-    const seen = new Set<number>();
-    const test = (i: number): string | null => {
-      if (seen.has(i)) return null;
-      seen.add(i);
-      if (!this.touches(i, b)) return null;
-      const s = this.segs;
+    for (let i = 0; i < this.discs.length; i += 3)
+      if (this.discMeets(i, b))
+        return `a disc at (${this.discs[i].toFixed(0)}, ${this.discs[i + 1].toFixed(0)})`;
+    const s = this.segs;
+    for (const i of this.near(b)) {
+      if (!this.touches(i, b)) continue;
       const k = STRIDE * i;
       return `a stroke from (${s[k].toFixed(0)}, ${s[k + 1].toFixed(0)}) to (${s[k + 2].toFixed(0)}, ${s[k + 3].toFixed(0)})`;
-    };
+    }
+    return null;
+  }
+
+  /**
+   * How much ink runs through the box: the discs (points, handles) and the
+   * strokes, counted — to choose the corner that hides least when none is free.
+   */
+  hits(b: Box): { discs: number; strokes: number } {
+    this.index();
+    let discs = 0;
+    for (let i = 0; i < this.discs.length; i += 3) if (this.discMeets(i, b)) discs++;
+    let strokes = 0;
+    for (const i of this.near(b)) if (this.touches(i, b)) strokes++;
+    return { discs, strokes };
+  }
+
+  private discMeets(i: number, b: Box): boolean {
+    const [x, y, r] = [this.discs[i], this.discs[i + 1], this.discs[i + 2]];
+    const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
+    const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
+    return dx * dx + dy * dy < r * r;
+  }
+
+  /** The segments that may touch the box (those in its cells and the long ones), each once. */
+  private *near(b: Box): Generator<number> {
+    const seen = new Set<number>();
     for (const i of this.long) {
-      const hit = test(i);
-      if (hit) return hit;
+      seen.add(i);
+      yield i;
     }
     const x0 = Math.floor(b.x / CELL);
     const x1 = Math.floor((b.x + b.width) / CELL);
@@ -145,10 +165,10 @@ export class Ink {
     for (let cx = x0; cx <= x1; cx++)
       for (let cy = y0; cy <= y1; cy++)
         for (const i of this.cells.get(this.key(cx, cy)) ?? []) {
-          const hit = test(i);
-          if (hit) return hit;
+          if (seen.has(i)) continue;
+          seen.add(i);
+          yield i;
         }
-    return null;
   }
 }
 

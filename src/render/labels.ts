@@ -431,19 +431,24 @@ export function drawNote(
       [pad, foot],
       [right, foot],
     ];
-    const free = corners.find(
-      ([x, y]) =>
-        x >= 0 &&
-        y >= 0 &&
-        clash(x, y) === 0 &&
-        !painter.ink.crosses({ x, y, width: boxWidth, height }),
+    const inside = corners.filter(([x, y]) => x >= 0 && y >= 0);
+    const free = inside.find(
+      ([x, y]) => clash(x, y) === 0 && !painter.ink.crosses({ x, y, width: boxWidth, height }),
     );
     if (free) draw(free[0], free[1]);
-    else
-      draw(
+    else {
+      // No corner is clear: the one that hides least. A point or a label hidden
+      // is worse than any number of strokes crossed (the curve shows round it).
+      const hidden = ([x, y]: [number, number]) => {
+        const { discs, strokes } = painter.ink.hits({ x, y, width: boxWidth, height });
+        return (discs + clash(x, y)) * 1000 + strokes;
+      };
+      const [x, y] = inside.reduce((best, at) => (hidden(at) < hidden(best) ? at : best), [
         pad,
-        clash(pad, pad) > 0 && foot > pad && clash(pad, foot) < clash(pad, pad) ? foot : pad,
-      );
+        pad,
+      ] as [number, number]);
+      draw(x, y);
+    }
   });
   return pad + height + pad;
 }

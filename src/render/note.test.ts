@@ -45,4 +45,40 @@ describe('a figure’s note', () => {
     expect(box.y).toBe(50);
     expect(box.x).toBeLessThan(20);
   });
+  it('when no corner is clear, hides no point if a corner with only strokes is left', () => {
+    const view = new Viewport(600, 400);
+    view.resize(600, 400);
+    view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    painter.holdLabels();
+    // Lines across the whole top and the whole foot: every corner is crossed.
+    for (const y of [0.97, 0.03])
+      painter.polyline(
+        [
+          [0, y],
+          [1, y],
+        ],
+        { width: 3 },
+      );
+    // A point in the top left, the first corner tried; more strokes in the foot's right.
+    painter.dot([0.05, 0.96], '#000', 8);
+    for (const y of [0.05, 0.07, 0.09])
+      painter.polyline(
+        [
+          [0.6, y],
+          [1, y],
+        ],
+        { width: 3 },
+      );
+    painter.note('Both velocities are zero here: the curvature is undefined');
+    painter.placeLabels();
+    const box = painter.labels.find((b) => b.text.startsWith('Both'))!;
+    const [px, py] = view.toScreen([0.05, 0.96]);
+    const covers =
+      px > box.x - 8 && px < box.x + box.width + 8 && py > box.y - 8 && py < box.y + box.height + 8;
+    expect(covers).toBe(false);
+    // Of the three corners left, the one crossed by fewest strokes: top right or foot left (one each).
+    expect(box.x + box.width > 580 || box.y + box.height > 380).toBe(true);
+    expect(box.x + box.width > 580 && box.y + box.height > 380).toBe(false);
+  });
 });
