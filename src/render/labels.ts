@@ -371,8 +371,10 @@ export function drawPanelBox(
  * (notes stacked one under another). Otherwise it waits, as labels do, until
  * the figure and its handles are drawn, and takes the first corner (top left,
  * top right, foot left, foot right) where no stroke, point or label runs
- * under it (#19: across the top it covered control points and villages), or
- * the top left or the foot, whichever clashes with fewer labels.
+ * under it (#19: across the top it covered control points and villages),
+ * wrapped as wide as three fifths of the figure or, failing that, narrower
+ * and taller (the empty sides of a wide figure); if no corner is clear at any
+ * width, the place that hides least.
  */
 export function drawNote(
   painter: Painter,
@@ -383,31 +385,33 @@ export function drawNote(
   const theme = painter.theme;
   const size = theme.sizes.label;
   const pad = size * 0.5;
-  const { width: figureWidth, height: figureHeight } = painter.view;
-  // A corner's note, not a banner: up to three fifths of a wide figure.
-  const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * 0.6));
-  c.save();
-  c.font = `${size}px ${theme.fontFamily}`;
-  const lines: string[] = [];
-  text = say(text);
-  for (const word of text.split(/\s+/).filter(Boolean)) {
-    const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
-    if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;
-    else lines.push(word);
-  }
-  const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
-  c.restore();
   const lineHeight = size * 1.3;
-  const height = lines.length * lineHeight + pad;
-  const boxWidth = width + 2 * pad;
-  const clash = (x: number, y: number) =>
-    painter.labels.filter((b) => overlaps(b, x, y, boxWidth, height)).length;
-  const foot = figureHeight - height - pad;
-  const draw = (x: number, top: number) => {
-    painter.labels.push({ text, x, y: top, width: boxWidth, height, boxed: true });
+  const { width: figureWidth, height: figureHeight } = painter.view;
+  text = say(text);
+  const words = text.split(/\s+/).filter(Boolean);
+  /** The note wrapped to at most `maxWidth`: its lines and its box's size. */
+  const wrap = (maxWidth: number) => {
+    c.save();
+    c.font = `${size}px ${theme.fontFamily}`;
+    const lines: string[] = [];
+    for (const word of words) {
+      const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+      if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;
+      else lines.push(word);
+    }
+    const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
+    c.restore();
+    return { lines, width: width + 2 * pad, height: lines.length * lineHeight + pad };
+  };
+  type Wrapped = ReturnType<typeof wrap>;
+  const narrowest = size * 6;
+  // A corner's note, not a banner: up to three fifths of a wide figure.
+  const widest = wrap(Math.max(narrowest, Math.min(figureWidth - 4 * pad, figureWidth * 0.6)));
+  const draw = (note: Wrapped, x: number, top: number) => {
+    painter.labels.push({ text, x, y: top, width: note.width, height: note.height, boxed: true });
     drawPanelBox(
       painter,
-      { x, y: top, width: boxWidth, height },
+      { x, y: top, width: note.width, height: note.height },
       style.color ?? theme.accent,
       Math.max(2, theme.sizes.line),
     );
@@ -416,41 +420,47 @@ export function drawNote(
     c.fillStyle = theme.ink;
     c.textAlign = 'left';
     c.textBaseline = 'middle';
-    lines.forEach((line, i) => c.fillText(line, x + pad, top + pad / 2 + (i + 0.5) * lineHeight));
+    note.lines.forEach((line, i) =>
+      c.fillText(line, x + pad, top + pad / 2 + (i + 0.5) * lineHeight),
+    );
     c.restore();
   };
   if (style.top !== undefined) {
-    draw(pad, style.top);
-    return style.top + height + pad;
+    draw(widest, pad, style.top);
+    return style.top + widest.height + pad;
   }
   painter.placing(() => {
-    const right = figureWidth - boxWidth - pad;
-    const corners: [number, number][] = [
-      [pad, pad],
-      [right, pad],
-      [pad, foot],
-      [right, foot],
-    ];
-    const inside = corners.filter(([x, y]) => x >= 0 && y >= 0);
-    const free = inside.find(
-      ([x, y]) => clash(x, y) === 0 && !painter.ink.crosses({ x, y, width: boxWidth, height }),
-    );
-    if (free) draw(free[0], free[1]);
-    else {
-      // No corner is clear: the one that hides least. A point or a label hidden
-      // is worse than any number of strokes crossed (the curve shows round it).
-      const hidden = ([x, y]: [number, number]) => {
-        const { discs, strokes } = painter.ink.hits({ x, y, width: boxWidth, height });
-        return (discs + clash(x, y)) * 1000 + strokes;
-      };
-      const [x, y] = inside.reduce((best, at) => (hidden(at) < hidden(best) ? at : best), [
-        pad,
-        pad,
-      ] as [number, number]);
-      draw(x, y);
-    }
+    const places = [0.6, 0.45, 0.34, 0.26]
+      .map((share) => Math.max(narrowest, Math.min(figureWidth - 4 * pad, figureWidth * share)))
+      .map((maxWidth, i) => (i === 0 ? widest : wrap(maxWidth)))
+      .filter((note, i) => i === 0 || note.height <= figureHeight - 2 * pad)
+      .flatMap((note) => {
+        const [right, foot] = [figureWidth - note.width - pad, figureHeight - note.height - pad];
+        const corners: [number, number][] = [
+          [pad, pad],
+          [right, pad],
+          [pad, foot],
+          [right, foot],
+        ];
+        return corners
+          .filter(([x, y]) => x >= 0 && y >= 0)
+          .map(([x, y]) => ({ note, x, y, box: { x, y, width: note.width, height: note.height } }));
+      });
+    const clash = (box: Box) =>
+      painter.labels.filter((b) => overlaps(b, box.x, box.y, box.width, box.height)).length;
+    const free = places.find(({ box }) => clash(box) === 0 && !painter.ink.crosses(box));
+    if (free) return draw(free.note, free.x, free.y);
+    // No corner is clear: the place that hides least. A point or a label hidden
+    // is worse than any number of strokes crossed (the curve shows round it).
+    const hidden = ({ box }: (typeof places)[number]) => {
+      const { discs, strokes } = painter.ink.hits(box);
+      return (discs + clash(box)) * 1000 + strokes;
+    };
+    const best = places.reduce((a, b) => (hidden(b) < hidden(a) ? b : a), places[0]);
+    if (best) draw(best.note, best.x, best.y);
+    else draw(widest, pad, pad);
   });
-  return pad + height + pad;
+  return pad + widest.height + pad;
 }
 
 /**

@@ -81,4 +81,31 @@ describe('a figure’s note', () => {
     expect(box.x + box.width > 580 || box.y + box.height > 380).toBe(true);
     expect(box.x + box.width > 580 && box.y + box.height > 380).toBe(false);
   });
+  it('wraps narrower and taller to find a clear corner beside the subject', () => {
+    const view = new Viewport(600, 400);
+    view.resize(600, 400);
+    view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    painter.holdLabels();
+    // Points in the middle two fifths, near the top and the foot: a wide note hides one in any corner.
+    const points: [number, number][] = [
+      [0.4, 0.85],
+      [0.6, 0.85],
+      [0.4, 0.15],
+      [0.6, 0.15],
+    ];
+    for (const p of points) painter.dot(p, '#000', 8);
+    painter.note(
+      'Both velocities are zero here: the ratio, the angle and the curvature are undefined',
+    );
+    painter.placeLabels();
+    const box = painter.labels.find((b) => b.text.startsWith('Both'))!;
+    for (const p of points) {
+      const [x, y] = view.toScreen(p);
+      const covers =
+        x > box.x - 8 && x < box.x + box.width + 8 && y > box.y - 8 && y < box.y + box.height + 8;
+      expect(covers).toBe(false);
+    }
+    expect(box.height).toBeLessThan(400);
+  });
 });
