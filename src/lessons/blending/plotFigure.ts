@@ -18,6 +18,18 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
   title: 'Blending functions W(N, i, μ) with a cursor at μ',
   kind: 'plot',
   bounds: (m) => m.plotBounds,
+  // W(N, i, μ) and their values at μ depend on N and μ, not on where the points
+  // are (a compared basis may: it is a new object then, and the plot is drawn).
+  drawnFrom: (m) => [
+    m.state.mu,
+    m.n,
+    m.state.comparison,
+    m.compared,
+    m.plotBounds.minY,
+    m.plotBounds.maxY,
+    m.handleY,
+    m.shown.key,
+  ],
   draw(painter, m, info) {
     const theme = painter.theme;
     const { plotBounds: bounds, n, compared, drawn } = m;
