@@ -15,6 +15,9 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
   title: 'The Lagrange basis polynomials L_k(t), with the cursor at t',
   kind: 'plot',
   bounds: (m) => m.plotBounds,
+  // L_k(t) depend on the parameter values t_k alone (by value: chord length
+  // moves them with the points, equal spacing does not), and on t and the step.
+  drawnFrom: (m) => [m.state.t, m.comparison !== null, m.shown.key, ...m.ts],
   draw(painter, m, info) {
     const theme = painter.theme;
     const { ts, weights, plotBounds: bounds, shown } = m;
