@@ -26,6 +26,8 @@ export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
   kind: 'drawing',
   weight: 1,
   bounds: () => ({ minX: -0.8, minY: -1.35, maxX: 5.2, maxY: 4.7 }),
+  // fm(u)·fn(v) depend on (u, v) alone: a control point's drag does not draw the map again.
+  drawnFrom: (m) => [m.state.u, m.state.v, m.shown.key],
   draw(painter, m, info) {
     const theme = painter.theme;
     const shown = weightsShown(m);
