@@ -4,13 +4,19 @@ import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
 import { Viewport } from './viewport';
 
-/** A 600 × 400 figure of the unit square, a stroke through the part of it `stroke` names. */
-function noteBox(stroke: 'top left' | 'top' | 'none', top?: number) {
+/** A 600 × 400 figure of the unit square, its labels held back until placed. */
+function unitSquare() {
   const view = new Viewport(600, 400);
   view.resize(600, 400);
   view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
   const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
   painter.holdLabels();
+  return { view, painter };
+}
+
+/** A 600 × 400 figure of the unit square, a stroke through the part of it `stroke` names. */
+function noteBox(stroke: 'top left' | 'top' | 'none', top?: number) {
+  const { painter } = unitSquare();
   // y = 1 is the top edge; a line a little below it, across the left third or the whole width.
   if (stroke !== 'none')
     painter.polyline(
@@ -46,11 +52,7 @@ describe('a figure’s note', () => {
     expect(box.x).toBeLessThan(20);
   });
   it('when no corner is clear, hides no point if a corner with only strokes is left', () => {
-    const view = new Viewport(600, 400);
-    view.resize(600, 400);
-    view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
-    painter.holdLabels();
+    const { view, painter } = unitSquare();
     // Lines across the whole top and the whole foot: every corner is crossed.
     for (const y of [0.97, 0.03])
       painter.polyline(
@@ -82,11 +84,7 @@ describe('a figure’s note', () => {
     expect(box.x + box.width > 580 && box.y + box.height > 380).toBe(false);
   });
   it('wraps narrower and taller to find a clear corner beside the subject', () => {
-    const view = new Viewport(600, 400);
-    view.resize(600, 400);
-    view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
-    painter.holdLabels();
+    const { view, painter } = unitSquare();
     // Points in the middle two fifths, near the top and the foot: a wide note hides one in any corner.
     const points: [number, number][] = [
       [0.4, 0.85],
