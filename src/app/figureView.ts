@@ -262,7 +262,6 @@ export class FigureView<S, M> {
     return changed;
   }
 
-  /** Draws the model to the canvas. */
   /**
    * Draws the figure for `model`, unless it would draw the very picture on its
    * canvas now (see `FigureSpec.drawnFrom`): a plot of basis functions is not

@@ -112,12 +112,6 @@ export const filled = (parts: { shape: string; values: readonly string[] }): str
   parts.shape.split(SLOT).reduce((tex, part, i) => tex + (parts.values[i - 1] ?? '') + part);
 
 /**
- * A formula whose shape is typeset once and whose numbers change as text: the
- * TeX has `\val` wherever a number goes, and `set` fills them in. Only a new
- * shape (another number of terms, say) typesets again; a drag that changes
- * the numbers writes a few text nodes.
- */
-/**
  * While a pointer is held (a point or a slider being dragged), live formulas
  * write only the numbers one sees; their MathML copy, for assistive tools and
  * copying as TeX, catches up the moment it is let go. Chromium lays the MathML
@@ -160,6 +154,12 @@ export function holdCopiesWhilePressed(target: EventTarget): () => void {
   };
 }
 
+/**
+ * A formula whose shape is typeset once and whose numbers change as text: the
+ * TeX has `\val` wherever a number goes, and `set` fills them in. Only a new
+ * shape (another number of terms, say) typesets again; a drag that changes
+ * the numbers writes a few text nodes.
+ */
 export class LiveFormula {
   readonly element: HTMLElement;
   /** The shape typeset now, and the one asked for last (they differ while it waits for a frame). */
@@ -168,6 +168,8 @@ export class LiveFormula {
   private latest: { shape: string; values: readonly string[] } = { shape: '', values: [] };
   private slots: { html: Element; mathml: Element | null; text: string; copied: string }[] = [];
   private annotation: Element | null = null;
+  /** The shape and numbers written last, whose TeX the MathML's annotation holds. */
+  private written: { shape: string; values: readonly string[] } = { shape: '', values: [] };
 
   constructor(
     private readonly display = false,
@@ -215,6 +217,7 @@ export class LiveFormula {
       slot.html.textContent = text;
     });
     if (!changed) return;
+    this.written = parts;
     // New numbers may be wider: a display formula is fitted to the panel again
     // (at the start of the next frame, on a clean layout: one read of its width).
     if (this.display) markForFit(this.element);
@@ -229,7 +232,7 @@ export class LiveFormula {
       slot.copied = slot.text;
       if (slot.mathml) slot.mathml.textContent = slot.text;
     }
-    if (this.annotation) this.annotation.textContent = sayTex(filled(this.latest));
+    if (this.annotation) this.annotation.textContent = sayTex(filled(this.written));
   }
 
   private typeset(shape: string): void {

@@ -365,6 +365,9 @@ export function drawPanelBox(
   c.restore();
 }
 
+/** A note's widths to try, as shares of its figure's: a corner's note, not a banner, then narrower. */
+const NOTE_SHARES = [0.6, 0.45, 0.34, 0.26];
+
 /**
  * A boxed, word-wrapped message in a corner of the figure; returns the y
  * below it were it at the top left. Given a `top`, it sits there at the left
@@ -404,9 +407,9 @@ export function drawNote(
     return { lines, width: width + 2 * pad, height: lines.length * lineHeight + pad };
   };
   type Wrapped = ReturnType<typeof wrap>;
-  const narrowest = size * 6;
-  // A corner's note, not a banner: up to three fifths of a wide figure.
-  const widest = wrap(Math.max(narrowest, Math.min(figureWidth - 4 * pad, figureWidth * 0.6)));
+  const wrapAt = (share: number) =>
+    wrap(Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share)));
+  const widest = wrapAt(NOTE_SHARES[0]);
   const draw = (note: Wrapped, x: number, top: number) => {
     painter.labels.push({ text, x, y: top, width: note.width, height: note.height, boxed: true });
     drawPanelBox(
@@ -430,34 +433,34 @@ export function drawNote(
     return style.top + widest.height + pad;
   }
   painter.placing(() => {
-    const places = [0.6, 0.45, 0.34, 0.26]
-      .map((share) => Math.max(narrowest, Math.min(figureWidth - 4 * pad, figureWidth * share)))
-      .map((maxWidth, i) => (i === 0 ? widest : wrap(maxWidth)))
-      .filter((note, i) => i === 0 || note.height <= figureHeight - 2 * pad)
-      .flatMap((note) => {
-        const [right, foot] = [figureWidth - note.width - pad, figureHeight - note.height - pad];
-        const corners: [number, number][] = [
-          [pad, pad],
-          [right, pad],
-          [pad, foot],
-          [right, foot],
-        ];
-        return corners
-          .filter(([x, y]) => x >= 0 && y >= 0)
-          .map(([x, y]) => ({ note, x, y, box: { x, y, width: note.width, height: note.height } }));
-      });
     const clash = (box: Box) =>
       painter.labels.filter((b) => overlaps(b, box.x, box.y, box.width, box.height)).length;
-    const free = places.find(({ box }) => clash(box) === 0 && !painter.ink.crosses(box));
-    if (free) return draw(free.note, free.x, free.y);
+    // Widest first; a narrower wrap only when no corner of the wider one is clear.
+    const tried: { note: Wrapped; box: Box }[] = [];
+    for (const share of NOTE_SHARES) {
+      const note = share === NOTE_SHARES[0] ? widest : wrapAt(share);
+      if (tried.length && note.height > figureHeight - 2 * pad) break;
+      const [right, foot] = [figureWidth - note.width - pad, figureHeight - note.height - pad];
+      for (const [x, y] of [
+        [pad, pad],
+        [right, pad],
+        [pad, foot],
+        [right, foot],
+      ]) {
+        if (x < 0 || y < 0) continue;
+        const box = { x, y, width: note.width, height: note.height };
+        if (clash(box) === 0 && !painter.ink.crosses(box)) return draw(note, x, y);
+        tried.push({ note, box });
+      }
+    }
     // No corner is clear: the place that hides least. A point or a label hidden
     // is worse than any number of strokes crossed (the curve shows round it).
-    const hidden = ({ box }: (typeof places)[number]) => {
+    const hidden = tried.map(({ box }) => {
       const { discs, strokes } = painter.ink.hits(box);
       return (discs + clash(box)) * 1000 + strokes;
-    };
-    const best = places.reduce((a, b) => (hidden(b) < hidden(a) ? b : a), places[0]);
-    if (best) draw(best.note, best.x, best.y);
+    });
+    const best = tried[hidden.indexOf(Math.min(...hidden))];
+    if (best) draw(best.note, best.box.x, best.box.y);
     else draw(widest, pad, pad);
   });
   return pad + widest.height + pad;
