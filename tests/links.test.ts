@@ -10,9 +10,9 @@
  * are unchanged.
  */
 import { describe, expect, it } from 'vitest';
-import { normalizeState } from '../src/app/lessonState';
+import { loadState, normalizeState } from '../src/app/lessonState';
 import { lessons } from '../src/app/registry';
-import { decodeState, defaultsOf, encodeState } from '../src/app/urlState';
+import { decodeState, defaultsOf, encodeState, keyOf } from '../src/app/urlState';
 import recorded from './scene-links.json';
 
 const links = recorded as Record<string, string[]>;
@@ -48,6 +48,37 @@ describe('links made before the kit', () => {
         }
       }
       expect(now).toEqual(links[meta.slug]);
+    });
+  }
+});
+
+describe('a short link that names a scene', () => {
+  for (const meta of lessons) {
+    it(`${meta.slug}: “scene=<id>” alone opens that scene as its link opens it, and a field it gives wins`, async () => {
+      const lesson = await meta.load();
+      // The recorded link of each scene at step 0 is the whole state that scene opens with.
+      const key = lesson.steps?.key;
+      const first = (l: string) =>
+        !key || new RegExp(`&${keyOf(lesson.schema, key)}=0(&|$)`).test(l);
+      const opening = links[meta.slug].filter((l) => l.startsWith('scene=') && first(l));
+      expect(opening.length).toBe(lesson.scenes?.length ?? 0);
+      for (const link of opening) {
+        const id = /^scene=([^&]+)/.exec(link)![1];
+        const opened = loadState(lesson, `scene=${id}`, null);
+        expect(opened.issues, id).toEqual([]);
+        expect(encodeState(lesson.schema, opened.state, {}, id), id).toBe(link);
+      }
+      // A field the link gives is kept over the scene's own (here the step).
+      const last = lesson.scenes?.at(-1);
+      if (!key || !last) return;
+      const whole = links[meta.slug].filter((l) => l.startsWith(`scene=${last.id}&`)).at(-1)!;
+      const end = Number(new RegExp(`&${keyOf(lesson.schema, key)}=(\\d+)`).exec(whole)![1]);
+      const opened = loadState(
+        lesson,
+        `scene=${last.id}&${keyOf(lesson.schema, key)}=${end}`,
+        null,
+      );
+      expect(encodeState(lesson.schema, opened.state, {}, last.id)).toBe(whole);
     });
   }
 });

@@ -1,6 +1,13 @@
 import { History, type HistoryOptions } from './history';
 import type { AnyLesson } from './lesson';
-import { decodeState, defaultsOf, encodeState, keyOf, type PracticeLink } from './urlState';
+import {
+  type Decoded,
+  decodeState,
+  defaultsOf,
+  encodeState,
+  keyOf,
+  type PracticeLink,
+} from './urlState';
 
 /** Key under which the last state of a lesson is kept in localStorage. */
 export const storageKey = (slug: string) => `spline-lab:lesson:${slug}`;
@@ -51,7 +58,7 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
   const exercises = (lesson.exercises ?? []).map((exercise) => exercise.id);
   if (query !== '') {
     const decoded = decodeState<S>(lesson.schema, query, figures, scenes, exercises);
-    const normalized = normalizeState(lesson, decoded.state);
+    const normalized = normalizeState(lesson, overScene(lesson, decoded));
     return {
       state: normalized.state as S,
       issues: [...decoded.issues, ...normalized.issues],
@@ -84,6 +91,20 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
     views: {},
     scene: 0,
   };
+}
+
+/**
+ * The link's state, read over its scene's setup when it names one: `scene=runge`
+ * alone opens the Runge scene's points, and any field the link gives wins.
+ */
+function overScene<S>(lesson: AnyLesson, decoded: Decoded<S>): S {
+  const scene = lesson.scenes?.[decoded.scene];
+  if (!decoded.sceneNamed || !scene) return decoded.state;
+  const opened = { ...(scene.apply(defaultsOf<S>(lesson.schema)) as S) };
+  // A scene opens at its step 0, as its button opens it.
+  if (lesson.steps) (opened as Record<string, unknown>)[lesson.steps.key] = 0;
+  for (const name of decoded.given) opened[name] = decoded.state[name];
+  return opened;
 }
 
 function readStorage(storage: Storage | null, key: string): string | null {

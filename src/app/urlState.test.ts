@@ -93,6 +93,8 @@ describe('URL state', () => {
       issues: [],
       views: {},
       scene: 0,
+      sceneNamed: false,
+      given: new Set(),
       practice: null,
     });
   });

@@ -25,6 +25,10 @@ export interface Decoded<S> {
   views: Record<string, string>;
   /** The scene the link names (`scene=<id>`), as an index into the lesson's scenes; 0 without one. */
   scene: number;
+  /** Whether the link named a scene it has (then its fields are read over that scene's setup). */
+  sceneNamed: boolean;
+  /** The fields the link gave, by name (the rest are defaults). */
+  given: ReadonlySet<keyof S & string>;
   /** The exercise the link opens (`ex=<id>&seed=<n>`), or null. */
   practice: PracticeLink | null;
 }
@@ -159,11 +163,20 @@ export function decodeState<S>(
     issues.push(
       `the link's state is ${query.length} characters long (at most ${MAX_QUERY_LENGTH}), so all of it was ignored`,
     );
-    return { state: state as S, issues, views, scene, practice: null };
+    return {
+      state: state as S,
+      issues,
+      views,
+      scene,
+      sceneNamed: false,
+      given: new Set(),
+      practice: null,
+    };
   }
   const seen = new Set<string>();
   const byKey = fieldsByKey(schema);
-  const given = new Set<string>();
+  const given = new Set<keyof S & string>();
+  let sceneNamed = false;
   for (const part of query.split('&')) {
     if (part === '') continue;
     const eq = part.indexOf('=');
@@ -191,8 +204,10 @@ export function decodeState<S>(
     if (key === SCENE_KEY && scenes.length > 0) {
       seen.add(key);
       const index = scenes.indexOf(raw);
-      if (index >= 0) scene = index;
-      else
+      if (index >= 0) {
+        scene = index;
+        sceneNamed = true;
+      } else
         issues.push(
           `${SCENE_KEY}: ${quote(raw)} is not a scene of this lesson; the script starts at its first`,
         );
@@ -235,5 +250,5 @@ export function decodeState<S>(
     issues.push(`${SEED_KEY}: a seed without an exercise (ex=…) was ignored`);
   const practice =
     exercise === null ? null : { id: exercise, seed: seed ?? 1, kept: given.size > 0 };
-  return { state: state as S, issues, views, scene, practice };
+  return { state: state as S, issues, views, scene, sceneNamed, given, practice };
 }
