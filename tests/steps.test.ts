@@ -92,7 +92,7 @@ describe('presenter sizes', () => {
 
 describe('every step of every scene, as the room sees it', () => {
   for (const meta of lessons) {
-    it(`${meta.slug}: legible, clear of strokes, handles inside, and every press shows something new`, async () => {
+    it(`${meta.slug}: legible, clear of strokes, handles inside, points named as drawn, and every press shows something new`, async () => {
       const lesson = await meta.load();
       const steps = lesson.steps!;
       const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
@@ -105,6 +105,9 @@ describe('every step of every scene, as the room sees it', () => {
           const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
           const { svg, problems } = drawStep(lesson, state);
           for (const problem of problems) found.push(`${scene.id} step ${k}: ${problem}`);
+          // The caption names points as the figure labels them: P₁, not P1.
+          const plain = steps.describe(state, k).match(/(?<![A-Za-z])[PDBQLH]\d/);
+          if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
           // What the room sees besides the caption: the figures and the step's formula.
           const seen = `${svg}\n${steps.formula?.(lesson.derive(state), state) ?? ''}`;
           if (before !== null && seen === before)

@@ -71,6 +71,22 @@ export function setText(element: HTMLElement, text: string): void {
   if (element.textContent !== text) element.textContent = text;
 }
 
+/**
+ * Words with their Unicode subscript indices (P₀, D₁₂) in spans of their own,
+ * which the style sheet sets larger: a font's subscript digits are half its
+ * size, too small to tell P₁,₀ from P₁,₁ from the back of the room. The text
+ * reads the same (textContent is `text`), only when it changed.
+ */
+export function setIndexedText(element: HTMLElement, text: string): void {
+  if (element.textContent === text) return;
+  element.replaceChildren(
+    ...text
+      .split(/([₀-₉]+)/)
+      .map((run, i) => (i % 2 ? h('span', { class: 'index' }, run) : run))
+      .filter((run) => run !== ''),
+  );
+}
+
 /** Shows or hides an element only when that changes. */
 export function setHidden(element: HTMLElement, hidden: boolean): void {
   if (element.hidden !== hidden) element.hidden = hidden;

@@ -11,7 +11,7 @@ import { markForFit, fitToWidth, contentWidth } from '../render/fit';
 import { LiveFormula, filled, typesetSoon } from '../render/formula';
 import { sayTex } from '../render/notation';
 import { type FormulaParts, slotNumbers } from '../render/formulaParts';
-import { h, setHidden, setText } from './dom';
+import { h, setHidden, setIndexedText, setText } from './dom';
 import type { PresenterTool } from './keymap';
 
 export type ToolState = Record<PresenterTool, boolean>;
@@ -237,7 +237,7 @@ export class Presenter {
     twin.style.width = `${this.caption.getBoundingClientRect().width}px`;
     const [scene, words] = twin.querySelectorAll('span');
     setText(scene, step.scene);
-    setText(words, step.step);
+    setIndexedText(words, step.step);
     const box = twin.querySelector<HTMLElement>('.twin-formula')!;
     const math = box.firstElementChild as HTMLElement;
     setHidden(box, !step.formula);
@@ -258,7 +258,7 @@ export class Presenter {
   setCaption(scene: string, step: string, formula: string | FormulaParts | null): void {
     const words = `${scene}\n${step}`;
     setText(this.sceneText, scene);
-    setText(this.stepText, step);
+    setIndexedText(this.stepText, step);
     const parts = formula && (typeof formula === 'string' ? slotNumbers(formula) : formula);
     if (parts) this.formula.set(parts);
     setHidden(this.formulaBox, !parts);

@@ -1,5 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { filled, fixed, sub, texExponent, texPoint, texT, trimmed, words } from './format';
+import {
+  filled,
+  fixed,
+  sub,
+  subscriptNames,
+  texExponent,
+  texPoint,
+  texT,
+  trimmed,
+  words,
+} from './format';
 
 // Exact texts: captions and formulas are compared with reviewed screenshots.
 describe('format', () => {
@@ -34,5 +44,20 @@ describe('fixed', () => {
     expect(fixed(-1.5, 2)).toBe('−1.50');
     expect(fixed(-0.00001, 4)).toBe('0.0000');
     expect(fixed(2, 3)).toBe('2.000');
+  });
+});
+
+describe('subscriptNames', () => {
+  it('writes the index of a point, gradient or weight as a subscript, and nothing else', () => {
+    expect(subscriptNames('The 5 points P0 … P4 to pass through')).toBe(
+      'The 5 points P₀ … P₄ to pass through',
+    );
+    expect(subscriptNames('H0P1 + H1P2 + H2D1 + H3D2')).toBe('H₀P₁ + H₁P₂ + H₂D₁ + H₃D₂');
+    expect(subscriptNames('P10 and Q4, L0(t) = 1, B3')).toBe('P₁₀ and Q₄, L₀(t) = 1, B₃');
+    // Continuity, a number, a word and a name already written stay as they are.
+    expect(subscriptNames('C1 and G1 at 1.5, MP3 player, P₂')).toBe(
+      'C1 and G1 at 1.5, MP3 player, P₂',
+    );
+    expect(subscriptNames('at P1.5 of the way')).toBe('at P1.5 of the way');
   });
 });

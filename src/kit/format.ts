@@ -16,6 +16,18 @@ const SUBSCRIPTS = '₀₁₂₃₄₅₆₇₈₉';
 export const sub = (i: number) => [...String(i)].map((d) => SUBSCRIPTS[Number(d)]).join('');
 
 /**
+ * A caption's point and vector names with their indices as subscripts, as the
+ * figure labels them: "P0 … P4" reads "P₀ … P₄", "H0P1" reads "H₀P₁". The
+ * letters are those of points, gradients and weights (P, D, B, Q, L, H);
+ * continuity (C1, G1) is a superscript the lessons write themselves.
+ */
+export const subscriptNames = (text: string) =>
+  text.replace(NAME_INDEX, (_, letter: string, index: string) => letter + sub(Number(index)));
+
+/** A point or vector letter, not inside a word, and its index digits. */
+export const NAME_INDEX = /(?<![A-Za-z])([PDBQLH])(\d+)(?![\d.]\d)/g;
+
+/**
  * A number to at most `digits` decimals, trailing zeros dropped: 0.5, not
  * 0.500. Tiny negatives come out as "0" (String(-0) is "0").
  */

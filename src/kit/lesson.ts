@@ -22,6 +22,7 @@ import type { ExerciseSpec } from './exercise';
 import type { Letter } from '../render/notation';
 import type { Painter } from '../render/painter';
 import { boundsOf, unionBounds } from '../render/projection';
+import { subscriptNames } from './format';
 import type { PointList } from './pointList';
 import type { Script, Revealed } from './script';
 
@@ -130,7 +131,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     steps: {
       key: spec.step,
       count: (state) => scriptOf(state).lastStep(state),
-      describe: (state, k) => scriptOf(state).caption(state, derive(state), k),
+      describe: (state, k) => subscriptNames(scriptOf(state).caption(state, derive(state), k)),
       formula: (model, state) => scriptOf(state).formula(state, model, stepOf(state)),
     },
     scenes: spec.scenes.map((scene) => ({

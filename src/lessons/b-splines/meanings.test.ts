@@ -100,7 +100,7 @@ describe('two meanings of “knots” on one curve', () => {
     expect(knotPoints.every((k) => k.on === null)).toBe(true);
     // The nearest pair: P(u5) and P3 = (4.5, 1), (1/12, 1/3) apart: √17/12 = 0.344.
     expect(caption('meet', state)).toBe(
-      'No curve point at a knot lands on a control point here: the nearest pair, P(u₅) and P3, is marked with its distance',
+      'No curve point at a knot lands on a control point here: the nearest pair, P(u₅) and P₃, is marked with its distance',
     );
     const last = { ...state, step: stepOf('meet') };
     expect(steps.formula!(lesson.derive(last), last)).toBe(
@@ -111,12 +111,12 @@ describe('two meanings of “knots” on one curve', () => {
 
   it('where knots make a join a control point, the two meanings are one spot', () => {
     expect(caption('meet')).toBe(
-      'Both meanings on one spot: P(u₃) = P0 and P(u₇) = P6, where the curve’s point at a knot value is a control point',
+      'Both meanings on one spot: P(u₃) = P₀ and P(u₇) = P₆, where the curve’s point at a knot value is a control point',
     );
     // The repeated scene's knots: a knot of multiplicity p = 3 at u = 1 puts P(1) on P3.
     const repeated = normalize({ ...scene, knots: [0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2] }).state;
     expect(model(repeated).knotPoints.map((k) => k.on)).toEqual([0, 3, 6]);
-    expect(caption('meet', repeated)).toMatch(/P\(u₃\) = P0, P\(u₄\) = P3 and P\(u₇\) = P6/);
+    expect(caption('meet', repeated)).toMatch(/P\(u₃\) = P₀, P\(u₄\) = P₃ and P\(u₇\) = P₆/);
   });
 
   it('quotes each document as it uses the word', () => {

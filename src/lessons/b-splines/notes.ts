@@ -59,7 +59,7 @@ export const closedSlip = () => notesSlip('slides', CLOSED_SLIP.written, CLOSED_
 export const KNOT_WORDS = {
   lectureJoin: 'each pair of adjacent knots is joined by a different curve',
   lectureControl: 'a small set of control points (knots)',
-  lectureBezier: 'has four knots: P0, P1, P2, P3',
+  lectureBezier: 'has four knots: P₀, P₁, P₂, P₃',
   splineSlides: 'user-specified control points (knots)',
   continuation: 'knots are equally spaced',
   continuationNurbs: 'non-uniform location of knots',

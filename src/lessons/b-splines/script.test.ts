@@ -76,7 +76,7 @@ describe('the scenes and their named steps', () => {
   it('captions and formulas come from the step declared with them', () => {
     const s = sceneState('uniform');
     expect(lesson.steps!.describe(s, 2)).toBe(
-      'Segment Q4 blends P1, P2, P3, P4 with the four bases B0(t) … B3(t)',
+      'Segment Q₄ blends P₁, P₂, P₃, P₄ with the four bases B₀(t) … B₃(t)',
     );
     const knots = sceneState('knots', { step: 2 });
     expect(lesson.steps!.describe(knots, 2)).toBe(
@@ -144,7 +144,7 @@ describe('what a step draws, by name', () => {
     expect(moved.line).toEqual([s.line[0], [10, 5]]);
   });
 
-  it('every control point keeps its own label, even two on one spot (the circle’s P0 and P8)', () => {
+  it('every control point keeps its own label, even two on one spot (the circle’s P₀ and P₈)', () => {
     const handles = controlPoints.handles(sceneState('circle'));
     expect(handles.map((h) => [h.label, h.showLabel])).toEqual(
       handles.map((_, i) => [`P_{${i}}`, true]),
@@ -239,14 +239,14 @@ const allCaptions = () =>
     );
   });
 
-describe('one notation, the app’s: m + 1 control points P0 … Pm (the slides’ x0 … xm)', () => {
+describe('one notation, the app’s: m + 1 control points P₀ … Pm (the slides’ x0 … xm)', () => {
   it('every scene counts its seven points as m + 1 = 7, the knot scenes too', () => {
     expect(lesson.steps!.describe(sceneState('uniform'), 0)).toBe(
-      'The m + 1 = 7 control points P0 … P6',
+      'The m + 1 = 7 control points P₀ … P₆',
     );
     for (const id of ['knots', 'clamped', 'repeated']) {
       const s = sceneState(id);
-      expect(lesson.steps!.describe(s, 0)).toMatch(/^The m \+ 1 = 7 control points P0 … P6/);
+      expect(lesson.steps!.describe(s, 0)).toMatch(/^The m \+ 1 = 7 control points P₀ … P₆/);
       expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
         'The knot vector u0 … u10: m + p + 2 = 11 knots on the strip',
       );
@@ -280,7 +280,7 @@ describe('one notation, the app’s: m + 1 control points P0 … Pm (the slides�
     ])
       expect(text).toMatch(notesLetters);
     for (const text of [
-      'P0 … Pm',
+      'P₀ … Pm',
       'P(u)',
       'C²',
       'C^{2}',
@@ -292,7 +292,7 @@ describe('one notation, the app’s: m + 1 control points P0 … Pm (the slides�
       expect(unquoted(text)).not.toMatch(notesLetters);
   });
 
-  it('writes P0 … Pm and P(u) in every caption, formula, figure label, handle, fact and panel text', () => {
+  it('writes P₀ … Pm and P(u) in every caption, formula, figure label, handle, fact and panel text', () => {
     const found: string[] = [];
     const check = (where: string, text: string) => {
       if (notesLetters.test(unquoted(text))) found.push(`${where}: ${text}`);
@@ -375,7 +375,7 @@ describe('the basis plot shows what its step shows', () => {
     expect(basisFigure.id).toBe('basis');
   });
 
-  it('at the segment’s step: the four bases of that segment, B0(t) … B3(t), with their values', () => {
+  it('at the segment’s step: the four bases of that segment, B₀(t) … B₃(t), with their values', () => {
     const s = { ...sceneState('uniform'), step: 2 };
     const m = derive(s);
     const texts = basisTexts(s);
@@ -397,7 +397,7 @@ describe('the uniform cubic bases, written out and derived', () => {
     return Number(/= (-?[\d.]+)(?=\s*(?:&|\\\\|\\end|$))/.exec(rest)![1]);
   };
 
-  it('the segment’s step writes B0(t) … B3(t) as the notes do, with their values at the local t', () => {
+  it('the segment’s step writes B₀(t) … B₃(t) as the notes do, with their values at the local t', () => {
     const s = { ...sceneState('uniform'), step: 2 };
     const m = derive(s);
     const tex = lesson.steps!.formula!(m, s)!;
@@ -428,7 +428,7 @@ describe('the uniform cubic bases, written out and derived', () => {
     }
     const last = { ...s, step: 5 };
     expect(lesson.steps!.describe(last, 5)).toBe(
-      'Row 3 on equally spaced knots: its four pieces are the uniform cubic bases B0(t) … B3(t)',
+      'Row 3 on equally spaced knots: its four pieces are the uniform cubic bases B₀(t) … B₃(t)',
     );
     const tex = lesson.steps!.formula!(derive(last), last)!;
     expect(tex).toContain('N_{1,3} &= \\tfrac{1}{6}(1 - t)^{3} = 0.011');
@@ -448,7 +448,7 @@ describe('the closed uniform B-spline needs three points wrapped', () => {
   it('says so in its caption, and the slides’ x₀ = xₘ kindly beside it', () => {
     const s = sceneState('closed');
     expect(lesson.steps!.describe({ ...s, step: 1 }, 1)).toBe(
-      'Closed: after P5 come P0, P1, P2 again (P6 = P0, P7 = P1, P8 = P2)',
+      'Closed: after P₅ come P₀, P₁, P₂ again (P₆ = P₀, P₇ = P₁, P₈ = P₂)',
     );
     expect(CLOSED_SLIP.written).toMatch(/x₀ = xₘ/);
     expect(CLOSED_SLIP.correct).toMatch(/P\(m\+1\) = P0, P\(m\+2\) = P1 and P\(m\+3\) = P2/);

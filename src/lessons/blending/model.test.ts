@@ -48,7 +48,7 @@ describe('derive (blending)', () => {
     ]);
   });
 
-  it('compares with Hermite: H3 dips to −4/27 at μ = 2/3; the end tangents are 3(P1 − P0), 3(P3 − P2)', () => {
+  it('compares with Hermite: H₃ dips to −4/27 at μ = 2/3; the end tangents are 3(P₁ − P₀), 3(P₃ − P₂)', () => {
     const m = derive({ ...cubic, comparison: 'hermite' });
     const c = m.compared!;
     expect(c.labels).toEqual(['H_0', 'H_1', 'H_2', 'H_3']);
@@ -73,7 +73,7 @@ describe('derive (blending)', () => {
     expect(m.curveBounds).toEqual({ minX: 0, minY: -6, maxX: 7, maxY: 6 });
   });
 
-  it('compares with the uniform B-spline: B(0) = (P0 + 4P1 + P2) / 6, nothing negative', () => {
+  it('compares with the uniform B-spline: B(0) = (P₀ + 4P₁ + P₂) / 6, nothing negative', () => {
     const c = derive({ ...cubic, mu: 0, comparison: 'bspline' }).compared!;
     close(c.point!.at, [7 / 6, 10 / 6]);
     expect(c.point!.label).toBe('B(μ)');
@@ -81,7 +81,7 @@ describe('derive (blending)', () => {
     close(c.atMu, [1 / 6, 4 / 6, 1 / 6, 0]);
   });
 
-  it('compares with Lagrange: through P1 at its node μ = 1/6, outside the hull, weights below 0', () => {
+  it('compares with Lagrange: through P₁ at its node μ = 1/6, outside the hull, weights below 0', () => {
     const steps: BlendingState = {
       p: [
         [0, 0],
@@ -146,7 +146,7 @@ describe('the script (blending)', () => {
       curve: true,
       compared: false,
     });
-    expect(describeStep(cubic, 2)).toBe('The weight of P1: W(3, 1, μ), largest at μ = 1/3');
+    expect(describeStep(cubic, 2)).toBe('The weight of P₁: W(3, 1, μ), largest at μ = 1/3');
     // W(3, 1, ½) = 3 · ½ · ¼ = 0.375.
     expect(stepFormula(derive({ ...cubic, step: 2 }), { ...cubic, step: 2 })).toMatch(/= 0\.3750$/);
   });

@@ -113,7 +113,7 @@ describe('the scene steps through the points, each curve, and which points it pa
     ]);
     const steps = walk(opened());
     expect(steps[0][0]).toBe(
-      'The control points P0 … P3, for two curves: does each pass through them?',
+      'The control points P₀ … P₃, for two curves: does each pass through them?',
     );
     expect(steps[2]).toEqual([
       'Interpolating: the Lagrange curve passes through every control point, each at distance 0',
@@ -121,7 +121,7 @@ describe('the scene steps through the points, each curve, and which points it pa
     ]);
     // 0.714 by hand (above).
     expect(steps[4][0]).toBe(
-      'Approximating: the Bézier curve passes through P0 and P3 only; P1 and P2 stay 0.714 and 0.714 away, shaping it without lying on it',
+      'Approximating: the Bézier curve passes through P₀ and P₃ only; P₁ and P₂ stay 0.714 and 0.714 away, shaping it without lying on it',
     );
     expect(steps[4][1]).toMatch(
       /d\(P_i, P\) = \\min_\\mu \|P\(\\mu\) - P_i\|:\\quad 0\.000,\\ 0\.714,\\ 0\.714,\\ 0\.000\\end\{aligned\}$/,

@@ -22,21 +22,21 @@ describe('the blending script, step by named step', () => {
   it('walks the cubic: the points, W(3, 0 … 3, ½), P(½), the curve', () => {
     expect(walk(cubic)).toEqual([
       [
-        'The control points P0 … P3 and their polygon',
+        'The control points P₀ … P₃ and their polygon',
         'P(\\mu) = \\sum_{i=0}^{3} W(3,i,\\mu)\\,P_i',
       ],
       // W(3, 0, ½) = 1 · ½³ = 0.125
-      ['The weight of P0: W(3, 0, μ), largest at μ = 0', 'W(3,0,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
+      ['The weight of P₀: W(3, 0, μ), largest at μ = 0', 'W(3,0,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
       // W(3, 1, ½) = 3 · ½ · ½² = 0.375
       [
-        'The weight of P1: W(3, 1, μ), largest at μ = 1/3',
+        'The weight of P₁: W(3, 1, μ), largest at μ = 1/3',
         'W(3,1,0.5) = 3\\cdot 0.5\\cdot 0.5^{2} = 0.3750',
       ],
       [
-        'The weight of P2: W(3, 2, μ), largest at μ = 2/3',
+        'The weight of P₂: W(3, 2, μ), largest at μ = 2/3',
         'W(3,2,0.5) = 3\\cdot 0.5^{2}\\cdot 0.5 = 0.3750',
       ],
-      ['The weight of P3: W(3, 3, μ), largest at μ = 1', 'W(3,3,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
+      ['The weight of P₃: W(3, 3, μ), largest at μ = 1', 'W(3,3,0.5) = 1\\cdot 0.5^{3} = 0.1250'],
       // (0·1 + 1·3 + 3·3 + 4·1) / 8 = 2, (0 + 2·3 + 2·3 + 0) / 8 = 1.5
       [
         'P(μ): the control points averaged with these weights',
@@ -71,10 +71,10 @@ describe('the blending script, step by named step', () => {
     expect(blendingScript.stepOf(cubic, 'point')).toBe(5);
     expect(blendingScript.stepOf(cubic, 'curve')).toBe(6);
     expect(blendingScript.stepOf(cubic, 'basis')).toBe(-1);
-    // N = 1: P0's weight peaks at μ = 0, P1's at μ = 1.
+    // N = 1: P0's weight peaks at μ = 0, P₁'s at μ = 1.
     const line = { ...cubic, p: cubic.p.slice(0, 2) };
     expect(blendingScript.lastStep(line)).toBe(4);
-    expect(walk(line)[2][0]).toBe('The weight of P1: W(1, 1, μ), largest at μ = 1');
+    expect(walk(line)[2][0]).toBe('The weight of P₁: W(1, 1, μ), largest at μ = 1');
   });
 
   it('reveals by name: the weights count up, P(μ) and the curve follow', () => {

@@ -75,20 +75,20 @@ describe('the Compare scenes start where their own idea starts (issue #20)', () 
     }
   });
 
-  it('Hermite: the end gradients of the lecture cubic, 3(P1 − P0) = (3, 6) and 3(P3 − P2) = (3, −6)', () => {
+  it('Hermite: the end gradients of the lecture cubic, 3(P₁ − P₀) = (3, 6) and 3(P₃ − P₂) = (3, −6)', () => {
     const [, , tangents] = walk(opened('hermite'));
     expect(tangents[1]).toBe(
       'D_0 = 3(P_1 - P_0) = (3.00,\\ 6.00),\\quad D_3 = 3(P_3 - P_2) = (3.00,\\ -6.00)',
     );
   });
 
-  it('B-spline: the curve starts at (P0 + 4P1 + P2)/6 = (7/6, 10/6), not at P0', () => {
+  it('B-spline: the curve starts at (P₀ + 4P₁ + P₂)/6 = (7/6, 10/6), not at P₀', () => {
     const steps = walk(opened('bspline'));
     expect(steps[1][0]).toBe(
-      'B0: never negative, and at most 0.167, so it never takes a point whole',
+      'B₀: never negative, and at most 0.167, so it never takes a point whole',
     );
     expect(steps[2][0]).toBe(
-      'B1: never negative, and at most 0.667, so it never takes a point whole',
+      'B₁: never negative, and at most 0.667, so it never takes a point whole',
     );
     expect(steps[5][1]).toMatch(/^\\tfrac\{1\}\{6\}\(P_0 \+ 4P_1 \+ P_2\) = \(1\.167,\\ 1\.667\)/);
   });
@@ -112,7 +112,7 @@ describe('the symmetry μ → 1 − μ, stepped with the numbers of μ (the lect
     ]);
     // W(3, 0, 0.3) = 0.7³ = 0.343 = W(3, 3, 0.7); W(3, 1, 0.3) = 3 · 0.3 · 0.7² = 0.441 = W(3, 2, 0.7).
     expect(steps[2]).toEqual([
-      "W(3, 0, μ) = W(3, 3, 1 − μ) = 0.343: swapping μ and 1 − μ swaps P0's weight and P3's",
+      "W(3, 0, μ) = W(3, 3, 1 − μ) = 0.343: swapping μ and 1 − μ swaps P₀'s weight and P₃'s",
       'W(3,0,0.3) = 1\\cdot 0.3^{0}\\,0.7^{3} = 1\\cdot 0.7^{3}\\,0.3^{0} = W(3,3,0.7) = 0.3430',
     ]);
     expect(steps[3][1]).toBe(

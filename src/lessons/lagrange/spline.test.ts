@@ -37,7 +37,7 @@ describe('the natural spline is global (issue #19)', () => {
     }
   });
 
-  it('the last step moves P4 of the Runge points and says every gradient changes, as the maths does', () => {
+  it('the last step moves P₄ of the Runge points and says every gradient changes, as the maths does', () => {
     const last = { ...runge, step: lesson.steps!.count(runge) };
     const c = derive(last).comparison!;
     expect(c.moved).toBe(4);
@@ -50,7 +50,7 @@ describe('the natural spline is global (issue #19)', () => {
       ),
     );
     expect(lesson.steps!.describe(last, last.step)).toBe(
-      'Move P4 up by 1 (dashed): all 11 gradients change, so the pieces are coupled',
+      'Move P₄ up by 1 (dashed): all 11 gradients change, so the pieces are coupled',
     );
   });
 

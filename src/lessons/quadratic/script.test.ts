@@ -124,7 +124,7 @@ describe('the script of the quadratic lesson', () => {
       ],
     });
     expect(lesson.steps!.describe(sameX, 1)).toBe(
-      'First idea, a parabola y(x): there is none, P0 and P1 share x = 1',
+      'First idea, a parabola y(x): there is none, P₀ and P₁ share x = 1',
     );
     expect(lesson.steps!.formula!(lesson.derive(sameX), sameX)).toBeNull();
     const backwards = state({

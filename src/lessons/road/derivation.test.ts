@@ -93,7 +93,7 @@ describe('the derivation scene', () => {
     close(y.rhs, naturalCubicSystem(SIX_VILLAGES.map((p) => p[1])).rhs);
   });
 
-  it('works at the join nearest p̄: P2 for p̄ = 2.4, and only ever an inner village', () => {
+  it('works at the join nearest p̄: P₂ for p̄ = 2.4, and only ever an inner village', () => {
     expect(work.join).toBe(2);
     expect(joinNear(3.6, 5)).toBe(4);
     expect(joinNear(0.2, 5)).toBe(1);
@@ -136,7 +136,7 @@ describe('the derivation scene', () => {
         'd_{2} &= -2(y_{3} - y_{2}) + D_{2} + D_{3} = -2(30 - 10) + 8.2775 + 9.5407 = -22.1818\\end{aligned}',
     );
     expect(steps.describe(at(3), 3)).toBe(
-      'Segment 1, P1 to the join P2: a, b, c, d from heights y and gradients D at its ends',
+      'Segment 1, P₁ to the join P₂: a, b, c, d from heights y and gradients D at its ends',
     );
     expect(formula(at(6))).toBe(
       "y''_{1}(1) = y''_{2}(0):\\quad 2c_{1} + 6d_{1} = 2c_{2}:\\quad 67.8086 = 2(33.9043) = 67.8086",
@@ -159,7 +159,7 @@ describe('the derivation scene', () => {
       'p = \\frac{\\bar p - \\bar p_{2}}{\\bar p_{3} - \\bar p_{2}} = \\frac{2.40 - 2}{3 - 2} = 0.40',
     );
     expect(steps.describe(at(8), 8)).toBe(
-      "Collect the D's: D1 + 4D2 + D3 = 3(y3 − y1), the row of P2 in the system",
+      "Collect the D's: D₁ + 4D₂ + D₃ = 3(y3 − y1), the row of P₂ in the system",
     );
   });
 

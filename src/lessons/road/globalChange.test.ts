@@ -46,14 +46,14 @@ describe('the global scene: one village moved', () => {
 
   it('says so in the caption, with the far ends’ change', () => {
     expect(steps.describe(at(3), 3)).toBe(
-      'All 6 gradients change, even D0 and D5 at the far ends (by 4.952 and 1.321): the natural spline is global, where Bézier pieces and B-splines have local control',
+      'All 6 gradients change, even D₀ and D₅ at the far ends (by 4.952 and 1.321): the natural spline is global, where Bézier pieces and B-splines have local control',
     );
     expect(steps.describe(at(2), 2)).toBe(
-      'P2 moves 11.5 up, from (42, 10) to (42, 21.5), and the system is solved again',
+      'P₂ moves 11.5 up, from (42, 10) to (42, 21.5), and the system is solved again',
     );
   });
 
-  it('two villages: a straight road, both gradients move with P0', () => {
+  it('two villages: a straight road, both gradients move with P₀', () => {
     // D0 = D1 = P1 − P0 (2D0 + D1 = D0 + 2D1 = 3(P1 − P0)). The map is 1 wide, so P0 moves up
     // 1/8 = 0.125, kept to 0.13: both gradients become (1, −0.13), each changed by 0.13.
     const two = globalChange([

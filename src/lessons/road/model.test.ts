@@ -146,7 +146,7 @@ describe('the other roads', () => {
     expect(m.visible!.ticks!.length / 5).toBe(9);
   });
 
-  it('quadratic pieces: B0 = P0 + D0/2, then each Bi is B(i−1) reflected in Pi', () => {
+  it('quadratic pieces: B₀ = P₀ + D₀/2, then each Bi is B(i−1) reflected in Pi', () => {
     const m = derive(
       state({ villages: SIX_VILLAGES, road: 'quadratic', quadraticGradient: [30, 0] }),
     );
@@ -201,7 +201,7 @@ describe('the other roads', () => {
     );
   });
 
-  it('clamped: the end handles are the tips of D0/3 and Dm/3', () => {
+  it('clamped: the end handles are the tips of D₀/3 and Dm/3', () => {
     const m = derive(
       state({ villages: hill, road: 'clamped', startGradient: [3, 6], endGradient: [-3, 3] }),
     );
@@ -259,7 +259,7 @@ describe('the script (road)', () => {
     expect(stage({ ...lecture, step: 13 }).solveStep).toBe(12);
     expect(describeStep(lecture, 3)).toBe('Forward sweep: row 1 becomes [1 γ | Γ]');
     expect(describeStep(lecture, 8)).toBe(
-      'Back substitution: D5 fixed, the road grows back from Pm',
+      'Back substitution: D₅ fixed, the road grows back from Pm',
     );
   });
 
@@ -273,7 +273,7 @@ describe('the script (road)', () => {
     expect(describeStep(valley, 2)).toBe('Forward sweep: rows 0–55 become [1 γ | Γ]');
   });
 
-  it('every method has steps: the others build their pieces from P0 after their construction', () => {
+  it('every method has steps: the others build their pieces from P₀ after their construction', () => {
     const roman = state({ road: 'roman', step: 0 });
     expect(stepCount(roman)).toBe(5);
     expect(derive({ ...roman, step: 2 }).visible!.pieces).toHaveLength(2);
@@ -281,7 +281,7 @@ describe('the script (road)', () => {
     expect(derive({ ...roman, step: 5 }).visible!.marker).not.toBeNull();
     const quadratic = state({ road: 'quadratic', step: 0 });
     expect(stepCount(quadratic)).toBe(6);
-    expect(describeStep(quadratic, 1)).toMatch(/^One chosen gradient D0 at P0/);
+    expect(describeStep(quadratic, 1)).toMatch(/^One chosen gradient D₀ at P₀/);
     expect(derive({ ...quadratic, step: 1 }).visible!.pieces).toHaveLength(0);
     const ring = state({ road: 'ring', step: 0 });
     expect(stepCount(ring)).toBe(1 + 6);
