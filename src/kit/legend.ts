@@ -1,7 +1,7 @@
-import { drawPanelBox, labelWidth } from '../render/labels';
+import { boxesMeet, drawPanelBox, labelWidth } from '../render/labels';
 import type { Painter, StrokeStyle } from '../render/painter';
 
-// A figure's key: which line is which, in a box in its top left corner.
+// A figure's key: which line is which, in a box in a corner of the figure.
 
 export interface LegendEntry {
   text: string;
@@ -12,10 +12,13 @@ export interface LegendEntry {
 }
 
 /**
- * The key of a figure, boxed in its top left corner below `top` (pixels): a
- * line sample and a name per entry. Its box is claimed at once, so every
- * label of the frame keeps off it, and it is drawn over the figure with the
- * labels, so no curve runs through a name. Returns the y (pixels) below it.
+ * The key of a figure, boxed in a corner: a line sample and a name per entry.
+ * It is placed with the labels, when the figure's ink is all down, in the
+ * first of the top left (below `top`, pixels), top right, bottom left and
+ * bottom right corners where no curve, point or label runs under it; failing
+ * that, where it hides least (Runge's spike by the left edge, a curve that
+ * starts in the corner). It is drawn over the figure, so no curve runs
+ * through a name. Returns the y (pixels) below its top left place.
  */
 export function drawLegend(
   painter: Painter,
@@ -35,22 +38,35 @@ export function drawLegend(
   const width =
     nameAt - left + Math.max(...entries.map((e) => labelWidth(painter, e.text, { size }))) + pad;
   const height = entries.length * lineHeight + pad;
-  painter.labels.push({ text: 'legend', x: left, y: top, width, height, boxed: true });
   painter.placing(() => {
-    drawPanelBox(
-      painter,
-      { x: left, y: top, width, height },
-      theme.axis,
-      Math.max(1, theme.sizes.thin * 0.5),
-    );
+    const corners: [number, number][] = [
+      [left, top],
+      [view.width - left - width, top],
+      [left, view.height - left - height],
+      [view.width - left - width, view.height - left - height],
+    ];
+    const hides = ([x, y]: [number, number]) => {
+      const box = { x, y, width, height };
+      const { discs, strokes } = painter.ink.hits(box);
+      return (discs + painter.labels.filter((b) => boxesMeet(b, box)).length) * 1000 + strokes;
+    };
+    const costs = corners.map(hides);
+    const clear = costs.indexOf(0);
+    const [x, y] = corners[clear >= 0 ? clear : costs.indexOf(Math.min(...costs))];
+    painter.labels.push({ text: 'legend', x, y, width, height, boxed: true });
+    drawPanelBox(painter, { x, y, width, height }, theme.axis, Math.max(1, theme.sizes.thin * 0.5));
+    const shift = x - left;
     entries.forEach((entry, i) => {
-      const y = top + pad / 2 + (i + 0.5) * lineHeight;
+      const lineY = y + pad / 2 + (i + 0.5) * lineHeight;
       if (entry.line)
         painter.polyline(
-          [view.toWorld([left + pad, y]), view.toWorld([left + pad + sample, y])],
+          [
+            view.toWorld([shift + left + pad, lineY]),
+            view.toWorld([shift + left + pad + sample, lineY]),
+          ],
           entry.line,
         );
-      painter.screenLabel(entry.text, nameAt, y, {
+      painter.screenLabel(entry.text, shift + nameAt, lineY, {
         size,
         color: entry.color ?? theme.ink,
         inBox: true,

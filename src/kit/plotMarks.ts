@@ -1,22 +1,57 @@
+import type { Box } from '../render/ink';
+import { boxesMeet, drawScreenLabel, labelWidth } from '../render/labels';
 import type { Painter } from '../render/painter';
 
 // Marks a function plot writes beside its curves: the y-axis name and the
 // values at the cursor, boxed and kept off the curves they name.
 
 /**
- * A plot's y-axis name, boxed just right of the axis at the top, so neither
- * the axis nor a curve runs through it. Returns the y (pixels) below it.
+ * A plot's y-axis name, boxed along the top of the plot, placed when the
+ * figure's ink is all down: at the first place from the axis rightwards where
+ * no curve, point or label runs under its box (a basis that starts at 1, as
+ * B₀, H₀ and L₀ do, fills the corner by the axis). Failing that, where it
+ * hides least. Returns the y (pixels) below its row, for the values' column.
  */
-export function plotYName(painter: Painter, minX: number, maxY: number, name: string): number {
+export function plotYName(
+  painter: Painter,
+  bounds: { minX: number; maxX: number; maxY: number },
+  name: string,
+): number {
   const small = painter.theme.sizes.small;
-  const [x, y] = painter.view.toScreen([minX, maxY]);
-  painter.screenLabel(name, x + small * 0.8, y + small * 0.9, {
-    color: painter.theme.muted,
-    size: small * 1.1,
-    box: true,
+  const style = { color: painter.theme.muted, size: small * 1.1, box: true };
+  const [left, top] = painter.view.toScreen([bounds.minX, bounds.maxY]);
+  const [right] = painter.view.toScreen([bounds.maxX, bounds.maxY]);
+  const middle = top + small * 0.9;
+  painter.placing(() => {
+    const width = labelWidth(painter, name, style);
+    const pad = style.size * 0.35;
+    const boxAt = (x: number): Box => ({
+      x: x - pad,
+      y: middle - style.size * 0.65 - pad,
+      width: width + 2 * pad,
+      height: style.size * 1.3 + 2 * pad,
+    });
+    const first = left + small * 0.8;
+    const last = Math.min(right, painter.view.width) - width - small * 0.8;
+    const spots = Array.from({ length: NAME_SPOTS }, (_, i) =>
+      last <= first ? first : first + ((last - first) * i) / (NAME_SPOTS - 1),
+    );
+    const hides = (x: number) => {
+      const box = boxAt(x);
+      const { discs, strokes } = painter.ink.hits(box);
+      const labels = painter.labels.filter((b) => boxesMeet(b, box)).length;
+      return (discs + labels) * 1000 + strokes;
+    };
+    const costs = spots.map(hides);
+    const clear = costs.indexOf(0);
+    const x = spots[clear >= 0 ? clear : costs.indexOf(Math.min(...costs))];
+    drawScreenLabel(painter, name, x, middle, style);
   });
-  return y + small * 2.2;
+  return top + small * 2.2;
 }
+
+/** Places tried for a plot's y-axis name along its top, from the axis to the far side. */
+const NAME_SPOTS = 9;
 
 /**
  * The values at a plot's cursor, as a boxed column in the top corner away

@@ -83,11 +83,14 @@ export function splitSubscripts(text: string): { text: string; sub: boolean }[] 
 }
 
 /** Do a placed label and a box overlap by more than a pixel each way? */
-function overlaps(b: LabelBox, x: number, y: number, width: number, height: number): boolean {
+function overlaps(b: Box, x: number, y: number, width: number, height: number): boolean {
   const w = Math.min(b.x + b.width, x + width) - Math.max(b.x, x);
   const h = Math.min(b.y + b.height, y + height) - Math.max(b.y, y);
   return w > 1 && h > 1;
 }
+
+/** Do two screen boxes overlap (by more than a pixel each way)? */
+export const boxesMeet = (a: Box, b: Box): boolean => overlaps(a, b.x, b.y, b.width, b.height);
 
 /** The fonts and runs of a label, and its width in pixels. */
 function measure(painter: Painter, text: string, style: LabelStyle) {

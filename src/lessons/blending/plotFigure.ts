@@ -39,7 +39,7 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
       painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
-      plotYName(painter, bounds.minX, bounds.maxY, 'W(N, i, μ)');
+      plotYName(painter, bounds, 'W(N, i, μ)');
     }
 
     drawFamily(painter, m.bernstein, {

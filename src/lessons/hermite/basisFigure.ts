@@ -41,7 +41,7 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
     const mu = m.state.mu;
     const plotted = plottedBasis(m.shown);
     painter.plotAxes(BOUNDS, 0.1, valueStep(painter), 'μ', '');
-    const top = info.thumbnail ? 0 : plotYName(painter, BOUNDS.minX, BOUNDS.maxY, 'H_k(μ)');
+    const top = info.thumbnail ? 0 : plotYName(painter, BOUNDS, 'H_k(μ)');
     m.basis.curves.forEach((curve, k) => {
       if (k >= plotted) return;
       painter.polylineFlat(curve, {

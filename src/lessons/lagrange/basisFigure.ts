@@ -28,7 +28,7 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
     const count = all ? ts.length : shown.count('basis');
     const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
     painter.plotAxes(bounds, 0.1, yStep, 't', '');
-    const top = info.thumbnail ? 0 : plotYName(painter, bounds.minX, bounds.maxY, 'L_k(t)');
+    const top = info.thumbnail ? 0 : plotYName(painter, bounds, 'L_k(t)');
     m.basisPieces.forEach((pieces, k) => {
       if (!drawn(k)) return;
       const strong = info.hover === basisId(k);

@@ -81,7 +81,7 @@ function drawSpline(painter: Painter, m: LagrangeModel) {
   painter.ring(to, theme.sizes.handle, { color: theme.muted, width: theme.sizes.line });
 }
 
-/** What each line is, in the top left corner (screen pixels). */
+/** What each line is, in the clearest corner (below `top`, screen pixels, at the top left). */
 function legend(painter: Painter, m: LagrangeModel, top: number) {
   const theme = painter.theme;
   const dashed = (color: string) => ({
@@ -100,9 +100,9 @@ function legend(painter: Painter, m: LagrangeModel, top: number) {
         ? [{ text: 'natural cubic spline', line: dashed(painter.color(2)) }]
         : []),
       ...(m.comparison && m.shown.has('coupled')
-        ? [{ text: `spline with P${m.comparison.moved} moved`, line: dashed(theme.muted) }]
+        ? [{ text: `spline with P_{${m.comparison.moved}} moved`, line: dashed(theme.muted) }]
         : []),
     ],
-    { top, size: theme.sizes.label },
+    { top },
   );
 }

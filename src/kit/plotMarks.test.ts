@@ -1,0 +1,45 @@
+import { describe, expect, it } from 'vitest';
+import { Painter } from '../render/painter';
+import { SvgContext } from '../render/svgContext';
+import { makeTheme } from '../render/theme';
+import { Viewport } from '../render/viewport';
+import { plotYName } from './plotMarks';
+
+/**
+ * A 900 × 300 plot of [0, 1] × [0, 1.2] with its y name; `starts` draws a
+ * basis that starts at 1 by the axis and falls away, as B₀, H₀ and L₀ do.
+ */
+function yNameBox(starts: boolean) {
+  const view = new Viewport(900, 300);
+  view.resize(900, 300);
+  const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.2 };
+  view.fit(bounds, [90, 40], false);
+  const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+  painter.holdLabels();
+  const top = plotYName(painter, bounds, 'W(N, i, μ)');
+  if (starts)
+    painter.polyline(
+      Array.from({ length: 41 }, (_, i) => [i / 40, 1.2 * (1 - i / 40) ** 3] as [number, number]),
+      { width: 3 },
+    );
+  painter.placeLabels();
+  const box = painter.labels.find((b) => b.text === 'W(N, i, μ)')!;
+  return { box, top, painter };
+}
+
+describe('a plot’s y-axis name', () => {
+  it('sits by the axis at the top when nothing is drawn there', () => {
+    const { box, top } = yNameBox(false);
+    const [axis, head] = [90, 40];
+    expect(box.x - axis).toBeGreaterThan(0);
+    expect(box.x - axis).toBeLessThan(40);
+    expect(box.y).toBeGreaterThan(head - 10);
+    // The values' column starts below it.
+    expect(top).toBeGreaterThan(box.y + box.height - 5);
+  });
+  it('moves along the top, clear of a basis that starts at 1 by the axis', () => {
+    const { box, painter } = yNameBox(true);
+    expect(box.x).toBeGreaterThan(150);
+    expect(painter.ink.hits(box)).toEqual({ discs: 0, strokes: 0 });
+  });
+});
