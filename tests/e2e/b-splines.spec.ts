@@ -188,11 +188,11 @@ test('the notes: a key to their symbols, and beside the closed scene’s three w
   await page.keyboard.press('PageDown');
   await expectHash(page, 'k', (v) => v === '1');
   await expect(page.locator('.step-status')).toContainText(
-    'Closed: after P5 come P0, P1, P2 again (P6 = P0, P7 = P1, P8 = P2)',
+    'Closed: after P₅ come P₀, P₁, P₂ again (P₆ = P₀, P₇ = P₁, P₈ = P₂)',
   );
   await openScene(page, 'Knots and Cox–de Boor', 'knots');
   await expect(slip).toBeHidden();
-  await expect(page.locator('.step-status')).toContainText('The m + 1 = 7 control points P0 … P6');
+  await expect(page.locator('.step-status')).toContainText('The m + 1 = 7 control points P₀ … P₆');
 });
 
 test('the uniform cubic bases, derived row by row on the equally spaced knots: their values are the triangle’s', async ({

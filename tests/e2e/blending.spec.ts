@@ -142,10 +142,10 @@ test('the Compare scenes start from the Bézier picture, and the mirror steps th
   await page.getByRole('button', { name: 'Compare: Hermite' }).click();
   const status = page.locator('.step-status');
   await expect(status).toHaveText(
-    'Step 0/7: The control points P0 … P3, their Bézier curve and Bernstein weights, to compare with',
+    'Step 0/7: The control points P₀ … P₃, their Bézier curve and Bernstein weights, to compare with',
   );
   await page.keyboard.press('PageDown');
-  await expect(status).toHaveText("Step 1/7: Hermite's data, first the end points: P0 and P3");
+  await expect(status).toHaveText("Step 1/7: Hermite's data, first the end points: P₀ and P₃");
   await page.goto('./#/blending?step=0');
   await page.getByLabel('Bernstein mirrored: μ → 1 − μ').check();
   await expectHash(page, 'b', (v) => v === 'mirror');
@@ -171,13 +171,13 @@ test('the script steps from the points through each weight to the curve, then op
 }) => {
   await page.goto('./#/blending?step=0');
   const status = page.locator('.step-status');
-  await expect(status).toHaveText('Step 0/6: The control points P0 … P3 and their polygon');
+  await expect(status).toHaveText('Step 0/6: The control points P₀ … P₃ and their polygon');
   let previous = await pixels(page, 'blending');
   const captions = [
-    'The weight of P0: W(3, 0, μ), largest at μ = 0',
-    'The weight of P1: W(3, 1, μ), largest at μ = 1/3',
-    'The weight of P2: W(3, 2, μ), largest at μ = 2/3',
-    'The weight of P3: W(3, 3, μ), largest at μ = 1',
+    'The weight of P₀: W(3, 0, μ), largest at μ = 0',
+    'The weight of P₁: W(3, 1, μ), largest at μ = 1/3',
+    'The weight of P₂: W(3, 2, μ), largest at μ = 2/3',
+    'The weight of P₃: W(3, 3, μ), largest at μ = 1',
   ];
   for (const [k, caption] of captions.entries()) {
     await page.keyboard.press('PageDown');
@@ -200,7 +200,7 @@ test('the script steps from the points through each weight to the curve, then op
   await expectHash(page, 'scene', (v) => v === 'linear');
   await expectHash(page, 'step', (v) => v === '0');
   await expect(page.locator('.caption-step')).toHaveText(
-    'The control points P0 … P1 and their polygon',
+    'The control points P₀ … P₁ and their polygon',
   );
 });
 

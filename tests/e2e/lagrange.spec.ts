@@ -107,18 +107,18 @@ test('Runge vs a spline starts at the points, shows the polynomial at once, and 
   await page.getByRole('button', { name: 'Runge vs a cubic spline' }).click();
   await expectHash(page, 'spline', (v) => v === '1');
   const status = page.locator('.step-status');
-  await expect(status).toHaveText('Step 0/13: The 11 points P0 … P10 to pass through, in order');
+  await expect(status).toHaveText('Step 0/13: The 11 points P₀ … P₁₀ to pass through, in order');
   let previous = await pixels(page);
   await page.keyboard.press('PageDown');
   await expect(status).toHaveText(/^Step 1\/13: The polynomial of degree 10 through them/);
   await expect.poll(() => pixels(page)).not.toBe(previous);
   previous = await pixels(page);
   await page.keyboard.press('PageDown');
-  await expect(status).toHaveText(/^Step 2\/13: The natural cubic spline's gradients D0 … D10/);
+  await expect(status).toHaveText(/^Step 2\/13: The natural cubic spline's gradients D₀ … D₁₀/);
   await expect.poll(() => pixels(page)).not.toBe(previous);
   await page.keyboard.press('End');
   await expect(status).toHaveText(
-    'Step 13/13: Move P4 up by 1 (dashed): all 11 gradients change, so the pieces are coupled',
+    'Step 13/13: Move P₄ up by 1 (dashed): all 11 gradients change, so the pieces are coupled',
   );
 });
 
@@ -159,12 +159,12 @@ test('the script reveals each Lₖ, then the polynomial, then opens the next sce
   page,
 }) => {
   const status = page.locator('.step-status');
-  await expect(status).toHaveText('Step 0/6: The 5 points P0 … P4 to pass through, in order');
+  await expect(status).toHaveText('Step 0/6: The 5 points P₀ … P₄ to pass through, in order');
   let previous = await pixels(page);
   for (let k = 0; k <= 4; k++) {
     await page.keyboard.press('PageDown');
     await expect(status).toHaveText(
-      `Step ${k + 1}/6: L${k}(t): 1 at its own t${k}, 0 at every other tₖ`,
+      `Step ${k + 1}/6: L${'₀₁₂₃₄'[k]}(t): 1 at its own t${'₀₁₂₃₄'[k]}, 0 at every other tₖ`,
     );
     await expect.poll(() => pixels(page)).not.toBe(previous);
     previous = await pixels(page);

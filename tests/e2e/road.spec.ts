@@ -129,7 +129,7 @@ test('the script: the villages, the system, one row swept per step, one D fixed 
   const n = (await villages(page)).length;
   const status = page.locator('.step-status');
   await expect(status).toHaveText(
-    `Step 0/${2 * n + 1}: The ${n} villages P0 … P${n - 1}, in the order the road visits them`,
+    `Step 0/${2 * n + 1}: The ${n} villages P₀ … P${[...String(n - 1)].map((d) => '₀₁₂₃₄₅₆₇₈₉'[Number(d)]).join('')}, in the order the road visits them`,
   );
   await page.keyboard.press('PageDown');
   await expectHash(page, 'step', (v) => v === '1');
@@ -215,7 +215,7 @@ test('500 villages load from a short enough link and a drag completes', async ({
   await page.keyboard.press('End');
   await expectHash(page, 'step', (v) => v === '19');
   await expect(page.locator('.step-status')).toHaveText(
-    /^Step 19\/19: Back substitution reaches D0/,
+    /^Step 19\/19: Back substitution reaches D₀/,
   );
   const query = new URL(page.url()).hash;
   expect(query.length).toBeLessThan(20_000);

@@ -137,7 +137,7 @@ describe('the script (Lagrange)', () => {
       curve: true,
       pieces: 2,
     });
-    expect(describeStep(state(), 2)).toBe('L₁(t): 1 at its own t1, 0 at every other tₖ');
+    expect(describeStep(state(), 2)).toBe('L₁(t): 1 at its own t₁, 0 at every other tₖ');
     // Sixteen points and the spline: 3 + 15 pieces, still at most 20 presses.
     const many = Array.from({ length: 16 }, (_, k) => [k, k % 3]);
     expect(stepCount(state({ points: many, spline: true }))).toBe(18);

@@ -45,7 +45,7 @@ describe('the named steps of Lagrange interpolation', () => {
 
   it('each Lₖ with its value at t, worked by the product formula', () => {
     // L0(2/5) = (2/5 − 1/4)(2/5 − 1/2)(2/5 − 3/4)(2/5 − 1) / ((−1/4)(−1/2)(−3/4)(−1)) = −0.0336.
-    expect(caption(state({ step: 1 }))).toBe('L₀(t): 1 at its own t0, 0 at every other tₖ');
+    expect(caption(state({ step: 1 }))).toBe('L₀(t): 1 at its own t₀, 0 at every other tₖ');
     expect(formula(state({ step: 1 }))).toBe(
       'L_{0}(t) = \\prod_{j \\ne 0} \\frac{t - t_j}{t_{0} - t_j},\\qquad L_{0}(0.40) = -0.0336',
     );
@@ -53,7 +53,7 @@ describe('the named steps of Lagrange interpolation', () => {
     expect(formula(state({ step: 3 }))).toMatch(/L_\{2\}\(0\.40\) = 0\.8064$/);
     // L3(2/5) = 0.0036 / (−0.0234375) = −0.1536.
     expect(formula(state({ step: 4 }))).toMatch(/L_\{3\}\(0\.40\) = -0\.1536$/);
-    expect(caption(state({ step: 5 }))).toBe('L₄(t): 1 at its own t4, 0 at every other tₖ');
+    expect(caption(state({ step: 5 }))).toBe('L₄(t): 1 at its own t₄, 0 at every other tₖ');
   });
 
   it('the polynomial: P(2/5) = Σ Lₖ(2/5) Pₖ, worked by hand', () => {

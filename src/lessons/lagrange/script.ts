@@ -1,5 +1,5 @@
 import { repeat, script, step } from '../../kit/script';
-import { words } from '../../kit/format';
+import { sub, words } from '../../kit/format';
 import { texNumber, texPoint } from '../../render/formula';
 import type { LagrangeModel } from './model';
 import { type LagrangeState, degree } from './state';
@@ -28,7 +28,7 @@ export const interpolation = script<LagrangeState, LagrangeModel, Reveal>(
   repeat(
     'basis',
     (state) => degree(state) + 1,
-    ({ index }) => `L${index - 1}(t): 1 at its own t${index - 1}, 0 at every other tₖ`,
+    ({ index }) => `L${index - 1}(t): 1 at its own t${sub(index - 1)}, 0 at every other tₖ`,
     ({ state, model, index }) => {
       const k = index - 1;
       const w = texNumber(model.weights[k], 4);
