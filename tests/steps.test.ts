@@ -9,6 +9,8 @@
  * - no label's letters crossed by a stroke or a disc, drawn before it or
  *   after (the painter's own record of its ink), and no label on another;
  * - every handle of the step inside its figure;
+ * - numbers to sensible digits on the figures and in the caption: no
+ *   "1.000000000000", no rounding residue "2.69×10⁻¹⁶";
  * - every press changes what the room sees besides the caption: a figure or
  *   the step's formula.
  */
@@ -26,6 +28,15 @@ const ROW = { width: 1900, height: 800 };
 /** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
 const MIN_TEXT = 28;
 const MIN_POINT_LABEL = 36;
+
+/**
+ * A number no lecturer reads out: more than six decimals ("1.000000000000",
+ * "0.9411764706") or a rounding residue in powers of ten ("2.69×10⁻¹⁶"). Null
+ * when the text has none.
+ */
+function unreadableNumber(text: string): string | null {
+  return /\d\.\d{7,}|×\s?10[⁻-]/.exec(text)?.[0] ?? null;
+}
 
 interface Drawn {
   svg: string;
@@ -59,8 +70,13 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
     const drawing = context.toSvg(width, height);
     svg += drawing;
     const at = `${figure.id}:`;
-    for (const [, size, text] of drawing.matchAll(/<text[^>]*font-size="([\d.]+)"[^>]*>([^<]*)</g))
+    for (const [, size, text] of drawing.matchAll(
+      /<text[^>]*font-size="([\d.]+)"[^>]*>([^<]*)</g,
+    )) {
       if (Number(size) < MIN_TEXT - 0.5) problems.push(`${at} “${text}” at ${size} px`);
+      const digits = unreadableNumber(text);
+      if (digits) problems.push(`${at} “${text}” writes ${digits}`);
+    }
     const labels = painter.labels;
     for (const label of labels) {
       if (label.boxed) continue;
@@ -106,8 +122,11 @@ describe('every step of every scene, as the room sees it', () => {
           const { svg, problems } = drawStep(lesson, state);
           for (const problem of problems) found.push(`${scene.id} step ${k}: ${problem}`);
           // The caption names points as the figure labels them: P₁, not P1.
-          const plain = steps.describe(state, k).match(/(?<![A-Za-z])[PDBQLH]\d/);
+          const caption = steps.describe(state, k);
+          const plain = caption.match(/(?<![A-Za-z])[PDBQLH]\d/);
           if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
+          const digits = unreadableNumber(caption);
+          if (digits) found.push(`${scene.id} step ${k}: the caption writes ${digits}`);
           // What the room sees besides the caption: the figures and the step's formula.
           const seen = `${svg}\n${steps.formula?.(lesson.derive(state), state) ?? ''}`;
           if (before !== null && seen === before)

@@ -1,3 +1,4 @@
+import { trimmed } from '../../kit/format';
 import type { KitFigure } from '../../kit/lesson';
 import type { SurfaceModel } from './model';
 import type { SurfaceState } from './state';
@@ -58,9 +59,9 @@ export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
       if (shown !== 'columns') text(fu[i].toFixed(3), 4.65, 3.5 - i, painter.color(0), true);
       if (shown !== 'rows') text(fv[i].toFixed(3), i + 0.5, -0.35, painter.color(1), true);
     }
-    if (shown !== 'columns') text('fₘ(u)', 4.65, 4.35, painter.color(0));
-    if (shown !== 'rows') text('fₙ(v)', -0.3, -0.35, painter.color(1));
+    if (shown !== 'columns') text('f_m(u)', 4.65, 4.35, painter.color(0));
+    if (shown !== 'rows') text('f_n(v)', -0.3, -0.35, painter.color(1));
     text('m∖n', -0.3, 4.35, theme.muted);
-    if (shown === 'products') text(`Σ = ${m.weightSum.toFixed(12)}`, 2, -1.05, theme.ink, true);
+    if (shown === 'products') text(`Σ = ${trimmed(m.weightSum, 12)}`, 2, -1.05, theme.ink, true);
   },
 };
