@@ -43,3 +43,23 @@ describe('a plot’s y-axis name', () => {
     expect(painter.ink.hits(box)).toEqual({ discs: 0, strokes: 0 });
   });
 });
+
+describe('a plot’s y-axis name with the labels hidden (presenter key A)', () => {
+  it('is not drawn', () => {
+    const view = new Viewport(900, 300);
+    view.resize(900, 300);
+    const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.2 };
+    view.fit(bounds, [90, 40], false);
+    const svg = new SvgContext();
+    const painter = new Painter(svg, view, makeTheme(false, false), {
+      curve: true,
+      labels: false,
+      numbers: true,
+    });
+    painter.holdLabels();
+    plotYName(painter, bounds, 'W(N, i, μ)');
+    painter.placeLabels();
+    expect(painter.labels).toEqual([]);
+    expect(svg.elements.join('')).not.toContain('W(N');
+  });
+});

@@ -22,6 +22,7 @@ export function plotYName(
   const [left, top] = painter.view.toScreen([bounds.minX, bounds.maxY]);
   const [right] = painter.view.toScreen([bounds.maxX, bounds.maxY]);
   const middle = top + small * 0.9;
+  if (painter.labelHidden(name)) return top + small * 2.2;
   painter.placing(() => {
     const width = labelWidth(painter, name, style);
     const pad = style.size * 0.35;

@@ -44,6 +44,11 @@ export interface Theme {
   handleStroke: string;
   focus: string;
   labelHalo: string;
+  /**
+   * The opacity of a region's fill (a convex hull): stronger on the
+   * projector, whose washed-out picture loses a pale tint.
+   */
+  tint: number;
   /** Colours for series: construction levels, basis functions, methods. */
   palette: readonly string[];
   fontFamily: string;
@@ -129,6 +134,7 @@ export function makeTheme(dark: boolean, projector: boolean): Theme {
       handleStroke: projector ? '#ffffff' : '#e8eaf2',
       focus: '#FFD23F',
       labelHalo: projector ? '#000000' : '#12151f',
+      tint: projector ? 0.3 : 0.16,
       palette: projector ? DARK_STRONG : DARK,
       fontFamily: FONT,
       sizes,
@@ -143,13 +149,14 @@ export function makeTheme(dark: boolean, projector: boolean): Theme {
     grid: projector ? '#d8d8d8' : '#eceef3',
     axis: projector ? '#555555' : '#a3a9b8',
     curve: projector ? '#000000' : '#1b1f2b',
-    curveFaint: projector ? '#999999' : '#c3c8d4',
+    curveFaint: projector ? '#7a7a7a' : '#c3c8d4',
     polygon: projector ? '#444444' : '#8a91a3',
     accent: projector ? '#C04000' : '#D55E00',
     handleFill: '#ffffff',
     handleStroke: projector ? '#000000' : '#1b1f2b',
     focus: '#0072B2',
     labelHalo: '#ffffff',
+    tint: projector ? 0.35 : 0.13,
     palette: projector ? LIGHT_STRONG : LIGHT,
     fontFamily: FONT,
     sizes,

@@ -23,7 +23,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
     const highlighted = highlightedIndex(info.hover);
 
     if (compared && drawn.hull)
-      painter.polygon(compared.hull, theme.muted, 0.12, {
+      painter.polygon(compared.hull, theme.muted, theme.tint, {
         color: theme.muted,
         width: theme.sizes.thin,
       });

@@ -10,7 +10,7 @@ export function drawHull(painter: Painter, m: ModelOf<'hull'>, info: DrawInfo): 
   const color = painter.color(2);
   if (shown.has('hull')) {
     if (corners.length >= 3) {
-      painter.polygon(corners, color, 0.14, { color, width: theme.sizes.line });
+      painter.polygon(corners, color, theme.tint, { color, width: theme.sizes.line });
     } else if (corners.length === 2) {
       painter.segment(corners[0], corners[1], { color, width: theme.sizes.line * 3, alpha: 0.4 });
     }
