@@ -16,9 +16,17 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
   title: 'The curve in space with the Frenet frame T, N, B and the osculating plane',
   kind: 'space',
   camera: { yaw: -55, pitch: 35, perspective: false },
-  // The curve alone: the camera fits a sphere round it, which leaves room for
-  // the control points near it, and a tighter fit shows the frame larger.
-  bounds: (m) => boundsOf(m.space.curve),
+  // The curve and its osculating circle at t, shown or not yet: the camera
+  // fits a sphere round them once, so the circle a later step shows is in
+  // view (the view is not fitted again as the clicker steps), with room for
+  // the control points near the curve. A circle larger than twice the curve
+  // (near an inflection, κ → 0) is left to run off the view rather than
+  // shrink the curve to a dot.
+  bounds: (m) => {
+    const { curve, circle, size } = m.space;
+    const small = circle.length > 0 && boundsSize(boundsOf(circle)) <= 2 * size;
+    return boundsOf(small ? [...curve, ...circle] : curve);
+  },
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     const theme = painter.theme;
@@ -184,3 +192,13 @@ function drawFence(scene: SpaceScene, painter: Painter, m: CurvatureModel): void
       dx: 8,
     });
 }
+
+/** The larger side of a box. */
+const boundsSize = (b: {
+  minX: number;
+  maxX: number;
+  minY: number;
+  maxY: number;
+  minZ?: number;
+  maxZ?: number;
+}) => Math.max(b.maxX - b.minX, b.maxY - b.minY, (b.maxZ ?? 0) - (b.minZ ?? 0));
