@@ -9,7 +9,8 @@
  * - no label's letters crossed by a stroke or a disc, drawn before it or
  *   after (the painter's own record of its ink), and no label on another;
  * - every handle of the step inside its figure;
- * - numbers to sensible digits on the figures and in the caption: no
+ * - numbers to sensible digits on the figures, in the caption and in the
+ *   step's formula: no
  *   "1.000000000000", no rounding residue "2.69×10⁻¹⁶";
  * - every press changes what the room sees besides the caption: a figure or
  *   the step's formula.
@@ -20,6 +21,7 @@ import { normalizeState } from '../src/app/lessonState';
 import { lessons } from '../src/app/registry';
 import { defaultsOf } from '../src/app/urlState';
 import { drawHeadless } from '../src/app/headless';
+import { filled } from '../src/render/formula';
 import { glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
 
@@ -127,6 +129,10 @@ describe('every step of every scene, as the room sees it', () => {
           if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
           const digits = unreadableNumber(caption);
           if (digits) found.push(`${scene.id} step ${k}: the caption writes ${digits}`);
+          const formula = steps.formula?.(lesson.derive(state), state);
+          const tex = typeof formula === 'string' ? formula : formula ? filled(formula) : '';
+          const texDigits = unreadableNumber(tex.replace(/\\times\s*10\^\{?[-−]/g, '×10⁻'));
+          if (texDigits) found.push(`${scene.id} step ${k}: the formula writes ${texDigits}`);
           // What the room sees besides the caption: the figures and the step's formula.
           const seen = `${svg}\n${steps.formula?.(lesson.derive(state), state) ?? ''}`;
           if (before !== null && seen === before)

@@ -4,7 +4,7 @@ import {
   fixed,
   sub,
   subscriptNames,
-  texExponent,
+  texResidue,
   texPoint,
   texT,
   trimmed,
@@ -31,8 +31,11 @@ describe('format', () => {
 
   it('writes TeX points, tiny numbers and filled live formulas', () => {
     expect(texPoint([1, -0.0001], 3)).toBe('(1.000,\\ 0.000)');
-    expect(texExponent(8.9e-16)).toBe('8.9\\times 10^{-16}');
-    expect(texExponent(0)).toBe('0');
+    // A rounding residue reads 0 (#19); a true difference keeps four decimals.
+    expect(texResidue(8.9e-16)).toBe('0');
+    expect(texResidue(-2.69e-16)).toBe('0');
+    expect(texResidue(0)).toBe('0');
+    expect(texResidue(0.00125)).toBe('0.0013');
     expect(filled({ shape: 'x = \\val + \\val', values: ['1.00', '2.50'] })).toBe(
       'x = 1.00 + 2.50',
     );

@@ -45,9 +45,12 @@ export const fixed = (v: number, digits: number) => texNumber(v, digits).replace
 /** A parameter (t, μ) as typed: up to four decimals, trailing zeros dropped. */
 export const texT = (t: number) => trimmed(t, 4);
 
-/** A tiny number in TeX, 8.9e-16 as 8.9 × 10⁻¹⁶ (0 as 0): a residual or a rounding error. */
-export const texExponent = (v: number) => {
-  if (v === 0) return '0';
-  const [mantissa, exponent] = v.toExponential(1).split('e');
-  return `${mantissa}\\times 10^{${Number(exponent)}}`;
-};
+/** Below this a difference that is zero in exact arithmetic is a rounding residue. */
+export const RESIDUE = 1e-9;
+
+/**
+ * A difference that is zero in exact arithmetic, in TeX: a rounding residue
+ * (8.9e-16) is written 0, as a lecturer reads it out; a true difference is
+ * written to four decimals.
+ */
+export const texResidue = (v: number) => (Math.abs(v) < RESIDUE ? '0' : texNumber(v, 4));

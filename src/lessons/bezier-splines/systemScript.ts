@@ -1,4 +1,4 @@
-import { sub, texExponent } from '../../kit/format';
+import { sub, texResidue } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import { controlPointName, type Point, type SplineEquation } from '../../math';
 import { texNumber, texPoint } from '../../render/formula';
@@ -159,13 +159,13 @@ export const system = script<State, Model, SystemReveal>(
         inner.slice(3 * r, 3 * r + 3).join(',\\quad '),
       );
       return aligned(
-        [...lines, `\\max|A c - r| = ${texExponent(model.system.residual)}`].map((l) => `&${l}`),
+        [...lines, `\\max|A c - r| = ${texResidue(model.system.residual)}`].map((l) => `&${l}`),
       );
     },
   ),
   step(
     'sameAsNatural',
     'The same control points as the natural cubic spline of the road lesson',
-    ({ model }) => `\\max_j |c_j - c_j^{\\text{natural}}| = ${texExponent(model.difference)}`,
+    ({ model }) => `\\max_j |c_j - c_j^{\\text{natural}}| = ${texResidue(model.difference)}`,
   ),
 );

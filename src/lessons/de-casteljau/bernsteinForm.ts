@@ -1,4 +1,4 @@
-import { sub, texExponent, texT, words } from '../../kit/format';
+import { sub, texResidue, texT, words } from '../../kit/format';
 import { repeat, script, step } from '../../kit/script';
 import { binomial } from '../../math';
 import type { DeCasteljauModel } from './model';
@@ -90,6 +90,6 @@ export const bernsteinForm = script<DeCasteljauState, DeCasteljauModel, Bernstei
     ({ state, model: m }) =>
       `The construction's P${sub(m.n)},₀ is the same point: P(${words(state.t)}) on the curve`,
     ({ model: m }) =>
-      `P_{${m.n},0} = ${exactPoint(m.levels[m.n][0])}\\ \\text{(construction)},\\quad \\sum_{i=0}^{${m.n}} W(${m.n},i,t)\\,P_i = ${exactPoint(m.blends[m.n][0])},\\quad \\text{apart by } ${texExponent(m.blendGap)}`,
+      `P_{${m.n},0} = ${exactPoint(m.levels[m.n][0])}\\ \\text{(construction)},\\quad \\sum_{i=0}^{${m.n}} W(${m.n},i,t)\\,P_i = ${exactPoint(m.blends[m.n][0])},\\quad \\text{apart by } ${texResidue(m.blendGap)}`,
   ),
 );

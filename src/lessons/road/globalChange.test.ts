@@ -78,7 +78,7 @@ describe('the global scene: an affine map', () => {
     expect(mapped.map.matrix[1][0]).toBeCloseTo(0.375, 14);
     expect(mapped.gap).toBeLessThan(1e-12);
     expect(mapped.samples).toBe(101);
-    expect(steps.formula!(derive(at(5)), at(5))).toMatch(/= \d\.\d\\times 10\^\{-1[2-6]\}$/);
+    expect(steps.formula!(derive(at(5)), at(5))).toMatch(/= 0$/);
     expect(steps.describe(at(5), 5)).toBe(
       'The natural road through the mapped villages is the mapped road: at 101 values of p̄ the two are 0.000 apart, rounding aside',
     );

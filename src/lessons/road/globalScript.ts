@@ -1,4 +1,4 @@
-import { filled, fixed, pointWords, texExponent, texNumber, words } from '../../kit/format';
+import { filled, fixed, pointWords, texResidue, texNumber, words } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import type { StepAt } from '../../kit/script';
 import { type FormulaParts, joined, live, livePoint, tex } from '../../render/formulaParts';
@@ -111,7 +111,7 @@ export const globalScript = script<RoadState, RoadModel, Reveal>(
     },
     formula(
       ({ mapped }) =>
-        tex`\max_{\bar p}\ \bigl|\,S(A P_i + t)(\bar p) - \bigl(A\,S(P_i)(\bar p) + t\bigr)\bigr| = ${texExponent(mapped.gap)}`,
+        tex`\max_{\bar p}\ \bigl|\,S(A P_i + t)(\bar p) - \bigl(A\,S(P_i)(\bar p) + t\bigr)\bigr| = ${texResidue(mapped.gap)}`,
     ),
   ),
 );

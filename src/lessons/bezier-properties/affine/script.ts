@@ -1,4 +1,4 @@
-import { texExponent, texNumber, words } from '../../../kit/format';
+import { texResidue, words } from '../../../kit/format';
 import { script, step } from '../../../kit/script';
 import { pointsCaption } from '../captions';
 import type { ModelOf } from '../model';
@@ -17,7 +17,7 @@ const MAP_NAMES: Record<MapKind, string> = {
 /** How far apart the two images are, once both are drawn (none without images). */
 const deviation = ({ model: { images } }: { model: ModelOf<'affine'> }) =>
   images.ok
-    ? `\\max_t |\\text{map of } P(t) - \\text{curve of mapped points}| = ${images.distance < 1e-9 ? texExponent(images.distance) : texNumber(images.distance, 4)}`
+    ? `\\max_t |\\text{map of } P(t) - \\text{curve of mapped points}| = ${texResidue(images.distance)}`
     : null;
 
 /** Property 7: mapping the points maps the curve, for affine maps and not for perspective. */

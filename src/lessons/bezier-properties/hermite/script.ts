@@ -1,4 +1,4 @@
-import { texExponent, texPoint, texT, words } from '../../../kit/format';
+import { texResidue, texPoint, texT, words } from '../../../kit/format';
 import { script, step } from '../../../kit/script';
 import { pointsCaption } from '../captions';
 import type { ModelOf } from '../model';
@@ -19,7 +19,7 @@ export const hermiteScript = script<PropertiesState, ModelOf<'hermite'>, Hermite
   step(
     'hermite',
     'The Hermite curve of that data, dashed: the same curve',
-    ({ model }) => `\\max_t |\\text{Bézier} - \\text{Hermite}| = ${texExponent(model.deviation)}`,
+    ({ model }) => `\\max_t |\\text{Bézier} - \\text{Hermite}| = ${texResidue(model.deviation)}`,
   ),
   step(
     'point',
