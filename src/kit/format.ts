@@ -15,6 +15,9 @@ const SUBSCRIPTS = '₀₁₂₃₄₅₆₇₈₉';
 /** 12 → "₁₂": an index as Unicode subscripts, for captions that are plain text. */
 export const sub = (i: number) => [...String(i)].map((d) => SUBSCRIPTS[Number(d)]).join('');
 
+/** A point or vector letter, not inside a word, and its index digits. */
+const NAME_INDEX = /(?<![A-Za-z])([PDBQLH])(\d+)(?![\d.]\d)/g;
+
 /**
  * A caption's point and vector names with their indices as subscripts, as the
  * figure labels them: "P0 … P4" reads "P₀ … P₄", "H0P1" reads "H₀P₁". The
@@ -23,9 +26,6 @@ export const sub = (i: number) => [...String(i)].map((d) => SUBSCRIPTS[Number(d)
  */
 export const subscriptNames = (text: string) =>
   text.replace(NAME_INDEX, (_, letter: string, index: string) => letter + sub(Number(index)));
-
-/** A point or vector letter, not inside a word, and its index digits. */
-export const NAME_INDEX = /(?<![A-Za-z])([PDBQLH])(\d+)(?![\d.]\d)/g;
 
 /**
  * A number to at most `digits` decimals, trailing zeros dropped: 0.5, not

@@ -1,4 +1,4 @@
-import { boxesMeet, drawPanelBox, labelWidth } from '../render/labels';
+import { clearestPlace, drawPanelBox, labelWidth } from '../render/labels';
 import type { Painter, StrokeStyle } from '../render/painter';
 
 // A figure's key: which line is which, in a box in a corner of the figure.
@@ -39,20 +39,13 @@ export function drawLegend(
     nameAt - left + Math.max(...entries.map((e) => labelWidth(painter, e.text, { size }))) + pad;
   const height = entries.length * lineHeight + pad;
   painter.placing(() => {
-    const corners: [number, number][] = [
+    const corners = [
       [left, top],
       [view.width - left - width, top],
       [left, view.height - left - height],
       [view.width - left - width, view.height - left - height],
-    ];
-    const hides = ([x, y]: [number, number]) => {
-      const box = { x, y, width, height };
-      const { discs, strokes } = painter.ink.hits(box);
-      return (discs + painter.labels.filter((b) => boxesMeet(b, box)).length) * 1000 + strokes;
-    };
-    const costs = corners.map(hides);
-    const clear = costs.indexOf(0);
-    const [x, y] = corners[clear >= 0 ? clear : costs.indexOf(Math.min(...costs))];
+    ].map(([x, y]) => ({ x, y, width, height }));
+    const { x, y } = corners[clearestPlace(painter, corners)];
     painter.labels.push({ text: 'legend', x, y, width, height, boxed: true });
     drawPanelBox(painter, { x, y, width, height }, theme.axis, Math.max(1, theme.sizes.thin * 0.5));
     const shift = x - left;

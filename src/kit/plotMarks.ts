@@ -1,5 +1,5 @@
 import type { Box } from '../render/ink';
-import { boxesMeet, drawScreenLabel, labelWidth } from '../render/labels';
+import { clearestPlace, drawScreenLabel, labelWidth } from '../render/labels';
 import type { Painter } from '../render/painter';
 
 // Marks a function plot writes beside its curves: the y-axis name and the
@@ -37,15 +37,7 @@ export function plotYName(
     const spots = Array.from({ length: NAME_SPOTS }, (_, i) =>
       last <= first ? first : first + ((last - first) * i) / (NAME_SPOTS - 1),
     );
-    const hides = (x: number) => {
-      const box = boxAt(x);
-      const { discs, strokes } = painter.ink.hits(box);
-      const labels = painter.labels.filter((b) => boxesMeet(b, box)).length;
-      return (discs + labels) * 1000 + strokes;
-    };
-    const costs = spots.map(hides);
-    const clear = costs.indexOf(0);
-    const x = spots[clear >= 0 ? clear : costs.indexOf(Math.min(...costs))];
+    const x = spots[clearestPlace(painter, spots.map(boxAt))];
     drawScreenLabel(painter, name, x, middle, style);
   });
   return top + small * 2.2;

@@ -90,7 +90,37 @@ function overlaps(b: Box, x: number, y: number, width: number, height: number): 
 }
 
 /** Do two screen boxes overlap (by more than a pixel each way)? */
-export const boxesMeet = (a: Box, b: Box): boolean => overlaps(a, b.x, b.y, b.width, b.height);
+const boxesMeet = (a: Box, b: Box): boolean => overlaps(a, b.x, b.y, b.width, b.height);
+
+/** How many labels placed so far lie under the box. */
+const labelsUnder = (painter: Painter, box: Box) =>
+  painter.labels.filter((b) => boxesMeet(b, box)).length;
+
+/**
+ * Of the places a box may go over the figure (a note, a key, a plot's name),
+ * the first under which no stroke, point or label lies; -1 if none is clear.
+ */
+export function firstClear(painter: Painter, boxes: readonly Box[]): number {
+  return boxes.findIndex((box) => labelsUnder(painter, box) === 0 && !painter.ink.crosses(box));
+}
+
+/**
+ * The place that hides least (-1 if none): a point or a label hidden is worse
+ * than any number of strokes crossed (the curve shows round it).
+ */
+export function leastHidden(painter: Painter, boxes: readonly Box[]): number {
+  const hidden = boxes.map((box) => {
+    const { discs, strokes } = painter.ink.hits(box);
+    return (discs + labelsUnder(painter, box)) * 1000 + strokes;
+  });
+  return hidden.indexOf(Math.min(...hidden));
+}
+
+/** The first clear place, else the one that hides least. */
+export const clearestPlace = (painter: Painter, boxes: readonly Box[]): number => {
+  const clear = firstClear(painter, boxes);
+  return clear >= 0 ? clear : leastHidden(painter, boxes);
+};
 
 /** The fonts and runs of a label, and its width in pixels. */
 function measure(painter: Painter, text: string, style: LabelStyle) {
@@ -436,33 +466,32 @@ export function drawNote(
     return style.top + widest.height + pad;
   }
   painter.placing(() => {
-    const clash = (box: Box) =>
-      painter.labels.filter((b) => overlaps(b, box.x, box.y, box.width, box.height)).length;
     // Widest first; a narrower wrap only when no corner of the wider one is clear.
     const tried: { note: Wrapped; box: Box }[] = [];
     for (const share of NOTE_SHARES) {
       const note = share === NOTE_SHARES[0] ? widest : wrapAt(share);
       if (tried.length && note.height > figureHeight - 2 * pad) break;
       const [right, foot] = [figureWidth - note.width - pad, figureHeight - note.height - pad];
-      for (const [x, y] of [
+      const corners = [
         [pad, pad],
         [right, pad],
         [pad, foot],
         [right, foot],
-      ]) {
-        if (x < 0 || y < 0) continue;
-        const box = { x, y, width: note.width, height: note.height };
-        if (clash(box) === 0 && !painter.ink.crosses(box)) return draw(note, x, y);
-        tried.push({ note, box });
-      }
+      ]
+        .filter(([x, y]) => x >= 0 && y >= 0)
+        .map(([x, y]) => ({ x, y, width: note.width, height: note.height }));
+      const clear = firstClear(painter, corners);
+      if (clear >= 0) return draw(note, corners[clear].x, corners[clear].y);
+      tried.push(...corners.map((box) => ({ note, box })));
     }
-    // No corner is clear: the place that hides least. A point or a label hidden
-    // is worse than any number of strokes crossed (the curve shows round it).
-    const hidden = tried.map(({ box }) => {
-      const { discs, strokes } = painter.ink.hits(box);
-      return (discs + clash(box)) * 1000 + strokes;
-    });
-    const best = tried[hidden.indexOf(Math.min(...hidden))];
+    // No corner is clear: the place that hides least.
+    const best =
+      tried[
+        leastHidden(
+          painter,
+          tried.map(({ box }) => box),
+        )
+      ];
     if (best) draw(best.note, best.box.x, best.box.y);
     else draw(widest, pad, pad);
   });

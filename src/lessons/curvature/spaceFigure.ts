@@ -23,8 +23,9 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
   // (near an inflection, κ → 0) is left to run off the view rather than
   // shrink the curve to a dot.
   bounds: (m) => {
-    const { curve, circle, size } = m.space;
-    const small = circle.length > 0 && boundsSize(boundsOf(circle)) <= 2 * size;
+    const { curve, circle, size, at } = m.space;
+    // The circle's diameter, 2/|κ| (none where κ = 0).
+    const small = circle.length > 0 && 2 / Math.abs(at.curvature!) <= 2 * size;
     return boundsOf(small ? [...curve, ...circle] : curve);
   },
   draw(painter, m, info) {
@@ -192,13 +193,3 @@ function drawFence(scene: SpaceScene, painter: Painter, m: CurvatureModel): void
       dx: 8,
     });
 }
-
-/** The larger side of a box. */
-const boundsSize = (b: {
-  minX: number;
-  maxX: number;
-  minY: number;
-  maxY: number;
-  minZ?: number;
-  maxZ?: number;
-}) => Math.max(b.maxX - b.minX, b.maxY - b.minY, (b.maxZ ?? 0) - (b.minZ ?? 0));
