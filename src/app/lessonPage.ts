@@ -7,13 +7,9 @@
  */
 import { parseHash } from './router';
 import { fitToWidth, refitAll } from '../render/fit';
-import {
-  closeTypesetBudget,
-  holdCopiesWhilePressed,
-  openTypesetBudget,
-  typesetWaiting,
-} from '../render/formula';
+import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
 import type { LabelBox } from '../render/labels';
+import { holdUnseenWhilePressed } from '../render/unseen';
 import type { Theme } from '../render/theme';
 import { ParameterControl } from './controls';
 import { memoize } from './derive';
@@ -74,8 +70,8 @@ export class LessonPage<S, M> {
   private readonly redoButton: HTMLButtonElement;
   private hover: string | null = null;
   private frame = 0;
-  /** Undoes holdCopiesWhilePressed (formula.ts). */
-  private readonly releaseCopies: () => void;
+  /** Undoes holdUnseenWhilePressed (unseen.ts). */
+  private readonly releaseUnseen: () => void;
   // What the next frame must do.
   private drawnState: S | null = null;
   private panelState: S | null = null;
@@ -268,7 +264,10 @@ export class LessonPage<S, M> {
     this.panel.element.classList.add('panel-pending');
     // Formula fonts arriving late change widths measured before them: fit again.
     document.fonts?.addEventListener('loadingdone', this.fontsLoaded);
-    this.releaseCopies = holdCopiesWhilePressed(window);
+    this.releaseUnseen = holdUnseenWhilePressed(window, () => {
+      this.fitPending = true;
+      this.requestFrame();
+    });
     for (const issue of loaded.issues) shell.notice(`Ignored from the link: ${issue}.`);
     this.applyViews(loaded.views);
     this.unsubscribe = this.store.subscribe(() => {
@@ -825,7 +824,7 @@ export class LessonPage<S, M> {
     this.panelResize.disconnect();
     this.aboveStage.disconnect();
     document.fonts?.removeEventListener('loadingdone', this.fontsLoaded);
-    this.releaseCopies();
+    this.releaseUnseen();
     cancelAnimationFrame(this.frame);
     for (const figure of this.figures) figure.destroy();
     this.presenter.destroy();

@@ -4,6 +4,7 @@
  * that changed, instead of building the table again.
  */
 import { h } from './dom';
+import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
   text: string;
@@ -35,12 +36,23 @@ interface LiveRow {
   data: string;
 }
 
-export class LiveRows {
+export class LiveRows implements Unseen {
   private rows: LiveRow[] = [];
+  /** The rows asked for last, written when the table comes into view (see unseen.ts). */
+  private latest: readonly RowSpec[] = [];
 
-  constructor(readonly body: HTMLTableSectionElement) {}
+  constructor(readonly body: HTMLTableSectionElement) {
+    watchSeen(body, this);
+  }
+
+  catchUp(): void {
+    this.set(this.latest);
+  }
 
   set(specs: readonly RowSpec[]): void {
+    this.latest = specs;
+    // Out of view while a point is dragged: written when seen or let go.
+    if (waitUnseen(this.body, this)) return;
     specs.forEach((spec, i) => {
       let row = this.rows[i];
       if (!row || row.cells.length !== spec.cells.length) {

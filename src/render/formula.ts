@@ -2,6 +2,7 @@ import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
 import { sayTex } from './notation';
+import { pointerHeld, waitUnseen, watchSeen, whenReleased } from './unseen';
 
 const OPTIONS = {
   throwOnError: false,
@@ -112,49 +113,6 @@ export const filled = (parts: { shape: string; values: readonly string[] }): str
   parts.shape.split(SLOT).reduce((tex, part, i) => tex + (parts.values[i - 1] ?? '') + part);
 
 /**
- * While a pointer is held (a point or a slider being dragged), live formulas
- * write only the numbers one sees; their MathML copy, for assistive tools and
- * copying as TeX, catches up the moment it is let go. Chromium lays the MathML
- * out as well as the HTML, and on every drag frame: in hermite that copy cost
- * a fifth of the main thread's frame (50.7 → 40.1 ms a frame without it, at
- * 1920×1080 and scale 2) for a copy nobody reads mid-drag.
- */
-const staleCopies = new Set<LiveFormula>();
-let pressed = false;
-
-function setPressed(on: boolean): void {
-  if (pressed === on) return;
-  pressed = on;
-  if (on) return;
-  for (const live of staleCopies) live.writeCopy();
-  staleCopies.clear();
-}
-
-/**
- * Holds live formulas' MathML copies while a pointer is pressed anywhere on
- * `target` (the page); returns what undoes it (and writes what waited).
- */
-export function holdCopiesWhilePressed(target: EventTarget): () => void {
-  const stop = new AbortController();
-  const options = { capture: true, signal: stop.signal };
-  target.addEventListener('pointerdown', () => setPressed(true), options);
-  for (const type of ['pointerup', 'pointercancel', 'blur'])
-    target.addEventListener(type, () => setPressed(false), options);
-  // A release outside the window is never heard: the next move without buttons is.
-  target.addEventListener(
-    'pointermove',
-    (e) => {
-      if ((e as PointerEvent).buttons === 0) setPressed(false);
-    },
-    options,
-  );
-  return () => {
-    stop.abort();
-    setPressed(false);
-  };
-}
-
-/**
  * A formula whose shape is typeset once and whose numbers change as text: the
  * TeX has `\val` wherever a number goes, and `set` fills them in. Only a new
  * shape (another number of terms, say) typesets again; a drag that changes
@@ -178,6 +136,7 @@ export class LiveFormula {
   ) {
     this.element = document.createElement(display ? 'div' : 'span');
     this.element.className = display ? 'formula display live' : 'formula live';
+    watchSeen(this.element, this);
   }
 
   /** The shape typeset now (null before the first). */
@@ -205,7 +164,13 @@ export class LiveFormula {
     });
   }
 
+  /** Writes the numbers that waited for it to come into view (see unseen.ts). */
+  catchUp(): void {
+    if (this.latest.shape === this.shape) this.fill(this.latest);
+  }
+
   private fill(parts: { shape: string; values: readonly string[] }): void {
+    if (waitUnseen(this.element, this)) return;
     let changed = false;
     parts.values.forEach((value, i) => {
       const slot = this.slots[i];
@@ -221,19 +186,22 @@ export class LiveFormula {
     // New numbers may be wider: a display formula is fitted to the panel again
     // (at the start of the next frame, on a clean layout: one read of its width).
     if (this.display) markForFit(this.element);
-    if (pressed) staleCopies.add(this);
+    // The MathML copy, for assistive tools and copying as TeX, is laid out by
+    // Chromium as well: nobody reads it mid-drag (in hermite it was a fifth of
+    // the frame, 50.7 → 40.1 ms), so it is written when the pointer is let go.
+    if (pointerHeld()) whenReleased(this.writeCopy);
     else this.writeCopy();
   }
 
   /** The MathML copy: the numbers as shown, and the TeX as typeset with them filled in. */
-  writeCopy(): void {
+  private readonly writeCopy = (): void => {
     for (const slot of this.slots) {
       if (slot.copied === slot.text) continue;
       slot.copied = slot.text;
       if (slot.mathml) slot.mathml.textContent = slot.text;
     }
     if (this.annotation) this.annotation.textContent = sayTex(filled(this.written));
-  }
+  };
 
   private typeset(shape: string): void {
     this.shape = shape;

@@ -115,3 +115,40 @@ test('before its first update the panel shows no control, so none of another sce
   await expect(page.getByRole('heading', { name: /uniform cubic/i }).first()).toBeVisible();
   await expect(knotTool).toHaveCount(0);
 });
+
+test('while a point is held, the panel writes the numbers in view; the rest follow on release', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await page.goto('./#/hermite?step=7');
+  await settled(page);
+  const texts = () =>
+    page.locator('aside.panel .formula.live').evaluateAll((all) =>
+      all.map((f) => {
+        const box = f.getBoundingClientRect();
+        return { text: f.textContent ?? '', inView: box.bottom > 0 && box.top < innerHeight };
+      }),
+    );
+  const before = await texts();
+  const seen = before.findIndex((f) => f.inView);
+  const unseen = before.findIndex((f, i) => i > seen && !f.inView);
+  expect(seen, 'a live formula in view').toBeGreaterThanOrEqual(0);
+  expect(unseen, 'a live formula below the fold').toBeGreaterThan(seen);
+  const p0 = (await page.getByRole('button', { name: /^P0 at/ }).boundingBox())!;
+  await page.mouse.move(p0.x + p0.width / 2, p0.y + p0.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(p0.x + 60, p0.y - 50, { steps: 4 });
+  // Held: the formula in view follows the point, the one out of view waits.
+  await expect.poll(async () => (await texts())[seen].text).not.toBe(before[seen].text);
+  expect((await texts())[unseen].text).toBe(before[unseen].text);
+  await page.mouse.up();
+  await settled(page);
+  // Let go: the whole panel reads as a page opened fresh at the same link does.
+  const after = (await texts()).map((f) => f.text);
+  expect(after[unseen]).not.toBe(before[unseen].text);
+  const link = page.url();
+  await page.goto('./#/');
+  await page.goto(link);
+  await settled(page);
+  expect((await texts()).map((f) => f.text)).toEqual(after);
+});
