@@ -28,7 +28,7 @@ export function figuresToSvg<S, M>(
 /** The canvases composed into one PNG at device resolution. */
 export function figuresToPng<S, M>(
   figures: readonly FigureView<S, M>[],
-  background: string,
+  theme: Theme,
 ): Promise<Blob> {
   const boxes = figures.map((f) => f.element.getBoundingClientRect());
   const left = Math.min(...boxes.map((b) => b.left));
@@ -39,14 +39,15 @@ export function figuresToPng<S, M>(
   canvas.height = Math.round((Math.max(...boxes.map((b) => b.bottom)) - top) * dpr);
   const ctx = canvas.getContext('2d');
   if (!ctx) return Promise.reject(new Error('No 2D canvas available'));
-  ctx.fillStyle = background;
+  ctx.fillStyle = theme.background;
   ctx.fillRect(0, 0, canvas.width, canvas.height);
   figures.forEach((figure, i) => {
-    ctx.drawImage(
-      figure.canvas,
-      Math.round((boxes[i].left - left) * dpr),
-      Math.round((boxes[i].top - top) * dpr),
-    );
+    const [x, y] = [(boxes[i].left - left) * dpr, (boxes[i].top - top) * dpr];
+    // The canvas holds the drawing; its background and grid lie under it.
+    ctx.setTransform(dpr, 0, 0, dpr, Math.round(x), Math.round(y));
+    figure.paintBackdrop(ctx, theme);
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(figure.canvas, Math.round(x), Math.round(y));
   });
   return new Promise((resolve, reject) =>
     canvas.toBlob(

@@ -805,7 +805,7 @@ export class LessonPage<S, M> {
   async exportPng(): Promise<void> {
     this.refreshAll = true;
     this.drawNow();
-    const blob = await figuresToPng(this.shownFigures(), this.shell.theme().background);
+    const blob = await figuresToPng(this.shownFigures(), this.shell.theme());
     download(blob, `spline-lab-${this.lesson.slug}.png`);
   }
 

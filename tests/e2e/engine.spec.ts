@@ -152,3 +152,41 @@ test('while a point is held, the panel writes the numbers in view; the rest foll
   await settled(page);
   expect((await texts()).map((f) => f.text)).toEqual(after);
 });
+
+test('a drag redraws the figure, not its grid; a zoom redraws the grid too', async ({ page }) => {
+  await page.goto('./#/de-casteljau?step=5');
+  await settled(page);
+  const canvas = page.locator('canvas[data-figure="construction"]');
+  const before = await canvas.evaluate((c: HTMLCanvasElement) => c.toDataURL());
+  // Counts every change to the backdrop (background and grid) under the canvas.
+  await page.evaluate(() => {
+    const backdrop = document.querySelector('[data-figure="construction"] .figure-backdrop')!;
+    const w = window as unknown as { backdropChanges: number };
+    w.backdropChanges = 0;
+    new MutationObserver((list) => (w.backdropChanges += list.length)).observe(backdrop, {
+      childList: true,
+      subtree: true,
+      attributes: true,
+    });
+  });
+  const changes = () =>
+    page.evaluate(() => (window as unknown as { backdropChanges: number }).backdropChanges);
+  const grid = () =>
+    page.locator('[data-figure="construction"] .figure-backdrop path').first().getAttribute('d');
+  const gridBefore = await grid();
+  expect(gridBefore, 'the backdrop has grid lines').toBeTruthy();
+  const p1 = (await page.getByRole('button', { name: /^P1 at/ }).boundingBox())!;
+  await page.mouse.move(p1.x + p1.width / 2, p1.y + p1.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(p1.x + 80, p1.y + 40, { steps: 6 });
+  await page.mouse.up();
+  await settled(page);
+  expect(await canvas.evaluate((c: HTMLCanvasElement) => c.toDataURL())).not.toBe(before);
+  expect(await changes(), 'the grid is not drawn again for a drag').toBe(0);
+  const box = (await canvas.boundingBox())!;
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, -480);
+  await settled(page);
+  expect(await changes()).toBeGreaterThan(0);
+  expect(await grid(), 'the grid follows the view').not.toBe(gridBefore);
+});

@@ -151,7 +151,9 @@ for (const [index, slug] of slugs.entries()) {
 
     // 40 notches in and out on the busiest figure, five to a wheel event (a
     // fast flick), a frame drawn after each.
-    const figure = page.locator('.figure-geometry canvas, .figure-space canvas').first();
+    const figure = page
+      .locator('.figure-geometry canvas[data-figure], .figure-space canvas[data-figure]')
+      .first();
     const area = (await figure.count()) ? await figure.boundingBox() : null;
     if (area) {
       await page.mouse.move(area.x + area.width / 2, area.y + area.height / 2);

@@ -171,7 +171,7 @@ for (const slug of slugs) {
           // The room's screen is the figure (#19): its canvases take at least
           // three quarters of the 1920 × 1080 screen, read from their boxes.
           const share = await page.evaluate(() => {
-            const boxes = [...document.querySelectorAll('.stage-figures canvas')]
+            const boxes = [...document.querySelectorAll('.stage-figures canvas[data-figure]')]
               .filter((c) => c.checkVisibility())
               .map((c) => c.getBoundingClientRect());
             const w =

@@ -155,25 +155,23 @@ async function sentences(page: Page): Promise<Set<string>> {
   );
 }
 
-/** A drawn figure has many colours: the figures shown, together (one may show little: two points). */
+/**
+ * A drawn figure has ink: the figures shown, together (one may show little: two
+ * points), cover more than a few pixels of their canvases, which are
+ * transparent where nothing is drawn (the background and grid lie under them).
+ */
 async function figureDrawn(page: Page): Promise<boolean> {
   return page.evaluate(() => {
     const canvases = [
       ...document.querySelectorAll<HTMLCanvasElement>('canvas[data-figure]'),
     ].filter((canvas) => canvas.width > 0);
     if (!canvases.length) return false;
-    const colours = new Set<number>();
+    let inked = 0;
     for (const canvas of canvases) {
-      const probe = document.createElement('canvas');
-      probe.width = 96;
-      probe.height = 64;
-      const c = probe.getContext('2d')!;
-      c.drawImage(canvas, 0, 0, 96, 64);
-      const data = c.getImageData(0, 0, 96, 64).data;
-      for (let i = 0; i < data.length; i += 4)
-        colours.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+      const data = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data;
+      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) inked++;
     }
-    return colours.size > 3;
+    return inked > 200;
   });
 }
 

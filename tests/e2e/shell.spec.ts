@@ -89,6 +89,21 @@ test('PNG and SVG export produce real files of the figure', async ({ page }) => 
   const pngBytes = readFileSync((await png.path())!);
   expect([...pngBytes.subarray(1, 4)].map((b) => String.fromCharCode(b)).join('')).toBe('PNG');
   expect(pngBytes.length).toBeGreaterThan(5000);
+  // The grid lies under the figure's canvas on the page; the PNG has it too
+  // (light theme: grid #eceef3, drawn on whole pixels at scale 1).
+  const gridPixels = await page.evaluate(async (base64) => {
+    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+    const image = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const canvas = new OffscreenCanvas(image.width, image.height);
+    const c = canvas.getContext('2d')!;
+    c.drawImage(image, 0, 0);
+    const data = c.getImageData(0, 0, image.width, image.height).data;
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4)
+      if (data[i] === 0xec && data[i + 1] === 0xee && data[i + 2] === 0xf3) n++;
+    return n;
+  }, pngBytes.toString('base64'));
+  expect(gridPixels).toBeGreaterThan(2000);
 
   const [svg] = await Promise.all([
     page.waitForEvent('download'),
