@@ -190,3 +190,37 @@ test('a drag redraws the figure, not its grid; a zoom redraws the grid too', asy
   expect(await changes()).toBeGreaterThan(0);
   expect(await grid(), 'the grid follows the view').not.toBe(gridBefore);
 });
+
+test('a point is drawn centred where it is: its ring is as far from it all round', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau');
+  await settled(page);
+  for (const name of ['P0', 'P1', 'P2']) {
+    const box = (await page
+      .getByRole('button', { name: new RegExp(`^${name} at`) })
+      .boundingBox())!;
+    const distances = await page.locator('canvas[data-figure="construction"]').evaluate(
+      (canvas: HTMLCanvasElement, [x, y]) => {
+        const frame = canvas.getBoundingClientRect();
+        const scale = canvas.width / frame.width;
+        const [cx, cy] = [(x - frame.left) * scale, (y - frame.top) * scale];
+        const data = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height);
+        const dark = (px: number, py: number) => {
+          const i = 4 * (Math.round(py) * data.width + Math.round(px));
+          const [r, g, b, a] = data.data.slice(i, i + 4);
+          return a > 128 && r + g + b < 300;
+        };
+        // From the point outwards, eight ways: how far to the first dark pixel (the ring).
+        return [0, 1, 2, 3, 4, 5, 6, 7].map((k) => {
+          const [dx, dy] = [Math.cos((k * Math.PI) / 4), Math.sin((k * Math.PI) / 4)];
+          for (let d = 0; d < 60 * scale; d += 0.25) if (dark(cx + d * dx, cy + d * dy)) return d;
+          return Infinity;
+        });
+      },
+      [box.x + box.width / 2, box.y + box.height / 2],
+    );
+    expect(Math.max(...distances), `${name}: ${distances.join(', ')}`).toBeLessThan(40);
+    expect(Math.max(...distances) - Math.min(...distances), name).toBeLessThanOrEqual(1.5);
+  }
+});
