@@ -224,7 +224,9 @@ export class FigureView<S, M> {
   /** Takes the view from a link; false if it could not be read (then it fits). */
   applyView(text: string | null): boolean {
     if (text === null || !this.movable) {
-      if (this.userView) this.fit();
+      // A link without a view opens fitted to the points it brings, as a fresh page does
+      // (the view fitted to the last points could leave the new ones off screen).
+      this.fit();
       return text === null;
     }
     // Fit first, so a camera read from the link has the distance that fits the scene.

@@ -224,3 +224,29 @@ test('a point is drawn centred where it is: its ring is as far from it all round
     expect(Math.max(...distances) - Math.min(...distances), name).toBeLessThanOrEqual(1.5);
   }
 });
+
+test('a link typed into the address bar opens fitted to its points, as a fresh page does', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0');
+  await settled(page);
+  const onCanvas = () =>
+    page.evaluate(() => {
+      const frame = document.querySelector('canvas[data-figure="construction"]')!;
+      const box = frame.getBoundingClientRect();
+      return [...document.querySelectorAll('.handle-proxy')].map((handle) => {
+        const at = handle.getBoundingClientRect();
+        const [x, y] = [at.left + at.width / 2, at.top + at.height / 2];
+        return x >= box.left && x <= box.right && y >= box.top && y <= box.bottom;
+      });
+    });
+  expect(await onCanvas()).toEqual([true, true, true, true]);
+  for (const points of [
+    '1000,1000;1000.001,1000.002;1000.003,1000.002;1000.004,1000',
+    '0,0;1,2;3,2;4,0',
+  ]) {
+    await page.evaluate((p) => (location.hash = `#/de-casteljau?p=${p}`), points);
+    await settled(page);
+    expect(await onCanvas(), points).toEqual([true, true, true, true]);
+  }
+});
