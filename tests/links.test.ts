@@ -82,3 +82,23 @@ describe('a short link that names a scene', () => {
     });
   }
 });
+
+describe('a link to a step past the last', () => {
+  for (const meta of lessons) {
+    it(`${meta.slug}: shows the scene's last step, and says so`, async () => {
+      const lesson = await meta.load();
+      const key = lesson.steps!.key;
+      const linkKey = keyOf(lesson.schema, key);
+      for (const scene of lesson.scenes ?? []) {
+        const loaded = loadState(lesson, `scene=${scene.id}&${linkKey}=500`, null);
+        const state = loaded.state as Record<string, unknown>;
+        // The last step, counted from the scene's own list of steps at step 0.
+        const last = lesson.steps!.count({ ...state, [key]: 0 });
+        expect(state[key], scene.id).toBe(last);
+        expect(loaded.issues.join(' '), scene.id).toContain(
+          `${linkKey}: 500 is past the last step of this construction (${last}), so it shows step ${last}`,
+        );
+      }
+    });
+  }
+});

@@ -88,6 +88,20 @@ export function int(options: { default: number; min: number; max: number }): Fie
   };
 }
 
+/** The largest step a link may name: past a construction's last, the last is shown. */
+const LAST_STEP_IN_A_LINK = 999;
+
+/**
+ * The step of a lesson's construction. Its last step depends on the state
+ * (the scene, the points), so the field takes any step a link gives and the
+ * kit shows one past the last as the last, saying so (normalizeState): one
+ * rule for every lesson, where a maximum of each lesson's own sent some links
+ * to step 0 ("the default was used") and others to the last step.
+ */
+export function stepField(): Field<number> {
+  return int({ default: 0, min: 0, max: LAST_STEP_IN_A_LINK });
+}
+
 export function bool(options: { default: boolean }): Field<boolean> {
   return {
     default: options.default,

@@ -1,4 +1,4 @@
-import { choice, int, knots, linkKey, number, points, weights } from '../../app/fields';
+import { choice, int, stepField, knots, linkKey, number, points, weights } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { clampedUniformKnots } from '../../math';
@@ -140,7 +140,7 @@ export const schema: Schema<BSplineState> = {
   points: linkKey(points({ default: SEVEN_POINTS, min: 3, max: MAX_POINTS }), 'p'),
   before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.35, min: 0, max: 1 }),
-  step: linkKey(int({ default: 0, min: 0, max: 20 }), 'k'),
+  step: linkKey(stepField(), 'k'),
   degree: linkKey(int({ default: 3, min: 1, max: MAX_DEGREE }), 'd'),
   knots: linkKey(knots({ default: [], min: 0, max: MAX_KNOTS, low: -1e3, high: 1e3 }), 'u'),
   weights: linkKey(weights({ default: [], min: 0, max: MAX_POINTS, high: 100 }), 'w'),

@@ -1,4 +1,4 @@
-import { choice, int, linkKey, number, points } from '../../app/fields';
+import { choice, int, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -78,7 +78,7 @@ export const schema: Schema<PropertiesState> = {
   before: linkKey(points({ default: [], min: 0, max: MAX_POINTS }), 'q'),
   t: number({ default: 0.3, min: 0, max: 1 }),
   // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
-  step: linkKey(int({ default: 0, min: 0, max: 1 + MAX_ELEVATIONS }), 'k'),
+  step: linkKey(stepField(), 'k'),
   repeated: linkKey(int({ default: 1, min: 0, max: MAX_POINTS - 1 }), 'r'),
   map: linkKey(choice({ default: 'shear', values: MAP_KINDS }), 'm'),
 };

@@ -1,4 +1,4 @@
-import { choice, int, linkKey, points } from '../../app/fields';
+import { choice, stepField, linkKey, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents, cubicSplineC2 } from '../../math';
@@ -113,7 +113,7 @@ export const handTangents = (p: readonly Point[]): Point[] =>
 // In schema order: the link writes its fields in this order.
 export const schema: Schema<BezierSplinesState> = {
   part: choice({ default: 'why', values: PARTS }),
-  step: int({ default: 0, min: 0, max: 99 }),
+  step: stepField(),
   points: linkKey(points({ default: LECTURE_POINTS, min: 2, max: MAX_POINTS }), 'p'),
   firstControl: linkKey(
     points({ default: [midpoint(LECTURE_POINTS[0], LECTURE_POINTS[1])], min: 1, max: 1 }),

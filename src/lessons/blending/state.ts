@@ -1,4 +1,4 @@
-import { choice, int, linkKey, number, points } from '../../app/fields';
+import { choice, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -44,7 +44,7 @@ export const schema: Schema<BlendingState> = {
     }),
     'b',
   ),
-  step: int({ default: 0, min: 0, max: MAX_POINTS + 4 }),
+  step: stepField(),
 };
 
 /** The degree N of the curve. */

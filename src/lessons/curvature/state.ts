@@ -1,4 +1,4 @@
-import { choice, int, linkKey, number, points } from '../../app/fields';
+import { choice, int, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { CURVE_SOURCES, type CurveSource, MAX_LINKED_POINTS } from '../../kit/lessonLinks';
@@ -70,6 +70,6 @@ export const schema: Schema<CurvatureState> = {
   radius: linkKey(number({ default: 1, min: 0.1, max: 5 }), 'a'),
   rise: linkKey(number({ default: 0.25, min: -3, max: 3 }), 'b'),
   t: number({ default: 0.3, min: 0, max: 1 }),
-  step: int({ default: 0, min: 0, max: 12 }),
+  step: stepField(),
   equalSteps: linkKey(int({ default: 8, min: 2, max: 24 }), 'n'),
 };

@@ -1,4 +1,4 @@
-import { type Field, int, number, points, quote } from '../../app/fields';
+import { type Field, stepField, number, points, quote } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -64,7 +64,7 @@ export const schema: Schema<DeCasteljauState> = {
   // Figure 5 of the lecture notes draws its construction at μ ≈ 0.6.
   t: number({ default: 0.6, min: 0, max: 1 }),
   // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
-  step: int({ default: 0, min: 0, max: 20 }),
+  step: stepField(),
   mode: modeField,
 };
 

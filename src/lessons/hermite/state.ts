@@ -1,4 +1,4 @@
-import { bool, choice, int, linkKey, number, points } from '../../app/fields';
+import { bool, choice, int, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { catmullRomTangents } from '../../math';
@@ -44,7 +44,7 @@ export const schema: Schema<HermiteState> = {
   patch: int({ default: 0, min: 0, max: MAX_POINTS - 2 }),
   bezier: bool({ default: false }),
   // The construction's last step: seven steps and one per patch, 0-based.
-  step: int({ default: 0, min: 0, max: MAX_POINTS + 5 }),
+  step: stepField(),
 };
 
 /** Number of patches, m. */

@@ -1,4 +1,4 @@
-import { bool, choice, int, linkKey, number, points } from '../../app/fields';
+import { bool, choice, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -44,7 +44,7 @@ export const schema: Schema<LagrangeState> = {
   t: number({ default: 0.4, min: 0, max: 1 }),
   spacing: choice<Spacing>({ default: 'uniform', values: ['uniform', 'chord'] }),
   spline: bool({ default: false }),
-  step: int({ default: 0, min: 0, max: MAX_POINTS + 3 }),
+  step: stepField(),
 };
 
 export const degree = (state: LagrangeState) => state.points.length - 1;

@@ -1,4 +1,4 @@
-import { int, linkKey, number, points } from '../../app/fields';
+import { stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -30,7 +30,7 @@ export const schema: Schema<QuadraticState> = {
   points: linkKey(points({ default: DEFAULT_POINTS, min: 3, max: 3 }), 'p'),
   mu: number({ default: 0.5, min: MU_MIN, max: MU_MAX }),
   // Every lesson opens at its first scene's step 0: the first clicker press is the first step.
-  step: int({ default: 0, min: 0, max: LAST_STEP }),
+  step: stepField(),
 };
 
 /** μ1 kept inside the slider's range (the curve is undefined at 0 and 1). */

@@ -1,4 +1,4 @@
-import { choice, int, linkKey, number, points } from '../../app/fields';
+import { choice, int, stepField, linkKey, number, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -63,7 +63,7 @@ export const schema: Schema<RasterState> = {
   tolerance: linkKey(number({ default: 0.5, min: 0.05, max: 4 }), 'tol'),
   zoom: linkKey(number({ default: 1, min: ZOOM_MIN, max: ZOOM_MAX }), 'z'),
   steppedSegment: linkKey(int({ default: 0, min: 0, max: 4096 }), 'seg'),
-  step: int({ default: 0, min: 0, max: 64 }),
+  step: stepField(),
 };
 
 /** The number of uniform segments the slider's value stands for. */

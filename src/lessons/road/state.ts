@@ -1,4 +1,4 @@
-import { bool, choice, int, linkKey, number, numbers, points } from '../../app/fields';
+import { bool, choice, stepField, linkKey, number, numbers, points } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 import { type RoadView, dissects, viewField } from './view';
@@ -89,7 +89,7 @@ export const schema: Schema<RoadState> = {
   ends: bool({ default: false }),
   comb: bool({ default: false }),
   pBar: linkKey(number({ default: 2.4, min: 0, max: MAX_VILLAGES }), 's'),
-  step: int({ default: 0, min: 0, max: 20 }),
+  step: stepField(),
 };
 
 /** Segments of the method's road: the ring road has one more, back to P0. */

@@ -1,4 +1,4 @@
-import { choice, int, linkKey, number, pointGrid } from '../../app/fields';
+import { choice, stepField, linkKey, number, pointGrid } from '../../app/fields';
 import type { Point } from '../../app/lesson';
 import type { Schema } from '../../app/urlState';
 
@@ -99,7 +99,7 @@ export const schema: Schema<SurfaceState> = {
   secondNet: linkKey(pointGrid({ default: JOIN_NEXT_C1, rows: 4, columns: 4, dimension: 3 }), 'y'),
   u: number({ default: 0.3, min: 0, max: 1 }),
   v: number({ default: 0.6, min: 0, max: 1 }),
-  step: linkKey(int({ default: 0, min: 0, max: 20 }), 'k'),
+  step: linkKey(stepField(), 'k'),
   mode: linkKey(choice<SurfaceMode>({ default: 'patch', values: MODES }), 's'),
   look: choice<SurfaceLook>({ default: 'shaded', values: ['shaded', 'lines'] }),
   coordinate: linkKey(choice<Coordinate>({ default: 'z', values: ['x', 'y', 'z'] }), 'c'),
