@@ -1,3 +1,4 @@
+import { sameValues } from '../kit/memoOn';
 import { fitPadding } from './headless';
 import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/handleDrag';
 import { HandleKeys } from '../interact/handleKeys';
@@ -89,8 +90,8 @@ export class FigureView<S, M> {
   private box: { width: number; height: number } | null = null;
   /**
    * Under the canvas: the background and a geometry figure's grid, drawn again
-   * only when the size, the view or the theme changes (`backdropDrawn` says
-   * for which). A drag frame then rasterises what moved, and not a fill and a
+   * only when the size, the view or the theme changes (`backdropFrom` holds
+   * those it was drawn for). A drag frame then rasterises what moved, and not a fill and a
    * grid over the whole figure that did not. It is vector drawing, not a
    * second canvas: Chromium hands the compositor a copy of every canvas layer
    * on every frame, changed or not (a static canvas under a drawn one: 3 → 6
@@ -98,8 +99,7 @@ export class FigureView<S, M> {
    * changes.
    */
   private readonly backdrop: SVGSVGElement;
-  private backdropDrawn = '';
-  private backdropTheme: Theme | null = null;
+  private backdropFrom: readonly unknown[] = [];
 
   constructor(
     readonly spec: FigureSpec<S, M>,
@@ -315,11 +315,11 @@ export class FigureView<S, M> {
   private drawBackdrop(theme: Theme): void {
     const { width, height } = this.size;
     const grid = this.spec.kind === 'geometry';
-    const view = grid ? [this.view.toScreen([0, 0]), this.view.toScreen([1, 1])].join() : '';
-    const key = `${width}x${height}|${view}`;
-    if (key === this.backdropDrawn && theme === this.backdropTheme) return;
-    this.backdropDrawn = key;
-    this.backdropTheme = theme;
+    // A grid moves with the view: where two of its points land says where it all does.
+    const view = grid ? [...this.view.toScreen([0, 0]), ...this.view.toScreen([1, 1])] : [];
+    const from = [width, height, theme, ...view];
+    if (sameValues(from, this.backdropFrom)) return;
+    this.backdropFrom = from;
     const svg = new SvgContext();
     this.paintBackdrop(svg, theme);
     // Markup the SvgContext wrote from the view's numbers and the theme's colours (escaped).
@@ -575,9 +575,4 @@ function drawMarks(painter: Painter, marks: readonly FigureMark[], theme: Theme)
   if (guess)
     painter.cross(guess.at, size * 1.2, { color: theme.accent, width: theme.sizes.line * 1.6 });
   for (const mark of marks) painter.labelClear(mark.label, mark.at, []);
-}
-
-/** Whether two lists hold the same values (by identity, as states are never mutated). */
-function sameValues(a: readonly unknown[], b: readonly unknown[]): boolean {
-  return a.length === b.length && a.every((value, i) => Object.is(value, b[i]));
 }

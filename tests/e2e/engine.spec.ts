@@ -189,6 +189,16 @@ test('a drag redraws the figure, not its grid; a zoom redraws the grid too', asy
   await settled(page);
   expect(await changes()).toBeGreaterThan(0);
   expect(await grid(), 'the grid follows the view').not.toBe(gridBefore);
+  // A theme changes the backdrop's colours, at the same size and view.
+  const ground = () =>
+    page
+      .locator('[data-figure="construction"] .figure-backdrop [fill]')
+      .first()
+      .getAttribute('fill');
+  const light = await ground();
+  await page.keyboard.press('d');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'dark');
+  await expect.poll(ground, 'the dark background').not.toBe(light);
 });
 
 test('a point is drawn centred where it is: its ring is as far from it all round', async ({
