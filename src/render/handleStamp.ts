@@ -29,7 +29,8 @@ const MAX_STAMPS = 256;
  * are paths, as before.
  */
 export class HandleStamper {
-  private lastKey = '';
+  /** The look last stamped, and its stamp: most handles of a figure share one. */
+  private lastLook: HandleLook | null = null;
   private last: HTMLCanvasElement | null = null;
 
   private constructor(
@@ -51,12 +52,12 @@ export class HandleStamper {
 
   /** Copies the stamp of `look` centred at (x, y) (CSS pixels), snapped to a device pixel. */
   stamp(x: number, y: number, look: HandleLook): void {
-    const key = `${look.fill}|${look.stroke}|${look.width}|${look.r}|${look.shape}|${this.scale}`;
-    if (key !== this.lastKey || !this.last) {
-      this.last = stamps.get(key) ?? this.draw(key, look);
-      this.lastKey = key;
+    let stamp = this.last;
+    if (!stamp || !this.lastLook || !sameLook(look, this.lastLook)) {
+      const key = `${look.fill}|${look.stroke}|${look.width}|${look.r}|${look.shape}|${this.scale}`;
+      stamp = this.last = stamps.get(key) ?? this.draw(key, look);
+      this.lastLook = look;
     }
-    const stamp = this.last;
     const { scale, e, f } = this;
     const half = stamp.width / 2;
     // The stamp's pixels land on device pixels: no resampling, no blur.
@@ -86,6 +87,15 @@ export class HandleStamper {
     return stamp;
   }
 }
+
+/** Whether two looks draw the same stamp. */
+const sameLook = (a: HandleLook, b: HandleLook): boolean =>
+  a === b ||
+  (a.fill === b.fill &&
+    a.stroke === b.stroke &&
+    a.width === b.width &&
+    a.r === b.r &&
+    a.shape === b.shape);
 
 /** Adds one handle's outline to the current path. */
 export function handlePath(
