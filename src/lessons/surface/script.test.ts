@@ -19,6 +19,7 @@ import { weightsShown } from './weightsFigure';
 import { drawHandles } from '../../render/handles';
 import type { LabelBox } from '../../render/painter';
 import { namedPoints } from './points';
+import type { Point } from '../../app/lesson';
 
 /**
  * The patch figure as the shell draws it (figure, handles, then the marks
@@ -230,6 +231,37 @@ describe('the control points', () => {
           });
       }
     }
+  });
+
+  it('a drag places the names as a fresh page does: the same while (u, v) moves, after the point that moved', () => {
+    // The places a name may go are kept while the net and the view stay (a
+    // drag of u or v); each state here is drawn after another, then again
+    // after a different size, which a fresh page would draw it as.
+    const names = (s: SurfaceState) =>
+      placedLabels(s, 900, 560)
+        .filter((l) => /^P_/.test(l.text))
+        .map((l) => `${l.text}@${Math.round(l.x)},${Math.round(l.y)}`);
+    const fresh = (s: SurfaceState) => {
+      placedLabels(s, 640, 480);
+      return names(s);
+    };
+    const start = sceneState('patch', { step: 0 });
+    const net = start.net.map((row) => row.map((p) => [...p] as Point));
+    net[1][1] = [net[1][1][0], net[1][1][1] + 1.5, net[1][1][2] + 2];
+    const moved = { ...start, net };
+    const sequence = [
+      start,
+      { ...start, u: 0.7 },
+      { ...start, v: 0.1 },
+      moved,
+      { ...moved, u: 0.2 },
+    ];
+    const seen = sequence.map(names);
+    expect(seen).toEqual(sequence.map(fresh));
+    // The moved point's name went with it.
+    const label11 = (list: string[]) => list.find((t) => t.startsWith('P_{1,1}'));
+    expect(label11(seen[3])).toBeDefined();
+    expect(label11(seen[3])).not.toBe(label11(seen[0]));
   });
 
   it('gives the second net’s rows Q₁ … Q₃ handles only in the scene of two patches', () => {
