@@ -1,6 +1,7 @@
 import { h, setHidden } from '../app/dom';
 import { choice, number, points } from '../app/fields';
 import type { Point } from '../app/lesson';
+import { pointerHeld, whenReleased } from '../render/unseen';
 
 // Links from one lesson into another, carrying the curve on screen. What a
 // link carries is agreed here, in the kit, so a lesson that links never
@@ -56,7 +57,9 @@ export function curvatureHref({ src, p, d = [], t }: CurvatureOf): string | null
 /**
  * A small "Curvature of this curve →" link for another lesson's panel: make it
  * once, and `update` it with the lesson's curve on each new state (hidden
- * where there is none to hand over).
+ * where there is none to hand over). While a point or a slider is held, no
+ * one can follow the link: it is written once, on release, not on every
+ * frame of the drag.
  */
 export function curvatureLink(): {
   element: HTMLElement;
@@ -64,12 +67,18 @@ export function curvatureLink(): {
 } {
   const anchor = h('a', { href: '#/curvature' }, 'Curvature of this curve →');
   const element = h('p', { class: 'note' }, anchor);
+  let latest: CurvatureOf | null = null;
+  const write = () => {
+    const href = latest && curvatureHref(latest);
+    if (href && anchor.getAttribute('href') !== href) anchor.setAttribute('href', href);
+    setHidden(element, !href);
+  };
   return {
     element,
     update(curve) {
-      const href = curve && curvatureHref(curve);
-      if (href && anchor.getAttribute('href') !== href) anchor.setAttribute('href', href);
-      setHidden(element, !href);
+      latest = curve;
+      if (pointerHeld()) whenReleased(write);
+      else write();
     },
   };
 }

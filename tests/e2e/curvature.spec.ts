@@ -159,6 +159,28 @@ test('a de Casteljau curve opens here through its link: the same control points,
   await expect.poll(() => value(page, 'κ')).toBeCloseTo(bezierCurvature(p, 0.8), 10);
 });
 
+test('a point dragged with the mouse, then the link: the curvature lesson opens on the points as they were let go', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau');
+  await settled(page);
+  const before = (await linkState(page)).p;
+  const handle = page.getByRole('button', { name: /^P2 at/ });
+  const box = (await handle.boundingBox())!;
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x - 120, y + 70, { steps: 8 });
+  await page.mouse.up();
+  // The link carries the points the de Casteljau page's own link holds after the drag.
+  await expectHash(page, 'p', (v) => v !== before);
+  const dragged = (await linkState(page)).p;
+  await page.getByRole('link', { name: 'Curvature of this curve →' }).click();
+  await expect(page).toHaveURL(/#\/curvature\?/);
+  await settled(page);
+  expect((await linkState(page)).p).toBe(dragged);
+});
+
 test('a Catmull-Rom spline: κ on the piece under the cursor, and its joins named C¹', async ({
   page,
 }) => {
