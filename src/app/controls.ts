@@ -3,7 +3,7 @@
  * number field, Play) and the steps (back, status, forward). Each shows the
  * state through `update`, writing to the DOM only what changed.
  */
-import { fmt, h } from './dom';
+import { fmt, h, setDisabled, setText } from './dom';
 import type { ParameterSpec } from './lesson';
 import { nextPlayedValue } from './play';
 import { prefersReducedMotion } from './settings';
@@ -125,14 +125,14 @@ export class ParameterControl<S> {
   changeSpeed(delta: number): void {
     this.speed = Math.min(SPEEDS.length - 1, Math.max(0, this.speed + delta));
     const text = `${SPEEDS[this.speed]}×`;
-    this.speedButton.textContent = text;
+    setText(this.speedButton, text);
     this.speedButton.setAttribute('aria-label', `Speed ${text}`);
   }
 
   private start(): void {
     const spec = this.spec;
     const span = spec.max - spec.min;
-    this.play.textContent = '❚❚';
+    setText(this.play, '❚❚');
     this.play.setAttribute('aria-label', 'Pause');
     const advance = (amount: number) => {
       const v = nextPlayedValue(this.value(this.host.get()), amount, spec.min, spec.max);
@@ -159,7 +159,7 @@ export class ParameterControl<S> {
     cancelAnimationFrame(this.playing.timer);
     window.clearInterval(this.playing.timer);
     this.playing = null;
-    this.play.textContent = '▶';
+    setText(this.play, '▶');
     this.play.setAttribute('aria-label', 'Play');
     this.host.settle();
   }
@@ -196,9 +196,9 @@ export class StepControl {
     const key = `${text}/${first}/${last}/${nextLabel}`;
     if (key === this.shown) return;
     this.shown = key;
-    this.back.disabled = first;
-    this.forward.disabled = last;
-    this.status.textContent = text;
-    this.forward.textContent = nextLabel;
+    setDisabled(this.back, first);
+    setDisabled(this.forward, last);
+    setText(this.status, text);
+    setText(this.forward, nextLabel);
   }
 }

@@ -2,6 +2,8 @@
  * A tiny element builder: text always goes in as text nodes, never as markup,
  * so nothing from a URL can become HTML.
  */
+import { shownAttribute, shownText } from './notationDom';
+
 type Child = Node | string | number | null | undefined | false;
 type Attrs = Record<string, string | number | boolean | null | undefined | EventListener>;
 
@@ -67,8 +69,9 @@ export function dataTable(
 }
 
 /** Sets an element's text only when it changes (a panel updated every frame writes little). */
-export function setText(element: HTMLElement, text: string): void {
-  if (element.textContent !== text) element.textContent = text;
+export function setText(element: Node, text: string): void {
+  const now = element.textContent;
+  if (now !== text && now !== shownText(element, text)) element.textContent = text;
 }
 
 /**
@@ -78,7 +81,8 @@ export function setText(element: HTMLElement, text: string): void {
  * reads the same (textContent is `text`), only when it changed.
  */
 export function setIndexedText(element: HTMLElement, text: string): void {
-  if (element.textContent === text) return;
+  const now = element.textContent;
+  if (now === text || now === shownText(element, text)) return;
   element.replaceChildren(
     ...text
       .split(/([₀-₉]+)/)
@@ -90,4 +94,28 @@ export function setIndexedText(element: HTMLElement, text: string): void {
 /** Shows or hides an element only when that changes. */
 export function setHidden(element: HTMLElement, hidden: boolean): void {
   if (element.hidden !== hidden) element.hidden = hidden;
+}
+
+/** Enables or disables a control only when that changes. */
+export function setDisabled(
+  element: HTMLButtonElement | HTMLInputElement | HTMLSelectElement,
+  disabled: boolean,
+): void {
+  if (element.disabled !== disabled) element.disabled = disabled;
+}
+
+/** Sets an element's classes (the whole `class` attribute) only when they change. */
+export function setClass(element: Element, className: string): void {
+  if (element.className !== className) element.className = className;
+}
+
+/**
+ * Sets an attribute only when its value changes: an attribute set to its own
+ * value is still a change to the page (style is checked again, an aria-live
+ * region may speak again), and a panel is updated on every frame of a drag.
+ */
+export function setAttr(element: Element, name: string, value: string): void {
+  const now = element.getAttribute(name);
+  if (now !== value && now !== shownAttribute(element, name, value))
+    element.setAttribute(name, value);
 }

@@ -12,7 +12,7 @@ import type { DrawingSurface } from '../render/surface';
 import { SvgContext } from '../render/svgContext';
 import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { fmtPoint } from './dom';
+import { fmtPoint, setClass, setHidden, setText } from './dom';
 import type { DrawInfo, FigureSpec, Handle, Point } from './lesson';
 import { SpokenNames } from './spokenNames';
 
@@ -107,7 +107,7 @@ export class FigureView<S, M> {
   ) {
     this.view = spec.kind === 'space' ? new OrbitCamera(spec.camera) : new Viewport();
     this.element = document.createElement('div');
-    this.element.className = `figure figure-${spec.kind}`;
+    setClass(this.element, `figure figure-${spec.kind}`);
     this.element.dataset.figure = spec.id;
     this.element.style.flexGrow = String(spec.weight ?? 1);
     if (spec.height) this.stripHeight(host.theme());
@@ -120,7 +120,7 @@ export class FigureView<S, M> {
     this.backdrop.setAttribute('class', 'figure-backdrop');
     this.backdrop.setAttribute('aria-hidden', 'true');
     const layer = document.createElement('div');
-    layer.className = 'handle-layer';
+    setClass(layer, 'handle-layer');
     this.element.append(this.backdrop, this.canvas, layer);
     this.keys = new HandleKeys(layer, {
       move: (id, delta, size) => this.keyMove(id, delta, size),
@@ -154,8 +154,8 @@ export class FigureView<S, M> {
     // A finger has no right-click or Delete key: a tapped point offers its own delete button.
     this.deleteButton = document.createElement('button');
     this.deleteButton.type = 'button';
-    this.deleteButton.className = 'delete-point';
-    this.deleteButton.hidden = true;
+    setClass(this.deleteButton, 'delete-point');
+    setHidden(this.deleteButton, true);
     this.deleteButton.addEventListener('click', () => {
       if (this.chosen) this.remove(this.chosen);
       this.choose(null);
@@ -536,8 +536,8 @@ export class FigureView<S, M> {
     const handle = id === null ? undefined : this.handles.find((h) => h.id === id);
     const removable = handle !== undefined && this.spec.removeHandle !== undefined;
     this.chosen = removable ? handle.id : null;
-    this.deleteButton.hidden = !removable;
-    if (removable) this.deleteButton.textContent = `Delete ${plainLabel(handle.label)}`;
+    setHidden(this.deleteButton, !removable);
+    if (removable) setText(this.deleteButton, `Delete ${plainLabel(handle.label)}`);
   }
 
   private add(at: Screen): void {

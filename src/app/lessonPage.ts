@@ -13,7 +13,7 @@ import { holdUnseenWhilePressed } from '../render/unseen';
 import type { Theme } from '../render/theme';
 import { ParameterControl } from './controls';
 import { memoize } from './derive';
-import { h } from './dom';
+import { h, setDisabled, setHidden, setText } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
 import type { PresenterTool } from './keymap';
@@ -531,8 +531,8 @@ export class LessonPage<S, M> {
       this.updateCaption(state, model);
       this.parameter?.update(state);
       this.walker.update(state);
-      this.undoButton.disabled = !this.store.canUndo;
-      this.redoButton.disabled = !this.store.canRedo;
+      setDisabled(this.undoButton, !this.store.canUndo);
+      setDisabled(this.redoButton, !this.store.canRedo);
     }
     if (this.hoverChanged) this.panel.hover?.(this.hover);
     if (panelDue || this.panelWidthChanged) {
@@ -578,14 +578,17 @@ export class LessonPage<S, M> {
     if (key === this.figuresShownKey) return;
     this.figuresShownKey = key;
     for (const figure of this.figures)
-      figure.element.hidden = ids !== null && !ids.includes(figure.spec.id);
+      setHidden(figure.element, ids !== null && !ids.includes(figure.spec.id));
     const boxes = [...this.figureBox.querySelectorAll<HTMLElement>('.figures')].reverse();
     for (const box of boxes)
-      box.hidden = ![...box.children].some(
-        (child) =>
-          child instanceof HTMLElement &&
-          !child.hidden &&
-          !child.matches('.grid-heading, .grid-corner'),
+      setHidden(
+        box,
+        ![...box.children].some(
+          (child) =>
+            child instanceof HTMLElement &&
+            !child.hidden &&
+            !child.matches('.grid-heading, .grid-corner'),
+        ),
       );
   }
 
@@ -729,7 +732,7 @@ export class LessonPage<S, M> {
   private toggleText(): void {
     const open = this.element.classList.toggle('reading');
     this.textToggle.setAttribute('aria-expanded', String(open));
-    this.textToggle.textContent = open ? 'Figure only ▴' : 'Text and numbers ▾';
+    setText(this.textToggle, open ? 'Figure only ▴' : 'Text and numbers ▾');
     const aside = this.element.querySelector('.panel');
     requestAnimationFrame(() => {
       if (!open || !aside) window.scrollTo({ top: 0 });

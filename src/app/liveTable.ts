@@ -3,7 +3,7 @@
  * elements, and each frame writes only the texts, classes and swatch colours
  * that changed, instead of building the table again.
  */
-import { h } from './dom';
+import { h, setClass } from './dom';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -32,7 +32,6 @@ interface LiveCell {
 interface LiveRow {
   element: HTMLTableRowElement;
   cells: LiveCell[];
-  className: string;
   data: string;
 }
 
@@ -61,11 +60,7 @@ export class LiveRows implements Unseen {
         else this.body.append(fresh.element);
         this.rows[i] = row = fresh;
       }
-      const className = spec.className ?? '';
-      if (row.className !== className) {
-        row.className = className;
-        row.element.className = className;
-      }
+      setClass(row.element, spec.className ?? '');
       const data = spec.data ? JSON.stringify(spec.data) : '';
       if (row.data !== data) {
         row.data = data;
@@ -88,7 +83,7 @@ export class LiveRows implements Unseen {
       return { element, text, swatch: null, swatchColor: '' };
     });
     const element = h('tr', {}, ...cells.map((c) => c.element));
-    return { element, cells, className: '', data: '' };
+    return { element, cells, data: '' };
   }
 
   private fill(live: LiveCell, cell: string | Cell): void {

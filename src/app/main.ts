@@ -119,6 +119,8 @@ export function notice(message: string): void {
 }
 
 function announce(message: string): void {
+  // Written even when the words are the same: a live region then says them again.
+  // eslint-disable-next-line no-restricted-syntax
   announcer.textContent = message;
 }
 

@@ -11,6 +11,23 @@ import { say } from '../render/notation';
 const KEPT = '.katex, .notes-key dd, textarea, [data-notation="own"]';
 const NAMES = ['aria-label', 'title', 'placeholder', 'aria-valuetext'];
 
+/**
+ * What `text`, written into `node`, reads as once this module has seen it:
+ * in the reader's letter, unless the node keeps the lesson's own. A panel
+ * compares with this before it writes, or a text in another letter would be
+ * written, then said again, on every frame.
+ */
+export function shownText(node: Node, text: string): string {
+  const element = node instanceof Element ? node : node.parentElement;
+  if (!element || element.closest(KEPT)) return text;
+  return say(text);
+}
+
+/** An attribute's value as it reads once this module has seen it (see `shownText`). */
+export function shownAttribute(element: Element, name: string, value: string): string {
+  return NAMES.includes(name) ? shownText(element, value) : value;
+}
+
 function sayNode(node: Node): void {
   if (node.nodeType === Node.TEXT_NODE) {
     const parent = node.parentElement;

@@ -1,4 +1,4 @@
-import { h } from './dom';
+import { h, setDisabled } from './dom';
 import type { LessonApi } from './lesson';
 
 /** What a control needs of the lesson: the state, and a way to change it. */
@@ -38,8 +38,8 @@ export function pointButtons<S>(api: StateApi<S>, options: PointButtonsOptions<S
   return {
     element: h('div', { class: 'lesson-tools' }, add, remove),
     update(state) {
-      add.disabled = options.count(state) >= options.max;
-      remove.disabled = options.count(state) <= options.min;
+      setDisabled(add, options.count(state) >= options.max);
+      setDisabled(remove, options.count(state) <= options.min);
     },
   };
 }

@@ -9,7 +9,7 @@
 import type { ExerciseSpec, Posed, Verdict } from '../kit/exercise';
 import { newSeed } from '../kit/exercise';
 import type { Point } from '../math';
-import { fmt, h, setChildren } from './dom';
+import { fmt, h, setChildren, setClass, setDisabled, setHidden, setText } from './dom';
 import type { FigureMark } from './figureView';
 import { lessonProgress, readProgress, recordTotal, recordTry } from './progress';
 import type { PracticeLink } from './urlState';
@@ -146,15 +146,15 @@ export class Practice<S> {
     this.current = { spec, seed, posed };
     this.guess = null;
     this.revealed = false;
-    this.element.hidden = false;
+    setHidden(this.element, false);
     this.host.toggled(true);
     this.host.open(kept ?? posed.state, posed.scene);
     this.renderList();
-    this.prompt.textContent = posed.prompt;
+    setText(this.prompt, posed.prompt);
     this.renderFields(posed);
-    this.result.textContent = '';
-    this.result.className = 'practice-result';
-    this.showButton.disabled = false;
+    setText(this.result, '');
+    setClass(this.result, 'practice-result');
+    setDisabled(this.showButton, false);
     // A construction is helped by the lesson's live numbers; a question would be given away.
     this.host.quiet(posed.task.kind !== 'construct');
     this.renderTally();
@@ -166,7 +166,7 @@ export class Practice<S> {
     this.host.quiet(false);
     this.current = null;
     this.guess = null;
-    this.element.hidden = true;
+    setHidden(this.element, true);
     this.host.toggled(false);
     this.host.redraw();
     this.host.linkChanged();
@@ -291,8 +291,10 @@ export class Practice<S> {
   }
 
   private say(verdict: Verdict): void {
+    // Written even when the words are the same: the status then says the hint again.
+    // eslint-disable-next-line no-restricted-syntax
     this.result.textContent = verdict.message;
-    this.result.className = `practice-result ${verdict.correct ? 'right' : 'wrong'}`;
+    setClass(this.result, `practice-result ${verdict.correct ? 'right' : 'wrong'}`);
   }
 
   private showMe(): void {
@@ -308,13 +310,16 @@ export class Practice<S> {
     this.host.walk(current.posed.working, current.posed.scene);
     if (task.kind === 'number') {
       const answer = task.answer.map((v) => fmtAnswer(v)).join(', ');
-      this.result.textContent = `The working is on the figure, step by step. The answer: ${answer}.`;
+      setText(this.result, `The working is on the figure, step by step. The answer: ${answer}.`);
     } else {
       this.revealed = true;
-      this.result.textContent = `The construction runs to the point (${task.answer.map((v) => fmtAnswer(v)).join(', ')}).`;
+      setText(
+        this.result,
+        `The construction runs to the point (${task.answer.map((v) => fmtAnswer(v)).join(', ')}).`,
+      );
       this.host.redraw();
     }
-    this.result.className = 'practice-result';
+    setClass(this.result, 'practice-result');
   }
 
   private renderTally(): void {
@@ -327,7 +332,7 @@ export class Practice<S> {
         ? ` This one is solved (${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'}).`
         : ` ${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'} on this one so far.`
       : '';
-    this.tally.textContent = `Solved ${done} of ${total} in this lesson.${here}`;
+    setText(this.tally, `Solved ${done} of ${total} in this lesson.${here}`);
   }
 }
 

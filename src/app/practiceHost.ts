@@ -4,7 +4,7 @@
  * step by step on the page's own figure.
  */
 import type { ExerciseSpec } from '../kit/exercise';
-import { h } from './dom';
+import { h, setHidden } from './dom';
 import type { AnyLesson } from './lesson';
 import { type LessonStore, type Loaded, normalizeState } from './lessonState';
 import { Practice } from './practice';
@@ -59,7 +59,7 @@ export class PracticeHost<S> {
       redraw: () => page.redraw(),
       linkChanged: () => page.linkChanged(),
       toggled: (open) => {
-        this.entry.hidden = open;
+        setHidden(this.entry, open);
         page.element().classList.toggle('practising', open);
         // A phone: the figure shares the first screen with the question.
         if (open && window.matchMedia?.('(max-width: 820px)').matches)

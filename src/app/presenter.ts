@@ -360,7 +360,7 @@ class Ink {
    * 1920×1080 and scale 2, 4.9 million pixels: 4 ms of each drag frame).
    */
   private showIfUsed(): void {
-    this.canvas.hidden = !this.canvas.classList.contains('inking') && this.strokes.length === 0;
+    setHidden(this.canvas, !this.canvas.classList.contains('inking') && this.strokes.length === 0);
   }
 
   get count(): number {

@@ -5,6 +5,7 @@
  * the focused one (Shift: big steps, Alt: fine steps), Delete removes it.
  */
 import type { KeySize } from './handleDrag';
+import { setClass } from '../app/dom';
 
 export interface KeyHandle {
   id: string;
@@ -128,7 +129,7 @@ export class HandleKeys {
 
   private create(id: string): HTMLElement {
     const el = document.createElement('div');
-    el.className = 'handle-proxy';
+    setClass(el, 'handle-proxy');
     el.tabIndex = 0;
     el.setAttribute('role', 'button');
     el.setAttribute('aria-roledescription', 'movable point');

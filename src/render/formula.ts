@@ -3,6 +3,7 @@ import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
 import { sayTex } from './notation';
 import { pointerHeld, waitUnseen, watchSeen, whenReleased } from './unseen';
+import { setClass, setText } from '../app/dom';
 
 const OPTIONS = {
   throwOnError: false,
@@ -97,7 +98,7 @@ export function typesetWaiting(): boolean {
 /** A new element holding a typeset formula (for formulas that never change). */
 export function formula(tex: string, display = false): HTMLElement {
   const el = document.createElement(display ? 'div' : 'span');
-  el.className = display ? 'formula display' : 'formula';
+  setClass(el, display ? 'formula display' : 'formula');
   renderFormula(el, tex, display);
   return el;
 }
@@ -135,7 +136,7 @@ export class LiveFormula {
     private readonly typesetDone?: () => void,
   ) {
     this.element = document.createElement(display ? 'div' : 'span');
-    this.element.className = display ? 'formula display live' : 'formula live';
+    setClass(this.element, display ? 'formula display live' : 'formula live');
     watchSeen(this.element, this);
   }
 
@@ -179,7 +180,7 @@ export class LiveFormula {
       if (text === slot.text) return;
       changed = true;
       slot.text = text;
-      slot.html.textContent = text;
+      setText(slot.html, text);
     });
     if (!changed) return;
     this.written = parts;
@@ -198,9 +199,9 @@ export class LiveFormula {
     for (const slot of this.slots) {
       if (slot.copied === slot.text) continue;
       slot.copied = slot.text;
-      if (slot.mathml) slot.mathml.textContent = slot.text;
+      if (slot.mathml) setText(slot.mathml, slot.text);
     }
-    if (this.annotation) this.annotation.textContent = sayTex(filled(this.written));
+    if (this.annotation) setText(this.annotation, sayTex(filled(this.written)));
   };
 
   private typeset(shape: string): void {

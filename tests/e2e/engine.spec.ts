@@ -1,4 +1,5 @@
-import { expect, settled, test, linkState } from './fixtures';
+import type { Page } from '@playwright/test';
+import { expect, lessonFolders, settled, test, linkState } from './fixtures';
 
 test('a moved view is part of the link and opens exactly as shared', async ({ page }) => {
   await page.goto('./#/de-casteljau');
@@ -260,3 +261,94 @@ test('a link typed into the address bar opens fitted to its points, as a fresh p
     expect(await onCanvas(), points).toEqual([true, true, true, true]);
   }
 });
+
+/**
+ * Watches the page for writes that leave it as it was: an attribute set to its
+ * own value, a text or children replaced by the same. Each is work on a
+ * drag's hot path (a style check, a layout, an aria-live region announcing
+ * again) for nothing.
+ */
+async function watchSameWrites(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const w = window as unknown as { sameWrites: string[]; sameWatch: MutationObserver };
+    const where = (node: Node) => {
+      const parts: string[] = [];
+      let e = (node.nodeType === 1 ? node : node.parentElement) as Element | null;
+      for (let i = 0; e && i < 4; i++, e = e.parentElement)
+        parts.unshift(e.tagName.toLowerCase() + (e.classList[0] ? `.${e.classList[0]}` : ''));
+      return parts.join('>');
+    };
+    const markup = (nodes: NodeList) =>
+      [...nodes].map((n) => new XMLSerializer().serializeToString(n)).join('');
+    w.sameWrites = [];
+    const seen = (records: MutationRecord[]) =>
+      records.forEach((r, i) => {
+        // What this write left: the next write's old value, else the value now.
+        const next = records
+          .slice(i + 1)
+          .find(
+            (q) =>
+              q.type === r.type && q.target === r.target && q.attributeName === r.attributeName,
+          );
+        if (r.type === 'attributes') {
+          const now = next ? next.oldValue : (r.target as Element).getAttribute(r.attributeName!);
+          if (now === r.oldValue) w.sameWrites.push(`${where(r.target)} [${r.attributeName}]`);
+        } else if (r.type === 'characterData') {
+          const now = next ? next.oldValue : r.target.textContent;
+          if (now === r.oldValue) w.sameWrites.push(`${where(r.target)} text`);
+        } else if (
+          r.addedNodes.length &&
+          r.removedNodes.length &&
+          markup(r.addedNodes) === markup(r.removedNodes)
+        )
+          w.sameWrites.push(`${where(r.target)} children “${r.target.textContent?.slice(0, 40)}”`);
+      });
+    w.sameWatch = new MutationObserver(seen);
+    w.sameWatch.observe(document.body, {
+      subtree: true,
+      childList: true,
+      attributes: true,
+      characterData: true,
+      attributeOldValue: true,
+      characterDataOldValue: true,
+    });
+  });
+}
+
+/** The writes that changed nothing since `watchSameWrites`, each with how often; and stops watching. */
+async function sameWrites(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const w = window as unknown as { sameWrites: string[]; sameWatch: MutationObserver };
+    w.sameWatch.takeRecords();
+    w.sameWatch.disconnect();
+    const counts = new Map<string, number>();
+    for (const s of w.sameWrites) counts.set(s, (counts.get(s) ?? 0) + 1);
+    return [...counts].map(([s, n]) => `${n}× ${s}`);
+  });
+}
+
+for (const slug of lessonFolders()) {
+  test(`${slug}: a drag writes to the page only what changed`, async ({ page }) => {
+    await page.goto(`./#/${slug}`);
+    await settled(page);
+    const drags: [string, { x: number; y: number; width: number; height: number }][] = [];
+    const point = page.locator('.handle-proxy').first();
+    drags.push(['the first point', (await point.boundingBox())!]);
+    const slider = page.locator('section.stage input[type=range]').first();
+    if (await slider.count()) drags.push(['the slider', (await slider.boundingBox())!]);
+    for (const [what, box] of drags) {
+      const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+      await page.mouse.move(x, y);
+      await page.mouse.down();
+      await watchSameWrites(page);
+      for (let k = 1; k <= 12; k++) {
+        await page.mouse.move(x + (what === 'the slider' ? -4 * k : 5 * k), y + (k % 2) * 4);
+        await page.evaluate(() => new Promise((done) => requestAnimationFrame(done)));
+      }
+      const same = await sameWrites(page);
+      await page.mouse.up();
+      await settled(page);
+      expect(same, `${slug}, dragging ${what}`).toEqual([]);
+    }
+  });
+}

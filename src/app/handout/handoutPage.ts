@@ -4,7 +4,7 @@
  * print them (the browser's own dialog, so "save as PDF" too) or save each
  * frame as an SVG in a zip. Everything is made here, offline.
  */
-import { h } from '../dom';
+import { h, setText } from '../dom';
 import type { AnyLesson } from '../lesson';
 import type { Loaded } from '../lessonState';
 import type { LessonMeta } from '../meta';
@@ -214,9 +214,12 @@ export class HandoutPage {
     this.pages.replaceChildren(...sheets);
     performance.measure('handout-draw', { start: drawing });
     // Our own constant text: the paper's size for the print dialog.
-    this.pageStyle.textContent = `@page { size: ${geometry.paper.css}; margin: 0; }`;
+    setText(this.pageStyle, `@page { size: ${geometry.paper.css}; margin: 0; }`);
     const count = this.frames.reduce((n, s) => n + s.length, 0);
-    this.status.textContent = `${count} frame${count === 1 ? '' : 's'} on ${pages.length} page${pages.length === 1 ? '' : 's'} (${this.options.paper === 'a4' ? 'A4' : 'Letter'}, ${this.options.perPage} a page).`;
+    setText(
+      this.status,
+      `${count} frame${count === 1 ? '' : 's'} on ${pages.length} page${pages.length === 1 ? '' : 's'} (${this.options.paper === 'a4' ? 'A4' : 'Letter'}, ${this.options.perPage} a page).`,
+    );
     this.element.dataset.pages = String(pages.length);
     this.element.dataset.frames = String(count);
     this.element.dataset.ready = 'false';

@@ -1,4 +1,4 @@
-import { h } from '../../app/dom';
+import { h, setDisabled, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { clampedUniformKnots } from '../../math';
 import type { BSplineModel } from './model';
@@ -70,9 +70,9 @@ export function knotControls(api: LessonApi<BSplineState, BSplineModel>) {
   return {
     element,
     update(state: BSplineState) {
-      degree.textContent = `degree p = ${state.degree}`;
-      lower.disabled = state.degree <= 1;
-      raise.disabled = state.degree >= Math.min(MAX_DEGREE, state.points.length - 1);
+      setText(degree, `degree p = ${state.degree}`);
+      setDisabled(lower, state.degree <= 1);
+      setDisabled(raise, state.degree >= Math.min(MAX_DEGREE, state.points.length - 1));
     },
   };
 }

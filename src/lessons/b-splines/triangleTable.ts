@@ -1,4 +1,4 @@
-import { h, setChildren, setHidden } from '../../app/dom';
+import { h, setChildren, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import { texNumber } from '../../render/formula';
 import { shownRow } from './basisFigure';
@@ -35,13 +35,15 @@ export function triangleTable() {
         );
       }
       const last = shownRow(m) ?? -1;
-      caption.textContent =
+      setText(
+        caption,
         last < 0
           ? 'Step on: the rows appear one by one, from N(i,0) to N(i,p).'
           : `u = ${texNumber(m.u, 4)}; each row from the one above; the last row sums to ${texNumber(
               m.basis.reduce((a, b) => a + b, 0),
               4,
-            )}.`;
+            )}.`,
+      );
       rows.set(
         m.table.slice(0, last + 1).map((row, r) => ({
           className: r === last ? 'current' : '',

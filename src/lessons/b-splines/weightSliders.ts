@@ -1,4 +1,4 @@
-import { h, setChildren } from '../../app/dom';
+import { h, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { trimmed } from '../../kit/format';
 import { WEIGHT_MAX, WEIGHT_MIN } from './halo';
@@ -45,7 +45,7 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
       }
       state.weights.forEach((w, i) => {
         if (Number(inputs[i].value) !== w) inputs[i].value = String(w);
-        outputs[i].textContent = trimmed(w, 4);
+        setText(outputs[i], trimmed(w, 4));
       });
     },
   };

@@ -1,5 +1,5 @@
 import { notesKey } from '../../kit/notes';
-import { h } from '../../app/dom';
+import { h, setAttr, setText } from '../../app/dom';
 import type { LessonPanel } from '../../app/lesson';
 import { affinePanel } from './affine/details';
 import { closedPanel } from './closed/details';
@@ -79,8 +79,8 @@ export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, Pro
       if (state.experiment !== shownX) {
         shownX = state.experiment;
         const panel = PANELS[state.experiment];
-        title.textContent = `${panel.number}. ${panel.title}`;
-        sentence.textContent = panel.sentence;
+        setText(title, `${panel.number}. ${panel.title}`);
+        setText(sentence, panel.sentence);
       }
       tools.update(m, state);
       const nodes = detailsOf(m.kind).update(m);
@@ -88,7 +88,7 @@ export function propertiesPanel(api: PanelApi): LessonPanel<PropertiesState, Pro
         shownNodes = nodes;
         details.replaceChildren(...nodes);
       }
-      details.dataset.controlPoints = String(m.controls.length);
+      setAttr(details, 'data-control-points', String(m.controls.length));
     },
   };
 }

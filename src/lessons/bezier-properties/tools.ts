@@ -1,4 +1,4 @@
-import { h, setChildren } from '../../app/dom';
+import { h, setChildren, setDisabled, setText } from '../../app/dom';
 import type { Point } from '../../app/lesson';
 import { radioGroup } from '../../app/panelControls';
 import type { PanelApi } from './experimentPanel';
@@ -120,14 +120,14 @@ export function experimentTools(api: PanelApi) {
           group.style.display = id === state.experiment ? '' : 'none';
       }
       const count = done(m);
-      raise.disabled = count >= MAX_ELEVATIONS;
-      original.disabled = count === 0;
-      splitAgain.disabled = count >= MAX_SPLITS;
-      unsplit.disabled = count === 0;
-      addCopy.disabled = count >= MAX_COPIES;
-      removeCopy.disabled = count === 0;
-      addCopy.textContent = `Add a copy of P${state.repeated}`;
-      removeCopy.textContent = `Remove a copy of P${state.repeated}`;
+      setDisabled(raise, count >= MAX_ELEVATIONS);
+      setDisabled(original, count === 0);
+      setDisabled(splitAgain, count >= MAX_SPLITS);
+      setDisabled(unsplit, count === 0);
+      setDisabled(addCopy, count >= MAX_COPIES);
+      setDisabled(removeCopy, count === 0);
+      setText(addCopy, `Add a copy of P${state.repeated}`);
+      setText(removeCopy, `Remove a copy of P${state.repeated}`);
       if (repeated.options.length !== state.points.length) {
         setChildren(
           repeated,

@@ -1,4 +1,4 @@
-import { dataTable, h } from '../../app/dom';
+import { dataTable, h, setClass, setHidden, setText } from '../../app/dom';
 import { LiveFormula, formula, renderFormula } from '../../render/formula';
 import type { BlendingModel } from './model';
 import { centroidFormula, expansionTex, matrixFormTex, rowFormula } from './tex';
@@ -39,16 +39,20 @@ export function formsSection() {
       const { n } = m;
       if (n !== shownN) {
         shownN = n;
-        expansions.forEach((row, k) => (row.className = k + 1 === n ? 'current' : ''));
+        expansions.forEach((row, k) => setClass(row, k + 1 === n ? 'current' : ''));
         if (n > 3) renderFormula(currentExpansion, `N = ${n}:\\quad ${expansionTex(n, 3)}`, true);
-        currentExpansion.hidden = n <= 3;
+        setHidden(currentExpansion, n <= 3);
         renderFormula(matrix, matrixFormTex(m.matrix), true);
-        centroidTitle.textContent =
-          n === 3 ? 'Worked example: P(0.5) for the cubic' : `Worked example: P(0.5) for N = ${n}`;
-        centroidNote.textContent =
+        setText(
+          centroidTitle,
+          n === 3 ? 'Worked example: P(0.5) for the cubic' : `Worked example: P(0.5) for N = ${n}`,
+        );
+        setText(
+          centroidNote,
           n === 3
             ? 'The middle of the cubic is the centroid of its control points with weights 1, 3, 3, 1: a centre-weighted centroid. The inner points count three times as much as the ends.'
-            : `The middle of the curve is the centroid of its control points weighted by the binomial coefficients C(${n}, i): the points near the middle of the polygon count most. For the cubic this is (1/8)P0 + (3/8)P1 + (3/8)P2 + (1/8)P3.`;
+            : `The middle of the curve is the centroid of its control points weighted by the binomial coefficients C(${n}, i): the points near the middle of the polygon count most. For the cubic this is (1/8)P0 + (3/8)P1 + (3/8)P2 + (1/8)P3.`,
+        );
       }
       matrixAtMu.set(rowFormula(m.state.mu, m.weights));
       centroid.set(centroidFormula(n, m.centre));

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setChildren, setText } from '../../app/dom';
+import { dataTable, fmt, h, setAttr, setChildren, setClass, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { texT, words } from '../../kit/format';
@@ -73,7 +73,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
         if (formulas[i].element.parentNode !== middle) {
           // A new row: LiveRows writes its texts, the formula and the class go in here.
           middle.append(formulas[i].element);
-          weight.className = 'weight';
+          setClass(weight, 'weight');
         }
       });
 
@@ -86,7 +86,8 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
         pieces[i].style.width = `${(100 * w).toFixed(3)}%`;
         pieces[i].style.background = color(i);
       });
-      bar.setAttribute(
+      setAttr(
+        bar,
         'aria-label',
         `The weights stacked: ${weights.map((w, i) => `P${i} ${fmt(100 * w, 1)}%`).join(', ')}`,
       );

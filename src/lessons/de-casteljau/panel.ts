@@ -1,4 +1,4 @@
-import { dataTable, h, setChildren } from '../../app/dom';
+import { dataTable, h, setChildren, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox } from '../../app/panelControls';
@@ -89,15 +89,15 @@ export function deCasteljauPanel(
       const palette = api.theme().palette;
       const r = shown.count('level');
       split.update(state);
-      split.element.hidden = state.mode !== 'construction' && state.mode !== 'halves';
+      setHidden(split.element, state.mode !== 'construction' && state.mode !== 'halves');
       walks.update(m);
       pointCount.update(state);
       curvature.update({ src: 'bezier', p: state.p, t: state.t });
 
-      stepTitle.textContent = `Step ${state.step} of ${shown.lastStep}`;
-      stepText.textContent = `${scriptOf(state).caption(state, m, state.step)}.`;
-      note.textContent = m.note ?? '';
-      note.hidden = m.note === null;
+      setText(stepTitle, `Step ${state.step} of ${shown.lastStep}`);
+      setText(stepText, `${scriptOf(state).caption(state, m, state.step)}.`);
+      setText(note, m.note ?? '');
+      setHidden(note, m.note === null);
       if (r > 0) {
         levels[r].forEach((point, i) => {
           levelFormulas[i] ??= new LiveFormula(true);
@@ -129,9 +129,12 @@ export function deCasteljauPanel(
         );
       }
 
-      splitInfo.hidden = state.mode !== 'halves';
+      setHidden(splitInfo, state.mode !== 'halves');
       if (state.mode === 'halves') {
-        splitText.textContent = `Cut at t = ${words(t)}, the curve is two Bézier curves of degree ${n}. The left half (t from 0 to ${words(t)}) has the first point of every level as its control points, the right half (t from ${words(t)} to 1) the last point of every level, from level ${n} back to level 0.`;
+        setText(
+          splitText,
+          `Cut at t = ${words(t)}, the curve is two Bézier curves of degree ${n}. The left half (t from 0 to ${words(t)}) has the first point of every level as its control points, the right half (t from ${words(t)} to 1) the last point of every level, from level ${n} back to level 0.`,
+        );
         const row = (half: 0 | 1, name: string, point: readonly number[]) => ({
           cells: [
             { text: half === 0 ? 'Left' : 'Right', swatch: halfColour(palette, half) },

@@ -1,4 +1,4 @@
-import { dataTable, h, setText } from '../../app/dom';
+import { dataTable, h, setClass, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import { pointWords, sub, words } from '../../kit/format';
 import type { DeCasteljauModel } from './model';
@@ -82,7 +82,7 @@ function pseudocodeSection() {
       const values = lineValues(m);
       rows.forEach(({ row, now }, k) => {
         const className = run.includes(LISTING[k][0]) ? 'current' : '';
-        if (row.className !== className) row.className = className;
+        if (row.className !== className) setClass(row, className);
         setText(now, values[k]);
       });
     },
@@ -138,8 +138,8 @@ export function walkPanel() {
     elements: [pseudocode.element, bernstein.element],
     update(m: DeCasteljauModel) {
       const { mode } = m.state;
-      pseudocode.element.hidden = mode !== 'pseudocode';
-      bernstein.element.hidden = mode !== 'bernstein';
+      setHidden(pseudocode.element, mode !== 'pseudocode');
+      setHidden(bernstein.element, mode !== 'bernstein');
       if (mode === 'pseudocode') pseudocode.update(m);
       if (mode === 'bernstein') bernstein.update(m);
     },

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
+import { dataTable, fmt, h, setDisabled, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
@@ -183,8 +183,8 @@ export function hermitePanel(
       });
       setHidden(warning, !m.straight);
       setText(patchTitle, `Patch ${i + 1} of ${m.m}: from P${i} to P${i + 1}`);
-      previousPatch.disabled = state.patch <= 0;
-      nextPatch.disabled = state.patch >= m.m - 1;
+      setDisabled(previousPatch, state.patch <= 0);
+      setDisabled(nextPatch, state.patch >= m.m - 1);
 
       conditionsFormula.set(conditions(i, patch.data));
       renderFormula(matrixFormula, conditionsMatrixByName(i), true);

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h } from '../../app/dom';
+import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
@@ -92,9 +92,9 @@ export function lagrangePanel(
       spacing.update(state);
       spline.update(state);
       pointCount.update(state);
-      warning.hidden = m.collapsedWarning === null;
-      if (m.collapsedWarning) warning.textContent = m.collapsedWarning;
-      heading.textContent = `Degree ${n}, at t = ${fmt(state.t, 3)}`;
+      setHidden(warning, m.collapsedWarning === null);
+      if (m.collapsedWarning) setText(warning, m.collapsedWarning);
+      setText(heading, `Degree ${n}, at t = ${fmt(state.t, 3)}`);
       const t = texNumber(state.t, 3);
       pointFormula.set(pointShape(n), [t, t, ...at.map((v) => texNumber(v, 3))]);
       table.set(
@@ -109,8 +109,11 @@ export function lagrangePanel(
       );
       // Rows added for new points are marked too.
       markHovered();
-      sumLine.textContent = `The weights add up to ${words(m.weightSum)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`;
-      rungeParagraph.textContent = rungeText(lebesgue);
+      setText(
+        sumLine,
+        `The weights add up to ${words(m.weightSum)} at every t, so the curve does not depend on where the origin is. But they are not all between 0 and 1: a negative weight pushes the curve away from its point.`,
+      );
+      setText(rungeParagraph, rungeText(lebesgue));
     },
     hover(id) {
       hovered = id;

@@ -1,4 +1,4 @@
-import { h, setChildren } from '../../app/dom';
+import { h, setChildren, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { notesKey } from '../../kit/notes';
 import type { QuadraticModel } from './model';
@@ -80,14 +80,17 @@ export function quadraticPanel(
       const { shown } = m;
       if (shown.name !== shownStep) {
         shownStep = shown.name;
-        stepText.textContent = STEP_TEXT[shown.name];
+        setText(stepText, STEP_TEXT[shown.name]);
         const first = leading[shown.name];
         const rest = [parabola.element, parametric.element, rules.element].filter(
           (section) => section !== first,
         );
         setChildren(element, parameterNote, stepTitle, stepText, first, ...rest, higher, symbols);
       }
-      stepTitle.textContent = `Step ${shown.k} of ${shown.lastStep}: ${construction.caption(state, m, shown.k)}`;
+      setText(
+        stepTitle,
+        `Step ${shown.k} of ${shown.lastStep}: ${construction.caption(state, m, shown.k)}`,
+      );
       parabola.update(m);
       parametric.update(m);
       rules.update(m);

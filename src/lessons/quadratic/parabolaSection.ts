@@ -1,4 +1,4 @@
-import { fmt, h, setChildren } from '../../app/dom';
+import { fmt, h, setChildren, setText } from '../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
 
@@ -34,7 +34,7 @@ export function parabolaSection() {
           parabola.kind === 'same-x' ? null : solution.element,
         );
       }
-      if (panelWarning !== null) warning.textContent = panelWarning;
+      if (panelWarning !== null) setText(warning, panelWarning);
       system.set(SYSTEM, [
         ...p.flatMap((q) => [texShort(q[0]), texShort(q[0] * q[0])]),
         ...p.map((q) => texShort(q[1])),

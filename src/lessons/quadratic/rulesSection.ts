@@ -1,4 +1,4 @@
-import { dataTable, fmt, h } from '../../app/dom';
+import { dataTable, fmt, h, setClass, setDisabled, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
 import type { QuadraticModel } from './model';
@@ -47,13 +47,14 @@ export function rulesSection(api: LessonApi<QuadraticState, QuadraticModel>) {
       rules.forEach((rule, k) => {
         const { row, swatch, value, use } = rows[k];
         const chosen = rule.usable && Math.abs(clampMu(rule.mu) - m.state.mu) < 1e-12;
-        row.className = chosen ? 'current' : '';
+        setClass(row, chosen ? 'current' : '');
         swatch.style.background =
           m.shown.is('rules') && rule.usable ? seriesColour(palette, k) : 'transparent';
-        value.textContent = rule.usable
-          ? fmt(rule.mu, 4)
-          : `${fmt(rule.mu, 0)}: P1 is an end point, no curve`;
-        use.disabled = !rule.usable || chosen;
+        setText(
+          value,
+          rule.usable ? fmt(rule.mu, 4) : `${fmt(rule.mu, 0)}: P1 is an end point, no curve`,
+        );
+        setDisabled(use, !rule.usable || chosen);
       });
     },
   };

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
+import { dataTable, fmt, h, setDisabled, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { notesKey, notesSlip } from '../../kit/notes';
@@ -137,12 +137,12 @@ export function rasterPanel(
       if (Number(tolerance.value) !== state.tolerance) tolerance.value = String(state.tolerance);
       setText(toleranceText, `= ${fmt(state.tolerance, 2)} px`);
       setText(zoomText, `zoom ×${state.zoom} (${m.size.width} × ${m.size.height} pixels)`);
-      zoomOut.disabled = state.zoom <= ZOOM_MIN;
-      zoomIn.disabled = state.zoom >= ZOOM_MAX;
+      setDisabled(zoomOut, state.zoom <= ZOOM_MIN);
+      setDisabled(zoomIn, state.zoom >= ZOOM_MAX);
       const segments = m.adaptive.points.length - 1;
       setText(segmentText, `segment ${m.segment + 1} of ${segments}`);
-      previous.disabled = m.segment <= 0;
-      next.disabled = m.segment >= segments - 1;
+      setDisabled(previous, m.segment <= 0);
+      setDisabled(next, m.segment >= segments - 1);
 
       const { zoom } = state;
       const row = (name: string, line: RasterModel['uniform'], key: string) => ({

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setChildren } from '../../app/dom';
+import { dataTable, fmt, h, setChildren, setClass } from '../../app/dom';
 import { type RowSpec, LiveRows } from '../../app/liveTable';
 import { markForFit } from '../../render/fit';
 import type { RoadSolve, SolveProgress } from './solve';
@@ -157,10 +157,6 @@ function styleCells(body: HTMLTableSectionElement, full: boolean, span: number):
       setClass(cells[c], zero ? 'zero' : rhs ? 'rhs' : '');
     }
   }
-}
-
-function setClass(cell: HTMLTableCellElement, name: string): void {
-  if (cell.className !== name) cell.className = name;
 }
 
 /** The longest text of each column, as a key: a monospaced table is as wide as these. */

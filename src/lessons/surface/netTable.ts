@@ -1,4 +1,4 @@
-import { h } from '../../app/dom';
+import { h, setText } from '../../app/dom';
 import { formatNumber, parseNumber } from '../../app/fields';
 import type { LessonApi, Point } from '../../app/lesson';
 import type { SurfaceModel } from './model';
@@ -49,11 +49,14 @@ export function netTable(
         const state = api.get();
         const p = parseTriple(input.value);
         if (!p) {
-          message.textContent = `${name}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[field][m][n])}.`;
+          setText(
+            message,
+            `${name}${m},${n}: type three numbers "x, y, z" (each at most ${LIMIT} in size); kept ${tripleText(state[field][m][n])}.`,
+          );
           input.value = tripleText(state[field][m][n]);
           return;
         }
-        message.textContent = '';
+        setText(message, '');
         const net = state[field].map((points, i) =>
           points.map((q, j) => (i === m && j === n ? p : q)),
         );

@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
 import { type ExperimentPanel, arrangements, smallNumber } from '../experimentPanel';
 import type { ModelOf } from '../model';
@@ -47,24 +47,33 @@ export const affinePanel: ExperimentPanel<ModelOf<'affine'>> = {
         );
         const images = m.images;
         if (!images.ok) {
-          why.textContent = images.why;
+          setText(why, images.why);
           return show('none', () => [intro, matrix.element, vanishing, why]);
         }
         const d = images.distance;
         deviation.dataset.mapDeviation = String(d);
-        deviation.textContent = `Largest distance between the two images at equal t: ${d < 1e-9 ? smallNumber(d) : d.toFixed(4)}${d < 1e-9 ? ' — they agree, up to rounding.' : `, at t = ${images.at.toFixed(3)}: they differ.`}`;
+        setText(
+          deviation,
+          `Largest distance between the two images at equal t: ${d < 1e-9 ? smallNumber(d) : d.toFixed(4)}${d < 1e-9 ? ' — they agree, up to rounding.' : `, at t = ${images.at.toFixed(3)}: they differ.`}`,
+        );
         // An affine map leaves nothing to repair.
         if (images.rationalDistance === null)
           return show('affine', () => [intro, matrix.element, deviation, affineNote]);
         const ws = images.weights;
         const [low, high] = images.weightRange;
-        divides.textContent = `Here w runs from ${low.toFixed(2)} to ${high.toFixed(2)} over the control points: the map divides by w, and dividing does not commute with averaging. The ring (map of P(t)) and the dot (curve of the mapped points at t) separate.`;
+        setText(
+          divides,
+          `Here w runs from ${low.toFixed(2)} to ${high.toFixed(2)} over the control points: the map divides by w, and dividing does not commute with averaging. The ring (map of P(t)) and the dot (curve of the mapped points at t) separate.`,
+        );
         rational.set(
           rationalShape(ws.length),
           ws.map((w) => texNumber(w, 2)),
         );
         repaired.dataset.rationalDeviation = String(images.rationalDistance);
-        repaired.textContent = `Giving each mapped control point its w as a weight (a rational Bézier curve, the simplest NURBS) reproduces the map of the curve: largest distance ${smallNumber(images.rationalDistance)}.`;
+        setText(
+          repaired,
+          `Giving each mapped control point its w as a weight (a rational Bézier curve, the simplest NURBS) reproduces the map of the curve: largest distance ${smallNumber(images.rationalDistance)}.`,
+        );
         return show('perspective', () => [
           intro,
           matrix.element,

@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula } from '../../../render/formula';
 import { type ExperimentPanel, arrangements } from '../experimentPanel';
 import type { ModelOf } from '../model';
@@ -22,9 +22,12 @@ export const closedPanel: ExperimentPanel<ModelOf<'closed'>> = {
         const { n, corner } = m;
         if (corner === null) return show('unmeasurable', () => [unmeasurable]);
         tangents.set(`P'(0) = ${n}(P_1 - P_0),\\qquad P'(1) = ${n}(P_0 - P_{${n - 1}})`, []);
-        verdict.textContent = m.smooth
-          ? `The end tangents agree in direction (within ${corner.toFixed(2)}°): the closed curve is smooth at P0.`
-          : `The arriving and the leaving tangent (arrows, shortened to fit the figure; their directions are true) meet at ${corner.toFixed(1)}°: the curve closes with a corner at P0. Drag P1 or P${n - 1} in line with P0 to smooth it.`;
+        setText(
+          verdict,
+          m.smooth
+            ? `The end tangents agree in direction (within ${corner.toFixed(2)}°): the closed curve is smooth at P0.`
+            : `The arriving and the leaving tangent (arrows, shortened to fit the figure; their directions are true) meet at ${corner.toFixed(1)}°: the curve closes with a corner at P0. Drag P1 or P${n - 1} in line with P0 to smooth it.`,
+        );
         return show('measured', () => [tangents.element, verdict]);
       },
     };

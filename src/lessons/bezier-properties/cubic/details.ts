@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT, formula } from '../../../render/formula';
 import { texT } from '../../../kit/format';
 import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
@@ -49,16 +49,20 @@ export const cubicPanel: ExperimentPanel<ModelOf<'cubic'>> = {
         leftSwatch.style.background = palette[0];
         rightSwatch.style.background = palette[2];
         const t = texT(m.state.t);
-        curvature.textContent =
+        setText(
+          curvature,
           m.curvature === null
             ? `At t = ${t} the speed is zero (a cusp): the curvature is not defined there.`
-            : `κ(${t}) = ${m.curvature.toFixed(4)}`;
+            : `κ(${t}) = ${m.curvature.toFixed(4)}`,
+        );
         if (m.straight) return show('straight', () => [key, kappa, curvature, straight]);
         const found = m.inflections.map((inflection) => inflection.t.toFixed(4));
-        inflections.textContent =
+        setText(
+          inflections,
           found.length === 0
             ? 'No inflection on [0, 1]: the curve turns one way only.'
-            : `Inflection${found.length > 1 ? 's' : ''} at t = ${found.join(' and ')}, where P′ × P″ = 0 and the curvature changes sign.`;
+            : `Inflection${found.length > 1 ? 's' : ''} at t = ${found.join(' and ')}, where P′ × P″ = 0 and the curvature changes sign.`,
+        );
         if (m.loop)
           crossing.set(CROSSING, [
             m.loop.t[0].toFixed(4),

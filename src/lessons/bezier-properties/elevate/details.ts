@@ -1,4 +1,4 @@
-import { dataTable, h } from '../../../app/dom';
+import { dataTable, h, setText } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula, formula } from '../../../render/formula';
 import {
@@ -44,12 +44,17 @@ export const elevatePanel: ExperimentPanel<ModelOf<'elevate'>> = {
     return {
       update(m) {
         const raised = m.polygons.length - 1;
-        degree.textContent =
+        setText(
+          degree,
           raised === 0
             ? `Degree ${m.originalDegree}, not raised yet. Press "Raise the degree" (or step forward).`
-            : `Degree ${m.originalDegree} raised ${raised} time${raised === 1 ? '' : 's'}: degree ${m.n}, ${m.n + 1} control points (solid), the original polygon dashed.`;
+            : `Degree ${m.originalDegree} raised ${raised} time${raised === 1 ? '' : 's'}: degree ${m.n}, ${m.n + 1} control points (solid), the original polygon dashed.`,
+        );
         deviation.dataset.deviation = String(m.deviation);
-        deviation.textContent = `Largest distance between this curve and the original, over ${DEVIATION_SAMPLES + 1} samples: ${smallNumber(m.deviation)} — the same curve, up to rounding.`;
+        setText(
+          deviation,
+          `Largest distance between this curve and the original, over ${DEVIATION_SAMPLES + 1} samples: ${smallNumber(m.deviation)} — the same curve, up to rounding.`,
+        );
         if (m.lastStep) lastStep.set(lastStepShape(m.lastStep.from), coords(m.lastStep.q1, 3));
         rows.set(
           m.polygons.map((polygon, j) => ({

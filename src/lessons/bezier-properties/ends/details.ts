@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT } from '../../../render/formula';
 import { texT } from '../../../kit/format';
 import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
@@ -39,8 +39,14 @@ export const endsPanel: ExperimentPanel<ModelOf<'ends'>> = {
           texT(m.state.t),
           ...coords(at.vector),
         ]);
-        speeds.textContent = `Speeds: |P′(0)| = ${start.speed.toFixed(3)}, |P′(1)| = ${end.speed.toFixed(3)}, |P′(t)| = ${at.speed.toFixed(3)}.`;
-        stillAtEnd.textContent = `P${n - 1} sits on P${n}, so P′(1) = 0: the curve arrives with zero speed.`;
+        setText(
+          speeds,
+          `Speeds: |P′(0)| = ${start.speed.toFixed(3)}, |P′(1)| = ${end.speed.toFixed(3)}, |P′(t)| = ${at.speed.toFixed(3)}.`,
+        );
+        setText(
+          stillAtEnd,
+          `P${n - 1} sits on P${n}, so P′(1) = 0: the curve arrives with zero speed.`,
+        );
         return show(`${m.stillAtStart} ${m.stillAtEnd}`, () => [
           values.element,
           speeds,

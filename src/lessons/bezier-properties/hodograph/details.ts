@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { notesSlip } from '../../../kit/notes';
 import { LiveFormula, SLOT } from '../../../render/formula';
 import { texT } from '../../../kit/format';
@@ -47,7 +47,10 @@ export const hodographPanel: ExperimentPanel<ModelOf<'hodograph'>> = {
           m.hodograph.flatMap((v) => coords(v, 3)),
         );
         atT.set(AT_T, [texT(m.state.t), ...coords(m.derivative, 4)]);
-        agreement.textContent = `From the derivative curve, from the construction’s last edge ${m.n}(P${m.n - 1},1 − P${m.n - 1},0) and from the tangent computed apart, P′(t) agrees to ${smallNumber(m.disagreement)}.`;
+        setText(
+          agreement,
+          `From the derivative curve, from the construction’s last edge ${m.n}(P${m.n - 1},1 − P${m.n - 1},0) and from the tangent computed apart, P′(t) agrees to ${smallNumber(m.disagreement)}.`,
+        );
         return nodes;
       },
     };

@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import type { ExperimentPanel } from '../experimentPanel';
 import type { ModelOf } from '../model';
 
@@ -24,11 +24,13 @@ export const hullPanel: ExperimentPanel<ModelOf<'hull'>> = {
     return {
       update(m) {
         const { inside, total } = m;
-        verdict.textContent =
+        setText(
+          verdict,
           inside === total
             ? `All ${total} sampled curve points lie in the hull.`
-            : `${total - inside} of ${total} samples lie outside the hull: that would contradict the theorem — please report it.`;
-        shape.textContent = shapeOf(m);
+            : `${total - inside} of ${total} samples lie outside the hull: that would contradict the theorem — please report it.`,
+        );
+        setText(shape, shapeOf(m));
         return nodes;
       },
     };

@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
 import { type ExperimentPanel, arrangements } from '../experimentPanel';
 import type { ModelOf } from '../model';
@@ -27,10 +27,13 @@ export const localPanel: ExperimentPanel<ModelOf<'local'>> = {
     return {
       update(m) {
         const { at, distance } = m.largest;
-        displacement.textContent = `Largest displacement of the curve: ${distance.toFixed(4)}, at t = ${at.toFixed(3)} (dashed: before; the orange arrow shows it).`;
+        setText(
+          displacement,
+          `Largest displacement of the curve: ${distance.toFixed(4)}, at t = ${at.toFixed(3)} (dashed: before; the orange arrow shows it).`,
+        );
         if (m.moved.length === 0) return show('unmoved', () => [unmoved]);
         if (!m.single) {
-          movedList.textContent = `Points moved: ${m.moved.map((i) => `P${i}`).join(', ')}.`;
+          setText(movedList, `Points moved: ${m.moved.map((i) => `P${i}`).join(', ')}.`);
           return show('several', () => [displacement, movedList]);
         }
         const { index: i, shift, peak } = m.single;
@@ -40,7 +43,10 @@ export const localPanel: ExperimentPanel<ModelOf<'local'>> = {
           texNumber(shift, 3),
           texNumber(peak * shift, 4),
         ]);
-        share.textContent = `P${i} moved by ${shift.toFixed(3)}, the curve by at most ${m.single.percent.toFixed(1)}% of that. Every point of the curve moved (there is no local control), yet none by much: the weight of P${i} is never more than ${peak.toFixed(3)}.`;
+        setText(
+          share,
+          `P${i} moved by ${shift.toFixed(3)}, the curve by at most ${m.single.percent.toFixed(1)}% of that. Every point of the curve moved (there is no local control), yet none by much: the weight of P${i} is never more than ${peak.toFixed(3)}.`,
+        );
         return show('one', () => [displacement, bound.element, share]);
       },
     };

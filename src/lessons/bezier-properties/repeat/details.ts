@@ -1,4 +1,4 @@
-import { h } from '../../../app/dom';
+import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
 import { texT } from '../../../kit/format';
 import { type ExperimentPanel } from '../experimentPanel';
@@ -21,7 +21,10 @@ export const repeatPanel: ExperimentPanel<ModelOf<'repeat'>> = {
       update(m) {
         const { repeated: r, t } = m.state;
         const { copies, n } = m;
-        summary.textContent = `P${r} appears ${copies} time${copies === 1 ? '' : 's'}: the curve has ${n + 1} control points, degree ${n}. Dashed: the curve with P${r} once.`;
+        setText(
+          summary,
+          `P${r} appears ${copies} time${copies === 1 ? '' : 's'}: the curve has ${n + 1} control points, degree ${n}. Dashed: the curve with P${r} once.`,
+        );
         weight.set(weightShape(r, copies, n), [
           texT(t),
           texNumber(m.weight, 4),

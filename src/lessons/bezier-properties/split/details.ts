@@ -1,4 +1,4 @@
-import { dataTable, h } from '../../../app/dom';
+import { dataTable, h, setText } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula } from '../../../render/formula';
 import { sub, texT } from '../../../kit/format';
@@ -42,9 +42,15 @@ export const splitPanel: ExperimentPanel<ModelOf<'split'>> = {
         const { t } = m.state;
         const splits = m.levels.length - 1;
         const n = m.controls.length - 1;
-        atEnd.textContent = `At t = ${t} one of the two pieces is the single point P${t === 0 ? '0' : `${n}`} and the other is the whole curve again: nothing is gained. Choose t inside (0, 1).`;
+        setText(
+          atEnd,
+          `At t = ${t} one of the two pieces is the single point P${t === 0 ? '0' : `${n}`} and the other is the whole curve again: nothing is gained. Choose t inside (0, 1).`,
+        );
         if (m.first) {
-          firstSplit.textContent = `First split at t = ${texT(t)}: the left polygon is the first point of every level of de Casteljau’s construction (from P${sub(0)} to P(t)), the right one the last point of every level (from P(t) to P${sub(n)}).`;
+          setText(
+            firstSplit,
+            `First split at t = ${texT(t)}: the left polygon is the first point of every level of de Casteljau’s construction (from P${sub(0)} to P(t)), the right one the last point of every level (from P(t) to P${sub(n)}).`,
+          );
           left.set(
             polygonShape('left', m.first[0].length),
             m.first[0].flatMap((q) => coords(q)),
