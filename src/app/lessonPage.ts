@@ -604,6 +604,8 @@ export class LessonPage<S, M> {
         this.frame !== 0 ||
         this.fitPending ||
         typesetWaiting() ||
+        // Formula fonts still on their way: the caption and the figure beside it change size when they come.
+        document.fonts?.status === 'loading' ||
         this.panelState !== this.store.state ||
         this.drawnState !== this.store.state;
       // The state is final: the link it would write in a moment is written now

@@ -352,3 +352,31 @@ for (const slug of lessonFolders()) {
     }
   });
 }
+
+test('the page is settled only once its formula fonts have come: the figure has its final size', async ({
+  page,
+}) => {
+  // Fonts slow to arrive, as on a loaded machine: bezier-properties' "ends" scene
+  // was screenshotted 3 px taller than its reference (932 px, not 929) before them.
+  await page.route(/\.(woff2?|ttf)$/, async (route) => {
+    await new Promise((done) => setTimeout(done, 800));
+    await route.continue();
+  });
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await page.goto('./#/bezier-properties');
+  await settled(page);
+  await page.keyboard.press('p');
+  // The scene buttons are in the panel, which presenter view hides.
+  await page.evaluate(() =>
+    document.querySelector<HTMLButtonElement>('button[data-scene="ends"]')!.click(),
+  );
+  await page.keyboard.press('End');
+  await settled(page);
+  const height = () =>
+    page.locator('.stage-figures').evaluate((e) => e.getBoundingClientRect().height);
+  const first = await height();
+  expect(await page.evaluate(() => document.fonts.status)).toBe('loaded');
+  await page.evaluate(() => document.fonts.ready);
+  await settled(page);
+  expect(await height()).toBe(first);
+});
