@@ -17,13 +17,6 @@ const overlap = (a: Box, b: Box) =>
   Math.max(0, Math.min(a.left + a.width, b.left + b.width) - Math.max(a.left, b.left)) *
   Math.max(0, Math.min(a.top + a.height, b.top + b.height) - Math.max(a.top, b.top));
 
-/** Distance from (x, y) to the box (0 inside it). */
-const distanceTo = (b: Box, x: number, y: number) =>
-  Math.hypot(
-    Math.max(b.left - x, 0, x - (b.left + b.width)),
-    Math.max(b.top - y, 0, y - (b.top + b.height)),
-  );
-
 /** A place a point's name may go, and what it costs apart from the names placed before it. */
 interface Spot {
   readonly box: Box;
@@ -65,12 +58,18 @@ const spotsFor = memoLast(
           const cy = y - Math.sin(angle) * (height / 2 + reach);
           const box = { left: cx - width / 2, top: cy - height / 2, width, height };
           let cost = ring * 4 + (Math.sin(angle) < 0 ? 1 : 0);
-          const own = Math.hypot(x - cx, y - cy);
-          screen.forEach(([px, py], k) => {
-            if (distanceTo(box, px, py) < radius) cost += 1e4;
+          // Squared distances, compared as the distances are (16 × 64 × 16 of them a frame while a point moves).
+          const own = (x - cx) ** 2 + (y - cy) ** 2;
+          const right = box.left + width;
+          const bottom = box.top + height;
+          for (let k = 0; k < screen.length; k++) {
+            const [px, py] = screen[k];
+            const dx = Math.max(box.left - px, 0, px - right);
+            const dy = Math.max(box.top - py, 0, py - bottom);
+            if (dx * dx + dy * dy < radius * radius) cost += 1e4;
             // Nearer another point than its own: it would name the wrong one.
-            if (k !== i && Math.hypot(px - cx, py - cy) < own) cost += 40;
-          });
+            if (k !== i && (px - cx) ** 2 + (py - cy) ** 2 < own) cost += 40;
+          }
           if (
             box.left < 0 ||
             box.top < 0 ||
