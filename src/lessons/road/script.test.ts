@@ -58,6 +58,18 @@ describe('the road’s script: each step named after what it reveals', () => {
     ]);
   });
 
+  it('a segment step names every segment the figure shows built, from P0, and the new ones', () => {
+    // The quadratic road: villages, its construction, then one segment of 5 a press.
+    const road = state({ road: 'quadratic' });
+    const say = (step: number) => lesson.steps!.describe({ ...road, step }, step);
+    expect(say(2)).toBe('Built so far: segment 0 of the 5');
+    expect(say(3)).toBe('Built so far: segments 0–1 of the 5 (new: segment 1)');
+    expect(say(5)).toBe('Built so far: segments 0–3 of the 5 (new: segment 3)');
+    expect(say(6)).toBe('The whole road: p̄ runs from 0 at P₀ to 5 at P₅');
+    // The figure draws segments 0 … 1 at step 3: the road up to P2.
+    expect(derive({ ...road, step: 3 }).shown.index).toBe(2);
+  });
+
   it('the overlay: one answer a press, whatever the method', () => {
     expect(names(state({ view: 'compare', compare: [6, 0, 3] }))).toEqual([
       'villages',

@@ -129,7 +129,10 @@ export const roadScript = script<RoadState, RoadModel, Reveal>(
         return `The whole road: p̄ runs from 0 at P0 to ${total} at ${state.road === 'ring' ? 'P0 again' : `P${state.villages.length - 1}`}`;
       const size = chunkSize(total);
       const built = Math.min(total, index * size);
-      return `Built so far: ${span('segment', Math.max(0, built - size), built - 1)} of 0–${total - 1}`;
+      // What the figure shows: every segment from P0 to here, the newest last.
+      const first = Math.max(0, built - size);
+      const newest = first > 0 ? ` (new: ${span('segment', first, built - 1)})` : '';
+      return `Built so far: ${span('segment', 0, built - 1)} of the ${total}${newest}`;
     },
     buildFormula,
   ),
