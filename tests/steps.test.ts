@@ -9,9 +9,13 @@
  * - no label's letters crossed by a stroke or a disc, drawn before it or
  *   after (the painter's own record of its ink), and no label on another;
  * - every handle of the step inside its figure;
+ * - every point's name nearer its own point than any other, on the projector
+ *   and on a phone (P₃'s name beside P₄ is read as P₄'s);
  * - numbers to sensible digits on the figures, in the caption and in the
  *   step's formula: no
  *   "1.000000000000", no rounding residue "2.69×10⁻¹⁶";
+ * - no caption that places a figure ("on the left", "the plot below"): the
+ *   figures sit side by side on a projector and one under another on a phone;
  * - every press changes what the room sees besides the caption: a figure or
  *   the step's formula.
  */
@@ -22,7 +26,7 @@ import { lessons } from '../src/app/registry';
 import { defaultsOf } from '../src/app/urlState';
 import { drawHeadless } from '../src/app/headless';
 import { filled } from '../src/render/formula';
-import { glyphBox } from '../src/render/labels';
+import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
 
 const theme = makeTheme(false, true);
@@ -30,6 +34,9 @@ const ROW = { width: 1900, height: 800 };
 /** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
 const MIN_TEXT = 28;
 const MIN_POINT_LABEL = 36;
+/** A figure on a phone held upright (360 × 740, as the phone's page lays it out). */
+const PHONE = { width: 344, height: 512 };
+const phoneTheme = makeTheme(false, false);
 
 /**
  * A number no lecturer reads out: more than six decimals ("1.000000000000",
@@ -40,6 +47,39 @@ function unreadableNumber(text: string): string | null {
   return /\d\.\d{7,}|×\s?10[⁻-]/.exec(text)?.[0] ?? null;
 }
 
+/** Distance from (x, y) to the nearest point of a label's box. */
+const toBox = (x: number, y: number, b: LabelBox) =>
+  Math.hypot(Math.max(b.x - x, 0, x - b.x - b.width), Math.max(b.y - y, 0, y - b.y - b.height));
+
+/**
+ * A point's name nearer another point than its own is read as the other's
+ * (P₃ beside P₄): every label placed beside a point, unless a leader line ties
+ * it to its point, is nearest its own.
+ */
+function namedElsewhere(
+  labels: readonly LabelBox[],
+  points: readonly [number, number][],
+): string[] {
+  const found: string[] = [];
+  for (const label of labels) {
+    if (!label.anchor || label.leader) continue;
+    const [ax, ay] = label.anchor;
+    const own = toBox(ax, ay, label);
+    const nearer = points.find(
+      ([x, y]) => (x !== ax || y !== ay) && toBox(x, y, label) < own - 0.5,
+    );
+    if (nearer)
+      found.push(
+        `“${label.text}” is nearer the point at (${nearer.map((v) => v.toFixed(0)).join(', ')}) than its own`,
+      );
+  }
+  return found;
+}
+
+/** Words that place a figure on the screen, which changes with the screen's shape. */
+const PLACE_ON_SCREEN =
+  /\bon the (left|right)\b|\b(figure|plot|strip|curve|functions?)s? (below|above|beside)\b/i;
+
 interface Drawn {
   svg: string;
   problems: string[];
@@ -48,8 +88,7 @@ interface Drawn {
 /** Every figure the state's scene shows, drawn as the projector shows it, with what is wrong in it. */
 function drawStep(lesson: AnyLesson, state: unknown): Drawn {
   const model = lesson.derive(state);
-  const shownIds = lesson.figuresShown?.(state) ?? null;
-  const figures = lesson.figures.filter((f) => !shownIds || shownIds.includes(f.id));
+  const figures = figuresOf(lesson, state);
   const total = figures.reduce((sum, f) => sum + (f.weight ?? 1), 0);
   const problems: string[] = [];
   let svg = '';
@@ -92,6 +131,12 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
         const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
         if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
       }
+    problems.push(
+      ...namedElsewhere(
+        painter.labels,
+        handles.map((h) => view.toScreen(h.position)),
+      ).map((p) => at + ' ' + p),
+    );
     for (const handle of handles) {
       const [x, y] = view.toScreen(handle.position);
       if (!(x >= 0 && y >= 0 && x <= width && y <= height))
@@ -99,6 +144,30 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
     }
   }
   return { svg, problems };
+}
+
+function figuresOf(lesson: AnyLesson, state: unknown) {
+  const shownIds = lesson.figuresShown?.(state) ?? null;
+  return lesson.figures.filter((f) => !shownIds || shownIds.includes(f.id));
+}
+
+/**
+ * The step on a phone (360 px wide: each figure the page's width, one under
+ * another, in the screen's theme): whose names are beside whose points.
+ */
+function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
+  const model = lesson.derive(state);
+  return figuresOf(lesson, state).flatMap((figure) => {
+    const { painter, handles, view } = drawHeadless(figure, model, {
+      ...PHONE,
+      height: figure.height ?? PHONE.height,
+      theme: phoneTheme,
+    });
+    return namedElsewhere(
+      painter.labels,
+      handles.map((h) => view.toScreen(h.position)),
+    ).map((p) => `phone ${figure.id}: ${p}`);
+  });
 }
 
 describe('presenter sizes', () => {
@@ -122,11 +191,16 @@ describe('every step of every scene, as the room sees it', () => {
         for (let k = 0; k <= count; k++) {
           const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
           const { svg, problems } = drawStep(lesson, state);
-          for (const problem of problems) found.push(`${scene.id} step ${k}: ${problem}`);
+          for (const problem of [...problems, ...namesOnPhone(lesson, state)])
+            found.push(`${scene.id} step ${k}: ${problem}`);
           // The caption names points as the figure labels them: P₁, not P1.
           const caption = steps.describe(state, k);
           const plain = caption.match(/(?<![A-Za-z])[PDBQLH]\d/);
           if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
+          // Figures sit side by side on a wide screen and one under another on a
+          // phone: a caption that says "on the left" or "the plot below" is wrong on one.
+          const place = caption.match(PLACE_ON_SCREEN);
+          if (place) found.push(`${scene.id} step ${k}: the caption says “${place[0]}”`);
           const digits = unreadableNumber(caption);
           if (digits) found.push(`${scene.id} step ${k}: the caption writes ${digits}`);
           const formula = steps.formula?.(lesson.derive(state), state);

@@ -33,6 +33,8 @@ export function drawHandles(
   // The names after every handle is down: each goes to the first side of its
   // point where no line, point or other name runs through it.
   if (!painter.show.labels) return;
+  // Each name goes nearer its own point than any other (P₃'s never beside P₄).
+  const rivals = handles.map((handle) => painter.view.toScreen(handle.position));
   for (const handle of handles) {
     if (handle.showLabel === false) continue;
     painter.label(handle.label, handle.position, {
@@ -40,6 +42,7 @@ export function drawHandles(
       color: handle.color ?? theme.ink,
       halo: true,
       bold: true,
+      rivals,
     });
   }
 }

@@ -28,6 +28,13 @@ export interface LabelStyle {
    * right, above left, below left, right, left, above, below.
    */
   around?: number;
+  /**
+   * Other named points on screen (pixels). A label placed `around` its point
+   * goes only where it is nearer its own point than any of these, so P₃'s name
+   * beside P₄ is never read as P₄'s; failing that it goes farther out on a
+   * leader line from its point.
+   */
+  rivals?: readonly (readonly [number, number])[];
   /** It stays where it is put (an axis number at its tick), or is left out. */
   fixed?: boolean;
   /**
@@ -46,6 +53,39 @@ export interface LabelBox {
   height: number;
   /** Drawn on a box of its own (a boxed value, a note), which covers what lies under it. */
   boxed?: boolean;
+  /** The point it names, for a label placed beside one (`around`), in screen pixels. */
+  anchor?: [number, number];
+  /** Tied to that point by a leader line. */
+  leader?: boolean;
+}
+
+/** Squared distance from (x, y) to the nearest point of a box. */
+export function distanceToBox2(x: number, y: number, box: Box): number {
+  const dx = Math.max(box.x - x, 0, x - (box.x + box.width));
+  const dy = Math.max(box.y - y, 0, y - (box.y + box.height));
+  return dx * dx + dy * dy;
+}
+
+/**
+ * Is a label's box at least as near its own point (ax, ay) as any of the
+ * other points? A name nearer another point is read as that point's.
+ */
+export function nearestIsOwn(
+  box: Box,
+  ax: number,
+  ay: number,
+  others: readonly (readonly [number, number])[],
+): boolean {
+  const own = distanceToBox2(ax, ay, box);
+  for (const [x, y] of others) {
+    if (x === ax && y === ay) continue;
+    // Cheap reject first: a point farther off on either axis cannot be nearer.
+    const dx = Math.max(box.x - x, 0, x - (box.x + box.width));
+    if (dx * dx >= own) continue;
+    const dy = Math.max(box.y - y, 0, y - (box.y + box.height));
+    if (dx * dx + dy * dy < own) return false;
+  }
+  return true;
 }
 
 /**
@@ -288,10 +328,15 @@ export function drawScreenLabel(
   const height = size * 1.3;
   const free = (l: number, m: number) =>
     !painter.labels.some((b) => overlaps(b, l, m - size * 0.65, total, height));
-  const clear = (l: number, m: number) =>
+  const unmarked = (l: number, m: number) =>
     free(l, m) &&
     !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }));
+  const rivals = around ? style.rivals : undefined;
+  const own = (l: number, m: number) =>
+    !rivals || nearestIsOwn({ x: l, y: m - size * 0.65, width: total, height }, x, y, rivals);
+  const clear = (l: number, m: number) => unmarked(l, m) && own(l, m);
   let boxed = style.box === true;
+  let leaderDrawn = false;
   if (!style.inBox && !clear(left, middleY)) {
     if (style.fixed) return { width: 0 };
     const gap = size * 0.3;
@@ -325,15 +370,19 @@ export function drawScreenLabel(
       };
       spot = farSpots(ax, ay, total, height)
         .map(([l, m]) => inside(l, m))
-        .find(([l, m]) => clear(l, m) && leaderClear(l, m));
+        // The leader says whose name it is: no need to be nearest its point.
+        .find(([l, m]) => unmarked(l, m) && leaderClear(l, m));
       if (spot) leader = [ax, ay];
     }
     // Nowhere clear within reach: it keeps a free place and is boxed, so the
     // lines under it cannot be read as part of it.
     if (!spot) boxed = true;
-    spot ??= free(left, middleY) ? [left, middleY] : spots.find(([l, m]) => free(l, m));
+    const places: [number, number][] = [[left, middleY], ...spots];
+    spot ??=
+      places.find(([l, m]) => free(l, m) && own(l, m)) ?? places.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };
     [left, middleY] = spot;
+    leaderDrawn = leader !== null;
     if (leader)
       drawLeader(
         painter,
@@ -354,6 +403,8 @@ export function drawScreenLabel(
       width: total,
       height,
       ...(boxed ? { boxed: true } : {}),
+      ...(around ? { anchor: [x, y] as [number, number] } : {}),
+      ...(leaderDrawn ? { leader: true } : {}),
     });
   if (boxed) {
     const pad = size * 0.35;

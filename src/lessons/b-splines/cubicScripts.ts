@@ -25,7 +25,7 @@ export const localScript = script<BSplineState, LocalModel, LocalReveal>(
   ),
   step(
     'basis',
-    'The basis functions below: each is non-zero on four segments only',
+    'The plot of the basis functions: each is non-zero on four segments only',
     ({ model: m }) => `P(s{=}${n3(m.u)}) = ${blend(m.basis, (j) => `P_{${j}}`)}`,
   ),
 );

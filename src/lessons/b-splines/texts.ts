@@ -17,7 +17,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   local: {
     title: 'Local control',
-    text: 'A control point of the cubic B-spline acts on four segments only: move it, and the rest of the curve does not change at all (the changed part is highlighted against the curve before). The Bézier curve through the same points changes along its whole length, because every Bernstein polynomial is non-zero on all of [0, 1]. The basis functions below show why: each B-spline basis function is zero outside four segments.',
+    text: 'A control point of the cubic B-spline acts on four segments only: move it, and the rest of the curve does not change at all (the changed part is highlighted against the curve before). The Bézier curve through the same points changes along its whole length, because every Bernstein polynomial is non-zero on all of [0, 1]. The plot of the basis functions shows why: each B-spline basis function is zero outside four segments.',
   },
   convert: {
     title: 'B-spline ↔ Bézier, segment by segment',

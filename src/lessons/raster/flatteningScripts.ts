@@ -59,7 +59,9 @@ export const compareScript = script<RasterState, RasterModel, Reveal>(
   step(
     'twice',
     ({ state }) =>
-      `The same curve twice: uniform sampling on the left, adaptive flattening to τ = ${num(state.tolerance)} px on the right.`,
+      // The figures sit side by side on a wide screen and one under the
+      // other on a phone: the caption names them by their titles.
+      `The same curve twice: “Uniform” samples it at even steps of t, “Adaptive” flattens it to τ = ${num(state.tolerance)} px.`,
   ),
   step(
     'uniform',
