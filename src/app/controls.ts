@@ -20,6 +20,13 @@ export interface ControlHost<S> {
   settle(): void;
 }
 
+/**
+ * Decimals a parameter's value is shown with: none for a count that moves in
+ * whole steps (n = 6, not 6.000: its lesson draws the nearest whole number),
+ * three for a parameter on [0, 1] (t = 0.450).
+ */
+export const decimalsFor = (step: number): number => (Number.isInteger(step) ? 0 : 3);
+
 /** The parameter slider with its number field and Play. */
 export class ParameterControl<S> {
   readonly element: HTMLElement;
@@ -112,8 +119,9 @@ export class ParameterControl<S> {
     if (value === this.shown) return;
     this.shown = value;
     if (Number(this.slider.value) !== value) this.slider.value = String(value);
-    this.slider.setAttribute('aria-valuetext', `${this.spec.label} = ${fmt(value, 3)}`);
-    if (document.activeElement !== this.number) this.number.value = fmt(value, 3);
+    const shown = fmt(value, decimalsFor(this.spec.step));
+    this.slider.setAttribute('aria-valuetext', `${this.spec.label} = ${shown}`);
+    if (document.activeElement !== this.number) this.number.value = shown;
   }
 
   toggle(): void {

@@ -158,3 +158,20 @@ test('moving a control point redraws both figures and keeps the numbers in step 
   );
   await other.close();
 });
+
+test('the number of uniform segments is shown as a whole number, the one the figure draws', async ({
+  page,
+}) => {
+  // A link may hold a value between whole numbers (6.4 from a Play paused midway): the
+  // figure draws the nearest whole number of segments, 6, and the field says so.
+  await page.goto('./#/raster?x=compare&n=6.4');
+  const field = page.getByRole('spinbutton', { name: 'n value' });
+  const slider = page.getByRole('slider', { name: 'n', exact: true });
+  await expect(field).toHaveValue('6');
+  await expect(slider).toHaveAttribute('aria-valuetext', 'n = 6');
+  expect(await numberOf(page, 'uniform', 'segments')).toBe(6);
+  await slider.fill('9');
+  await expectHash(page, 'n', (v) => v === '9');
+  await expect(field).toHaveValue('9');
+  expect(await numberOf(page, 'uniform', 'segments')).toBe(9);
+});
