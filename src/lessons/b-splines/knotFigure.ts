@@ -52,7 +52,14 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
     const [a, b] = m.domain;
     painter.segment([minX, 0], [maxX, 0], { color: theme.muted, width: theme.sizes.line });
     painter.segment([a, 0], [b, 0], { color: theme.ink, width: theme.sizes.line * 2.5 });
-    painter.segment([m.u, -1], [m.u, 1], { color: theme.accent, width: theme.sizes.line });
+    // The cursor runs down to just under the knots' diamonds, not through the
+    // row of knot names below them: a name stays at its knot.
+    const [, lineY] = painter.view.toScreen([m.u, 0]);
+    const [, cursorEnd] = painter.view.toWorld([0, lineY + theme.sizes.handle * 1.2]);
+    painter.segment([m.u, cursorEnd], [m.u, 1], {
+      color: theme.accent,
+      width: theme.sizes.line,
+    });
     const uniform = isUniformPart(m.state.part);
     if (m.shown.is('points') && !uniform) return;
     const size = theme.sizes.label * 0.75;
@@ -73,6 +80,8 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
         color: count > 1 ? theme.accent : theme.muted,
         align: 'center',
         size,
+        // A knot's name at its knot or not at all: moved aside, u₆ read as u₇.
+        fixed: true,
       });
     }
     if (!info.thumbnail && uStep(m) > 0 && uniform) {

@@ -14,6 +14,8 @@ import { type BSplineState, isUniformPart, normalize, schema } from './state';
 import { TEXTS } from './texts';
 import { facts } from './facts';
 import { basisFigure } from './basisFigure';
+import { drawHeadless } from '../../app/headless';
+import { makeTheme } from '../../render/theme';
 
 const derive = (s: BSplineState) => lesson.derive(s) as BSplineModel;
 const defaults = normalize(defaultsOf(schema)).state;
@@ -466,5 +468,35 @@ describe('the closed uniform B-spline needs three points wrapped', () => {
     const open = derive({ ...sceneState('uniform'), points: [...points, points[0]] });
     expect(isUniformPart(open.state.part)).toBe(true);
     expect(Math.hypot(open.start[0] - open.end[0], open.start[1] - open.end[1])).toBeGreaterThan(1);
+  });
+});
+
+describe('the knot strip', () => {
+  it('names each knot at its knot, wherever the cursor is: u₆ is never moved beside u₇', () => {
+    // As the projector and a laptop draw the strip: the cursor at every knot
+    // and between, over every step of every scene.
+    for (const projector of [false, true]) {
+      const theme = makeTheme(false, projector);
+      const height = Math.round(
+        (knotFigure.height ?? 64) * (projector ? (theme.sizes.strip ?? 1) : 1),
+      );
+      for (const { id, count, at } of sceneStates(lesson))
+        for (let k = 0; k <= count; k++)
+          for (const t of [0, 0.3, 0.45, 0.5, 0.62, 1]) {
+            const state = normalize({ ...(at(k) as BSplineState), t }).state;
+            const m = derive(state);
+            const { painter, view } = drawHeadless(knotFigure, m, { width: 620, height, theme });
+            for (const label of painter.labels) {
+              // u_{6} names knot 6; u_{4…6} ×3 names the run from knot 4.
+              const j = /^u_\{(\d+)/.exec(label.text);
+              if (!j) continue;
+              const [x] = view.toScreen([m.knots[Number(j[1])], 0]);
+              expect(
+                Math.abs(label.x + label.width / 2 - x),
+                `${id} step ${k}, t = ${t}: “${label.text}” is ${(label.x + label.width / 2 - x).toFixed(0)} px from its knot`,
+              ).toBeLessThan(1);
+            }
+          }
+    }
   });
 });
