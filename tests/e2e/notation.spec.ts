@@ -5,7 +5,7 @@
  * its typeset formulas' TeX, its figure labels and its controls' names.
  */
 import type { Page } from '@playwright/test';
-import { expect, settled, test } from './fixtures';
+import { expect, lessonFolders, settled, test } from './fixtures';
 
 /**
  * Everything the page shows as text, apart from what quotes the notes (the
@@ -144,4 +144,45 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   await expect(key.locator('dd').first()).toContainText(
     'μ in the lecture notes, u in the slides, t in the practical',
   );
+});
+
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\frac), at the last step of any scene', async ({
+  page,
+}) => {
+  test.setTimeout(240_000);
+  const slugs = lessonFolders();
+  expect(slugs.length).toBe(12);
+  const found: string[] = [];
+  for (const slug of slugs) {
+    await page.goto(`./#/${slug}`);
+    await settled(page);
+    const scenes = await page
+      .locator('button[data-scene]')
+      .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+    expect(scenes.length, slug).toBeGreaterThan(1);
+    for (const scene of scenes) {
+      await page.locator(`button[data-scene="${scene}"]`).click();
+      await page.keyboard.press('End');
+      await settled(page);
+      const texts = await page.evaluate(() => {
+        // Typeset formulas, and what the reader types or reads as code, are not prose.
+        const skip = '.katex, textarea, input, pre, code';
+        const main = document.querySelector('main')!;
+        const walker = document.createTreeWalker(main, NodeFilter.SHOW_TEXT);
+        const texts: string[] = [];
+        for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+          const parent = n.parentElement!;
+          if (parent.closest(skip) || parent.closest('[hidden]') || !parent.checkVisibility())
+            continue;
+          if (n.nodeValue!.trim()) texts.push(n.nodeValue!);
+        }
+        return texts;
+      });
+      for (const text of texts) {
+        const code = /\^\(|\^\{|_\{|\\[a-zA-Z]{2,}/.exec(text);
+        if (code) found.push(`${slug} ${scene}: “${code[0]}” in “${text.slice(0, 90)}”`);
+      }
+    }
+  }
+  expect(found).toEqual([]);
 });

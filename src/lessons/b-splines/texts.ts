@@ -37,7 +37,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   repeated: {
     title: 'Repeated knots',
-    text: 'A knot of multiplicity k lowers the continuity there from C^(p−1) to C^(p−k). With k = p the curve is only C⁰ and passes through a control point, with a kink; with k = p + 1 it breaks apart. Drag the stacked knots apart (right and left pick different ones) to smooth the curve again.',
+    text: 'A knot of multiplicity k lowers the continuity there from Cᵖ⁻¹ to Cᵖ⁻ᵏ. With k = p the curve is only C⁰ and passes through a control point, with a kink; with k = p + 1 it breaks apart. Drag the stacked knots apart (right and left pick different ones) to smooth the curve again.',
   },
   nurbs: {
     title: 'NURBS: a weight per control point',
