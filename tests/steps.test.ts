@@ -195,7 +195,9 @@ describe('every step of every scene, as the room sees it', () => {
             found.push(`${scene.id} step ${k}: ${problem}`);
           // The caption names points as the figure labels them: P₁, not P1.
           const caption = steps.describe(state, k);
-          const plain = caption.match(/(?<![A-Za-z])[PDBQLH]\d/);
+          const plain = caption.match(
+            /(?<![A-Za-z])(?:[PDBQLH]\d|[PDBQLHNux]\([ijkmnr](?:[+−]\d+)?(?:,\s?\w+)?\)|[PDBQLH][ijkmn]\b)/,
+          );
           if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
           // Figures sit side by side on a wide screen and one under another on a
           // phone: a caption that says "on the left" or "the plot below" is wrong on one.

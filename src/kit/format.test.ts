@@ -62,5 +62,15 @@ describe('subscriptNames', () => {
       'C1 and G1 at 1.5, MP3 player, P₂',
     );
     expect(subscriptNames('at P1.5 of the way')).toBe('at P1.5 of the way');
+    // Letters for indices, alone or in brackets as code writes them.
+    expect(subscriptNames('P0 … Pm and D0 … Dm; each Di')).toBe('P₀ … Pₘ and D₀ … Dₘ; each Dᵢ');
+    expect(subscriptNames('(P(i−1) + 4Pi + P(i+1))/6')).toBe('(Pᵢ₋₁ + 4Pᵢ + Pᵢ₊₁)/6');
+    expect(subscriptNames('each N(i,1) blends N(i,0) and N(i+1,0) on [u(i), u(i+1))')).toBe(
+      'each Nᵢ,₁ blends Nᵢ,₀ and Nᵢ₊₁,₀ on [uᵢ, uᵢ₊₁)',
+    );
+    // A point of the curve, a value at a number, and words stay as they are.
+    expect(subscriptNames('P(t), P(0), N(u), Pixels, Ping, Dmitri, a Pi(')).toBe(
+      'P(t), P(0), N(u), Pixels, Ping, Dmitri, a Pi(',
+    );
   });
 });

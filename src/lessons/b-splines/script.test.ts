@@ -82,9 +82,9 @@ describe('the scenes and their named steps', () => {
     );
     const knots = sceneState('knots', { step: 2 });
     expect(lesson.steps!.describe(knots, 2)).toBe(
-      'Row 0 of Cox–de Boor: N(i,0) = 1 on [u(i), u(i+1)), else 0',
+      'Row 0 of Cox–de Boor: Nᵢ,₀ = 1 on [uᵢ, uᵢ₊₁), else 0',
     );
-    expect(lesson.steps!.describe(knots, 4)).toBe('Row 2: each N(i,2) blends N(i,1) and N(i+1,1)');
+    expect(lesson.steps!.describe(knots, 4)).toBe('Row 2: each Nᵢ,₂ blends Nᵢ,₁ and Nᵢ₊₁,₁');
     // The last row's formula says the row sums to 1.
     const last = { ...knots, step: 5 };
     expect(lesson.steps!.formula!(derive(last), last)).toMatch(/\\sum_i N_\{i,3\} = 1\.000$/);
@@ -442,7 +442,7 @@ describe('the uniform cubic bases, written out and derived', () => {
     const tex = lesson.steps!.formula!(derive(s), s)!;
     expect(tex).toMatch(/\\begin\{array\}/);
     expect(tex).not.toMatch(/tfrac/);
-    expect(lesson.steps!.describe(s, 5)).toBe('Row 3: each N(i,3) blends N(i,2) and N(i+1,2)');
+    expect(lesson.steps!.describe(s, 5)).toBe('Row 3: each Nᵢ,₃ blends Nᵢ,₂ and Nᵢ₊₁,₂');
   });
 });
 
@@ -483,7 +483,7 @@ describe('the knot strip', () => {
       for (const { id, count, at } of sceneStates(lesson))
         for (let k = 0; k <= count; k++)
           for (const t of [0, 0.3, 0.45, 0.5, 0.62, 1]) {
-            const state = normalize({ ...(at(k) as BSplineState), t }).state;
+            const state = normalize({ ...(at(k) as unknown as BSplineState), t }).state;
             const m = derive(state);
             const { painter, view } = drawHeadless(knotFigure, m, { width: 620, height, theme });
             for (const label of painter.labels) {

@@ -259,7 +259,7 @@ describe('the script (road)', () => {
     expect(stage({ ...lecture, step: 13 }).solveStep).toBe(12);
     expect(describeStep(lecture, 3)).toBe('Forward sweep: row 1 becomes [1 γ | Γ]');
     expect(describeStep(lecture, 8)).toBe(
-      'Back substitution: D₅ fixed, the road grows back from Pm',
+      'Back substitution: D₅ fixed, the road grows back from Pₘ',
     );
   });
 
