@@ -2,6 +2,7 @@
  * A tiny element builder: text always goes in as text nodes, never as markup,
  * so nothing from a URL can become HTML.
  */
+import { subscriptNames } from '../kit/subscripts';
 import { shownAttribute, shownText } from './notationDom';
 
 type Child = Node | string | number | null | undefined | false;
@@ -27,10 +28,24 @@ export function h<K extends keyof HTMLElementTagNameMap>(
   return el;
 }
 
+/**
+ * Elements of running prose: a paragraph, an item, a heading. Their text names
+ * points as the figures label them, P₀ … Pₘ and Nᵢ,₂, whatever the lesson
+ * wrote (P0 … Pm, N(i,2)). Tables, buttons and accessible names keep the
+ * plain names a screen reader spells out and a row is found by.
+ */
+const PROSE = new Set(['P', 'LI', 'H2', 'H3', 'H4', 'SUMMARY', 'FIGCAPTION']);
+
+/** The text as `element` shows it: point names with subscripts in prose. */
+const asShown = (element: Node, text: string) =>
+  PROSE.has(element.nodeName) ? subscriptNames(text) : text;
+
 export function append(parent: Node, children: (Child | readonly Child[])[]): void {
   for (const child of children.flat()) {
     if (child === null || child === undefined || child === false) continue;
-    parent.appendChild(typeof child === 'object' ? child : document.createTextNode(String(child)));
+    parent.appendChild(
+      typeof child === 'object' ? child : document.createTextNode(asShown(parent, String(child))),
+    );
   }
 }
 
@@ -70,6 +85,7 @@ export function dataTable(
 
 /** Sets an element's text only when it changes (a panel updated every frame writes little). */
 export function setText(element: Node, text: string): void {
+  text = asShown(element, text);
   const now = element.textContent;
   if (now !== text && now !== shownText(element, text)) element.textContent = text;
 }
@@ -85,7 +101,7 @@ export function setIndexedText(element: HTMLElement, text: string): void {
   if (now === text || now === shownText(element, text)) return;
   element.replaceChildren(
     ...text
-      .split(/([₀-₉]+)/)
+      .split(/([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+)/)
       .map((run, i) => (i % 2 ? h('span', { class: 'index' }, run) : run))
       .filter((run) => run !== ''),
   );

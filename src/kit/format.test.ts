@@ -62,9 +62,16 @@ describe('subscriptNames', () => {
       'C1 and G1 at 1.5, MP3 player, P₂',
     );
     expect(subscriptNames('at P1.5 of the way')).toBe('at P1.5 of the way');
+    // Two indices, as a net's points and de Casteljau's levels have them.
+    expect(subscriptNames('P2,1: type three numbers; P1,0 and P10,12')).toBe(
+      'P₂,₁: type three numbers; P₁,₀ and P₁₀,₁₂',
+    );
     // Letters for indices, alone or in brackets as code writes them.
     expect(subscriptNames('P0 … Pm and D0 … Dm; each Di')).toBe('P₀ … Pₘ and D₀ … Dₘ; each Dᵢ');
     expect(subscriptNames('(P(i−1) + 4Pi + P(i+1))/6')).toBe('(Pᵢ₋₁ + 4Pᵢ + Pᵢ₊₁)/6');
+    expect(subscriptNames('u = u(p) + t·(u(m+1) − u(p)), x(p̄)')).toBe(
+      'u = uₚ + t·(uₘ₊₁ − uₚ), x(p̄)',
+    );
     expect(subscriptNames('each N(i,1) blends N(i,0) and N(i+1,0) on [u(i), u(i+1))')).toBe(
       'each Nᵢ,₁ blends Nᵢ,₀ and Nᵢ₊₁,₀ on [uᵢ, uᵢ₊₁)',
     );

@@ -182,9 +182,7 @@ test('the notes: a key to their symbols, and beside the closed scene’s three w
   await expect(slip).toBeHidden();
   await openScene(page, 'Closed B-spline', 'closed');
   await expect(slip).toBeVisible();
-  await expect(slip).toContainText(
-    'closing it takes three, P(m+1) = P0, P(m+2) = P1 and P(m+3) = P2',
-  );
+  await expect(slip).toContainText('closing it takes three, Pₘ₊₁ = P₀, Pₘ₊₂ = P₁ and Pₘ₊₃ = P₂');
   await page.keyboard.press('PageDown');
   await expectHash(page, 'k', (v) => v === '1');
   await expect(page.locator('.step-status')).toContainText(

@@ -89,7 +89,7 @@ test('moving an inner point of twelve barely moves the curve, and "before" survi
 }) => {
   await page.getByRole('button', { name: '3 No local control' }).click();
   await expect(
-    page.getByText(/P5 moved by 2\.000, the curve by at most 23\.6% of that/),
+    page.getByText(/P₅ moved by 2\.000, the curve by at most 23\.6% of that/),
   ).toBeVisible();
   // The link is written shortly after a change: wait for the preset's "before" to be in it.
   await expectHash(page, 'q', (v) => v.split(';').length === 12);

@@ -58,7 +58,7 @@ test('two equal neighbours with chord length: it says why and falls back to equa
   page,
 }) => {
   await page.goto('./#/lagrange?p=0,0;1,2;1,2;4,1&spacing=chord');
-  await expect(page.getByText(/P1 and P2 are the same point, so chord length/)).toBeVisible();
+  await expect(page.getByText(/P₁ and P₂ are the same point, so chord length/)).toBeVisible();
   await expect(weightsTable(page).getByRole('row', { name: /^L1 / })).toContainText('0.3333');
   await snapshot(page, 'lagrange-coincident-chord');
 });

@@ -146,7 +146,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   );
 });
 
-test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\frac), at the last step of any scene', async ({
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\frac), nor P0 or N(i,2) in prose, at the last step of any scene', async ({
   page,
 }) => {
   test.setTimeout(240_000);
@@ -169,17 +169,25 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\fra
         const skip = '.katex, textarea, input, pre, code';
         const main = document.querySelector('main')!;
         const walker = document.createTreeWalker(main, NodeFilter.SHOW_TEXT);
-        const texts: string[] = [];
+        const texts: { text: string; prose: boolean }[] = [];
         for (let n = walker.nextNode(); n; n = walker.nextNode()) {
           const parent = n.parentElement!;
           if (parent.closest(skip) || parent.closest('[hidden]') || !parent.checkVisibility())
             continue;
-          if (n.nodeValue!.trim()) texts.push(n.nodeValue!);
+          // Prose (not a table, a button or a label) names points as the figures do.
+          const prose = !!parent.closest('p, li, h2, h3, h4, summary, figcaption');
+          if (n.nodeValue!.trim()) texts.push({ text: n.nodeValue!, prose });
         }
         return texts;
       });
-      for (const text of texts) {
-        const code = /\^\(|\^\{|_\{|\\[a-zA-Z]{2,}/.exec(text);
+      for (const { text, prose } of texts) {
+        const code =
+          /\^\(|\^\{|_\{|\\[a-zA-Z]{2,}/.exec(text) ??
+          (prose
+            ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/.exec(
+                text,
+              )
+            : null);
         if (code) found.push(`${slug} ${scene}: “${code[0]}” in “${text.slice(0, 90)}”`);
       }
     }

@@ -100,8 +100,8 @@ test('the clicker builds the construction from the points up, then opens the nex
   await expectHash(page, 'p', (v) => v === '1,0;1,2.5;3.5,1.5');
   await expect(heading(page, 0)).toBeVisible();
   await page.keyboard.press('PageDown');
-  await expect(page.getByText(/There is none: P0 and P1 share x = 1/)).toBeVisible();
-  await expect(heading(page, 1)).toContainText('there is none, P0 and P1 share x = 1');
+  await expect(page.getByText(/There is none: P₀ and P₁ share x = 1/)).toBeVisible();
+  await expect(heading(page, 1)).toContainText('there is none, P₀ and P₁ share x = 1');
   await snapshot(page, 'quadratic-same-x');
   // The parametric curve has no such trouble: the next step draws it through all three.
   await page.getByText('All digits of the coefficients').click();

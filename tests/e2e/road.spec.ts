@@ -2,6 +2,9 @@ import type { Page } from '@playwright/test';
 import { naturalCubicDerivatives } from '../../src/math';
 import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
+/** 12 → ₁₂: a village's index as the page's prose writes it. */
+const subscript = (i: number) => [...String(i)].map((d) => '₀₁₂₃₄₅₆₇₈₉'[Number(d)]).join('');
+
 const map = (page: Page) => page.locator('canvas[data-figure="map"]');
 const pixels = (page: Page) => map(page).evaluate((c: HTMLCanvasElement) => c.toDataURL());
 const villages = async (page: Page) =>
@@ -193,10 +196,10 @@ test('the ring road closes smoothly: the last segment meets the first with equal
   const n = (await villages(page)).length;
   const slider = page.getByRole('slider', { name: 'p̄ along the road' });
   await slider.fill(String(n - 0.5));
-  await expect(page.getByText(`Segment ${n - 1}: from P${n - 1} to P0`)).toBeVisible();
+  await expect(page.getByText(`Segment ${n - 1}: from P${subscript(n - 1)} to P₀`)).toBeVisible();
   const last = await segmentCoefficients(page);
   await slider.fill('0.5');
-  await expect(page.getByText('Segment 0: from P0 to P1')).toBeVisible();
+  await expect(page.getByText('Segment 0: from P₀ to P₁')).toBeVisible();
   const first = await segmentCoefficients(page);
   for (let d = 0; d < 2; d++) {
     const [a, b, c, e] = last[d];
@@ -240,7 +243,7 @@ test('villages on one spot, in a line, or only two still draw a road and say why
   page,
 }) => {
   await page.getByRole('button', { name: 'Two villages on one spot' }).click();
-  await expect(page.getByRole('note').getByText(/on top of each other \(P2 = P3\)/)).toBeVisible();
+  await expect(page.getByRole('note').getByText(/on top of each other \(P₂ = P₃\)/)).toBeVisible();
   await page.getByRole('button', { name: 'Villages in a line' }).click();
   await expect(page.getByRole('note').getByText(/All villages lie on one line/)).toBeVisible();
   await page.getByRole('button', { name: 'Two villages', exact: true }).click();

@@ -118,7 +118,7 @@ test('a point typed into the 4 × 4 table moves the patch', async ({ page }) => 
   await cell.press('Enter');
   await expect(cell).toHaveValue('2, 1, -1.25');
   await expect(
-    page.getByRole('status').filter({ hasText: /^P2,1: type three numbers/ }),
+    page.getByRole('status').filter({ hasText: /^P₂,₁: type three numbers/ }),
   ).toBeVisible();
   // Said under the table, not in the page's notices, which would push the
   // figures down: the figure keeps its size, so the link shows the same picture.

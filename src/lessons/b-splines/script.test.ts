@@ -259,7 +259,7 @@ describe('one notation, the app’s: m + 1 control points P₀ … Pm (the slide
     const texts = [...allCaptions(), ...Object.values(TEXTS).map((t) => t.text)];
     for (const text of texts) expect(text).not.toMatch(/\bn = \d|\bn \+ p|\(n\+p\)|\bun\]|N\(n−1/);
     expect(TEXTS.knots.text).toMatch(/m \+ 1 control points P0 … Pm/);
-    expect(TEXTS.knots.text).toMatch(/u\(m\+p\+1\) of m \+ p \+ 2 numbers/);
+    expect(TEXTS.knots.text).toMatch(/uₘ₊ₚ₊₁ of m \+ p \+ 2 numbers/);
   });
 
   // The app writes control points P0 … Pm and the curve P(u) (P(s) in the uniform cubic),

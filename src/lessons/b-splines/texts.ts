@@ -29,7 +29,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   knots: {
     title: 'Knots and the Cox–de Boor recursion',
-    text: 'In general a B-spline of degree p — of order p + 1: the cubic has degree 3 and order 4 — has m + 1 control points P0 … Pm and a knot vector u0 ≤ u1 ≤ … ≤ u(m+p+1) of m + p + 2 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [ui, u(i+1)) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). On equally spaced knots every span gets the same pieces in its local t, and row 3 derives the uniform cubic bases B0(t) … B3(t) of the matrix form. The curve P(u) lives on [up, u(m+1)] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
+    text: 'In general a B-spline of degree p — of order p + 1: the cubic has degree 3 and order 4 — has m + 1 control points P0 … Pm and a knot vector u₀ ≤ u₁ ≤ … ≤ uₘ₊ₚ₊₁ of m + p + 2 numbers. Its basis functions come from the Cox–de Boor recursion, row by row: N(i,0) is 1 on [uᵢ, uᵢ₊₁) and 0 elsewhere, and each N(i,r) blends N(i,r−1) and N(i+1,r−1). On equally spaced knots every span gets the same pieces in its local t, and row 3 derives the uniform cubic bases B0(t) … B3(t) of the matrix form. The curve P(u) lives on [uₚ, uₘ₊₁] (the strip’s thick part). Drag the knots on the strip; drop one on another to repeat it.',
   },
   clamped: {
     title: 'Clamped ends',
