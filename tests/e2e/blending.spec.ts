@@ -126,7 +126,7 @@ test('comparing with Lagrange shows negative weights and a curve leaving the hul
   await page.getByRole('button', { name: 'Compare: Lagrange' }).click();
   await expectHash(page, 'b', (v) => v === 'lagrange');
   await expect(
-    page.getByText(/Not non-negative: the lowest value on \[0, 1\] is -\d/),
+    page.getByText(/Not non-negative: the lowest value on \[0, 1\] is −\d/),
   ).toBeVisible();
   await expect(page.getByText(/leaves the convex hull/)).toBeVisible();
   await page.getByLabel('Uniform cubic B-spline').check();

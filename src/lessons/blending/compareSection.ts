@@ -2,7 +2,7 @@ import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
-import { texT, words } from '../../kit/format';
+import { fixed, texT, words } from '../../kit/format';
 import { formula } from '../../render/formula';
 import { comparedIds, comparedIndex } from './hover';
 import type { BlendingModel, Compared } from './model';
@@ -117,9 +117,10 @@ export function compareSection(api: LessonApi<BlendingState, BlendingModel>) {
 
       const lowest = compared.samples.lowest;
       const sentences = [
-        `At μ = ${texT(state.mu)} these values sum to ${fmt(compared.sum, 6)}.`,
+        // Read out by a lecturer: a sum to three decimals (1, 1.084), a true minus sign.
+        `At μ = ${texT(state.mu)} these values sum to ${words(compared.sum)}.`,
         lowest.value < -1e-12
-          ? `Not non-negative: the lowest value on [0, 1] is ${fmt(lowest.value, 4)}, reached by ${plain(compared.labels[lowest.index])} at μ = ${fmt(lowest.mu, 3)}.`
+          ? `Not non-negative: the lowest value on [0, 1] is ${fixed(lowest.value, 4)}, reached by ${plain(compared.labels[lowest.index])} at μ = ${fmt(lowest.mu, 3)}.`
           : 'No value on [0, 1] is negative.',
       ];
       if (compared.outside !== null)
