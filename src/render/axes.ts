@@ -4,6 +4,7 @@
  * Lines are counted by an integer index, never by adding a step to a large
  * coordinate (which stops moving once the step is below its precision).
  */
+import { labelWidth } from './labels';
 import type { Painter } from './painter';
 import { type Bounds, niceStep } from './projection';
 
@@ -129,29 +130,40 @@ export function drawPlotAxes(
     Math.abs(v.toScreen([0, yStep])[1] - v.toScreen([0, 0])[1]),
     small * 1.4,
   );
+  const numbersFrom = painter.labels.length;
   for (const x of xs) {
     if (Math.round(x / xStep) % xEvery !== 0) continue;
     const [sx, sy] = v.toScreen([x, bounds.minY]);
     painter.screenLabel(fmt(x), sx, sy + small * 0.9, { ...tick, align: 'center' });
   }
+  // The tick numbers as placed (a number under a curve is left out).
+  const numbers = painter.labels.slice(numbersFrom).sort((a, b) => a.x - b.x);
   for (const y of ys) {
     if (Math.round(y / yStep) % yEvery !== 0) continue;
     const [sx, sy] = v.toScreen([bounds.minX, y]);
     painter.screenLabel(fmt(y), sx - small * 0.5, sy, { ...tick, align: 'right' });
   }
   if (xName) {
-    // On the row of the tick numbers, midway between the last two: clear of
-    // both, and inside the figure (below the numbers it would fall off it).
+    // On the row of the tick numbers, midway in the gap between the last two
+    // numbers, where it has a space's room on each side (inside the figure:
+    // below the numbers it would fall off it). Squeezed beside a number it
+    // reads as part of it ("u10" for u and 10, or u₁₀): then it goes above the
+    // axis at its right end.
+    const nameStyle = { ...muted, size: small * 1.1 };
+    const width = labelWidth(painter, xName, nameStyle);
     const [sx, sy] = v.toScreen([bounds.maxX, bounds.minY]);
-    const between =
-      xs.length >= 2
-        ? (v.toScreen([xs[xs.length - 2], 0])[0] + v.toScreen([xs[xs.length - 1], 0])[0]) / 2
-        : sx;
-    painter.screenLabel(xName, between, sy + small * 0.9, {
-      ...muted,
-      size: small * 1.1,
-      align: 'center',
-    });
+    const [left, right] = numbers.slice(-2);
+    const gap = left && right ? right.x - (left.x + left.width) : 0;
+    if (gap >= width + small)
+      painter.screenLabel(xName, left.x + left.width + gap / 2, sy + small * 0.9, {
+        ...nameStyle,
+        align: 'center',
+      });
+    else
+      painter.screenLabel(xName, sx - small * 0.3, v.toScreen([0, axisY])[1] - small * 0.9, {
+        ...nameStyle,
+        align: 'right',
+      });
   }
   if (yName) {
     const [sx, sy] = v.toScreen([bounds.minX, bounds.maxY]);
