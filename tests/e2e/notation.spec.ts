@@ -36,6 +36,15 @@ async function shownText(page: Page): Promise<string[]> {
   });
 }
 
+/** Opens a lesson and lists its scenes' ids, in teaching order. */
+async function openScenes(page: Page, slug: string): Promise<string[]> {
+  await page.goto(`./#/${slug}`);
+  await settled(page);
+  return page
+    .locator('button[data-scene]')
+    .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+}
+
 /** The texts that write μ, \mu, or a lone t as a symbol (not inside a word). */
 const writesMu = (texts: string[]) => texts.filter((t) => /μ|\\mu/.test(t));
 const writesT = (texts: string[]) =>
@@ -88,11 +97,7 @@ test('a link with the slides’ letter opens in it, and a letter that is none of
 
 test('a lesson written in μ shows no μ in t, at any step of any scene', async ({ page }) => {
   test.setTimeout(120_000);
-  await page.goto('./#/blending');
-  await settled(page);
-  const scenes = await page
-    .locator('button[data-scene]')
-    .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+  const scenes = await openScenes(page, 'blending');
   expect(scenes.length).toBeGreaterThan(3);
   const found: string[] = [];
   for (const scene of scenes) {
@@ -120,11 +125,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   expect(slugs.length).toBe(12);
   const missing: string[] = [];
   for (const slug of slugs) {
-    await page.goto(`./#/${slug}`);
-    await settled(page);
-    const scenes = await page
-      .locator('button[data-scene]')
-      .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+    const scenes = await openScenes(page, slug);
     let found = (await page.locator('details.notes-key').count()) > 0;
     for (const scene of scenes) {
       if (found) break;
@@ -154,11 +155,7 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\fra
   expect(slugs.length).toBe(12);
   const found: string[] = [];
   for (const slug of slugs) {
-    await page.goto(`./#/${slug}`);
-    await settled(page);
-    const scenes = await page
-      .locator('button[data-scene]')
-      .evaluateAll((buttons) => buttons.map((b) => b.getAttribute('data-scene')!));
+    const scenes = await openScenes(page, slug);
     expect(scenes.length, slug).toBeGreaterThan(1);
     for (const scene of scenes) {
       await page.locator(`button[data-scene="${scene}"]`).click();
