@@ -117,6 +117,8 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
       if (Number(size) < MIN_TEXT - 0.5) problems.push(`${at} “${text}” at ${size} px`);
       const digits = unreadableNumber(text);
       if (digits) problems.push(`${at} “${text}” writes ${digits}`);
+      // A value not shown yet is asked for in words, not left as a bare “?”.
+      if (/(^|:\s*)\?$/.test(text)) problems.push(`${at} “${text}” ends in a bare “?”`);
     }
     const labels = painter.labels;
     for (const label of labels) {

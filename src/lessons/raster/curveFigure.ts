@@ -72,7 +72,10 @@ function drawCompare(painter: Painter, m: RasterModel, labels: boolean): void {
     drawGap(painter, drawn, m.state.zoom, labels);
   }
   if (labels)
-    heading(painter, `Uniform: ${uniform ? count(drawn.points.length - 1, 'segment') : '?'}`);
+    heading(
+      painter,
+      `Uniform: ${uniform ? count(drawn.points.length - 1, 'segment') : 'how many segments?'}`,
+    );
 }
 
 function drawSubdivide(painter: Painter, m: RasterModel): void {

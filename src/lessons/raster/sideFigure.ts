@@ -92,7 +92,7 @@ function drawAdaptive(painter: Painter, m: RasterModel, labels: boolean): void {
   if (labels)
     heading(
       painter,
-      `Adaptive, τ = ${texNumber(tolerance, 2)} px: ${adaptive ? count(m.adaptive.points.length - 1, 'segment') : '?'}`,
+      `Adaptive, τ = ${texNumber(tolerance, 2)} px: ${adaptive ? count(m.adaptive.points.length - 1, 'segment') : 'how many segments?'}`,
     );
 }
 
