@@ -60,7 +60,7 @@ export interface LabelBox {
 }
 
 /** Squared distance from (x, y) to the nearest point of a box. */
-export function distanceToBox2(x: number, y: number, box: Box): number {
+function distanceToBox2(x: number, y: number, box: Box): number {
   const dx = Math.max(box.x - x, 0, x - (box.x + box.width));
   const dy = Math.max(box.y - y, 0, y - (box.y + box.height));
   return dx * dx + dy * dy;
@@ -70,7 +70,7 @@ export function distanceToBox2(x: number, y: number, box: Box): number {
  * Is a label's box at least as near its own point (ax, ay) as any of the
  * other points? A name nearer another point is read as that point's.
  */
-export function nearestIsOwn(
+function nearestIsOwn(
   box: Box,
   ax: number,
   ay: number,
