@@ -117,6 +117,9 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
       if (Number(size) < MIN_TEXT - 0.5) problems.push(`${at} “${text}” at ${size} px`);
       const digits = unreadableNumber(text);
       if (digits) problems.push(`${at} “${text}” writes ${digits}`);
+      // A derivative's prime is ′, not a typewriter apostrophe (P′(t), not P'(t)).
+      if (/[\p{L})]'(?!\p{L})/u.test(text.replace(/&#39;|&apos;/g, "'")))
+        problems.push(`${at} “${text}” writes a prime as an apostrophe`);
       // A value not shown yet is asked for in words, not left as a bare “?”.
       if (/(^|:\s*)\?$/.test(text)) problems.push(`${at} “${text}” ends in a bare “?”`);
     }

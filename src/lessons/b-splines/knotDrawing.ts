@@ -116,7 +116,7 @@ export function drawProjective(painter: Painter, m: ProjectiveModel, info: DrawI
       painter,
       pr.points,
       theme.polygon,
-      info.thumbnail ? null : pr.weights.map((w, i) => `w'_{${i}} = ${w.toFixed(2)}`),
+      info.thumbnail ? null : pr.weights.map((w, i) => `w′_{${i}} = ${w.toFixed(2)}`),
       info,
     );
   }

@@ -151,7 +151,7 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
     true,
   );
   if (labels)
-    heading(painter, `The screen's 32 × 24 pixels at zoom ×${zoomWords(size.zoom)}: the box`);
+    heading(painter, `The screen’s 32 × 24 pixels at zoom ×${zoomWords(size.zoom)}: the box`);
 }
 
 /** What the curve figure draws in each scene. */

@@ -3,7 +3,7 @@ import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
 
-const NAMES = ["½P'(0)", "½P'(1)", "½P'(t)"];
+const NAMES = ['½P′(0)', '½P′(1)', '½P′(t)'];
 /** The end tangents come with their step, the tangent at t with P(t). */
 const REVEALED_BY = ['tangents', 'tangents', 'point'] as const;
 

@@ -49,7 +49,7 @@ export function drawHodograph(painter: Painter, m: ModelOf<'hodograph'>, info: D
   if (shown.has('derivative')) {
     const tip = add(origin, m.derivative);
     painter.arrow(origin, tip, { color: theme.accent, width: theme.sizes.line * 1.6 });
-    drawMarked(painter, tip, "P'(t)", info);
+    drawMarked(painter, tip, 'P′(t)', info);
   }
   if (shown.has('tangent')) {
     const edge = painter.color(3);
