@@ -269,6 +269,12 @@ describe('the Hermite form of a cubic', () => {
       [3, -6],
     ]);
   });
+  it('draws the end tangents at half length, as the end-tangents scene does: (0,0) + ½(3,6), (4,0) + ½(3,−6)', () => {
+    expect(m.tips).toEqual([
+      [1.5, 3],
+      [5.5, -3],
+    ]);
+  });
   it('gives the same point: P(0.4) = a0 + 0.4a1 + 0.16a2 + 0.064a3 = (1.552, 1.44)', () => {
     closeTo(m.hermiteAtT, [1.552, 1.44]);
     closeTo(m.point, [1.552, 1.44]);

@@ -3,7 +3,8 @@ import type { Painter } from '../../../render/painter';
 import type { ModelOf } from '../model';
 import { drawMarked, drawPolygon } from '../painting';
 
-const NAMES = ['3(P_1 − P_0)', '3(P_3 − P_2)'];
+/** The end tangents at half length, named as the step's formula names them. */
+const NAMES = ['½x_0′', '½x_1′'];
 
 export function drawHermite(painter: Painter, m: ModelOf<'hermite'>, info: DrawInfo): void {
   const theme = painter.theme;

@@ -8,6 +8,7 @@ import {
   hermitePoint,
   sampleBezier,
   sampledDeviation,
+  scale,
 } from '../../../math';
 import type { ExperimentBase } from '../curve';
 import type { PropertiesState } from '../state';
@@ -25,7 +26,7 @@ export interface HermiteModel extends ExperimentBase {
   point: Point;
   /** Power form a0 + a1μ + a2μ² + a3μ³ (equation 11 of the notes). */
   power: Point[];
-  /** Hermite data: end points x0, x1 and end tangents x0′, x1′, and the tangents' tips. */
+  /** Hermite data: end points x0, x1 and end tangents x0′, x1′, and the tips of the tangents drawn at half length. */
   x0: Point;
   d0: Point;
   x1: Point;
@@ -43,7 +44,10 @@ export const deriveHermite = memoOn<PropertiesState, 'points' | 't', HermiteMode
     for (let k = 0; k <= SAMPLES; k++)
       hermiteCurve.set(hermitePoint(x0, d0, x1, d1, k / SAMPLES), 2 * k);
     const curve = sampleBezier(controls, SAMPLES);
-    const tips: [Point, Point] = [add(x0, d0), add(x1, d1)];
+    // At half their length, as the end-tangents scene draws P′: at full length
+    // the view had to reach three times the first leg out and the curve itself
+    // came out 185 × 71 px on the projector (#19).
+    const tips: [Point, Point] = [add(x0, scale(d0, 0.5)), add(x1, scale(d1, 0.5))];
     return {
       kind: 'hermite',
       controls,

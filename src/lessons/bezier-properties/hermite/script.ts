@@ -12,7 +12,7 @@ export const hermiteScript = script<PropertiesState, ModelOf<'hermite'>, Hermite
   step('curve', 'The Bézier cubic and its polygon'),
   step(
     'tangents',
-    'Its Hermite data: the end points and the end tangents 3(P₁ − P₀), 3(P₃ − P₂)',
+    'Its Hermite data: the end points and the end tangents x₀′ = 3(P₁ − P₀), x₁′ = 3(P₃ − P₂), drawn at half length',
     ({ model: { d0, d1 } }) =>
       `x_0' = 3(P_1 - P_0) = ${texPoint(d0, 3)},\\quad x_1' = 3(P_3 - P_2) = ${texPoint(d1, 3)}`,
   ),
