@@ -8,7 +8,7 @@ import { Viewport } from '../../render/viewport';
 import { mapFigure } from './figure';
 import lesson from './lesson';
 import type { RoadModel } from './model';
-import { type RoadState, normalize, schema } from './state';
+import { type RoadState, SIX_VILLAGES, normalize, schema } from './state';
 
 /** The model as the shell gets it from the kit: derived once per state, with what the step reveals. */
 const derive = (s: RoadState) => lesson.derive(s) as RoadModel;
@@ -85,5 +85,33 @@ describe('the map', () => {
     const villages: Point[] = Array.from({ length: 500 }, (_, i) => [i, Math.sin(i / 10) * 20]);
     const svg = drawn(state({ villages: villages }));
     expect(svg.texts).toEqual(['p̄ = 2.40: segment 2, p = 0.40']);
+  });
+
+  it('reaches out to the quadratic’s corners B, but not without end', () => {
+    // Quadratics swing: B0 = P0 + D0/2 = (5, 20), then Bᵢ = 2Pᵢ − Bᵢ₋₁, worked by hand:
+    // (35, 12), (49, 8), (63, 52), (93, 0). B3 is above the villages and B4 right of them.
+    const swing: Partial<RoadState> = {
+      villages: SIX_VILLAGES,
+      road: 'quadratic',
+      quadraticGradient: [10, 40],
+    };
+    const box = mapFigure.bounds(derive(state(swing)));
+    for (const [x, y] of [
+      [5, 20],
+      [35, 12],
+      [49, 8],
+      [63, 52],
+      [93, 0],
+    ]) {
+      expect(x).toBeGreaterThanOrEqual(box.minX);
+      expect(x).toBeLessThanOrEqual(box.maxX);
+      expect(y).toBeGreaterThanOrEqual(box.minY);
+      expect(y).toBeLessThanOrEqual(box.maxY);
+    }
+    // D0 = (10, 400): B0 = (5, 200) is a handle, in the box; the villages and it span
+    // x 0…92, y 0…200. B1 = (35, −168) is farther below than 0.3 × 200 = 60: the map
+    // stops at y = −60; B4 = (93, 180) is within reach and in.
+    const wild = mapFigure.bounds(derive(state({ ...swing, quadraticGradient: [10, 400] })));
+    expect(wild).toEqual({ minX: 0, minY: -60, maxX: 93, maxY: 200 });
   });
 });

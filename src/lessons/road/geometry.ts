@@ -186,8 +186,10 @@ function solveCost(state: RoadInputs, solve: RoadSolve): SolveCost {
 /**
  * The villages, the handles in play and (for a cubic road of at most
  * FIT_PIECES pieces) its control points: the ring road bulges out of its
- * villages. The quadratic's may fly far off: its swings are the lesson,
- * shown to the edge of the map.
+ * villages. The quadratic's may fly far off: its swings are the lesson.
+ * The map reaches out to them by up to SWING_REACH of its size on each side,
+ * so a swing a little beyond the villages shows its corner B, and a wild one
+ * runs to the edge of the map without shrinking the road to a speck.
  */
 function fitBounds(
   state: RoadInputs,
@@ -205,9 +207,25 @@ function fitBounds(
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
   }
-  const fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  let fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
+  const swing = geometry.quadraticPolygon?.controls;
+  if (swing?.length) fitted = unionBounds(fitted, reachTowards(fitted, boundsOf(swing)));
   // The overlay's legend sits top left: room for it there, so it covers no curve.
   if (!compared(state)) return fitted;
   const width = fitted.maxX - fitted.minX;
   return { ...fitted, minX: fitted.minX - 0.45 * width };
+}
+
+/** How far beyond the fitted box (a share of its larger side) the quadratic's control points may pull the map. */
+const SWING_REACH = 0.3;
+
+/** `box` grown towards `far`, by at most SWING_REACH of the box's larger side on each side. */
+function reachTowards(box: Bounds, far: Bounds): Bounds {
+  const reach = SWING_REACH * Math.max(box.maxX - box.minX, box.maxY - box.minY);
+  return {
+    minX: Math.max(far.minX, box.minX - reach),
+    minY: Math.max(far.minY, box.minY - reach),
+    maxX: Math.min(far.maxX, box.maxX + reach),
+    maxY: Math.min(far.maxY, box.maxY + reach),
+  };
 }
