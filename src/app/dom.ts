@@ -36,17 +36,44 @@ export function h<K extends keyof HTMLElementTagNameMap>(
  */
 const PROSE = new Set(['P', 'LI', 'H2', 'H3', 'H4', 'SUMMARY', 'FIGCAPTION']);
 
+export function append(parent: Node, children: (Child | readonly Child[])[]): void {
+  for (const child of children.flat()) {
+    if (child === null || child === undefined || child === false) continue;
+    if (typeof child === 'object') parent.appendChild(child);
+    else if (indexable(parent)) parent.append(...indexedRuns(asShown(parent, String(child))));
+    else parent.appendChild(document.createTextNode(String(child)));
+  }
+}
+
 /** The text as `element` shows it: point names with subscripts in prose. */
 const asShown = (element: Node, text: string) =>
   PROSE.has(element.nodeName) ? subscriptNames(text) : text;
 
-export function append(parent: Node, children: (Child | readonly Child[])[]): void {
-  for (const child of children.flat()) {
-    if (child === null || child === undefined || child === false) continue;
-    parent.appendChild(
-      typeof child === 'object' ? child : document.createTextNode(asShown(parent, String(child))),
-    );
-  }
+/** Unicode subscript runs: ₀–₉ and the letters and signs `subscriptNames` writes. */
+const INDEX_RUN = /([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+)/;
+
+/** Elements whose text may hold spans (not an option's, a text area's or an SVG text's). */
+const indexable = (node: Node): node is HTMLElement =>
+  node instanceof HTMLElement && !['OPTION', 'TEXTAREA', 'TITLE'].includes(node.nodeName);
+
+/**
+ * `text` as nodes, each run of subscripts in a span of class "index", which
+ * the style sheet sets larger: a font's subscript glyphs are half its size, too
+ * small to tell P₁,₀ from P₁,₁ at the back of the room or in a laptop's panel.
+ * The nodes' text reads as `text`.
+ */
+function indexedRuns(text: string): (Node | string)[] {
+  if (!INDEX_RUN.test(text)) return [text];
+  return text
+    .split(INDEX_RUN)
+    .map((run, i) => {
+      if (i % 2 === 0) return run;
+      const index = document.createElement('span');
+      index.className = 'index';
+      index.textContent = run;
+      return index;
+    })
+    .filter((run) => run !== '');
 }
 
 /** Replaces all children of `el`. */
@@ -85,26 +112,20 @@ export function dataTable(
 
 /** Sets an element's text only when it changes (a panel updated every frame writes little). */
 export function setText(element: Node, text: string): void {
-  text = asShown(element, text);
+  if (indexable(element)) return setIndexedText(element, asShown(element, text));
   const now = element.textContent;
   if (now !== text && now !== shownText(element, text)) element.textContent = text;
 }
 
 /**
- * Words with their Unicode subscript indices (P₀, D₁₂) in spans of their own,
- * which the style sheet sets larger: a font's subscript digits are half its
- * size, too small to tell P₁,₀ from P₁,₁ from the back of the room. The text
- * reads the same (textContent is `text`), only when it changed.
+ * Sets `text` with its Unicode subscript indices (P₀, D₁₂) in spans of their
+ * own (`indexedRuns`), only when it changed.
  */
 export function setIndexedText(element: HTMLElement, text: string): void {
   const now = element.textContent;
   if (now === text || now === shownText(element, text)) return;
-  element.replaceChildren(
-    ...text
-      .split(/([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+)/)
-      .map((run, i) => (i % 2 ? h('span', { class: 'index' }, run) : run))
-      .filter((run) => run !== ''),
-  );
+  if (INDEX_RUN.test(text)) element.replaceChildren(...indexedRuns(text));
+  else element.textContent = text;
 }
 
 /** Shows or hides an element only when that changes. */

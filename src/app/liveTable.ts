@@ -3,7 +3,7 @@
  * elements, and each frame writes only the texts, classes and swatch colours
  * that changed, instead of building the table again.
  */
-import { h, setClass } from './dom';
+import { h, setClass, setIndexedText } from './dom';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -24,7 +24,8 @@ export interface RowSpec {
 
 interface LiveCell {
   element: HTMLTableCellElement;
-  text: Text;
+  /** The cell's words, after its swatch: indices (D₀) in spans the style sheet sets larger. */
+  text: HTMLSpanElement;
   swatch: HTMLElement | null;
   swatchColor: string;
 }
@@ -78,7 +79,7 @@ export class LiveRows implements Unseen {
         spec.heading && c === 0 ? 'th' : 'td',
         spec.heading && c === 0 ? { scope: 'row' } : {},
       );
-      const text = document.createTextNode('');
+      const text = h('span', {});
       element.append(text);
       return { element, text, swatch: null, swatchColor: '' };
     });
@@ -88,7 +89,7 @@ export class LiveRows implements Unseen {
 
   private fill(live: LiveCell, cell: string | Cell): void {
     const { text, swatch } = typeof cell === 'string' ? { text: cell, swatch: undefined } : cell;
-    if (live.text.data !== text) live.text.data = text;
+    setIndexedText(live.text, text);
     if (swatch && !live.swatch) {
       live.swatch = h('span', { class: 'swatch' });
       live.element.prepend(live.swatch);

@@ -4,7 +4,8 @@ import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
  * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
  * first and last step: the page never scrolls sideways, and no text on it,
  * in the panel or its formulas (subscripts included), is
- * set under 12 px. Read from the page: the root's scroll width and each shown
+ * set under 12 px, and no subscript index (P₀) smaller than 12 px text's
+ * digits. Read from the page: the root's scroll width and each shown
  * text's computed size. (The figures' own text is held to 12 px by the
  * screen theme's smallest size, as steps.test.ts holds the projector's to 28.)
  */
@@ -28,6 +29,10 @@ for (const slug of Object.keys(sceneLinks)) {
           if (el.closest('.katex-mathml, .visually-hidden, [aria-hidden="true"]')) continue;
           const size = parseFloat(getComputedStyle(el).fontSize);
           if (size < 11.95) small.add(`${size.toFixed(1)}px “${text.slice(0, 20)}”`);
+          // A Unicode subscript (P₀, Nᵢ,₂) is drawn at 0.43 of its font's size,
+          // a digit at 0.76: it is as legible as 12 px text from 21.2 px up.
+          if (/[₀-₉ᵢⱼₖₘₙₚᵣ₊₋]/.test(text) && size * 0.43 < 12 * 0.76 - 0.05)
+            small.add(`subscript at ${size.toFixed(1)}px “${text.slice(0, 20)}”`);
         }
         return { overflow: root.scrollWidth - root.clientWidth, small: [...small] };
       });
