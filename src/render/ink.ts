@@ -25,6 +25,7 @@ export class Ink {
   private segs = new Float64Array(STRIDE * 256);
   private count = 0;
   private readonly discs: number[] = [];
+  private readonly areas: Box[] = [];
   /** Cell key → indices of the segments whose box touches the cell. */
   private readonly cells = new Map<number, number[]>();
   /** Segments already in `cells`. */
@@ -59,6 +60,11 @@ export class Ink {
     for (let i = 1; i < n; i++)
       this.segment(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1], halfWidth);
     if (closed && n > 2) this.segment(xy[2 * n - 2], xy[2 * n - 1], xy[0], xy[1], halfWidth);
+  }
+
+  /** A filled panel drawn over the figure (an inset): no label may sit on any of it. */
+  area(b: Box): void {
+    this.areas.push(b);
   }
 
   /** A filled or stroked disc (a point, a handle, a ring's outer edge). */
@@ -119,6 +125,8 @@ export class Ink {
   /** The first stroke or disc through the box, said in words (for a test's message), or null. */
   crossing(b: Box): string | null {
     this.index();
+    for (const a of this.areas)
+      if (boxesMeet(a, b)) return `a panel at (${a.x.toFixed(0)}, ${a.y.toFixed(0)})`;
     for (let i = 0; i < this.discs.length; i += 3)
       if (this.discMeets(i, b))
         return `a disc at (${this.discs[i].toFixed(0)}, ${this.discs[i + 1].toFixed(0)})`;
@@ -137,7 +145,7 @@ export class Ink {
    */
   hits(b: Box): { discs: number; strokes: number } {
     this.index();
-    let discs = 0;
+    let discs = this.areas.filter((a) => boxesMeet(a, b)).length;
     for (let i = 0; i < this.discs.length; i += 3) if (this.discMeets(i, b)) discs++;
     let strokes = 0;
     for (const i of this.near(b)) if (this.touches(i, b)) strokes++;
@@ -176,4 +184,9 @@ export class Ink {
 export function segmentMeetsBox(ax: number, ay: number, bx: number, by: number, b: Box): boolean {
   const rect = { minX: b.x, minY: b.y, maxX: b.x + b.width, maxY: b.y + b.height };
   return clipSegment(ax, ay, bx, by, rect) !== null;
+}
+
+/** Do two screen boxes overlap (not merely touch)? */
+export function boxesMeet(a: Box, b: Box): boolean {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }

@@ -87,8 +87,10 @@ export class Painter {
     readonly theme: Theme,
     /** What may be drawn: all of it, unless the presenter hid something. */
     readonly show: Readonly<Shown> = SHOW_ALL,
+    /** The screen rectangle drawn into: the view and a margin, or an inset's box (render/inset). */
+    clip?: ClipRect,
   ) {
-    this.clip = {
+    this.clip = clip ?? {
       minX: -MARGIN,
       minY: -MARGIN,
       maxX: view.width + MARGIN,

@@ -24,6 +24,8 @@ export interface DrawingSurface {
   arc(x: number, y: number, r: number, start: number, end: number, anticlockwise?: boolean): void;
   rect(x: number, y: number, w: number, h: number): void;
   closePath(): void;
+  /** Draws only inside the current path from now until `restore` (an inset's box). */
+  clip(): void;
   stroke(): void;
   fill(): void;
   fillRect(x: number, y: number, w: number, h: number): void;

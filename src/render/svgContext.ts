@@ -11,6 +11,8 @@ interface Style {
   textBaseline: CanvasTextBaseline;
   globalAlpha: number;
   dash: number[];
+  /** The id of the clip path in force, if any. */
+  clip?: string;
 }
 
 export function escapeXml(text: string): string {
@@ -40,6 +42,8 @@ export class SvgContext implements DrawingSurface {
     dash: [],
   };
   private stack: Style[] = [];
+  /** Clip paths made so far (their ids are numbered). */
+  private clips = 0;
   private path: string[] = [];
   /** The SVG elements drawn so far, in order. */
   readonly elements: string[] = [];
@@ -155,9 +159,19 @@ export class SvgContext implements DrawingSurface {
   closePath(): void {
     this.path.push('Z');
   }
+  clip(): void {
+    const id = `clip${++this.clips}`;
+    this.elements.push(`<clipPath id="${id}"><path d="${this.path.join('')}"/></clipPath>`);
+    this.style.clip = id;
+  }
 
+  /** The attributes every element takes from the state: its opacity and its clip. */
   private alpha(): string {
-    return this.style.globalAlpha < 1 ? ` opacity="${round(this.style.globalAlpha)}"` : '';
+    const s = this.style;
+    return (
+      (s.globalAlpha < 1 ? ` opacity="${round(s.globalAlpha)}"` : '') +
+      (s.clip ? ` clip-path="url(#${s.clip})"` : '')
+    );
   }
 
   stroke(): void {

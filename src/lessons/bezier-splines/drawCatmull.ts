@@ -1,8 +1,25 @@
+import { drawInset } from '../../render/inset';
 import type { Point } from '../../math';
 import type { Draw } from './drawParts';
 
-/** Part 6: Hermite with hand-set tangents, then Catmull-Rom: uniform, one-sided ends, centripetal, chordal, all three. */
+/**
+ * Part 6: Hermite with hand-set tangents, then Catmull-Rom: uniform, one-sided
+ * ends, centripetal, chordal, all three. Once the uniform curve is drawn, its
+ * loop at the hairpin (50 px wide on the projector, under two handles) is
+ * drawn again four times larger in an inset.
+ */
 export const catmull: Draw = (painter, m, info) => {
+  curves(painter, m, info);
+  const loop = m.alphas[0]?.loop;
+  if (!m.shown.has('uniform') || !loop || info.thumbnail) return;
+  drawInset(painter, { region: loop, avoid: m.state.points }, (inset) => {
+    curves(inset, m, { ...info, thumbnail: true });
+    for (const p of m.state.points) inset.handle(p);
+  });
+};
+
+/** The curves, tangents and crossings a step shows (a thumbnail, or an inset, without the legend). */
+const curves: Draw = (painter, m, info) => {
   const { shown } = m;
   const { points: p, tangents: handSet } = m.state;
   const theme = painter.theme;

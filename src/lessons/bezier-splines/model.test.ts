@@ -143,3 +143,29 @@ describe('a sharp corner (control points on the joint)', () => {
     expect(curvature.formula).toMatch(/\\kappa = \\text\{undefined\} \\mid \\text\{undefined\}/);
   });
 });
+
+describe('the uniform Catmull-Rom loop at the hairpin', () => {
+  it('is found between the curve’s two passes through its crossing', () => {
+    // HAIRPIN (0, 0), (3, 1), (3, 1.2), (0, 2.5): T₁ = (p₂ − p₀)/2 = (1.5, 0.6) and
+    // T₂ = (p₃ − p₁)/2 = (−1.5, 0.75), so the piece p₁ → p₂ has control points
+    // (3, 1), (3.5, 1.2), (3.5, 0.95), (3, 1.2): x(t) = 3 + 1.5t(1 − t), its tip
+    // x(½) = 3.375. It crosses itself at t and 1 − t with y(t) = y(1 − t):
+    // t = 0.30133 (bisection by hand), at (3.31579, 1.08421); on [t, 1 − t]
+    // y runs from 1.07917 to 1.08537.
+    const m = derive(at('catmull'));
+    const [uniform, centripetal, chordal] = m.alphas;
+    expect(uniform.crossings).toHaveLength(1);
+    expect(uniform.crossings[0][0]).toBeCloseTo(3.31579, 4);
+    expect(uniform.crossings[0][1]).toBeCloseTo(1.08421, 4);
+    const loop = uniform.loop!;
+    expect(loop.maxX).toBeCloseTo(3.375, 9);
+    expect(loop.minY).toBeLessThanOrEqual(1.07918);
+    expect(loop.maxY).toBeGreaterThanOrEqual(1.08536);
+    // With the legs within 0.02 of the points’ diagonal (0.02 × 3.905) of the crossing, no more.
+    expect(loop.minX).toBeLessThan(3.31579);
+    expect(loop.minX).toBeGreaterThan(3.31579 - 0.0782);
+    expect(loop.maxY - loop.minY).toBeLessThan(0.1);
+    // The centripetal and chordal curves never cross: nothing to magnify.
+    expect([centripetal.loop, chordal.loop]).toEqual([null, null]);
+  });
+});

@@ -16,7 +16,8 @@ import {
 } from '../../math';
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
-import { asCubic, comb, piecesOf, type Tooth } from './pieces';
+import { asCubic, comb, loopBounds, piecesOf, type Tooth } from './pieces';
+import type { Bounds } from '../../render/projection';
 import type { Reveal } from './script';
 import { type BezierSplinesState, handTangents, midpoint } from './state';
 import { type HandC1, type HandC2, continuation, handC1, handC2 } from './workedExample';
@@ -69,7 +70,14 @@ export interface BezierSplinesModel {
   crTangents: Point[];
   oneSided: Point[][];
   oneSidedTangents: Point[];
-  alphas: { alpha: number; name: string; segments: Point[][]; crossings: Point[] }[];
+  alphas: {
+    alpha: number;
+    name: string;
+    segments: Point[][];
+    crossings: Point[];
+    /** Where the curve loops through its first crossing (the inset magnifies it), or null. */
+    loop: Bounds | null;
+  }[];
   /** Part 7: the practical's computeSplineC1 and computeSplineC2 worked by hand. */
   worked: { c1: HandC1; c2: HandC2 };
   /** Part 8: the points as splines of degree 1, 2 and 3, and the first cubic piece continued past its end. */
@@ -186,12 +194,11 @@ const catmullPieces = memoOn<
     ).map(([alpha, name]) => {
       const segments = catmullRomSegments(p, alpha);
       // Crossings are only looked for where they are shown.
-      return {
-        alpha,
-        name,
-        segments,
-        crossings: part === 'catmull' ? bezierChainSelfIntersections(segments) : [],
-      };
+      const crossings = part === 'catmull' ? bezierChainSelfIntersections(segments) : [];
+      const loop = crossings.length
+        ? loopBounds(segments, crossings[0], LOOP_NEAR * diagonal(p))
+        : null;
+      return { alpha, name, segments, crossings, loop };
     }),
   };
 });
@@ -239,4 +246,14 @@ function gridRow(points: Point[]): GridRow {
     c1: quadraticSplineC1(points, midpoint(points[0], points[1])).map(asCubic),
     c2: cubicSplineC2(points),
   };
+}
+
+/** A pass through a crossing: within this share of the points' diagonal of it. */
+const LOOP_NEAR = 0.02;
+
+/** The diagonal of the points' bounding box. */
+function diagonal(points: readonly Point[]): number {
+  const xs = points.map((q) => q[0]);
+  const ys = points.map((q) => q[1]);
+  return Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
 }

@@ -1,4 +1,5 @@
-import { bezierDerivative, bezierPoint, elevateDegree, type Point } from '../../math';
+import { bezierDerivative, bezierPoint, elevateDegree, type Point, sampleBezier } from '../../math';
+import type { Bounds } from '../../render/projection';
 
 /** A tooth of the curvature comb: from the curve, along the normal, as long as the curvature. */
 export type Tooth = [Point, Point];
@@ -40,4 +41,39 @@ export function comb(pieces: readonly Point[][]): Tooth[] {
     at,
     [at[0] - normal[0] * kappa * factor, at[1] - normal[1] * kappa * factor],
   ]);
+}
+
+/** Samples per cubic piece when a loop is traced. */
+const LOOP_SAMPLES = 64;
+
+/**
+ * Where a chain of cubic pieces loops through its crossing: the bounds of the
+ * stretch between its first and its last pass within `near` of the crossing
+ * (the loop, and the crossing at its ends), or null if the chain passes there
+ * only once.
+ */
+export function loopBounds(
+  segments: readonly (readonly Point[])[],
+  crossing: Point,
+  near: number,
+): Bounds | null {
+  const xy: number[] = [];
+  for (const segment of segments) {
+    const samples = sampleBezier(segment as Point[], LOOP_SAMPLES);
+    for (let i = xy.length ? 2 : 0; i < samples.length; i++) xy.push(samples[i]);
+  }
+  const close: number[] = [];
+  for (let i = 0; i < xy.length; i += 2)
+    if (Math.hypot(xy[i] - crossing[0], xy[i + 1] - crossing[1]) <= near) close.push(i);
+  if (close.length < 2) return null;
+  const first = close[0];
+  const last = close[close.length - 1];
+  const box = { minX: crossing[0], minY: crossing[1], maxX: crossing[0], maxY: crossing[1] };
+  for (let i = first; i <= last; i += 2) {
+    box.minX = Math.min(box.minX, xy[i]);
+    box.maxX = Math.max(box.maxX, xy[i]);
+    box.minY = Math.min(box.minY, xy[i + 1]);
+    box.maxY = Math.max(box.maxY, xy[i + 1]);
+  }
+  return box;
 }
