@@ -1,3 +1,4 @@
+import { drawLegend } from '../../kit/legend';
 import { drawInset } from '../../render/inset';
 import type { Point } from '../../math';
 import type { Draw } from './drawParts';
@@ -75,23 +76,20 @@ const curves: Draw = (painter, m, info) => {
           : { color: theme.curveFaint, width: theme.sizes.line },
       );
     }
-    if (!info.thumbnail) {
-      // A legend in the corner: labels at the curves' ends would pile up on the last point.
-      shownCurves.forEach((curve, r) => {
-        const which = m.alphas.indexOf(curve);
-        const main = all || which > 0;
-        painter.screenLabel(
-          `${curve.name}, α = ${curve.alpha}`,
-          16,
-          28 + r * theme.sizes.label * 1.5,
-          {
-            color: main ? painter.color(which) : theme.muted,
-            halo: true,
-            bold: main,
-          },
-        );
-      });
-    }
+    if (!info.thumbnail)
+      // The key in the corner where it hides least (labels at the curves' ends would pile up on the last point).
+      drawLegend(
+        painter,
+        shownCurves.map((curve) => {
+          const which = m.alphas.indexOf(curve);
+          const color = all || which > 0 ? painter.color(which) : theme.muted;
+          return {
+            text: `${curve.name}, α = ${curve.alpha}`,
+            color,
+            line: { color, width: theme.sizes.curve },
+          };
+        }),
+      );
   }
   if (shown.has('uniform'))
     for (const x of uniform.crossings)

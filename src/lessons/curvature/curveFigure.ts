@@ -1,3 +1,4 @@
+import { drawLegend } from '../../kit/legend';
 import type { KitFigure } from '../../kit/lesson';
 import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
@@ -183,21 +184,15 @@ function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
   painter.dot(m.plane!.at.point, theme.accent, theme.sizes.point * 1.3);
   if (!labels) return;
   painter.label('P(t)', m.plane!.at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
-  let y = theme.sizes.label * 1.4;
-  if (shown.has('ticks')) {
-    painter.screenLabel(`■ ${m.state.equalSteps} equal steps of t`, 12, y, {
-      color: painter.color(0),
-      halo: true,
-      bold: true,
-    });
-    y += theme.sizes.label * 1.4;
-  }
-  if (shown.has('equalLength'))
-    painter.screenLabel(`■ ${m.state.equalSteps} equal steps of arc length s`, 12, y, {
-      color: painter.color(1),
-      halo: true,
-      bold: true,
-    });
+  // The key in the corner where it hides least: a name at a fixed spot sat on a handle.
+  drawLegend(painter, [
+    ...(shown.has('ticks')
+      ? [{ text: `■ ${m.state.equalSteps} equal steps of t`, color: painter.color(0) }]
+      : []),
+    ...(shown.has('equalLength')
+      ? [{ text: `■ ${m.state.equalSteps} equal steps of arc length s`, color: painter.color(1) }]
+      : []),
+  ]);
 }
 
 function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void {
@@ -216,10 +211,7 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
   });
   painter.dot(m.space.at.point.slice(0, 2), theme.accent, theme.sizes.point * 1.3);
   if (labels)
-    painter.screenLabel('Top view (x, y): z is seen in space →', 12, theme.sizes.label * 1.4, {
-      color: theme.muted,
-      halo: true,
-    });
+    drawLegend(painter, [{ text: 'Top view (x, y): z is seen in space →', color: theme.muted }]);
 }
 
 /**
