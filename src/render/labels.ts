@@ -313,12 +313,16 @@ export function drawScreenLabel(
       : baseline === 'bottom'
         ? y - size / 2
         : y;
-  // Keep the whole label inside the figure rather than cut at its edge.
-  const margin = 2 + (style.box ? size * 0.35 : 0);
-  const inside = (l: number, m: number): [number, number] => [
-    Math.max(margin, Math.min(l, view.width - total - margin)),
-    Math.max(size * 0.7 + margin, Math.min(m, view.height - size * 0.7 - margin)),
-  ];
+  let boxed = style.box === true;
+  // Keep the whole label inside the figure rather than cut at its edge, and
+  // its box with it when it has one (asked for, or given where nothing is clear).
+  const inside = (l: number, m: number): [number, number] => {
+    const margin = 2 + (boxed ? size * 0.35 : 0);
+    return [
+      Math.max(margin, Math.min(l, view.width - total - margin)),
+      Math.max(size * 0.7 + margin, Math.min(m, view.height - size * 0.7 - margin)),
+    ];
+  };
   [left, middleY] = inside(left, middleY);
   // A label never lands on one already placed this frame: it moves to the
   // nearest free spot around its place (above, below, beside), and if all of
@@ -335,7 +339,6 @@ export function drawScreenLabel(
   const own = (l: number, m: number) =>
     !rivals || nearestIsOwn({ x: l, y: m - size * 0.65, width: total, height }, x, y, rivals);
   const clear = (l: number, m: number) => unmarked(l, m) && own(l, m);
-  let boxed = style.box === true;
   let leaderDrawn = false;
   if (!style.inBox && !clear(left, middleY)) {
     if (style.fixed) return { width: 0 };
@@ -381,7 +384,7 @@ export function drawScreenLabel(
     spot ??=
       places.find(([l, m]) => free(l, m) && own(l, m)) ?? places.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };
-    [left, middleY] = spot;
+    [left, middleY] = boxed ? inside(...spot) : spot;
     leaderDrawn = leader !== null;
     if (leader)
       drawLeader(

@@ -1,0 +1,43 @@
+import { describe, expect, it } from 'vitest';
+import { Painter } from './painter';
+import { SvgContext } from './svgContext';
+import { makeTheme } from './theme';
+import { Viewport } from './viewport';
+
+/**
+ * A 400 × 200 figure ruled with strokes every 8 px, so no place is clear: a
+ * label is boxed where it lands, and the box too stays inside the figure.
+ */
+function ruled(box: boolean) {
+  const view = new Viewport(400, 200);
+  view.fit({ minX: 0, minY: 0, maxX: 400, maxY: 200 }, 0);
+  const svg = new SvgContext();
+  const theme = makeTheme(false, true);
+  const painter = new Painter(svg, view, theme);
+  for (let y = 4; y < 200; y += 8) painter.segment([0, y], [400, y], { width: 2 });
+  const before = svg.elements.length;
+  painter.screenLabel('frame flips: κ → 0', 390, 100, { bold: true, ...(box ? { box } : {}) });
+  const rects = svg.elements
+    .slice(before)
+    .filter((e) => e.startsWith('<rect'))
+    .map((e) => {
+      const at = (name: string) => Number(new RegExp(`${name}="([-\\d.]+)"`).exec(e)![1]);
+      return { x: at('x'), y: at('y'), width: at('width'), height: at('height') };
+    });
+  return { rects, label: painter.labels.at(-1)! };
+}
+
+describe('a label near the edge', () => {
+  for (const box of [false, true])
+    it(`keeps its box inside the figure (${box ? 'asked for' : 'given where nothing is clear'})`, () => {
+      const { rects, label } = ruled(box);
+      expect(label.boxed).toBe(true);
+      expect(rects.length).toBeGreaterThan(0);
+      for (const r of rects) {
+        expect(r.x).toBeGreaterThanOrEqual(0);
+        expect(r.x + r.width).toBeLessThanOrEqual(400);
+        expect(r.y).toBeGreaterThanOrEqual(0);
+        expect(r.y + r.height).toBeLessThanOrEqual(200);
+      }
+    });
+});
