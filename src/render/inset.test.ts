@@ -36,6 +36,17 @@ describe('a magnified inset', () => {
     expect(seen[1][0] - seen[0][0]).toBeCloseTo(10 * 8.64, 6);
   });
 
+  it('says how much larger it is, rounded', () => {
+    const { svg, painter } = figure();
+    drawInset(painter, { region }, () => {});
+    expect(svg.texts).toEqual(['×9']);
+    // At most 12 times, however small the region.
+    const tiny = { minX: 5, minY: 3, maxX: 5.001, maxY: 3.001 };
+    const again = figure();
+    drawInset(again.painter, { region: tiny }, () => {});
+    expect(again.svg.texts).toEqual(['×12']);
+  });
+
   it('leaves a handle uncovered, and takes the free corner with the least ink', () => {
     const { painter } = figure();
     // A handle at (9, 1), on screen (900, 500): in the bottom right corner.
@@ -74,7 +85,10 @@ describe('a magnified inset', () => {
     const clip = svg.elements.find((e) => e.startsWith('<clipPath'))!;
     expect(clip).toContain('d="M776 376h216v216h-216Z"');
     const id = /id="([^"]+)"/.exec(clip)![1];
-    expect(svg.elements.filter((e) => e.includes(`clip-path="url(#${id})"`)).length).toBe(1);
+    // The one stroke, and the magnification's text, are drawn clipped.
+    const clipped = svg.elements.filter((e) => e.includes(`clip-path="url(#${id})"`));
+    expect(clipped.filter((e) => e.startsWith('<path')).length).toBe(1);
+    expect(clipped.filter((e) => e.startsWith('<text')).length).toBeGreaterThan(0);
     // A label box in the middle of the inset, with no stroke under it, is still on ink.
     expect(painter.ink.crosses({ x: box.x + 20, y: box.y + 20, width: 30, height: 20 })).toBe(true);
     expect(painter.ink.crosses({ x: 300, y: 100, width: 30, height: 20 })).toBe(false);

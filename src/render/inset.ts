@@ -85,7 +85,17 @@ export function drawInset(
   ctx.rect(box.x, box.y, side, side);
   ctx.clip();
   const clip = { minX: box.x, minY: box.y, maxX: box.x + side, maxY: box.y + side };
-  draw(new Painter(ctx, magnified, theme, painter.show, clip));
+  const inset = new Painter(ctx, magnified, theme, painter.show, clip);
+  draw(inset);
+  // How much larger, in its top left corner (over what it shows: its own box, no other label's).
+  const size = theme.sizes.small;
+  inset.screenLabel(`×${Math.round(zoom)}`, box.x + size * 0.4, box.y + size * 0.8, {
+    size,
+    color: spec.color ?? theme.accent,
+    halo: true,
+    bold: true,
+    inBox: true,
+  });
   ctx.restore();
 
   const color = spec.color ?? theme.accent;
