@@ -28,6 +28,7 @@ import { drawHeadless } from '../src/app/headless';
 import { filled } from '../src/render/formula';
 import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
+import type { Painter } from '../src/render/painter';
 
 const theme = makeTheme(false, true);
 const ROW = { width: 1900, height: 800 };
@@ -124,11 +125,7 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
       if (/(^|:\s*)\?$/.test(text)) problems.push(`${at} “${text}” ends in a bare “?”`);
     }
     const labels = painter.labels;
-    for (const label of labels) {
-      if (label.boxed) continue;
-      const through = painter.ink.crossing(glyphBox(label));
-      if (through) problems.push(`${at} ${through} through “${label.text}”`);
-    }
+    for (const through of crossedLabels(painter)) problems.push(`${at} ${through}`);
     for (let i = 0; i < labels.length; i++)
       for (let j = i + 1; j < labels.length; j++) {
         const [a, b] = [labels[i], labels[j]];
@@ -151,6 +148,14 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
   return { svg, problems };
 }
 
+/** Labels a stroke or a point runs through (a boxed one is drawn over what it covers). */
+function crossedLabels(painter: Painter): string[] {
+  return painter.labels.flatMap((label) => {
+    const through = label.boxed ? null : painter.ink.crossing(glyphBox(label));
+    return through ? [`${through} through “${label.text}”`] : [];
+  });
+}
+
 function figuresOf(lesson: AnyLesson, state: unknown) {
   const shownIds = lesson.figuresShown?.(state) ?? null;
   return lesson.figures.filter((f) => !shownIds || shownIds.includes(f.id));
@@ -158,7 +163,9 @@ function figuresOf(lesson: AnyLesson, state: unknown) {
 
 /**
  * The step on a phone (360 px wide: each figure the page's width, one under
- * another, in the screen's theme): whose names are beside whose points.
+ * another, in the screen's theme): whose names are beside whose points, and
+ * which labels a stroke runs through (a label clear on the projector may not
+ * be on a figure of another shape).
  */
 function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
   const model = lesson.derive(state);
@@ -168,10 +175,10 @@ function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
       height: figure.height ?? PHONE.height,
       theme: phoneTheme,
     });
-    return namedElsewhere(
-      painter.labels,
-      handles.map((h) => view.toScreen(h.position)),
-    ).map((p) => `phone ${figure.id}: ${p}`);
+    const onScreen = handles.map((h) => view.toScreen(h.position));
+    return [...crossedLabels(painter), ...namedElsewhere(painter.labels, onScreen)].map(
+      (p) => `phone ${figure.id}: ${p}`,
+    );
   });
 }
 
