@@ -39,9 +39,13 @@ const PROSE = new Set(['P', 'LI', 'H2', 'H3', 'H4', 'SUMMARY', 'FIGCAPTION']);
 export function append(parent: Node, children: (Child | readonly Child[])[]): void {
   for (const child of children.flat()) {
     if (child === null || child === undefined || child === false) continue;
-    if (typeof child === 'object') parent.appendChild(child);
-    else if (indexable(parent)) parent.append(...indexedRuns(asShown(parent, String(child))));
-    else parent.appendChild(document.createTextNode(String(child)));
+    if (typeof child === 'object') {
+      parent.appendChild(child);
+      continue;
+    }
+    const text = asShown(parent, String(child));
+    if (indexable(parent) && INDEX_RUN.test(text)) parent.append(...indexedRuns(text));
+    else parent.appendChild(document.createTextNode(text));
   }
 }
 
@@ -63,7 +67,6 @@ const indexable = (node: Node): node is HTMLElement =>
  * The nodes' text reads as `text`.
  */
 function indexedRuns(text: string): (Node | string)[] {
-  if (!INDEX_RUN.test(text)) return [text];
   return text
     .split(INDEX_RUN)
     .map((run, i) => {
@@ -124,7 +127,11 @@ export function setText(element: Node, text: string): void {
 export function setIndexedText(element: HTMLElement, text: string): void {
   const now = element.textContent;
   if (now === text || now === shownText(element, text)) return;
+  const only = element.firstChild;
   if (INDEX_RUN.test(text)) element.replaceChildren(...indexedRuns(text));
+  // A live cell or value written every frame: its one text node takes the new
+  // words, rather than being replaced by a new one.
+  else if (only instanceof Text && only === element.lastChild) only.data = text;
   else element.textContent = text;
 }
 

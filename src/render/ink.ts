@@ -186,7 +186,9 @@ export function segmentMeetsBox(ax: number, ay: number, bx: number, by: number, 
   return clipSegment(ax, ay, bx, by, rect) !== null;
 }
 
-/** Do two screen boxes overlap (not merely touch)? */
+/** Do two screen boxes overlap by more than a pixel each way (not merely touch)? */
 export function boxesMeet(a: Box, b: Box): boolean {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+  const w = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
+  const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
+  return w > 1 && h > 1;
 }

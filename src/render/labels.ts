@@ -5,7 +5,7 @@
  * can check that no two overlap.
  */
 import { say } from './notation';
-import { type Box, segmentMeetsBox } from './ink';
+import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import type { Painter } from './painter';
 import type { DrawingSurface } from './surface';
 
@@ -122,16 +122,6 @@ export function splitSubscripts(text: string): { text: string; sub: boolean }[] 
   if (plain) runs.push({ text: plain, sub: false });
   return runs;
 }
-
-/** Do a placed label and a box overlap by more than a pixel each way? */
-function overlaps(b: Box, x: number, y: number, width: number, height: number): boolean {
-  const w = Math.min(b.x + b.width, x + width) - Math.max(b.x, x);
-  const h = Math.min(b.y + b.height, y + height) - Math.max(b.y, y);
-  return w > 1 && h > 1;
-}
-
-/** Do two screen boxes overlap (by more than a pixel each way)? */
-const boxesMeet = (a: Box, b: Box): boolean => overlaps(a, b.x, b.y, b.width, b.height);
 
 /** How many labels placed so far lie under the box. */
 const labelsUnder = (painter: Painter, box: Box) =>
@@ -331,7 +321,7 @@ export function drawScreenLabel(
   // through its letters (a boxed one too: its box would hide what it covers).
   const height = size * 1.3;
   const free = (l: number, m: number) =>
-    !painter.labels.some((b) => overlaps(b, l, m - size * 0.65, total, height));
+    !painter.labels.some((b) => boxesMeet(b, { x: l, y: m - size * 0.65, width: total, height }));
   const unmarked = (l: number, m: number) =>
     free(l, m) &&
     !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }));

@@ -46,6 +46,9 @@ export interface Projection {
   decode(text: string): boolean;
 }
 
+/** The length of a box's diagonal in the plane: a figure's size, to scale marks by. */
+export const diagonal = (b: Bounds): number => Math.hypot(b.maxX - b.minX, b.maxY - b.minY);
+
 /** Smallest box holding every point (z too, where points have it); a unit box if none. */
 export function boundsOf(points: readonly WorldPoint[]): Bounds {
   let minX = Infinity;

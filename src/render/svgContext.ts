@@ -166,7 +166,7 @@ export class SvgContext implements DrawingSurface {
   }
 
   /** The attributes every element takes from the state: its opacity and its clip. */
-  private alpha(): string {
+  private shared(): string {
     const s = this.style;
     return (
       (s.globalAlpha < 1 ? ` opacity="${round(s.globalAlpha)}"` : '') +
@@ -179,18 +179,18 @@ export class SvgContext implements DrawingSurface {
     const s = this.style;
     const dash = s.dash.length ? ` stroke-dasharray="${s.dash.join(' ')}"` : '';
     this.elements.push(
-      `<path d="${this.path.join('')}" fill="none" stroke="${escapeXml(s.strokeStyle)}" stroke-width="${round(s.lineWidth)}" stroke-linecap="${s.lineCap}" stroke-linejoin="${s.lineJoin}"${dash}${this.alpha()}/>`,
+      `<path d="${this.path.join('')}" fill="none" stroke="${escapeXml(s.strokeStyle)}" stroke-width="${round(s.lineWidth)}" stroke-linecap="${s.lineCap}" stroke-linejoin="${s.lineJoin}"${dash}${this.shared()}/>`,
     );
   }
   fill(): void {
     if (!this.path.length) return;
     this.elements.push(
-      `<path d="${this.path.join('')}" fill="${escapeXml(this.style.fillStyle)}"${this.alpha()}/>`,
+      `<path d="${this.path.join('')}" fill="${escapeXml(this.style.fillStyle)}"${this.shared()}/>`,
     );
   }
   fillRect(x: number, y: number, w: number, h: number): void {
     this.elements.push(
-      `<rect x="${round(x)}" y="${round(y)}" width="${round(w)}" height="${round(h)}" fill="${escapeXml(this.style.fillStyle)}"${this.alpha()}/>`,
+      `<rect x="${round(x)}" y="${round(y)}" width="${round(w)}" height="${round(h)}" fill="${escapeXml(this.style.fillStyle)}"${this.shared()}/>`,
     );
   }
   fillText(text: string, x: number, y: number): void {
@@ -225,7 +225,7 @@ export class SvgContext implements DrawingSurface {
             : 'alphabetic';
     const { size, family, weight } = parseFont(s.font);
     this.elements.push(
-      `<text x="${round(x)}" y="${round(y)}" font-size="${size}" font-family="${escapeXml(family)}" font-weight="${weight}" text-anchor="${anchor}" dominant-baseline="${baseline}" ${paint}${this.alpha()}>${escapeXml(text)}</text>`,
+      `<text x="${round(x)}" y="${round(y)}" font-size="${size}" font-family="${escapeXml(family)}" font-weight="${weight}" text-anchor="${anchor}" dominant-baseline="${baseline}" ${paint}${this.shared()}>${escapeXml(text)}</text>`,
     );
   }
   measureText(text: string): { width: number } {

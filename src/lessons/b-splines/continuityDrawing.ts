@@ -2,6 +2,7 @@ import type { DrawInfo } from '../../app/lesson';
 import { words } from '../../kit/format';
 import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
+import { boundsOf, diagonal } from '../../render/projection';
 import { derivativeName, smoothName } from './continuityScript';
 import { drawCursor, drawPolygon, drawSegments, ringHovered } from './drawParts';
 import type { ContinuityModel } from './model';
@@ -17,9 +18,7 @@ function differingArrows(painter: Painter, m: ContinuityModel, info: DrawInfo): 
   const check = m.watched;
   const r = check.smooth + 1;
   if (!(r < check.left.length)) return;
-  const xs = m.state.points.map((p) => p[0]);
-  const ys = m.state.points.map((p) => p[1]);
-  const extent = Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+  const extent = diagonal(boundsOf(m.state.points));
   const left = check.left[r];
   const right = check.right[r];
   const longest = Math.max(Math.hypot(...left), Math.hypot(...right));

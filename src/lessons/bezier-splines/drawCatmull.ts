@@ -1,26 +1,28 @@
 import { drawLegend } from '../../kit/legend';
 import { drawInset } from '../../render/inset';
 import type { Point } from '../../math';
+import type { Painter } from '../../render/painter';
 import type { Draw } from './drawParts';
+import type { BezierSplinesModel } from './model';
 
 /**
  * Part 6: Hermite with hand-set tangents, then Catmull-Rom: uniform, one-sided
  * ends, centripetal, chordal, all three. Once the uniform curve is drawn, its
- * loop at the hairpin (50 px wide on the projector, under two handles) is
- * drawn again four times larger in an inset.
+ * loop at the hairpin (about 15 px wide on the projector, under two handles) is
+ * drawn again, magnified, in an inset.
  */
 export const catmull: Draw = (painter, m, info) => {
-  curves(painter, m, info);
+  curves(painter, m, !info.thumbnail);
   const loop = m.alphas[0]?.loop;
   if (!m.shown.has('uniform') || !loop || info.thumbnail) return;
   drawInset(painter, { region: loop, avoid: m.state.points }, (inset) => {
-    curves(inset, m, { ...info, thumbnail: true });
+    curves(inset, m, false);
     for (const p of m.state.points) inset.handle(p);
   });
 };
 
-/** The curves, tangents and crossings a step shows (a thumbnail, or an inset, without the legend). */
-const curves: Draw = (painter, m, info) => {
+/** The curves, tangents and crossings a step shows, and with `keyed` their key. */
+function curves(painter: Painter, m: BezierSplinesModel, keyed: boolean): void {
   const { shown } = m;
   const { points: p, tangents: handSet } = m.state;
   const theme = painter.theme;
@@ -76,7 +78,7 @@ const curves: Draw = (painter, m, info) => {
           : { color: theme.curveFaint, width: theme.sizes.line },
       );
     }
-    if (!info.thumbnail)
+    if (keyed)
       // The key in the corner where it hides least (labels at the curves' ends would pile up on the last point).
       drawLegend(
         painter,
@@ -94,4 +96,4 @@ const curves: Draw = (painter, m, info) => {
   if (shown.has('uniform'))
     for (const x of uniform.crossings)
       painter.ring(x, theme.sizes.handle * 2.4, { color: theme.palette[1] });
-};
+}

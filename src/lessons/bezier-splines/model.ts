@@ -17,7 +17,7 @@ import {
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
 import { asCubic, comb, loopBounds, piecesOf, type Tooth } from './pieces';
-import type { Bounds } from '../../render/projection';
+import { type Bounds, boundsOf, diagonal } from '../../render/projection';
 import type { Reveal } from './script';
 import { type BezierSplinesState, handTangents, midpoint } from './state';
 import { type HandC1, type HandC2, continuation, handC1, handC2 } from './workedExample';
@@ -196,7 +196,7 @@ const catmullPieces = memoOn<
       // Crossings are only looked for where they are shown.
       const crossings = part === 'catmull' ? bezierChainSelfIntersections(segments) : [];
       const loop = crossings.length
-        ? loopBounds(segments, crossings[0], LOOP_NEAR * diagonal(p))
+        ? loopBounds(segments, crossings[0], LOOP_NEAR * diagonal(boundsOf(p)))
         : null;
       return { alpha, name, segments, crossings, loop };
     }),
@@ -250,10 +250,3 @@ function gridRow(points: Point[]): GridRow {
 
 /** A pass through a crossing: within this share of the points' diagonal of it. */
 const LOOP_NEAR = 0.02;
-
-/** The diagonal of the points' bounding box. */
-function diagonal(points: readonly Point[]): number {
-  const xs = points.map((q) => q[0]);
-  const ys = points.map((q) => q[1]);
-  return Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
-}

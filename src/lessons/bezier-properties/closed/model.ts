@@ -1,4 +1,5 @@
 import { memoOn } from '../../../kit/memoOn';
+import { boundsOf, diagonal } from '../../../render/projection';
 import {
   type Point,
   bezierDerivative,
@@ -45,9 +46,7 @@ export const deriveClosed = memoOn<PropertiesState, 'points' | 't', ClosedModel>
     const start = hodograph[0];
     const end = hodograph[hodograph.length - 1];
     const measurable = norm(start) !== 0 && norm(end) !== 0;
-    const xs = points.map((q) => q[0]);
-    const ys = points.map((q) => q[1]);
-    const size = Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+    const size = diagonal(boundsOf(points));
     const arrow = (v: Point) =>
       scale(v, norm(v) === 0 ? 0 : Math.min(ARROW_SCALE, (ARROW_REACH * size) / norm(v)));
     const leaving: [Point, Point] = [p0, add(p0, arrow(start))];
