@@ -1,4 +1,4 @@
-import { clearestPlace, drawPanelBox, labelWidth } from '../render/labels';
+import { clearestPlace, drawPanelBox, edgePlaces, labelWidth } from '../render/labels';
 import type { Painter, StrokeStyle } from '../render/painter';
 
 // A figure's key: which line is which, in a box in a corner of the figure.
@@ -39,12 +39,7 @@ export function drawLegend(
     nameAt - left + Math.max(...entries.map((e) => labelWidth(painter, e.text, { size }))) + pad;
   const height = entries.length * lineHeight + pad;
   painter.placing(() => {
-    const corners = [
-      [left, top],
-      [view.width - left - width, top],
-      [left, view.height - left - height],
-      [view.width - left - width, view.height - left - height],
-    ].map(([x, y]) => ({ x, y, width, height }));
+    const corners = edgePlaces(view, width, height, left, top);
     const { x, y } = corners[clearestPlace(painter, corners)];
     painter.labels.push({ text: 'legend', x, y, width, height, boxed: true });
     drawPanelBox(painter, { x, y, width, height }, theme.axis, Math.max(1, theme.sizes.thin * 0.5));

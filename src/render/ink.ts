@@ -25,6 +25,8 @@ export class Ink {
   private segs = new Float64Array(STRIDE * 256);
   private count = 0;
   private readonly discs: number[] = [];
+  /** The handles among the discs (x, y, radius): what a person drags must never be covered. */
+  private readonly handleDiscs: number[] = [];
   private readonly areas: Box[] = [];
   /** Cell key → indices of the segments whose box touches the cell. */
   private readonly cells = new Map<number, number[]>();
@@ -71,6 +73,21 @@ export class Ink {
   disc(x: number, y: number, radius: number): void {
     if (Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(radius))
       this.discs.push(x, y, radius);
+  }
+
+  /** A handle's disc: ink like any disc, and also what no box may cover. */
+  handle(x: number, y: number, radius: number): void {
+    if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(radius))) return;
+    this.discs.push(x, y, radius);
+    this.handleDiscs.push(x, y, radius);
+  }
+
+  /** How many handles the box covers. */
+  handlesUnder(b: Box): number {
+    const h = this.handleDiscs;
+    let n = 0;
+    for (let i = 0; i < h.length; i += 3) if (discMeetsBox(h[i], h[i + 1], h[i + 2], b)) n++;
+    return n;
   }
 
   private key(cx: number, cy: number): number {
@@ -153,10 +170,7 @@ export class Ink {
   }
 
   private discMeets(i: number, b: Box): boolean {
-    const [x, y, r] = [this.discs[i], this.discs[i + 1], this.discs[i + 2]];
-    const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
-    const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
-    return dx * dx + dy * dy < r * r;
+    return discMeetsBox(this.discs[i], this.discs[i + 1], this.discs[i + 2], b);
   }
 
   /** The segments that may touch the box (those in its cells and the long ones), each once. */
@@ -178,6 +192,13 @@ export class Ink {
           yield i;
         }
   }
+}
+
+/** Does the disc of radius r at (x, y) reach into the box? */
+function discMeetsBox(x: number, y: number, r: number, b: Box): boolean {
+  const dx = Math.max(b.x - x, 0, x - (b.x + b.width));
+  const dy = Math.max(b.y - y, 0, y - (b.y + b.height));
+  return dx * dx + dy * dy < r * r;
 }
 
 /** Does the segment from (ax, ay) to (bx, by) meet the box? */

@@ -136,15 +136,45 @@ export function firstClear(painter: Painter, boxes: readonly Box[]): number {
 }
 
 /**
- * The place that hides least (-1 if none): a point or a label hidden is worse
- * than any number of strokes crossed (the curve shows round it).
+ * The place that hides least (-1 if none): a handle hidden is worse than
+ * anything else (it can no longer be grabbed), a point or a label worse than
+ * any number of strokes crossed (the curve shows round it).
  */
 export function leastHidden(painter: Painter, boxes: readonly Box[]): number {
   const hidden = boxes.map((box) => {
     const { discs, strokes } = painter.ink.hits(box);
-    return (discs + labelsUnder(painter, box)) * 1000 + strokes;
+    return (
+      painter.ink.handlesUnder(box) * 1e6 + (discs + labelsUnder(painter, box)) * 1000 + strokes
+    );
   });
   return hidden.indexOf(Math.min(...hidden));
+}
+
+/**
+ * Where a box `width` × `height` may sit over a figure `margin` from its
+ * edges: the four corners (top left first), then the middles of the top and
+ * foot, then of the sides, for when every corner holds a handle. `top` is
+ * the least y at the top (below a box already there).
+ */
+export function edgePlaces(
+  view: { width: number; height: number },
+  width: number,
+  height: number,
+  margin: number,
+  top = margin,
+): Box[] {
+  const [right, foot] = [view.width - width - margin, view.height - height - margin];
+  const [centre, middle] = [(view.width - width) / 2, (top + foot) / 2];
+  return [
+    [margin, top],
+    [right, top],
+    [margin, foot],
+    [right, foot],
+    [centre, top],
+    [centre, foot],
+    [margin, middle],
+    [right, middle],
+  ].map(([x, y]) => ({ x, y, width, height }));
 }
 
 /** The first clear place, else the one that hides least. */
@@ -152,6 +182,17 @@ export const clearestPlace = (painter: Painter, boxes: readonly Box[]): number =
   const clear = firstClear(painter, boxes);
   return clear >= 0 ? clear : leastHidden(painter, boxes);
 };
+
+/** The box drawn round a boxed label `total` wide, its text's middle at (left, middleY). */
+function labelFrame(left: number, middleY: number, total: number, size: number): Box {
+  const pad = size * 0.35;
+  return {
+    x: left - pad,
+    y: middleY - size * 0.62 - pad * 0.4,
+    width: total + 2 * pad,
+    height: size * 1.3 + pad * 0.8,
+  };
+}
 
 /** The fonts and runs of a label, and its width in pixels. */
 function measure(painter: Painter, text: string, style: LabelStyle) {
@@ -322,9 +363,14 @@ export function drawScreenLabel(
   const height = size * 1.3;
   const free = (l: number, m: number) =>
     !painter.labels.some((b) => boxesMeet(b, { x: l, y: m - size * 0.65, width: total, height }));
+  // A boxed label hides what is under its box: a place whose box covers no
+  // handle (a handle must stay in reach).
+  const open = (l: number, m: number) =>
+    painter.ink.handlesUnder(labelFrame(...inside(l, m), total, size)) === 0;
   const unmarked = (l: number, m: number) =>
     free(l, m) &&
-    !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }));
+    !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height })) &&
+    (!boxed || open(l, m));
   const rivals = around ? style.rivals : undefined;
   const own = (l: number, m: number) =>
     !rivals || nearestIsOwn({ x: l, y: m - size * 0.65, width: total, height }, x, y, rivals);
@@ -353,26 +399,33 @@ export function drawScreenLabel(
     const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];
     let leader: [number, number] | null = null;
     let spot = spots.find(([l, m]) => clear(l, m));
-    if (!spot && !style.box) {
-      // The leader may cross lines, but no label.
-      const leaderClear = (l: number, m: number) => {
-        const end = nearestOnBox(ax, ay, { x: l, y: m - size * 0.65, width: total, height });
-        return !painter.labels.some(
-          (b) => !b.boxed && segmentMeetsBox(ax, ay, end[0], end[1], glyphBox(b)),
-        );
-      };
-      spot = farSpots(ax, ay, total, height)
+    // The leader may cross lines, but no label.
+    const leaderClear = (l: number, m: number) => {
+      const end = nearestOnBox(ax, ay, { x: l, y: m - size * 0.65, width: total, height });
+      return !painter.labels.some(
+        (b) => !b.boxed && segmentMeetsBox(ax, ay, end[0], end[1], glyphBox(b)),
+      );
+    };
+    // The leader says whose name it is: no need to be nearest its point.
+    const far = (fits: (l: number, m: number) => boolean) => {
+      const found = farSpots(ax, ay, total, height)
         .map(([l, m]) => inside(l, m))
-        // The leader says whose name it is: no need to be nearest its point.
-        .find(([l, m]) => unmarked(l, m) && leaderClear(l, m));
-      if (spot) leader = [ax, ay];
-    }
+        .find(([l, m]) => fits(l, m) && leaderClear(l, m));
+      if (found) leader = [ax, ay];
+      return found;
+    };
+    if (!spot && !style.box) spot = far(unmarked);
     // Nowhere clear within reach: it keeps a free place and is boxed, so the
-    // lines under it cannot be read as part of it.
+    // lines under it cannot be read as part of it, where its box hides no
+    // handle: near, else farther out with a leader, else near after all.
     if (!spot) boxed = true;
     const places: [number, number][] = [[left, middleY], ...spots];
     spot ??=
-      places.find(([l, m]) => free(l, m) && own(l, m)) ?? places.find(([l, m]) => free(l, m));
+      places.find(([l, m]) => free(l, m) && own(l, m) && open(l, m)) ??
+      places.find(([l, m]) => free(l, m) && open(l, m)) ??
+      far((l, m) => free(l, m) && open(l, m)) ??
+      places.find(([l, m]) => free(l, m) && own(l, m)) ??
+      places.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };
     [left, middleY] = boxed ? inside(...spot) : spot;
     leaderDrawn = leader !== null;
@@ -400,13 +453,8 @@ export function drawScreenLabel(
       ...(leaderDrawn ? { leader: true } : {}),
     });
   if (boxed) {
-    const pad = size * 0.35;
-    const box: [number, number, number, number] = [
-      left - pad,
-      middleY - size * 0.62 - pad * 0.4,
-      total + 2 * pad,
-      size * 1.3 + pad * 0.8,
-    ];
+    const frame = labelFrame(left, middleY, total, size);
+    const box = [frame.x, frame.y, frame.width, frame.height] as const;
     c.fillStyle = theme.labelHalo;
     c.globalAlpha = 0.92;
     c.fillRect(...box);
@@ -465,8 +513,12 @@ export function drawPanelBox(
   c.restore();
 }
 
-/** A note's widths to try, as shares of its figure's: a corner's note, not a banner, then narrower. */
-const NOTE_SHARES = [0.6, 0.45, 0.34, 0.26];
+/**
+ * A note's widths to try, as shares of its figure's: a corner's note, not a
+ * banner, then narrower; a banner only when no corner of those is clear (the
+ * band a figure keeps free above its curve for a note, #19).
+ */
+const NOTE_SHARES = [0.6, 0.45, 0.34, 0.26, 0.96];
 
 /**
  * A boxed, word-wrapped message in a corner of the figure; returns the y
@@ -486,14 +538,13 @@ export function drawNote(
 ): number {
   const c = painter.ctx;
   const theme = painter.theme;
-  const size = theme.sizes.label;
-  const pad = size * 0.5;
-  const lineHeight = size * 1.3;
   const { width: figureWidth, height: figureHeight } = painter.view;
   text = say(text);
   const words = text.split(/\s+/).filter(Boolean);
-  /** The note wrapped to at most `maxWidth`: its lines and its box's size. */
-  const wrap = (maxWidth: number) => {
+  /** The note in `size` px wrapped to at most a `share` of the figure's width: its lines and box. */
+  const wrapAt = (share: number, size = theme.sizes.label) => {
+    const pad = size * 0.5;
+    const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share));
     c.save();
     c.font = `${size}px ${theme.fontFamily}`;
     const lines: string[] = [];
@@ -504,11 +555,9 @@ export function drawNote(
     }
     const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
     c.restore();
-    return { lines, width: width + 2 * pad, height: lines.length * lineHeight + pad };
+    return { size, pad, lines, width: width + 2 * pad, height: lines.length * size * 1.3 + pad };
   };
-  type Wrapped = ReturnType<typeof wrap>;
-  const wrapAt = (share: number) =>
-    wrap(Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share)));
+  type Wrapped = ReturnType<typeof wrapAt>;
   const widest = wrapAt(NOTE_SHARES[0]);
   const draw = (note: Wrapped, x: number, top: number) => {
     painter.labels.push({ text, x, y: top, width: note.width, height: note.height, boxed: true });
@@ -519,38 +568,35 @@ export function drawNote(
       Math.max(2, theme.sizes.line),
     );
     c.save();
-    c.font = `${size}px ${theme.fontFamily}`;
+    c.font = `${note.size}px ${theme.fontFamily}`;
     c.fillStyle = theme.ink;
     c.textAlign = 'left';
     c.textBaseline = 'middle';
     note.lines.forEach((line, i) =>
-      c.fillText(line, x + pad, top + pad / 2 + (i + 0.5) * lineHeight),
+      c.fillText(line, x + note.pad, top + note.pad / 2 + (i + 0.5) * note.size * 1.3),
     );
     c.restore();
   };
   if (style.top !== undefined) {
-    draw(widest, pad, style.top);
-    return style.top + widest.height + pad;
+    draw(widest, widest.pad, style.top);
+    return style.top + widest.height + widest.pad;
   }
   painter.placing(() => {
-    // Widest first; a narrower wrap only when no corner of the wider one is clear.
+    // Widest first; a narrower wrap only when no corner of the wider one is
+    // clear; then the same in the figure's small size, before a handle is hidden.
     const tried: { note: Wrapped; box: Box }[] = [];
-    for (const share of NOTE_SHARES) {
-      const note = share === NOTE_SHARES[0] ? widest : wrapAt(share);
-      if (tried.length && note.height > figureHeight - 2 * pad) break;
-      const [right, foot] = [figureWidth - note.width - pad, figureHeight - note.height - pad];
-      const corners = [
-        [pad, pad],
-        [right, pad],
-        [pad, foot],
-        [right, foot],
-      ]
-        .filter(([x, y]) => x >= 0 && y >= 0)
-        .map(([x, y]) => ({ x, y, width: note.width, height: note.height }));
-      const clear = firstClear(painter, corners);
-      if (clear >= 0) return draw(note, corners[clear].x, corners[clear].y);
-      tried.push(...corners.map((box) => ({ note, box })));
-    }
+    for (const size of new Set([theme.sizes.label, theme.sizes.small]))
+      for (const share of NOTE_SHARES) {
+        const note =
+          size === theme.sizes.label && share === NOTE_SHARES[0] ? widest : wrapAt(share, size);
+        if (tried.length && note.height > figureHeight - 2 * note.pad) continue;
+        const corners = edgePlaces(painter.view, note.width, note.height, note.pad).filter(
+          ({ x, y }) => x >= 0 && y >= 0,
+        );
+        const clear = firstClear(painter, corners);
+        if (clear >= 0) return draw(note, corners[clear].x, corners[clear].y);
+        tried.push(...corners.map((box) => ({ note, box })));
+      }
     // No corner is clear: the place that hides least.
     const best =
       tried[
@@ -560,9 +606,9 @@ export function drawNote(
         )
       ];
     if (best) draw(best.note, best.box.x, best.box.y);
-    else draw(widest, pad, pad);
+    else draw(widest, widest.pad, widest.pad);
   });
-  return pad + widest.height + pad;
+  return widest.pad + widest.height + widest.pad;
 }
 
 /**

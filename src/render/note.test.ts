@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { leastHidden } from './labels';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
@@ -62,6 +63,15 @@ describe('a figure’s note', () => {
         ],
         { width: 3 },
       );
+    // Lines down the middle of both sides: the middle of a side is crossed too.
+    for (const x of [0.02, 0.98])
+      painter.polyline(
+        [
+          [x, 0.3],
+          [x, 0.7],
+        ],
+        { width: 3 },
+      );
     // A point in the top left, the first corner tried; more strokes in the foot's right.
     painter.dot([0.05, 0.96], '#000', 8);
     for (const y of [0.05, 0.07, 0.09])
@@ -105,5 +115,49 @@ describe('a figure’s note', () => {
       expect(covers).toBe(false);
     }
     expect(box.height).toBeLessThan(400);
+  });
+
+  it('never hides a handle where a smaller size fits a corner: it takes the figure’s small size', () => {
+    const { view, painter } = unitSquare();
+    // Handles in a cross through the middle: four quarters of about 290 × 190 px are left.
+    const handles: [number, number][] = [];
+    for (let i = 1; i < 10; i++) handles.push([i / 10, 0.5], [0.5, i / 10]);
+    for (const p of handles) painter.handle(p);
+    // About 330 characters: 9 lines of 15 px text in a quarter's width are too tall for it, 12 px fit.
+    const text = Array.from(
+      { length: 6 },
+      (_, i) => `Sentence ${i + 1} of a long note, said here in full.`,
+    ).join(' ');
+    painter.note(text);
+    painter.placeLabels();
+    const box = painter.labels.find((b) => b.text.startsWith('Sentence'))!;
+    const r = painter.theme.sizes.handle;
+    for (const p of handles) {
+      const [x, y] = view.toScreen(p);
+      const covers =
+        x > box.x - r && x < box.x + box.width + r && y > box.y - r && y < box.y + box.height + r;
+      expect(covers, `the handle at (${x}, ${y})`).toBe(false);
+    }
+    const sizes = (painter.ctx as SvgContext).elements
+      .filter((e) => e.startsWith('<text') && e.includes('Sentence'))
+      .map((e) => Number(/font-size="([\d.]+)"/.exec(e)![1]));
+    expect(new Set(sizes)).toEqual(new Set([painter.theme.sizes.small]));
+  });
+  it('hides points or strokes, when it must hide something, before a handle', () => {
+    const { view, painter } = unitSquare();
+    painter.handle([0.1, 0.9]);
+    for (const x of [0.7, 0.8, 0.9]) painter.dot([x, 0.9], '#000', 6);
+    painter.polyline(
+      [
+        [0.6, 0.85],
+        [1, 0.85],
+      ],
+      { width: 3 },
+    );
+    const [hx, hy] = view.toScreen([0.1, 0.9]);
+    const [dx, dy] = view.toScreen([0.8, 0.9]);
+    const around = (x: number, y: number) => ({ x: x - 40, y: y - 20, width: 80, height: 40 });
+    // The handle's box first: the one with three points and a stroke is chosen.
+    expect(leastHidden(painter, [around(hx, hy), around(dx, dy)])).toBe(1);
   });
 });

@@ -458,7 +458,7 @@ export class Painter {
       (style.radius ?? this.sizes.handle) *
       (state === 'drag' ? 1.25 : state === 'hover' ? 1.15 : 1);
     if (!circleVisible(x, y, r * 2, this.clip)) return;
-    this.ink.disc(x, y, r * (style.shape === 'diamond' ? 1.3 : 1) + this.sizes.line);
+    this.ink.handle(x, y, r * (style.shape === 'diamond' ? 1.3 : 1) + this.sizes.line);
     const c = this.ctx;
     const stroke = style.color ?? this.theme.handleStroke;
     const shape = style.shape ?? 'circle';

@@ -210,8 +210,7 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
     role: 'curve',
   });
   painter.dot(m.space.at.point.slice(0, 2), theme.accent, theme.sizes.point * 1.3);
-  if (labels)
-    drawLegend(painter, [{ text: 'Top view (x, y): z is seen in space →', color: theme.muted }]);
+  if (labels) drawLegend(painter, [{ text: 'Top view (x, y)', color: theme.muted }]);
 }
 
 /**

@@ -131,7 +131,7 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
       normal: null,
       curvature: null,
       circle: null,
-      why: `Cusp: P′(t) = 0, the curve stops here and turns back. T = P′/|P′| divides by 0, so T, N, κ and the osculating circle are undefined.`,
+      why: `Cusp: P′(t) = 0, the curve stops and turns back. T = P′/|P′| divides by 0: T, N, κ and the osculating circle are undefined.`,
     };
   }
   const frame = bezierFrenetFrame(p, u);
@@ -145,8 +145,8 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
       // At an end (a natural spline's P″ = 0) the curve only ends straight: no far side to turn to.
       why:
         where.s === 0 || where.s === segments.length
-          ? `κ = 0 at the end: the curve ends straight here. The osculating circle’s radius 1/κ is infinite and N, which points to its centre, is undefined.`
-          : `Inflection: κ = 0, the curve is straight for an instant. The osculating circle’s radius 1/κ is infinite and N, which points to its centre, is undefined; on either side N points to opposite sides.`,
+          ? `κ = 0 at the end: the curve ends straight. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined.`
+          : `Inflection: κ = 0, straight for an instant. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined, and changes side here.`,
     };
   }
   const side = Math.sign(curvature);

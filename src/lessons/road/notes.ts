@@ -46,7 +46,7 @@ export function villageNotes(v: readonly Point[]): string[] {
   );
   if (v.length > 2 && offLine <= 1e-9 * extent) {
     notes.push(
-      'All villages lie on one line: every interpolating road is that straight line (it may run back and forth along it), except where a chosen end gradient or the quadratic’s first gradient points off the line; the ring road has to come back along the line.',
+      'All villages lie on one line: every road through them runs along it, back and forth if need be, unless a chosen end gradient (or the quadratic’s first) points off it.',
     );
   }
   if (v.length === 2) {
