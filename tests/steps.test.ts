@@ -1,7 +1,7 @@
 /**
  * What a lecturer sees at every step of every scene of every lesson, drawn
  * headless through the recording context at presenter size (the projector's
- * theme, figures sharing a 1900 × 800 px row by their weights, as presenter
+ * theme, figures sharing 1900 × 800 px by the lesson's layout, as presenter
  * view lays them out at 1920 × 1080):
  *
  * - no text on a figure under 28 px, and point labels at 36 px or more (the
@@ -29,9 +29,11 @@ import { filled } from '../src/render/formula';
 import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
 import type { Painter } from '../src/render/painter';
+import { presenterSizes } from './presenterLayout';
 
 const theme = makeTheme(false, true);
-const ROW = { width: 1900, height: 800 };
+/** The figures' share of presenter view at 1920 × 1080, under the caption and formula. */
+const AREA = { width: 1900, height: 840 };
 /** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
 const MIN_TEXT = 28;
 const MIN_POINT_LABEL = 36;
@@ -90,15 +92,13 @@ interface Drawn {
 function drawStep(lesson: AnyLesson, state: unknown): Drawn {
   const model = lesson.derive(state);
   const figures = figuresOf(lesson, state);
-  const total = figures.reduce((sum, f) => sum + (f.weight ?? 1), 0);
+  const sizes = presenterSizes(lesson.layout, figures, AREA, theme.sizes.strip ?? 1);
   const problems: string[] = [];
   let svg = '';
   for (const figure of figures) {
-    const width = Math.round((ROW.width * (figure.weight ?? 1)) / total);
-    // A strip of fixed height is drawn as tall as the projector draws it.
-    const height = figure.height
-      ? Math.round(figure.height * (theme.sizes.strip ?? 1))
-      : ROW.height;
+    // Each figure as the projector lays it out, a strip as tall as it draws it.
+    const size = sizes.get(figure.id)!;
+    const [width, height] = [Math.round(size.width), Math.round(size.height)];
     const {
       svg: context,
       painter,
@@ -125,7 +125,8 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
       if (/(^|:\s*)\?$/.test(text)) problems.push(`${at} “${text}” ends in a bare “?”`);
     }
     const labels = painter.labels;
-    for (const through of crossedLabels(painter)) problems.push(`${at} ${through}`);
+    const onScreen = handles.map((h) => view.toScreen(h.position));
+    for (const through of crossedLabels(painter, onScreen)) problems.push(`${at} ${through}`);
     for (let i = 0; i < labels.length; i++)
       for (let j = i + 1; j < labels.length; j++) {
         const [a, b] = [labels[i], labels[j]];
@@ -133,12 +134,7 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
         const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
         if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
       }
-    problems.push(
-      ...namedElsewhere(
-        painter.labels,
-        handles.map((h) => view.toScreen(h.position)),
-      ).map((p) => at + ' ' + p),
-    );
+    problems.push(...namedElsewhere(painter.labels, onScreen).map((p) => at + ' ' + p));
     for (const handle of handles) {
       const [x, y] = view.toScreen(handle.position);
       if (!(x >= 0 && y >= 0 && x <= width && y <= height))
@@ -148,10 +144,23 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
   return { svg, problems };
 }
 
-/** Labels a stroke or a point runs through (a boxed one is drawn over what it covers). */
-function crossedLabels(painter: Painter): string[] {
+/**
+ * Labels a stroke or a point runs through, and boxed labels and notes that
+ * hide a handle (a box is drawn over what it covers: lines may run under it,
+ * but a point a person drags must stay in reach).
+ */
+function crossedLabels(painter: Painter, handles: readonly [number, number][]): string[] {
+  // A handle is the figure's own list of them, drawn at the theme's size: not
+  // the painter's record, so a placer blind to handles cannot blind this too.
+  const r = painter.theme.sizes.handle;
   return painter.labels.flatMap((label) => {
-    const through = label.boxed ? null : painter.ink.crossing(glyphBox(label));
+    if (label.boxed) {
+      const hidden = handles.find(([x, y]) => toBox(x, y, label) < r);
+      return hidden
+        ? [`“${label.text}” hides the handle at (${hidden.map((v) => v.toFixed(0)).join(', ')})`]
+        : [];
+    }
+    const through = painter.ink.crossing(glyphBox(label));
     return through ? [`${through} through “${label.text}”`] : [];
   });
 }
@@ -176,7 +185,7 @@ function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
       theme: phoneTheme,
     });
     const onScreen = handles.map((h) => view.toScreen(h.position));
-    return [...crossedLabels(painter), ...namedElsewhere(painter.labels, onScreen)].map(
+    return [...crossedLabels(painter, onScreen), ...namedElsewhere(painter.labels, onScreen)].map(
       (p) => `phone ${figure.id}: ${p}`,
     );
   });
