@@ -29,6 +29,11 @@ export interface HeadlessFigure {
   view: Projection;
 }
 
+/** How a figure's units may stretch as it is fitted: freely (a plot), up to its `widen`, or not at all. */
+export function fitShape(figure: Pick<FigureSpec<unknown>, 'kind' | 'widen'>): boolean | number {
+  return figure.kind === 'plot' ? false : (figure.widen ?? true);
+}
+
 /** Room for handles and labels at the edge, as the page fits a figure (never more than a share of a small one). */
 export function fitPadding(
   kind: FigureSpec<unknown>['kind'],
@@ -59,7 +64,7 @@ export function drawHeadless<S, M>(
   view.resize(width, height);
   if (options.view && view instanceof OrbitCamera) view.decode(options.view);
   const padding = thumbnail ? 18 : fitPadding(figure.kind, theme, width, height);
-  view.fit(figure.bounds(model), padding, figure.kind !== 'plot');
+  view.fit(figure.bounds(model), padding, fitShape(figure));
   const svg = new SvgContext();
   const painter = new Painter(svg, view, theme);
   painter.clear();

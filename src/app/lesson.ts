@@ -93,6 +93,12 @@ export interface FigureSpec<S, M = S> {
   height?: number;
   /** Width over height, kept as the figure is laid out. */
   aspect?: number;
+  /**
+   * A drawing whose unit may be this many times as long across as up, to fill
+   * a short, wide box (a table's cells on a phone); its units stay square
+   * otherwise. Plots stretch freely and geometry never.
+   */
+  widen?: number;
   /** The camera a `space` figure starts with. */
   camera?: CameraSettings;
   /**

@@ -37,7 +37,11 @@ export interface Projection {
   worldLength(pixels: number, at?: WorldPoint): number;
   resize(width: number, height: number): void;
   /** Shows `bounds` with `padding` pixels around it (or [left and right, top and bottom]). */
-  fit(bounds: Bounds, padding: number | readonly [number, number], uniform?: boolean): void;
+  fit(
+    bounds: Bounds,
+    padding: number | readonly [number, number],
+    uniform?: boolean | number,
+  ): void;
   /** Drag of empty space: pan in 2D, orbit in space. */
   dragBy(dx: number, dy: number): void;
   zoomAt(screen: readonly number[], factor: number): void;

@@ -49,6 +49,23 @@ describe('Viewport', () => {
     expect(v.toScreen([0, 0])).toEqual([0, 400]);
   });
 
+  it('widens a unit up to the factor asked in a short box, and keeps squares in a tall one', () => {
+    // 600 × 200 box, a 6 × 6 table: 100 px a unit across, 33⅓ up; at most 1.8 × 33⅓ = 60 across.
+    const wide = new Viewport(600, 200);
+    wide.fit({ minX: 0, minY: 0, maxX: 6, maxY: 6 }, 0, 1.8);
+    expect(wide.scaleY).toBeCloseTo(200 / 6, 12);
+    expect(wide.scaleX).toBeCloseTo(60, 12);
+    // 200 × 600: 33⅓ across, 100 up; never taller than wide, so 33⅓ both ways.
+    const tall = new Viewport(200, 600);
+    tall.fit({ minX: 0, minY: 0, maxX: 6, maxY: 6 }, 0, 1.8);
+    expect(tall.scaleX).toBeCloseTo(200 / 6, 12);
+    expect(tall.scaleY).toBeCloseTo(200 / 6, 12);
+    // Within the factor the box is filled: 600 × 400 is 100 by 66⅔, 1.5 × as long across.
+    const within = new Viewport(600, 400);
+    within.fit({ minX: 0, minY: 0, maxX: 6, maxY: 6 }, 0, 1.8);
+    expect(within.toScreen([6, 6])).toEqual([600, 0]);
+  });
+
   it('gives a sane zoom for one point or points on a line', () => {
     const v = new Viewport(600, 400);
     v.fit({ minX: 2, minY: 2, maxX: 2, maxY: 2 }, 50);

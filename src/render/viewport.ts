@@ -57,9 +57,16 @@ export class Viewport implements Projection {
 
   /**
    * Shows `bounds` with `padding` pixels around it. With `uniform` (the default
-   * for geometry) one unit is as long across as up; plots may stretch.
+   * for geometry) one unit is as long across as up; plots may stretch. A
+   * number lets a unit be up to that many times as long across as up, never
+   * longer up than across (a table fills a short, wide box; a tall one keeps
+   * its squares).
    */
-  fit(bounds: Bounds, padding: number | readonly [number, number] = 40, uniform = true): void {
+  fit(
+    bounds: Bounds,
+    padding: number | readonly [number, number] = 40,
+    uniform: boolean | number = true,
+  ): void {
     const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
     const spanX = Math.max(bounds.maxX - bounds.minX, 1e-9);
     const spanY = Math.max(bounds.maxY - bounds.minY, 1e-9);
@@ -67,7 +74,10 @@ export class Viewport implements Projection {
     const innerH = Math.max(this.height - 2 * padY, 10);
     let sx = innerW / spanX;
     let sy = innerH / spanY;
-    if (uniform) {
+    if (typeof uniform === 'number' && sx > 0 && sy > 0) {
+      sy = Math.min(sx, sy);
+      sx = Math.min(sx, uniform * sy);
+    } else if (uniform) {
       // A degenerate box (all points on a line or one spot) still gets a sane zoom.
       const s = Math.min(sx, sy);
       const fallback = Math.min(innerW, innerH) / 2;

@@ -26,6 +26,9 @@ export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
   title: 'The 16 weights fm(u)·fn(v) at the point, as a heat map',
   kind: 'drawing',
   weight: 1,
+  // On a phone the box is short and wide: cells half again as wide as tall
+  // hold the numbers that square cells of its height could not.
+  widen: 1.8,
   bounds: () => ({ minX: -0.8, minY: -1.35, maxX: 5.2, maxY: 4.7 }),
   // fm(u)·fn(v) depend on (u, v) alone: a control point's drag does not draw the map again.
   drawnFrom: (m) => [m.state.u, m.state.v, m.shown.key],
@@ -34,11 +37,11 @@ export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
     const shown = weightsShown(m);
     const fu = m.rowShares;
     const fv = m.columnShares;
-    // Numbers fit their cells: as large as the theme asks, or as the cell allows.
-    const cellPixels = Math.abs(
-      painter.view.toScreen([1, 0])[0] - painter.view.toScreen([0, 0])[0],
-    );
-    const size = Math.min(theme.sizes.label, cellPixels * 0.27);
+    // Numbers fit their cells: as large as the theme asks, or as the cell
+    // allows (five characters across, a line and a half up).
+    const [x0, y0] = painter.view.toScreen([0, 0]);
+    const [x1, y1] = painter.view.toScreen([1, 1]);
+    const size = Math.min(theme.sizes.label, Math.abs(x1 - x0) * 0.27, Math.abs(y1 - y0) * 0.45);
     const text = (t: string, x: number, y: number, color = theme.ink, bold = false) =>
       painter.label(t, [x, y], { align: 'center', baseline: 'middle', color, size, bold });
     for (let i = 0; i < 4; i++) {
