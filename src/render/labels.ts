@@ -513,6 +513,15 @@ export function drawPanelBox(
   c.restore();
 }
 
+/** How a note is drawn: its border's colour, its top (stacked notes), and words for a small figure. */
+export interface NoteStyle {
+  color?: string;
+  /** Given, it sits there at the left. */
+  top?: number;
+  /** The same said briefly, for a figure too small to hold the whole clear of its handles. */
+  brief?: string;
+}
+
 /**
  * A note's widths to try, as shares of its figure's: a corner's note, not a
  * banner, then narrower; a banner only when no corner of those is clear (the
@@ -531,18 +540,13 @@ const NOTE_SHARES = [0.6, 0.45, 0.34, 0.26, 0.96];
  * and taller (the empty sides of a wide figure); if no corner is clear at any
  * width, the place that hides least.
  */
-export function drawNote(
-  painter: Painter,
-  text: string,
-  style: { color?: string; top?: number } = {},
-): number {
+export function drawNote(painter: Painter, full: string, style: NoteStyle = {}): number {
   const c = painter.ctx;
   const theme = painter.theme;
   const { width: figureWidth, height: figureHeight } = painter.view;
-  text = say(text);
-  const words = text.split(/\s+/).filter(Boolean);
-  /** The note in `size` px wrapped to at most a `share` of the figure's width: its lines and box. */
-  const wrapAt = (share: number, size = theme.sizes.label) => {
+  /** `text` in `size` px wrapped to at most a `share` of the figure's width: its lines and box. */
+  const wrapAt = (share: number, size = theme.sizes.label, text = say(full)) => {
+    const words = text.split(/\s+/).filter(Boolean);
     const pad = size * 0.5;
     const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share));
     c.save();
@@ -555,12 +559,20 @@ export function drawNote(
     }
     const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
     c.restore();
-    return { size, pad, lines, width: width + 2 * pad, height: lines.length * size * 1.3 + pad };
+    return {
+      text,
+      size,
+      pad,
+      lines,
+      width: width + 2 * pad,
+      height: lines.length * size * 1.3 + pad,
+    };
   };
   type Wrapped = ReturnType<typeof wrapAt>;
   const widest = wrapAt(NOTE_SHARES[0]);
   const draw = (note: Wrapped, x: number, top: number) => {
-    painter.labels.push({ text, x, y: top, width: note.width, height: note.height, boxed: true });
+    const { text, width, height } = note;
+    painter.labels.push({ text, x, y: top, width, height, boxed: true });
     drawPanelBox(
       painter,
       { x, y: top, width: note.width, height: note.height },
@@ -583,20 +595,23 @@ export function drawNote(
   }
   painter.placing(() => {
     // Widest first; a narrower wrap only when no corner of the wider one is
-    // clear; then the same in the figure's small size, before a handle is hidden.
+    // clear; then the same in the figure's small size, then the brief words
+    // (a phone's small figure), before a handle is hidden.
     const tried: { note: Wrapped; box: Box }[] = [];
-    for (const size of new Set([theme.sizes.label, theme.sizes.small]))
-      for (const share of NOTE_SHARES) {
-        const note =
-          size === theme.sizes.label && share === NOTE_SHARES[0] ? widest : wrapAt(share, size);
-        if (tried.length && note.height > figureHeight - 2 * note.pad) continue;
-        const corners = edgePlaces(painter.view, note.width, note.height, note.pad).filter(
-          ({ x, y }) => x >= 0 && y >= 0,
-        );
-        const clear = firstClear(painter, corners);
-        if (clear >= 0) return draw(note, corners[clear].x, corners[clear].y);
-        tried.push(...corners.map((box) => ({ note, box })));
-      }
+    const texts = style.brief ? [say(full), say(style.brief)] : [say(full)];
+    for (const text of texts)
+      for (const size of new Set([theme.sizes.label, theme.sizes.small]))
+        for (const share of NOTE_SHARES) {
+          const first = text === texts[0] && size === theme.sizes.label && share === NOTE_SHARES[0];
+          const note = first ? widest : wrapAt(share, size, text);
+          if (tried.length && note.height > figureHeight - 2 * note.pad) continue;
+          const corners = edgePlaces(painter.view, note.width, note.height, note.pad).filter(
+            ({ x, y }) => x >= 0 && y >= 0,
+          );
+          const clear = firstClear(painter, corners);
+          if (clear >= 0) return draw(note, corners[clear].x, corners[clear].y);
+          tried.push(...corners.map((box) => ({ note, box })));
+        }
     // No corner is clear: the place that hides least.
     const best =
       tried[

@@ -160,4 +160,34 @@ describe('a figure’s note', () => {
     // The handle's box first: the one with three points and a stroke is chosen.
     expect(leastHidden(painter, [around(hx, hy), around(dx, dy)])).toBe(1);
   });
+  it('says it briefly where the whole note would hide a handle in a small figure', () => {
+    const view = new Viewport(340, 150);
+    view.resize(340, 150);
+    view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    painter.holdLabels();
+    // Handles down the middle and across the top and the foot: free are two
+    // strips between them, about 155 × 90 px, at the middle of each side.
+    const handles: [number, number][] = [0.15, 0.3, 0.45, 0.6, 0.75, 0.9].flatMap((t) => [
+      [0.5, t] as [number, number],
+      [t, 0.15] as [number, number],
+      [t, 0.85] as [number, number],
+    ]);
+    for (const p of handles) painter.handle(p);
+    const brief = 'Cusp: T, N and κ undefined';
+    painter.note(
+      'Cusp: P′(t) = 0, the curve stops and turns back. T = P′/|P′| divides by 0: T, N, κ and the osculating circle are undefined.',
+      { brief },
+    );
+    painter.placeLabels();
+    const box = painter.labels.at(-1)!;
+    expect(box.text).toBe(brief);
+    for (const p of handles) {
+      const [x, y] = view.toScreen(p);
+      const r = painter.theme.sizes.handle;
+      const covers =
+        x > box.x - r && x < box.x + box.width + r && y > box.y - r && y < box.y + box.height + r;
+      expect(covers, `the handle at (${x}, ${y})`).toBe(false);
+    }
+  });
 });

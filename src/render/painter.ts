@@ -5,6 +5,7 @@ import { bezierPoint } from '../math';
 import {
   type LabelBox,
   type LabelStyle,
+  type NoteStyle,
   drawLabelClear,
   drawNote,
   drawScreenLabel,
@@ -526,7 +527,7 @@ export class Painter {
    * says on the figure why something is not drawn. Returns the y (pixels)
    * below the box, to stack a second note there with `top`.
    */
-  note(text: string, style: { color?: string; top?: number } = {}): number {
+  note(text: string, style: NoteStyle = {}): number {
     return drawNote(this, text, style);
   }
 

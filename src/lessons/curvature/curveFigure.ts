@@ -54,7 +54,7 @@ export const curveFigure: KitFigure<CurvatureState, CurvatureModel> = {
       labels &&
       m.shown.has(at.tangent ? 'normal' : 'tangent')
     )
-      painter.note(at.why);
+      painter.note(at.why, { brief: at.brief ?? undefined });
     const plane = m.plane!;
     const theme = painter.theme;
     if (!THROUGH_POINTS[m.state.source])

@@ -43,6 +43,8 @@ export interface PlaneAt {
   curvature: number | null;
   circle: Circle | null;
   why: string | null;
+  /** The same in a few words, for a figure too small to hold the whole clear of its points. */
+  brief: string | null;
 }
 
 export interface PlaneModel {
@@ -132,6 +134,7 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
       curvature: null,
       circle: null,
       why: `Cusp: P′(t) = 0, the curve stops and turns back. T = P′/|P′| divides by 0: T, N, κ and the osculating circle are undefined.`,
+      brief: 'Cusp: P′(t) = 0, so T, N and κ are undefined',
     };
   }
   const frame = bezierFrenetFrame(p, u);
@@ -147,6 +150,10 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
         where.s === 0 || where.s === segments.length
           ? `κ = 0 at the end: the curve ends straight. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined.`
           : `Inflection: κ = 0, straight for an instant. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined, and changes side here.`,
+      brief:
+        where.s === 0 || where.s === segments.length
+          ? 'κ = 0 at the end: N is undefined'
+          : 'Inflection: κ = 0, N is undefined',
     };
   }
   const side = Math.sign(curvature);
@@ -157,6 +164,7 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
     curvature,
     circle: osculatingCircle(p, u),
     why: null,
+    brief: null,
   };
 }
 
