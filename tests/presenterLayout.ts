@@ -79,3 +79,19 @@ export function presenterSizes(
   place(root, area.width, area.height);
   return sizes;
 }
+
+/**
+ * The same tree as a phone stacks it: every row turned into a column (one
+ * figure under another, each the screen's width), weights kept.
+ */
+export function stacked(
+  layout: 'row' | 'column' | LayoutNode | undefined,
+  ids: readonly string[],
+): LayoutNode {
+  if (layout === undefined || layout === 'row' || layout === 'column') return { column: [...ids] };
+  const turn = (node: LayoutNode): LayoutNode =>
+    typeof node === 'string' || 'grid' in node
+      ? node
+      : { column: ('row' in node ? node.row : node.column).map(turn), weights: node.weights };
+  return turn(layout);
+}

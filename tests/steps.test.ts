@@ -29,7 +29,7 @@ import { filled } from '../src/render/formula';
 import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
 import type { Painter } from '../src/render/painter';
-import { presenterSizes } from './presenterLayout';
+import { presenterSizes, stacked } from './presenterLayout';
 
 const theme = makeTheme(false, true);
 /** The figures' share of presenter view at 1920 × 1080, under the caption and formula. */
@@ -37,8 +37,12 @@ const AREA = { width: 1900, height: 840 };
 /** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
 const MIN_TEXT = 28;
 const MIN_POINT_LABEL = 36;
-/** A figure on a phone held upright (360 × 740, as the phone's page lays it out). */
-const PHONE = { width: 344, height: 512 };
+/**
+ * The figures' share of a phone held upright (360 × 740): one under another,
+ * 344 px wide and about 450 px between them (measured on the page: curvature's
+ * three are 158, 106 and 183 px tall, lagrange's two 279 and 175).
+ */
+const PHONE = { width: 344, height: 450 };
 const phoneTheme = makeTheme(false, false);
 
 /**
@@ -178,10 +182,14 @@ function figuresOf(lesson: AnyLesson, state: unknown) {
  */
 function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
   const model = lesson.derive(state);
-  return figuresOf(lesson, state).flatMap((figure) => {
+  const figures = figuresOf(lesson, state);
+  const ids = figures.map((f) => f.id);
+  const sizes = presenterSizes(stacked(lesson.layout, ids), figures, PHONE, 1);
+  return figures.flatMap((figure) => {
+    const size = sizes.get(figure.id)!;
     const { painter, handles, view } = drawHeadless(figure, model, {
-      ...PHONE,
-      height: figure.height ?? PHONE.height,
+      width: Math.round(size.width),
+      height: Math.round(size.height),
       theme: phoneTheme,
     });
     const onScreen = handles.map((h) => view.toScreen(h.position));

@@ -41,3 +41,20 @@ describe('a label near the edge', () => {
       }
     });
 });
+
+describe('a label said elsewhere too (optional)', () => {
+  it('is left out where no place near it is clear, and drawn where one is', () => {
+    const view = new Viewport(400, 200);
+    view.fit({ minX: 0, minY: 0, maxX: 400, maxY: 200 }, 0);
+    const svg = new SvgContext();
+    const painter = new Painter(svg, view, makeTheme(false, false));
+    // Ruled every 8 px over the left half only (a label 15 px high, about 140 px long).
+    for (let y = 4; y < 200; y += 8) painter.segment([0, y], [200, y], { width: 2 });
+    painter.screenLabel('u then v = v then u', 20, 100, { optional: true });
+    expect(painter.labels).toEqual([]);
+    expect(svg.elements.some((e) => e.includes('u then v'))).toBe(false);
+    painter.screenLabel('u then v = v then u', 240, 100, { optional: true });
+    expect(painter.labels.map((l) => l.text)).toEqual(['u then v = v then u']);
+    expect(painter.labels[0].boxed).toBeUndefined();
+  });
+});

@@ -38,6 +38,12 @@ export interface LabelStyle {
   /** It stays where it is put (an axis number at its tick), or is left out. */
   fixed?: boolean;
   /**
+   * It is said elsewhere too (a number the step's formula or table also
+   * shows): where no place near it is clear, it is left out rather than boxed
+   * over the figure or sent out on a leader (a phone's crowded patch).
+   */
+  optional?: boolean;
+  /**
    * It is part of a box already drawn and registered (a legend's names): it
    * goes exactly where it is put, and the box stands for it among the labels.
    */
@@ -295,6 +301,9 @@ function nearestOnBox(x: number, y: number, box: Box): [number, number] {
 }
 
 /** A thin line from a label's anchor to the nearest point of its box (when it had to move away). */
+/** How far a leader keeps from another label's letters (its stroke's width, and a pixel). */
+const LEADER_CLEAR = 2;
+
 function drawLeader(painter: Painter, [ax, ay]: [number, number], box: Box, color?: string): void {
   const [ex, ey] = nearestOnBox(ax, ay, box);
   // It stops a little short of the label's box.
@@ -399,12 +408,16 @@ export function drawScreenLabel(
     const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];
     let leader: [number, number] | null = null;
     let spot = spots.find(([l, m]) => clear(l, m));
-    // The leader may cross lines, but no label.
+    // The leader may cross lines, but no label: its stroke's width kept clear too.
     const leaderClear = (l: number, m: number) => {
       const end = nearestOnBox(ax, ay, { x: l, y: m - size * 0.65, width: total, height });
-      return !painter.labels.some(
-        (b) => !b.boxed && segmentMeetsBox(ax, ay, end[0], end[1], glyphBox(b)),
-      );
+      return !painter.labels.some((b) => {
+        if (b.boxed) return false;
+        const g = glyphBox(b);
+        const w = LEADER_CLEAR;
+        const grown = { x: g.x - w, y: g.y - w, width: g.width + 2 * w, height: g.height + 2 * w };
+        return segmentMeetsBox(ax, ay, end[0], end[1], grown);
+      });
     };
     // The leader says whose name it is: no need to be nearest its point.
     const far = (fits: (l: number, m: number) => boolean) => {
@@ -414,16 +427,18 @@ export function drawScreenLabel(
       if (found) leader = [ax, ay];
       return found;
     };
+    if (!spot && style.optional) return { width: 0 };
     if (!spot && !style.box) spot = far(unmarked);
     // Nowhere clear within reach: it keeps a free place and is boxed, so the
     // lines under it cannot be read as part of it, where its box hides no
-    // handle: near, else farther out with a leader, else near after all.
+    // handle: near and nearest its own point, else farther out with a leader
+    // (which says whose name it is), else near after all.
     if (!spot) boxed = true;
     const places: [number, number][] = [[left, middleY], ...spots];
     spot ??=
       places.find(([l, m]) => free(l, m) && own(l, m) && open(l, m)) ??
-      places.find(([l, m]) => free(l, m) && open(l, m)) ??
       far((l, m) => free(l, m) && open(l, m)) ??
+      places.find(([l, m]) => free(l, m) && open(l, m)) ??
       places.find(([l, m]) => free(l, m) && own(l, m)) ??
       places.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };

@@ -152,7 +152,9 @@ function markPoint(painter: Painter, at: Point, text: string, labels: boolean): 
     color: painter.theme.ink,
     width: painter.theme.sizes.line,
   });
-  if (labels) painter.label(text, at, { halo: true, dx: 12, dy: -12, bold: true });
+  // The κ plot marks the same t with "κ = 0" and the caption says what it is:
+  // where the figure is crowded (a phone's) the ring stands without its words.
+  if (labels) painter.label(text, at, { halo: true, dx: 12, dy: -12, bold: true, optional: true });
 }
 
 function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {

@@ -79,7 +79,14 @@ export function drawConstruction(
       if (shown.is('coordinates') && !info.thumbnail)
         for (const row of state.net)
           for (const p of row)
-            scene.label(p[d].toFixed(2), p, { dx: 10, dy: -10, color: theme.ink, halo: true });
+            // The step's matrix G holds them all: where one has no clear place, it is left out.
+            scene.label(p[d].toFixed(2), p, {
+              dx: 10,
+              dy: -10,
+              color: theme.ink,
+              halo: true,
+              optional: true,
+            });
       if (shown.has('rowFactors')) {
         m.columnCurves.forEach((c, n) =>
           scene.polyline(c, { color: color(n), width: theme.sizes.line }),
@@ -201,6 +208,16 @@ export function drawOverConstruction(painter: Painter, m: SurfaceModel, info: Dr
       color: theme.ink,
       width: theme.sizes.line,
     });
-    if (shown.is('vThenU')) label('u then v = v then u', m.uThenV.point, theme.ink);
+    // The step's formula says it with both points' coordinates: on a crowded
+    // figure (a phone's) it is left out rather than boxed over the net.
+    if (shown.is('vThenU') && !info.thumbnail)
+      painter.label('u then v = v then u', m.uThenV.point, {
+        dx: 8,
+        dy: -8,
+        color: theme.ink,
+        halo: true,
+        bold: true,
+        optional: true,
+      });
   }
 }
