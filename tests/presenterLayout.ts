@@ -6,6 +6,7 @@
  * height has taken its own; a grid splits both evenly. Figures the step
  * hides take no room, and neither does a row or column left empty.
  */
+import { holdsShown, layoutTree } from '../src/app/handout/frameLayout';
 import type { LayoutNode } from '../src/app/lesson';
 
 export interface Placed {
@@ -29,19 +30,13 @@ export function presenterSizes(
   stripScale: number,
 ): Map<string, Placed> {
   const byId = new Map(figures.map((f) => [f.id, f]));
-  const root: LayoutNode =
-    layout === undefined || layout === 'row'
-      ? { row: figures.map((f) => f.id) }
-      : layout === 'column'
-        ? { column: figures.map((f) => f.id) }
-        : layout;
+  const root = layoutTree(
+    layout,
+    figures.map((f) => f.id),
+  );
   const sizes = new Map<string, Placed>();
-  const shows = (node: LayoutNode): boolean =>
-    typeof node === 'string'
-      ? byId.has(node)
-      : 'grid' in node
-        ? node.grid.cells.flat().some((id) => byId.has(id))
-        : ('row' in node ? node.row : node.column).some(shows);
+  const shown = new Set(byId.keys());
+  const shows = (node: LayoutNode) => holdsShown(node, shown);
   /** A strip's fixed height, or null for a figure (or box) that grows. */
   const fixed = (node: LayoutNode): number | null => {
     const height = typeof node === 'string' ? byId.get(node)?.height : undefined;

@@ -40,17 +40,33 @@ export function layoutFrame(
 ): FrameLayout {
   const out: FrameLayout = { figures: [], headings: [] };
   const byId = new Map(specs.map((s) => [s.id, s]));
-  const root: LayoutNode =
-    layout === undefined || layout === 'row'
-      ? { row: specs.map((s) => s.id) }
-      : layout === 'column'
-        ? { column: specs.map((s) => s.id) }
-        : layout;
-  place(root, box, byId, shown, out);
+  place(
+    layoutTree(
+      layout,
+      specs.map((s) => s.id),
+    ),
+    box,
+    byId,
+    shown,
+    out,
+  );
   return out;
 }
 
-function holdsShown(node: LayoutNode, shown: ReadonlySet<string>): boolean {
+/** A lesson's layout as a tree: all its figures in a row (the default) or a column, or its own tree. */
+export function layoutTree(
+  layout: 'row' | 'column' | LayoutNode | undefined,
+  ids: readonly string[],
+): LayoutNode {
+  return layout === undefined || layout === 'row'
+    ? { row: [...ids] }
+    : layout === 'column'
+      ? { column: [...ids] }
+      : layout;
+}
+
+/** Does the node hold a figure the step shows? */
+export function holdsShown(node: LayoutNode, shown: ReadonlySet<string>): boolean {
   if (typeof node === 'string') return shown.has(node);
   if ('grid' in node) return node.grid.cells.flat().some((id) => shown.has(id));
   return ('row' in node ? node.row : node.column).some((child) => holdsShown(child, shown));
