@@ -13,7 +13,8 @@
  *   and on a phone (P₃'s name beside P₄ is read as P₄'s);
  * - numbers to sensible digits on the figures, in the caption and in the
  *   step's formula: no
- *   "1.000000000000", no rounding residue "2.69×10⁻¹⁶";
+ *   "1.000000000000", no rounding residue "2.69×10⁻¹⁶", and nothing the page's
+ *   own check reads as a broken value ("NaN", "undefined,");
  * - no caption that places a figure ("on the left", "the plot below"): the
  *   figures sit side by side on a projector and one under another on a phone;
  * - every press changes what the room sees besides the caption: a figure or
@@ -53,6 +54,9 @@ const phoneTheme = makeTheme(false, false);
 function unreadableNumber(text: string): string | null {
   return /\d\.\d{7,}|×\s?10[⁻-]/.exec(text)?.[0] ?? null;
 }
+
+/** A value gone wrong, as quality.spec reads the page: NaN, Infinity, "= undefined", "undefined,". */
+const BROKEN = /\bNaN\b|Infinity|[=(,]\s*undefined\b(?!\s*\()|\bundefined\s*[,)=]/;
 
 /** Distance from (x, y) to the nearest point of a label's box. */
 const toBox = (x: number, y: number, b: LabelBox) =>
@@ -122,6 +126,8 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
       if (Number(size) < MIN_TEXT - 0.5) problems.push(`${at} “${text}” at ${size} px`);
       const digits = unreadableNumber(text);
       if (digits) problems.push(`${at} “${text}” writes ${digits}`);
+      // What the page's own check reads as a broken number (quality.spec): say "undefined and".
+      if (BROKEN.test(text)) problems.push(`${at} “${text}” reads as a broken number`);
       // A derivative's prime is ′, not a typewriter apostrophe (P′(t), not P'(t)).
       if (/[\p{L})]'(?!\p{L})/u.test(text.replace(/&#39;|&apos;/g, "'")))
         problems.push(`${at} “${text}” writes a prime as an apostrophe`);

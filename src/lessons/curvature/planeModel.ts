@@ -149,7 +149,7 @@ function planeAt(segments: readonly Point[][], t: number, size: number): PlaneAt
       why:
         where.s === 0 || where.s === segments.length
           ? `κ = 0 at the end: the curve ends straight. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined.`
-          : `Inflection: κ = 0, straight for an instant. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined, and changes side here.`,
+          : `Inflection: κ = 0, straight for an instant. The osculating circle’s radius 1/κ is infinite; N, towards its centre, is undefined and changes side here.`,
       brief:
         where.s === 0 || where.s === segments.length
           ? 'κ = 0 at the end: N is undefined'
