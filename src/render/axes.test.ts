@@ -52,3 +52,52 @@ describe('the x-axis name', () => {
       }
   });
 });
+
+describe('a plot’s axes and tick numbers, to the labels written on the plot', () => {
+  // Curvature's κ plot: "C²" at a join was set on the zero line (a struck-out
+  // C) and against the tick number "2" ("2C²"): the axes were not in the ink
+  // and a label could touch another.
+  const bounds = { minX: 0, maxX: 4, minY: -1.2, maxY: 3.2 };
+  const plot = (projector: boolean) => {
+    const view = new Viewport();
+    view.resize(900, 300);
+    view.fit(bounds, [40, 30], false);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, projector));
+    painter.plotAxes(bounds, 0.5, 1, 't', '');
+    return painter;
+  };
+  for (const projector of [false, true]) {
+    const mode = projector ? 'presenter' : 'normal';
+    it(`a label asked for on the zero line is moved off it (${mode})`, () => {
+      const painter = plot(projector);
+      const [, axisY] = painter.view.toScreen([0, 0]);
+      painter.label('C²', [2, 0], { dx: 4, dy: 0, halo: true });
+      const label = painter.labels.find((b) => b.text === 'C²')!;
+      expect(label).toBeDefined();
+      const crossed = label.y < axisY && label.y + label.height > axisY;
+      expect(
+        crossed,
+        `“C²” spans ${label.y.toFixed(1)}–${(label.y + label.height).toFixed(1)}, axis at ${axisY.toFixed(1)}`,
+      ).toBe(false);
+    });
+    it(`a label asked for beside a tick number keeps a gap from it (${mode})`, () => {
+      const painter = plot(projector);
+      const small = painter.theme.sizes.small;
+      // In the row of the tick numbers, just right of "2".
+      painter.label('C²', [2, bounds.minY], { dx: small * 0.4, dy: small * 0.9, halo: true });
+      const label = painter.labels.find((b) => b.text === 'C²')!;
+      expect(label).toBeDefined();
+      for (const number of painter.labels.filter((b) => /^−?\d/.test(b.text))) {
+        const sameRow = Math.abs(number.y - label.y) < number.height / 2;
+        if (!sameRow) continue;
+        const apart = Math.max(
+          number.x - (label.x + label.width),
+          label.x - (number.x + number.width),
+        );
+        expect(apart, `“C²” ${apart.toFixed(1)} px from “${number.text}”`).toBeGreaterThanOrEqual(
+          small * 0.25,
+        );
+      }
+    });
+  }
+});

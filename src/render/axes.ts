@@ -115,6 +115,11 @@ export function drawPlotAxes(
   c.lineTo(lx, ly1);
   c.stroke();
   c.restore();
+  // The axes are lines a label must not sit on ("C²" on the zero line reads
+  // as a struck-out C); the grid under them is faint and may be written over.
+  const half = Math.max(1, theme.sizes.thin) / 2;
+  painter.ink.segment(ax0, ay, ax1, ay, half);
+  painter.ink.segment(lx, ly0, lx, ly1, half);
   // A negative number with a minus sign, as the formulas write it (not a hyphen).
   const fmt = (n: number) => String(Number(n.toFixed(6))).replace('-', '−');
   const muted = { size: small, color: theme.muted };

@@ -370,8 +370,12 @@ export function drawScreenLabel(
   // Of the free spots it takes the first where no stroke drawn so far runs
   // through its letters (a boxed one too: its box would hide what it covers).
   const height = size * 1.3;
+  // Nor does it stand against one in its row: "2" and "C²" side by side read "2C²".
+  const apart = size * 0.3;
   const free = (l: number, m: number) =>
-    !painter.labels.some((b) => boxesMeet(b, { x: l, y: m - size * 0.65, width: total, height }));
+    !painter.labels.some((b) =>
+      boxesMeet(b, { x: l - apart, y: m - size * 0.65, width: total + 2 * apart, height }),
+    );
   // A boxed label hides what is under its box: a place whose box covers no
   // handle (a handle must stay in reach).
   const open = (l: number, m: number) =>
