@@ -568,16 +568,16 @@ export function drawNote(painter: Painter, full: string, style: NoteStyle = {}):
     const words = text.split(/\s+/).filter(Boolean);
     const pad = size * 0.5;
     const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share));
-    c.save();
-    c.font = `${size}px ${theme.fontFamily}`;
+    // Measured through the screen's cache: a note that finds no clear place
+    // wraps itself up to 20 ways a frame, each time the same.
+    const font = `${size}px ${theme.fontFamily}`;
     const lines: string[] = [];
     for (const word of words) {
       const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
-      if (lines.length && c.measureText(last).width <= maxWidth) lines[lines.length - 1] = last;
+      if (lines.length && textWidth(c, font, last) <= maxWidth) lines[lines.length - 1] = last;
       else lines.push(word);
     }
-    const width = Math.max(...lines.map((line) => c.measureText(line).width), 0);
-    c.restore();
+    const width = Math.max(...lines.map((line) => textWidth(c, font, line)), 0);
     return {
       text,
       size,
