@@ -3,7 +3,7 @@ import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { plotYName } from './plotMarks';
+import { plotYName, valueColumn } from './plotMarks';
 
 /**
  * A 900 × 300 plot of [0, 1] × [0, 1.2] with its y name; `starts` draws a
@@ -61,5 +61,50 @@ describe('a plot’s y-axis name with the labels hidden (presenter key A)', () =
     painter.placeLabels();
     expect(painter.labels).toEqual([]);
     expect(svg.elements.join('')).not.toContain('W(N');
+  });
+});
+
+describe('the values at a plot’s cursor', () => {
+  it('on a phone’s short strip, no two of their boxes overlap and none crosses the cursor’s line', () => {
+    // b-splines' NURBS basis on a phone (344 × 90): four values, a row too
+    // wide for the strip; two were boxed a line apart and their boxes crossed
+    // the subscripts above them (N₂,₃ over N₃,₃).
+    for (const projector of [false, true])
+      for (const [width, height] of [
+        [344, 90],
+        [344, 120],
+        [600, 90],
+      ]) {
+        const view = new Viewport(width, height);
+        view.resize(width, height);
+        const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.05 };
+        view.fit(bounds, [30, 20], false);
+        const painter = new Painter(new SvgContext(), view, makeTheme(false, projector));
+        const entries = [
+          'N_{2,3} = 0.588',
+          'N_{1,3} = 0.128',
+          'N_{3,3} = 0.283',
+          'N_{4,3} = 0.001',
+        ].map((text) => ({ text, color: '#000' }));
+        valueColumn(painter, 0.3, bounds, 0, entries);
+        const boxes = painter.labels.map((b) => ({ text: b.text, edge: b.frame ?? b }));
+        expect(boxes.length, `${width} × ${height}`).toBeGreaterThan(0);
+        // Nor does one cross the cursor's line, whose dots they are the values of.
+        const [cursorX] = view.toScreen([0.3, 0]);
+        for (const { text, edge } of boxes)
+          expect(
+            edge.x < cursorX && cursorX < edge.x + edge.width,
+            `${width} × ${height}: “${text}” across the cursor`,
+          ).toBe(false);
+        for (const [i, a] of boxes.entries())
+          for (const b of boxes.slice(i + 1)) {
+            const meet =
+              a.edge.x < b.edge.x + b.edge.width &&
+              b.edge.x < a.edge.x + a.edge.width &&
+              a.edge.y < b.edge.y + b.edge.height &&
+              b.edge.y < a.edge.y + a.edge.height;
+            expect(meet, `${width} × ${height}: “${a.text}” and “${b.text}”`).toBe(false);
+          }
+      }
   });
 });

@@ -63,16 +63,26 @@ export function valueColumn(
   const [far] = view.toScreen([range.maxX, 0]);
   const right = cursor < (range.minX + range.maxX) / 2;
   const edge = right ? Math.min(far, view.width) - size * 0.8 : Math.max(left, 0) + size * 0.8;
-  // A plot too short for the column: the values go in a row along its top instead.
+  // A plot too short for the column: the values go in a row along its top
+  // instead, wrapped to a second row a box's height below where it is too
+  // wide, and never across the cursor's line (its dots stay in sight).
   if (top + entries.length * size * 1.75 > view.height * 0.8) {
-    let x = Math.max(left, 0) + size * 0.8;
+    const style = { size, bold: true, box: true };
+    const [cursorX] = view.toScreen([cursor, 0]);
+    const start = Math.max(left, 0) + size * 0.8;
+    const end = Math.min(far, view.width) - size * 0.4;
+    const clearOfCursor = (x: number, width: number) =>
+      x + width + size * 0.5 < cursorX || x - size * 0.5 > cursorX ? x : cursorX + size * 0.6;
+    let x = start;
+    let y = top + size * 0.6;
     for (const entry of entries) {
-      const { width } = painter.screenLabel(entry.text, x, top + size * 0.6, {
-        color: entry.color,
-        size,
-        bold: true,
-        box: true,
-      });
+      const width = labelWidth(painter, entry.text, style);
+      x = clearOfCursor(x, width);
+      if (x > start && x + width > end) {
+        y += size * 1.75;
+        x = clearOfCursor(start, width);
+      }
+      painter.screenLabel(entry.text, x, y, { ...style, color: entry.color });
       x += width + size * 1.2;
     }
     return;

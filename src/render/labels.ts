@@ -63,6 +63,8 @@ export interface LabelBox {
   anchor?: [number, number];
   /** Tied to that point by a leader line. */
   leader?: boolean;
+  /** A boxed label's box as drawn, wider and taller than its letters. */
+  frame?: Box;
 }
 
 /** Squared distance from (x, y) to the nearest point of a box. */
@@ -371,11 +373,14 @@ export function drawScreenLabel(
   // through its letters (a boxed one too: its box would hide what it covers).
   const height = size * 1.3;
   // Nor does it stand against one in its row: "2" and "C²" side by side read "2C²".
+  // A boxed one is as large as its box: two boxes stacked a line apart overlap.
   const apart = size * 0.3;
-  const free = (l: number, m: number) =>
-    !painter.labels.some((b) =>
-      boxesMeet(b, { x: l - apart, y: m - size * 0.65, width: total + 2 * apart, height }),
-    );
+  const free = (l: number, m: number) => {
+    const here = boxed
+      ? labelFrame(l, m, total, size)
+      : { x: l - apart, y: m - size * 0.65, width: total + 2 * apart, height };
+    return !painter.labels.some((b) => boxesMeet(b.frame ?? b, here));
+  };
   // A boxed label hides what is under its box: a place whose box covers no
   // handle (a handle must stay in reach).
   const open = (l: number, m: number) =>
@@ -470,6 +475,7 @@ export function drawScreenLabel(
       ...(boxed ? { boxed: true } : {}),
       ...(around ? { anchor: [x, y] as [number, number] } : {}),
       ...(leaderDrawn ? { leader: true } : {}),
+      ...(boxed ? { frame: labelFrame(left, middleY, total, size) } : {}),
     });
   if (boxed) {
     const frame = labelFrame(left, middleY, total, size);
