@@ -89,7 +89,10 @@ export function drawSolveProgress(painter: Painter, m: RoadModel): void {
   });
 }
 
-/** Each gradient fixed so far, as an arrow D/3: over the villages' labels, so the new one is seen. */
+/**
+ * Each gradient fixed so far, as an arrow D/3: over the villages' labels, so
+ * the new one is seen; the one this step fixes is named, as the caption names it.
+ */
 export function drawFixedGradients(painter: Painter, m: RoadModel): void {
   const { theme } = painter;
   const { state, progress, solve, gradientTips } = m;
@@ -98,10 +101,16 @@ export function drawFixedGradients(painter: Painter, m: RoadModel): void {
   state.villages.forEach((p, i) => {
     if (!isFixed(solve.n, progress, i)) return;
     const current = i === progress.row;
-    painter.arrow(p, gradientTips[i], {
-      color: current ? theme.accent : painter.color(0),
-      width: theme.sizes.line * (current ? 1.4 : 1),
-    });
+    const color = current ? theme.accent : painter.color(0);
+    painter.arrow(p, gradientTips[i], { color, width: theme.sizes.line * (current ? 1.4 : 1) });
+    if (current)
+      painter.label(`⅓D_${i}`, gradientTips[i], {
+        color,
+        halo: true,
+        bold: true,
+        dx: 6,
+        dy: -6,
+      });
   });
 }
 

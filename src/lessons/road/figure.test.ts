@@ -115,3 +115,42 @@ describe('the map', () => {
     expect(wild).toEqual({ minX: 0, minY: -60, maxX: 93, maxY: 200 });
   });
 });
+
+describe('the map’s frame', () => {
+  it('holds the arrows D/3 of the back substitution, the last of which points out past the road', () => {
+    // Six villages inland: D₅/3 from P₅ ran off the top of the presenter's map.
+    for (let step = 0; step <= stepCount(state({})); step++) {
+      const m = derive(state({ step }));
+      const b = mapFigure.bounds(m);
+      const tips = m.state.villages.map((p, i) => [
+        p[0] + m.gradients![i][0] / 3,
+        p[1] + m.gradients![i][1] / 3,
+      ]);
+      for (const [x, y] of tips) {
+        expect(x, `step ${step}`).toBeGreaterThanOrEqual(b.minX);
+        expect(x, `step ${step}`).toBeLessThanOrEqual(b.maxX);
+        expect(y, `step ${step}`).toBeGreaterThanOrEqual(b.minY);
+        expect(y, `step ${step}`).toBeLessThanOrEqual(b.maxY);
+      }
+    }
+  });
+});
+
+describe('the back substitution on the map', () => {
+  it('names the arrow of the gradient the step fixes, as its caption does', () => {
+    // Six villages inland: step 8 fixes D₅, step 12 fixes D₁ (the captions, read on the page).
+    for (const [step, i] of [
+      [8, '5'],
+      [12, '1'],
+    ] as const) {
+      const { texts } = drawn(state({ step }));
+      const at = texts.indexOf('⅓D');
+      expect(at, `step ${step}: ${texts.join(' | ')}`).toBeGreaterThanOrEqual(0);
+      expect(texts[at + 1], `step ${step}`).toBe(i);
+      expect(
+        texts.filter((t) => t === '⅓D'),
+        `step ${step}: one arrow named`,
+      ).toHaveLength(1);
+    }
+  });
+});

@@ -7,6 +7,7 @@ import {
   thomasOperationCount,
 } from '../../math';
 import { memoOn } from '../../kit/memoOn';
+import { LABEL_VILLAGES } from './points';
 import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
 import { type GlobalChange, globalChange } from './globalChange';
 import { SHAPE } from './methods';
@@ -206,6 +207,9 @@ function fitBounds(
   if (!compared(state) && state.road !== 'quadratic' && state.road !== 'roman') {
     if (road.kind === 'pieces' && road.pieces.length <= FIT_PIECES)
       points.push(...road.pieces.flat());
+    // The arrows D/3 drawn from the villages (hermite's gradients, the solve's
+    // back substitution): the last ones point out past the end of the road.
+    if (geometry.tips && state.villages.length <= LABEL_VILLAGES) points.push(...geometry.tips);
   }
   let fitted = points.length ? unionBounds(villages, boundsOf(points)) : villages;
   const swing = geometry.quadraticPolygon?.controls;
