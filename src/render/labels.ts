@@ -8,6 +8,7 @@ import { say } from './notation';
 import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import type { Painter } from './painter';
 import type { DrawingSurface } from './surface';
+import { subscriptNames } from '../kit/subscripts';
 
 export interface LabelStyle {
   color?: string;
@@ -565,12 +566,19 @@ const NOTE_SHARES = [0.6, 0.45, 0.34, 0.26, 0.96];
  * and taller (the empty sides of a wide figure); if no corner is clear at any
  * width, the place that hides least.
  */
+/**
+ * A note's words as the page writes them: the reader's letters, and points
+ * named with subscripts (the page's own text turns "P2 = P3" into "P₂ = P₃";
+ * the same note on the figure read "P2").
+ */
+const prose = (text: string) => subscriptNames(say(text));
+
 export function drawNote(painter: Painter, full: string, style: NoteStyle = {}): number {
   const c = painter.ctx;
   const theme = painter.theme;
   const { width: figureWidth, height: figureHeight } = painter.view;
   /** `text` in `size` px wrapped to at most a `share` of the figure's width: its lines and box. */
-  const wrapAt = (share: number, size = theme.sizes.label, text = say(full)) => {
+  const wrapAt = (share: number, size = theme.sizes.label, text = prose(full)) => {
     const words = text.split(/\s+/).filter(Boolean);
     const pad = size * 0.5;
     const maxWidth = Math.max(size * 6, Math.min(figureWidth - 4 * pad, figureWidth * share));
@@ -623,7 +631,7 @@ export function drawNote(painter: Painter, full: string, style: NoteStyle = {}):
     // clear; then the same in the figure's small size, then the brief words
     // (a phone's small figure), before a handle is hidden.
     const tried: { note: Wrapped; box: Box }[] = [];
-    const texts = style.brief ? [say(full), say(style.brief)] : [say(full)];
+    const texts = style.brief ? [prose(full), prose(style.brief)] : [prose(full)];
     for (const text of texts)
       for (const size of new Set([theme.sizes.label, theme.sizes.small]))
         for (const share of NOTE_SHARES) {

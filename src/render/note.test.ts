@@ -191,3 +191,18 @@ describe('a figure’s note', () => {
     }
   });
 });
+
+describe('a figure’s note, in the page’s notation', () => {
+  it('names points with subscripts, as the same note in the panel does', () => {
+    // Road's "Villages on top of each other (P2 = P3)" read P₂ = P₃ in the
+    // panel and "P2 = P3" on the map.
+    const { painter } = unitSquare();
+    painter.note('Villages on top of each other (P2 = P3): the road may turn sharply at D2.');
+    painter.placeLabels();
+    const svg = painter.ctx as SvgContext;
+    const words = svg.texts.join(' ');
+    expect(words).toContain('P₂ = P₃');
+    expect(words).toContain('D₂');
+    expect(words).not.toMatch(/P2|P3|D2/);
+  });
+});
