@@ -58,7 +58,11 @@ export function placeLabel(
     if (cost === 0) break;
   }
   if (!best) return;
-  painter.screenLabel(text, best.left, best.top + height / 2, { ...style, align: 'left' });
+  painter.screenLabel(text, best.left, best.top + height / 2, {
+    ...style,
+    align: 'left',
+    names: true,
+  });
 }
 
 /**

@@ -58,3 +58,31 @@ describe('a label said elsewhere too (optional)', () => {
     expect(painter.labels[0].boxed).toBeUndefined();
   });
 });
+
+describe('a leader line', () => {
+  /** A 400 × 300 figure whose top 64 px are ruled every 8 px, and clear below. */
+  function topRuled() {
+    const view = new Viewport(400, 300);
+    view.fit({ minX: 0, minY: 0, maxX: 400, maxY: 300 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    // World y grows upwards: the ruled band is the screen's top 64 px, as far
+    // as the near places reach (two lines up or down); the far ones reach past it.
+    for (let y = 236; y < 300; y += 8) painter.segment([0, y], [400, y], { width: 2 });
+    return painter;
+  }
+  it('ties a point’s name back to its point when the name must go farther out', () => {
+    const painter = topRuled();
+    painter.label('P_3', [60, 280], { dx: 6, dy: -6 });
+    const name = painter.labels.at(-1)!;
+    expect(name.leader, JSON.stringify(name)).toBe(true);
+  });
+  it('never hangs a heading, which names no point, from a leader to nowhere', () => {
+    // Raster's "Uniform, planned: 14 segments" went down a leader from its corner on a phone.
+    const painter = topRuled();
+    painter.screenLabel('Uniform, planned: 14 segments', 10, 20, { bold: true, halo: true });
+    const heading = painter.labels.at(-1)!;
+    expect(heading.leader, JSON.stringify(heading)).toBeUndefined();
+    // It went where it is clear, below the ruled band.
+    expect(heading.y, JSON.stringify(heading)).toBeGreaterThan(60);
+  });
+});

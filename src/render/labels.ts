@@ -39,6 +39,13 @@ export interface LabelStyle {
   /** It stays where it is put (an axis number at its tick), or is left out. */
   fixed?: boolean;
   /**
+   * It names the point it was asked at (`Painter.label`, or `around`): moved
+   * away, a leader line back to there says whose it is. A heading or a value
+   * at a screen position names no point: moved away, it goes without one
+   * (raster's heading hung from a leader to nothing).
+   */
+  names?: boolean;
+  /**
    * It is said elsewhere too (a number the step's formula or table also
    * shows): where no place near it is clear, it is left out rather than boxed
    * over the figure or sent out on a leader (a phone's crowded patch).
@@ -430,11 +437,13 @@ export function drawScreenLabel(
       });
     };
     // The leader says whose name it is: no need to be nearest its point.
+    // A heading or a value names no point: farther out it goes without one.
+    const leads = around !== null || style.names === true;
     const far = (fits: (l: number, m: number) => boolean) => {
       const found = farSpots(ax, ay, total, height)
         .map(([l, m]) => inside(l, m))
-        .find(([l, m]) => fits(l, m) && leaderClear(l, m));
-      if (found) leader = [ax, ay];
+        .find(([l, m]) => fits(l, m) && (!leads || leaderClear(l, m)));
+      if (found && leads) leader = [ax, ay];
       return found;
     };
     if (!spot && style.optional) return { width: 0 };

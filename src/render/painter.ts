@@ -515,7 +515,7 @@ export class Painter {
   label(text: string, p: P, style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
     if (!this.onScreen(x, y)) return;
-    this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), style);
+    this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), { ...style, names: true });
   }
 
   private onScreen(x: number, y: number): boolean {

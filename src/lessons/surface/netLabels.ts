@@ -135,6 +135,7 @@ export function placeNetLabels(
         halo: true,
         bold: true,
         align: 'left',
+        names: true,
       },
     );
     // What the painter drew (its measured box), else the estimate.
