@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { boxesMeet } from '../render/ink';
 import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
@@ -97,14 +98,11 @@ describe('the values at a plot’s cursor', () => {
             `${width} × ${height}: “${text}” across the cursor`,
           ).toBe(false);
         for (const [i, a] of boxes.entries())
-          for (const b of boxes.slice(i + 1)) {
-            const meet =
-              a.edge.x < b.edge.x + b.edge.width &&
-              b.edge.x < a.edge.x + a.edge.width &&
-              a.edge.y < b.edge.y + b.edge.height &&
-              b.edge.y < a.edge.y + a.edge.height;
-            expect(meet, `${width} × ${height}: “${a.text}” and “${b.text}”`).toBe(false);
-          }
+          for (const b of boxes.slice(i + 1))
+            expect(
+              boxesMeet(a.edge, b.edge),
+              `${width} × ${height}: “${a.text}” and “${b.text}”`,
+            ).toBe(false);
       }
   });
 });

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { boxesMeet } from './ink';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
@@ -84,5 +85,23 @@ describe('a leader line', () => {
     expect(heading.leader, JSON.stringify(heading)).toBeUndefined();
     // It went where it is clear, below the ruled band.
     expect(heading.y, JSON.stringify(heading)).toBeGreaterThan(60);
+  });
+});
+
+describe('boxed labels', () => {
+  it('keep their boxes apart, not only their letters: two asked at one spot are stacked a box apart', () => {
+    for (const projector of [false, true]) {
+      const view = new Viewport(400, 200);
+      view.fit({ minX: 0, minY: 0, maxX: 400, maxY: 200 }, 0);
+      const painter = new Painter(new SvgContext(), view, makeTheme(false, projector));
+      painter.screenLabel('N_{2,3} = 0.588', 100, 100, { bold: true, box: true });
+      painter.screenLabel('N_{3,3} = 0.283', 100, 100, { bold: true, box: true });
+      const [a, b] = painter.labels;
+      expect(a.frame && b.frame, 'both boxed').toBeTruthy();
+      expect(
+        boxesMeet(a.frame!, b.frame!),
+        `${JSON.stringify(a.frame)} and ${JSON.stringify(b.frame)}`,
+      ).toBe(false);
+    }
   });
 });
