@@ -1,9 +1,20 @@
 import { describe, expect, it } from 'vitest';
 import { labelEvery, ticks } from './axes';
+import type { LabelBox } from './labels';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
 import { Viewport } from './viewport';
+
+/** How far `label` stands from each tick number in its row (px; negative where they overlap). */
+function gapsToNumbers(painter: Painter, label: LabelBox): { number: string; apart: number }[] {
+  return painter.labels
+    .filter((b) => /^−?\d/.test(b.text) && Math.abs(b.y - label.y) < b.height / 2)
+    .map((b) => ({
+      number: b.text,
+      apart: Math.max(b.x - (label.x + label.width), label.x - (b.x + b.width)),
+    }));
+}
 
 describe('labelled ticks on a short plot', () => {
   it('labels every tick when they are far enough apart, else every 2nd, 4th, 5th, 10th …', () => {
@@ -37,18 +48,11 @@ describe('the x-axis name', () => {
         const name = painter.labels.find((b) => b.text === 'u')!;
         expect(name, `${width} px`).toBeDefined();
         const small = painter.theme.sizes.small;
-        for (const number of painter.labels.filter((b) => /^−?\d/.test(b.text))) {
-          const sameRow = Math.abs(number.y - name.y) < number.height / 2;
-          if (!sameRow) continue;
-          const apart = Math.max(
-            number.x - (name.x + name.width),
-            name.x - (number.x + number.width),
-          );
+        for (const { number, apart } of gapsToNumbers(painter, name))
           expect(
             apart,
-            `${width} px: “u” ${apart.toFixed(1)} px from “${number.text}”`,
+            `${width} px: “u” ${apart.toFixed(1)} px from “${number}”`,
           ).toBeGreaterThanOrEqual(small / 2);
-        }
       }
   });
 });
@@ -87,17 +91,10 @@ describe('a plot’s axes and tick numbers, to the labels written on the plot', 
       painter.label('C²', [2, bounds.minY], { dx: small * 0.4, dy: small * 0.9, halo: true });
       const label = painter.labels.find((b) => b.text === 'C²')!;
       expect(label).toBeDefined();
-      for (const number of painter.labels.filter((b) => /^−?\d/.test(b.text))) {
-        const sameRow = Math.abs(number.y - label.y) < number.height / 2;
-        if (!sameRow) continue;
-        const apart = Math.max(
-          number.x - (label.x + label.width),
-          label.x - (number.x + number.width),
-        );
-        expect(apart, `“C²” ${apart.toFixed(1)} px from “${number.text}”`).toBeGreaterThanOrEqual(
+      for (const { number, apart } of gapsToNumbers(painter, label))
+        expect(apart, `“C²” ${apart.toFixed(1)} px from “${number}”`).toBeGreaterThanOrEqual(
           small * 0.25,
         );
-      }
     });
   }
 });
