@@ -137,6 +137,8 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
     const labels = painter.labels;
     const onScreen = handles.map((h) => view.toScreen(h.position));
     for (const through of crossedLabels(painter, onScreen)) problems.push(`${at} ${through}`);
+    if (figure.kind === 'geometry')
+      for (const on of labelsOnGridAxes(painter, view)) problems.push(`${at} ${on}`);
     for (let i = 0; i < labels.length; i++)
       for (let j = i + 1; j < labels.length; j++) {
         const [a, b] = [labels[i], labels[j]];
@@ -172,6 +174,23 @@ function crossedLabels(painter: Painter, handles: readonly [number, number][]): 
     }
     const through = painter.ink.crossing(glyphBox(label));
     return through ? [`${through} through “${label.text}”`] : [];
+  });
+}
+
+/**
+ * Unboxed labels the grid's x- or y-axis runs through. The grid is drawn
+ * under the canvas, apart from the figure's ink: its axes are found here from
+ * where the view puts the origin, not from the painter's record.
+ */
+function labelsOnGridAxes(painter: Painter, view: { toScreen(p: number[]): number[] }): string[] {
+  const [ox, oy] = view.toScreen([0, 0]);
+  return painter.labels.flatMap((label) => {
+    if (label.boxed) return [];
+    const g = glyphBox(label);
+    const on: string[] = [];
+    if (ox > g.x && ox < g.x + g.width) on.push('the y-axis');
+    if (oy > g.y && oy < g.y + g.height) on.push('the x-axis');
+    return on.map((axis) => `${axis} through “${label.text}”`);
   });
 }
 

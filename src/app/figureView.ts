@@ -420,6 +420,7 @@ export class FigureView<S, M> {
       else this.paintBackdrop(surface, theme);
     }
     const painter = new Painter(surface, this.view, theme, shown);
+    if (this.spec.kind === 'geometry') painter.gridAxesAsInk();
     if (!info.thumbnail) this.drawGhost(surface, theme, info);
     painter.holdLabels();
     this.spec.draw(painter, model, info);

@@ -48,17 +48,38 @@ export function drawGrid(painter: Painter): void {
   c.stroke();
   c.strokeStyle = painter.theme.axis;
   c.beginPath();
-  const [ox, oy] = v.toScreen([0, 0]);
-  if (ox >= 0 && ox <= v.width) {
-    c.moveTo(Math.round(ox) + 0.5, 0);
-    c.lineTo(Math.round(ox) + 0.5, v.height);
-  }
-  if (oy >= 0 && oy <= v.height) {
-    c.moveTo(0, Math.round(oy) + 0.5);
-    c.lineTo(v.width, Math.round(oy) + 0.5);
+  for (const [x0, y0, x1, y1] of gridAxes(painter)) {
+    c.moveTo(x0, y0);
+    c.lineTo(x1, y1);
   }
   c.stroke();
   c.restore();
+  gridAxesAsInk(painter);
+}
+
+/**
+ * The x- and y-axes of a geometry figure's grid, as screen segments (those
+ * in view): darker than the grid, 1 px wide, across the whole figure.
+ */
+function gridAxes(painter: Painter): [number, number, number, number][] {
+  const v = painter.view;
+  if (v.dimension !== 2) return [];
+  const [ox, oy] = v.toScreen([0, 0]);
+  const axes: [number, number, number, number][] = [];
+  if (ox >= 0 && ox <= v.width)
+    axes.push([Math.round(ox) + 0.5, 0, Math.round(ox) + 0.5, v.height]);
+  if (oy >= 0 && oy <= v.height)
+    axes.push([0, Math.round(oy) + 0.5, v.width, Math.round(oy) + 0.5]);
+  return axes;
+}
+
+/**
+ * The grid's axes as lines no label may sit on ("P₀" struck through by the
+ * x-axis): the grid is drawn under the canvas, once per view, so the figure's
+ * own painter is told where its axes run. Its faint lines may be written over.
+ */
+export function gridAxesAsInk(painter: Painter): void {
+  for (const [x0, y0, x1, y1] of gridAxes(painter)) painter.ink.rule(x0, y0, x1, y1);
 }
 
 /** Label every k-th tick (k = 1, 2, 4, 5, 10, …) so that labelled ticks are `room` pixels apart. */

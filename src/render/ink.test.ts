@@ -58,4 +58,23 @@ describe('Ink: what a frame put on screen, asked box by box', () => {
     );
     expect(painter.ink.segments).toBe(before);
   });
+
+  it('keeps letters off a geometry grid’s axes, but lets a drawn box cover them', () => {
+    // A 200 × 100 figure of x, y in [−1, 3] × [−1, 1]: the origin lands at
+    // (50, 50), so the y-axis runs down x = 50.5 and the x-axis across y = 50.5.
+    const view = new Viewport();
+    view.resize(200, 100);
+    view.fit({ minX: -1, minY: -1, maxX: 3, maxY: 1 }, 0, true);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    painter.grid();
+    const onY = { x: 40, y: 10, width: 20, height: 10 };
+    const onX = { x: 120, y: 45, width: 30, height: 10 };
+    const clear = { x: 120, y: 10, width: 30, height: 10 };
+    expect(painter.ink.crosses(onY)).toBe(true);
+    expect(painter.ink.crossing(onX)).toMatch(/^the axis/);
+    expect(painter.ink.crosses(clear)).toBe(false);
+    // A note's box hides the axis under it, as it hides the grid.
+    expect(painter.ink.crosses(onY, true)).toBe(false);
+    expect(painter.ink.hits(onX).strokes).toBe(0);
+  });
 });

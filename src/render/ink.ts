@@ -28,6 +28,8 @@ export class Ink {
   /** The handles among the discs (x, y, radius): what a person drags must never be covered. */
   private readonly handleDiscs: number[] = [];
   private readonly areas: Box[] = [];
+  /** Lines under the drawing (see rule), four numbers each. */
+  private readonly rules: number[] = [];
   /** Cell key → indices of the segments whose box touches the cell. */
   private readonly cells = new Map<number, number[]>();
   /** Segments already in `cells`. */
@@ -62,6 +64,14 @@ export class Ink {
     for (let i = 1; i < n; i++)
       this.segment(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1], halfWidth);
     if (closed && n > 2) this.segment(xy[2 * n - 2], xy[2 * n - 1], xy[0], xy[1], halfWidth);
+  }
+
+  /**
+   * A line drawn under the figure (a grid's axis): no letters may sit on it,
+   * but a box (a note, a boxed value) may cover it, as it covers the grid.
+   */
+  rule(x1: number, y1: number, x2: number, y2: number): void {
+    this.rules.push(x1, y1, x2, y2);
   }
 
   /** A filled panel drawn over the figure (an inset): no label may sit on any of it. */
@@ -134,14 +144,22 @@ export class Ink {
     });
   }
 
-  /** Does any stroke or disc of this frame run through the box? */
-  crosses(b: Box): boolean {
-    return this.crossing(b) !== null;
+  /**
+   * Does any stroke or disc of this frame run through the box? A box that
+   * is drawn (`covers`: a note, a boxed value) may lie over the rules.
+   */
+  crosses(b: Box, covers = false): boolean {
+    return this.crossing(b, covers) !== null;
   }
 
   /** The first stroke or disc through the box, said in words (for a test's message), or null. */
-  crossing(b: Box): string | null {
+  crossing(b: Box, covers = false): string | null {
     this.index();
+    const r = this.rules;
+    if (!covers)
+      for (let i = 0; i < r.length; i += 4)
+        if (segmentMeetsBox(r[i], r[i + 1], r[i + 2], r[i + 3], b))
+          return `the axis from (${r[i].toFixed(0)}, ${r[i + 1].toFixed(0)}) to (${r[i + 2].toFixed(0)}, ${r[i + 3].toFixed(0)})`;
     for (const a of this.areas)
       if (boxesMeet(a, b)) return `a panel at (${a.x.toFixed(0)}, ${a.y.toFixed(0)})`;
     for (let i = 0; i < this.discs.length; i += 3)

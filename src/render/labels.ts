@@ -148,7 +148,9 @@ const labelsUnder = (painter: Painter, box: Box) =>
  * the first under which no stroke, point or label lies; -1 if none is clear.
  */
 export function firstClear(painter: Painter, boxes: readonly Box[]): number {
-  return boxes.findIndex((box) => labelsUnder(painter, box) === 0 && !painter.ink.crosses(box));
+  return boxes.findIndex(
+    (box) => labelsUnder(painter, box) === 0 && !painter.ink.crosses(box, true),
+  );
 }
 
 /**
@@ -395,7 +397,10 @@ export function drawScreenLabel(
     painter.ink.handlesUnder(labelFrame(...inside(l, m), total, size)) === 0;
   const unmarked = (l: number, m: number) =>
     free(l, m) &&
-    !painter.ink.crosses(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height })) &&
+    !painter.ink.crosses(
+      glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }),
+      boxed,
+    ) &&
     (!boxed || open(l, m));
   const rivals = around ? style.rivals : undefined;
   const own = (l: number, m: number) =>

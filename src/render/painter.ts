@@ -1,6 +1,6 @@
 import { Ink } from './ink';
 import { type ClipRect, circleVisible, clipCubic, clipPolygon, clipPolyline } from './clip';
-import { drawGrid, drawPlotAxes } from './axes';
+import { drawGrid, drawPlotAxes, gridAxesAsInk } from './axes';
 import { bezierPoint } from '../math';
 import {
   type LabelBox,
@@ -571,6 +571,11 @@ export class Painter {
   /** Light grid with axes through the origin (2D geometry figures), visible lines only. */
   grid(): void {
     drawGrid(this);
+  }
+
+  /** The grid's axes, drawn elsewhere (under the canvas), as lines for labels to keep off. */
+  gridAxesAsInk(): void {
+    gridAxesAsInk(this);
   }
 
   /** Axes for a function plot over `bounds` with tick numbers and axis names. */
