@@ -146,10 +146,12 @@ const labelsUnder = (painter: Painter, box: Box) =>
 /**
  * Of the places a box may go over the figure (a note, a key, a plot's name),
  * the first under which no stroke, point or label lies; -1 if none is clear.
+ * A drawn box may cover the grid's axes; letters without one (`covers`
+ * false: a heading) may not.
  */
-export function firstClear(painter: Painter, boxes: readonly Box[]): number {
+export function firstClear(painter: Painter, boxes: readonly Box[], covers = true): number {
   return boxes.findIndex(
-    (box) => labelsUnder(painter, box) === 0 && !painter.ink.crosses(box, true),
+    (box) => labelsUnder(painter, box) === 0 && !painter.ink.crosses(box, covers),
   );
 }
 

@@ -132,3 +132,51 @@ describe('numbers on screen', () => {
     }
   });
 });
+
+describe('the compare scene’s heading', () => {
+  it('stands in a clear corner of the figure, off the grid’s axes and its frame, unboxed on the projector, at every step and size', async () => {
+    const { drawHeadless } = await import('../../app/headless');
+    const { makeTheme } = await import('../../render/theme');
+    const { glyphBox } = await import('../../render/labels');
+    const figure = lesson.figures.find((f) => f.id === 'curve')!;
+    const base = compare({});
+    // Presenter view's left figure, a laptop's, and a phone's (measured on the page).
+    const sizes: [number, number, boolean][] = [
+      [1050, 900, true],
+      [640, 520, false],
+      [344, 230, false],
+    ];
+    let checked = 0;
+    for (let k = 0; k <= steps.count(base); k++)
+      for (const [width, height, presenter] of sizes) {
+        const state = { ...base, step: k };
+        const theme = makeTheme(false, presenter);
+        const { painter, view } = drawHeadless(figure, derive(state), { width, height, theme });
+        const heading = painter.labels.filter((l) => l.text.startsWith('Uniform'));
+        const where = `step ${k} at ${width} × ${height}`;
+        checked += heading.length;
+        const [ox, oy] = view.toScreen([0, 0]);
+        for (const line of heading) {
+          // On the projector it is found a clear corner; on a phone's short
+          // figure there may be none, and a box hides the lines under it.
+          if (presenter) expect(line.boxed ?? false, `${where}: “${line.text}” boxed`).toBe(false);
+          if (line.boxed) continue;
+          const g = glyphBox(line);
+          // The axes found from where the view puts the origin, not from the painter.
+          const onY = ox > g.x && ox < g.x + g.width;
+          const onX = oy > g.y && oy < g.y + g.height;
+          expect(onY, `${where}: y-axis through “${line.text}”`).toBe(false);
+          expect(onX, `${where}: x-axis through “${line.text}”`).toBe(false);
+          // Not pressed against the figure's frame: half its type size clear of each side.
+          const room = line.height / 1.3 / 2;
+          expect(line.x, `${where}: “${line.text}” at the left edge`).toBeGreaterThanOrEqual(room);
+          expect(
+            line.x + line.width,
+            `${where}: “${line.text}” at the right edge`,
+          ).toBeLessThanOrEqual(width - room);
+        }
+      }
+    // Steps 1 to 4 head the figure; at the first it asks its question in the caption.
+    expect(checked).toBeGreaterThanOrEqual(4 * sizes.length);
+  });
+});

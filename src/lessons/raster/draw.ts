@@ -1,5 +1,5 @@
 import type { Point } from '../../math';
-import { labelWidth } from '../../render/labels';
+import { edgePlaces, firstClear, labelWidth } from '../../render/labels';
 import type { Painter } from '../../render/painter';
 import type { Polyline } from './model';
 import type { Pixel, RasterSize } from './raster';
@@ -97,7 +97,12 @@ export function drawCurve(painter: Painter, curve: Float64Array, faint = false):
   });
 }
 
-/** A heading at the figure's top left. */
+/**
+ * A heading in the first corner of the figure (top left, top right, bottom
+ * left, …) where no stroke, point or axis runs under it, once the figure's
+ * ink is down; where none is clear, at the top left, moved or boxed by the
+ * placer like any label.
+ */
 export function heading(painter: Painter, text: string): void {
   const { sizes } = painter.theme;
   const room = painter.view.width - sizes.label * 1.2;
@@ -112,11 +117,22 @@ export function heading(painter: Painter, text: string): void {
       ? [text]
       : [text.slice(0, split + 1), text.slice(split + 2)];
   const size = Math.min(...lines.map(fit));
-  lines.forEach((line, i) =>
-    painter.screenLabel(line, sizes.label * 0.6, size * (1.1 + 1.3 * i), {
-      bold: true,
-      halo: true,
-      size,
-    }),
-  );
+  const style = { bold: true, halo: true, size };
+  const margin = sizes.label * 0.6;
+  // Each line's box is 1.3 of its size tall, its middle 0.65 below its top.
+  const block = {
+    width: Math.max(...lines.map((line) => width(line, size))),
+    height: lines.length * size * 1.3,
+  };
+  painter.placing(() => {
+    const corners = edgePlaces(painter.view, block.width, block.height, margin, size * 0.45);
+    const clear = firstClear(painter, corners, false);
+    const { x, y } = clear >= 0 ? corners[clear] : corners[0];
+    lines.forEach((line, i) =>
+      painter.screenLabel(line, x, y + size * (0.65 + 1.3 * i), {
+        ...style,
+        fixed: clear >= 0,
+      }),
+    );
+  });
 }
