@@ -13,13 +13,25 @@ export function sizeOf(p: readonly Point[]): number {
   return Math.sqrt(largest) || 1;
 }
 
-/** Twice the 90th percentile of the magnitudes: a scale that one spike cannot set. */
+/** How far past the typical value (the 90th percentile) a peak is still drawn whole. */
+const WHOLE_PEAK = 4;
+
+/**
+ * A scale for values drawn up to 1.25 times it: twice the 90th percentile of
+ * the magnitudes, so that one spike cannot set it (at a cusp κ grows without
+ * bound); but a peak within four times that percentile (a natural spline's
+ * tight bend) is finite and drawn whole, so the plot shows no gap where
+ * there is none (a gap beside a C² join reads as a jump in κ).
+ */
 export function robustCap(values: readonly (number | null)[]): number {
   const sorted = values
     .filter((v): v is number => v !== null)
     .map(Math.abs)
     .sort((x, y) => x - y);
-  return Math.max(2 * (sorted[Math.floor(0.9 * (sorted.length - 1))] ?? 0), 1e-9);
+  const typical = sorted[Math.floor(0.9 * (sorted.length - 1))] ?? 0;
+  const largest = sorted[sorted.length - 1] ?? 0;
+  const whole = largest <= WHOLE_PEAK * typical ? largest / 1.25 : 0;
+  return Math.max(2 * typical, whole, 1e-9);
 }
 
 /** Splits values sampled at t = i/(count − 1) into runs (interleaved t, value) where they are defined. */

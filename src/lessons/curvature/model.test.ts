@@ -185,3 +185,24 @@ describe('the plane curve from another lesson’s spline', () => {
     expect(m.at.why).toMatch(/Inflection/);
   });
 });
+
+describe('the κ plot of a spline without a cusp', () => {
+  it('draws every piece’s κ whole: one run per piece, no gap beside a C² join', () => {
+    // The natural spline through the scene's five villages has no cusp (P′ ≠ 0
+    // everywhere), so κ is finite and continuous: nothing of it may be cut.
+    // (Catmull–Rom's ends stop, P′ = 0: a cusp, where κ is undefined.)
+    for (const id of ['natural']) {
+      const m = derive({ ...scene(id), step: 6 });
+      const plane = m.plane!;
+      expect(plane.cusps, id).toEqual([]);
+      const pieces = new Set(plane.kappa.map((run) => Math.floor(run[0] + 1e-9)));
+      expect(plane.kappa.length, id).toBe(pieces.size);
+      // Each run spans its whole piece, p̄ = i … i + 1.
+      for (const run of plane.kappa) {
+        const i = Math.floor(run[0] + 1e-9);
+        expect(run[0], id).toBeCloseTo(i, 9);
+        expect(run[run.length - 2], id).toBeCloseTo(i + 1, 9);
+      }
+    }
+  });
+});
