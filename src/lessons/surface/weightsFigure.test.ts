@@ -36,4 +36,14 @@ describe('the weights heat map', () => {
       expect(ratio).toBeGreaterThanOrEqual(1 - 1e-9);
       expect(ratio).toBeLessThanOrEqual(1.8 + 1e-9);
     });
+
+  it('too small for legible numbers (a phone’s map 90 px tall): colours only, no text at all', () => {
+    // 90 px for 6.05 units: cells 15 px tall, room for numbers of 6.7 px, under the 12 px least.
+    const theme = makeTheme(false, false);
+    const { painter, svg } = drawHeadless(weightsFigure, model, { width: 344, height: 90, theme });
+    expect(painter.labels).toEqual([]);
+    expect(svg.toSvg(344, 90)).not.toContain('<text');
+    // The 16 cells are still drawn, each filled by its weight.
+    expect(svg.toSvg(344, 90).match(/<path[^>]*fill="[^"n]/g)?.length).toBeGreaterThanOrEqual(16);
+  });
 });

@@ -42,8 +42,16 @@ export const weightsFigure: KitFigure<SurfaceState, SurfaceModel> = {
     const [x0, y0] = painter.view.toScreen([0, 0]);
     const [x1, y1] = painter.view.toScreen([1, 1]);
     const size = Math.min(theme.sizes.label, Math.abs(x1 - x0) * 0.27, Math.abs(y1 - y0) * 0.45);
-    const text = (t: string, x: number, y: number, color = theme.ink, bold = false) =>
-      painter.label(t, [x, y], { align: 'center', baseline: 'middle', color, size, bold });
+    // Numbers are set at the theme's least size at smallest, which a cell
+    // room for 0.85 of it still holds (a phone's map, 197 px tall: 11.1 px of
+    // room for 12 px numbers). Cells smaller (the map squeezed under two
+    // notices) show the weights by colour alone, the panel's table writing
+    // them out: numbers pushed out of their cells no longer say whose they are.
+    const legible = size >= 0.85 * (theme.sizes.minText ?? 0);
+    const text = (t: string, x: number, y: number, color = theme.ink, bold = false) => {
+      if (legible)
+        painter.label(t, [x, y], { align: 'center', baseline: 'middle', color, size, bold });
+    };
     for (let i = 0; i < 4; i++) {
       for (let j = 0; j < 4; j++) {
         const w = shown === 'rows' ? fu[i] : shown === 'columns' ? fv[j] : m.weights[i][j];
