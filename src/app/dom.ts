@@ -44,8 +44,14 @@ export function append(parent: Node, children: (Child | readonly Child[])[]): vo
       continue;
     }
     const text = asShown(parent, String(child));
-    if (indexable(parent) && INDEX_RUN.test(text)) parent.append(...indexedRuns(text));
-    else parent.appendChild(document.createTextNode(text));
+    if (indexable(parent) && INDEX_RUN.test(text)) {
+      // One box for the words and their indices: in a row of boxes (a radio's
+      // label, a toolbar) each run of text and each index would be a box of
+      // its own, "D" on one line and "ₖ" a gap away on another.
+      const words = document.createElement('span');
+      words.append(...indexedRuns(text));
+      parent.appendChild(words);
+    } else parent.appendChild(document.createTextNode(text));
   }
 }
 

@@ -34,7 +34,31 @@ for (const slug of Object.keys(sceneLinks)) {
           if (/[₀-₉ᵢⱼₖₘₙₚᵣ₊₋]/.test(text) && size * 0.43 < 12 * 0.76 - 0.05)
             small.add(`subscript at ${size.toFixed(1)}px “${text.slice(0, 20)}”`);
         }
-        return { overflow: root.scrollWidth - root.clientWidth, small: [...small] };
+        // An index stands against the letter it belongs to, on its line: "Dₖ",
+        // not "D" with "ₖ" a gap away on a line of its own (a label laid out
+        // as a row of boxes made each run of text and each index a box).
+        const apart = new Set<string>();
+        for (const index of document.querySelectorAll<HTMLElement>('.index')) {
+          const before = index.previousSibling;
+          if (!before || !index.checkVisibility({ visibilityProperty: true })) continue;
+          if (index.closest('.katex-mathml, .visually-hidden, [aria-hidden="true"]')) continue;
+          const range = document.createRange();
+          range.selectNodeContents(before);
+          const lines = range.getClientRects();
+          const letter = lines[lines.length - 1];
+          const own = index.getClientRects()[0];
+          if (!letter || !own || own.left < letter.right - 1) continue;
+          const middle = (own.top + own.bottom) / 2;
+          const onLine = middle >= letter.top - 4 && middle <= letter.bottom + 4;
+          if (own.left - letter.right > 2 || !onLine)
+            apart.add(
+              `“${(before.textContent ?? '').slice(-12)}” and its index “${index.textContent}” apart`,
+            );
+        }
+        return {
+          overflow: root.scrollWidth - root.clientWidth,
+          small: [...small, ...apart],
+        };
       });
       return [
         ...(seen.overflow > 0 ? [`${where}: the page is ${seen.overflow} px too wide`] : []),
