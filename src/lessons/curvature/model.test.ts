@@ -206,3 +206,34 @@ describe('the κ plot of a spline without a cusp', () => {
     }
   });
 });
+
+describe('the κ plot’s marks', () => {
+  it('names each κ = 0 line beside it, inside the plot: the last one on its left', async () => {
+    const { drawHeadless } = await import('../../app/headless');
+    const { makeTheme } = await import('../../render/theme');
+    const { plotFigure } = await import('./plotFigure');
+    // Presenter view's plot strip, and a laptop's (measured on the page).
+    for (const [width, height, projector] of [
+      [1900, 330, true],
+      [900, 220, false],
+    ] as const) {
+      const m = derive({ ...scene('natural'), step: 6 });
+      const theme = makeTheme(false, projector);
+      const { painter, view } = drawHeadless(plotFigure, m, { width, height, theme });
+      const marks = painter.labels.filter((l) => l.text === 'κ = 0');
+      // κ = 0 at p̄ = 0 and 4, the natural spline's straight ends, and at one inflection.
+      expect(marks).toHaveLength(3);
+      for (const t of [0, 4]) {
+        const [x] = view.toScreen([t, 0]);
+        const label = marks.reduce((a, b) =>
+          Math.abs(a.x + a.width / 2 - x) < Math.abs(b.x + b.width / 2 - x) ? a : b,
+        );
+        const size = label.height / 1.3;
+        const gap = t === 0 ? label.x - x : x - (label.x + label.width);
+        // On the plot's side of its line, within half its size of it.
+        expect(gap, `p̄ = ${t} at ${width} px`).toBeGreaterThanOrEqual(0);
+        expect(gap, `p̄ = ${t} at ${width} px`).toBeLessThanOrEqual(size * 0.5);
+      }
+    }
+  });
+});

@@ -171,12 +171,17 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
       width: theme.sizes.thin,
       dash: [4, 4],
     });
+    // Beside its line, inside the plot: left of a line at the plot's right
+    // end (pushed in from the edge, it stood under the one before it, and
+    // neither said which line it was for).
+    const end = t >= bounds.maxX - 1e-9;
     if (!thumbnail)
       painter.label(text, [t, bounds.maxY], {
         color: theme.muted,
         halo: true,
-        dx: 4,
+        dx: end ? -4 : 4,
         dy: theme.sizes.small,
+        align: end ? 'right' : 'left',
       });
   };
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
