@@ -48,13 +48,15 @@ export function drawGrid(painter: Painter): void {
   c.stroke();
   c.strokeStyle = painter.theme.axis;
   c.beginPath();
-  for (const [x0, y0, x1, y1] of gridAxes(painter)) {
+  const axes = gridAxes(painter);
+  for (const [x0, y0, x1, y1] of axes) {
     c.moveTo(x0, y0);
     c.lineTo(x1, y1);
+    // Drawn here with the figure (headless, export): labels keep off them too.
+    painter.ink.rule(x0, y0, x1, y1);
   }
   c.stroke();
   c.restore();
-  gridAxesAsInk(painter);
 }
 
 /**

@@ -482,6 +482,8 @@ export function drawScreenLabel(
   c.save();
   c.setLineDash([]);
   c.globalAlpha = 1;
+  // The box as drawn, and as the placer keeps later labels off it.
+  const frame = boxed ? labelFrame(left, middleY, total, size) : null;
   if (!style.inBox)
     painter.labels.push({
       text,
@@ -492,10 +494,9 @@ export function drawScreenLabel(
       ...(boxed ? { boxed: true } : {}),
       ...(around ? { anchor: [x, y] as [number, number] } : {}),
       ...(leaderDrawn ? { leader: true } : {}),
-      ...(boxed ? { frame: labelFrame(left, middleY, total, size) } : {}),
+      ...(frame ? { frame } : {}),
     });
-  if (boxed) {
-    const frame = labelFrame(left, middleY, total, size);
+  if (frame) {
     const box = [frame.x, frame.y, frame.width, frame.height] as const;
     c.fillStyle = theme.labelHalo;
     c.globalAlpha = 0.92;
