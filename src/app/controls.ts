@@ -183,6 +183,9 @@ export class StepControl {
   private readonly forward: HTMLButtonElement;
   private readonly status: HTMLElement;
   private shown = '';
+  /** The scene and width the status's height is held for (see `reserve`). */
+  private reservedFor = '';
+  private reserveFrame = 0;
 
   constructor(advance: (delta: 1 | -1) => void) {
     this.back = h(
@@ -208,5 +211,51 @@ export class StepControl {
     setDisabled(this.forward, last);
     setText(this.status, text);
     setText(this.forward, nextLabel);
+  }
+
+  /**
+   * Holds the status at the height of the tallest of a scene's step texts
+   * (`texts`, asked for once), so the figures above keep one size as the
+   * steps go by (#19). A phone lets the status grow to say a step whole; a
+   * wider screen clamps it to two lines, which already keeps one height. `key`
+   * says which scene and width the texts are for. All texts are measured in
+   * one layout, at once if the status is on the page, else on the next frame.
+   */
+  reserve(key: string, texts: () => readonly string[]): void {
+    if (key === this.reservedFor) return;
+    this.reservedFor = key;
+    cancelAnimationFrame(this.reserveFrame);
+    const measure = () => {
+      if (this.reservedFor === key) this.holdTallest(texts());
+    };
+    if (this.status.isConnected) measure();
+    else this.reserveFrame = requestAnimationFrame(measure);
+  }
+
+  private holdTallest(texts: readonly string[]): void {
+    const status = this.status;
+    status.style.minHeight = '';
+    const style = getComputedStyle(status);
+    if (style.maxHeight !== 'none' || !status.getClientRects().length) return;
+    const twin = h('div', { class: 'step-status-twin', 'aria-hidden': 'true' });
+    Object.assign(twin.style, {
+      width: style.width,
+      font: style.font,
+      letterSpacing: style.letterSpacing,
+      textAlign: style.textAlign,
+      overflowWrap: style.overflowWrap,
+      wordBreak: style.wordBreak,
+      hyphens: style.hyphens,
+    });
+    for (const text of texts) twin.append(h('div', {}, text));
+    status.after(twin);
+    const tallest = Math.max(
+      0,
+      ...[...twin.children].map((line) => line.getBoundingClientRect().height),
+    );
+    // Out of the page between measurements: no stale copy of a step's words
+    // for a reader, a search or a test to find beside the status.
+    twin.remove();
+    status.style.minHeight = `${Math.ceil(tallest)}px`;
   }
 }

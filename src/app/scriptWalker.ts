@@ -148,12 +148,17 @@ export class ScriptWalker<S> {
     const scenes = this.lesson.scenes?.length ?? 0;
     const next = this.lesson.scenes?.[this.store.scene + 1];
     if (this.doneAt !== state) this.doneAt = null;
-    const text =
-      this.doneAt !== null && next
-        ? `Scene done. Next: ${next.label}.`
-        : this.lesson.steps
-          ? `${count > 0 ? `Step ${k}/${count}: ` : ''}${this.lesson.steps.describe(state, k)}`
-          : `Scene ${this.store.scene + 1} of ${scenes}`;
+    const done = next ? `Scene done. Next: ${next.label}.` : '';
+    const stepText = (at: S, j: number) =>
+      this.lesson.steps
+        ? `${count > 0 ? `Step ${j}/${count}: ` : ''}${this.lesson.steps.describe(at, j)}`
+        : `Scene ${this.store.scene + 1} of ${scenes}`;
+    const text = this.doneAt !== null && next ? done : stepText(state, k);
+    // One height for the scene's every step, and for "Scene done" after them.
+    this.steps.reserve(`${this.store.scene}/${count}/${window.innerWidth}`, () => [
+      done,
+      ...Array.from({ length: count + 1 }, (_, j) => stepText(this.withStep(state, j), j)),
+    ]);
     this.steps.update(
       text,
       k === 0 && this.store.scene === 0,

@@ -90,6 +90,55 @@ for (const phone of PHONES) {
   });
 }
 
+/** Each shown figure's canvas size, in CSS pixels. */
+const figureSizes = (page: Page) =>
+  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
+    canvases
+      .filter((c) => c.checkVisibility())
+      .map((c) => {
+        const box = c.getBoundingClientRect();
+        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
+      })
+      .join(', '),
+  );
+
+test.describe('a phone of 360×740, step by step', () => {
+  test.use({ viewport: PHONES[0], hasTouch: true, isMobile: true });
+  for (const slug of Object.keys(sceneLinks)) {
+    // On a phone the step's sentence is said whole under the figure, in as
+    // many lines as it needs: the figures keep one size through a scene (#19),
+    // whatever the step, and Next's "Scene done" after its last step.
+    test(`${slug}: each scene's figures keep one size through its steps`, async ({ page }) => {
+      test.setTimeout(120_000);
+      const faults: string[] = [];
+      const scenes = new Map<string, string>();
+      for (const query of sceneLinks[slug])
+        scenes.set(/(?:^|&)scene=([^&]*)/.exec(query)?.[1] ?? '', query);
+      await page.goto(`./#/${slug}?${[...scenes.values()][0]}`);
+      for (const [scene, query] of scenes) {
+        await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
+        await page.keyboard.press('Home');
+        await settled(page);
+        const status = page.locator('.step-status');
+        const count = Number(/Step \d+\/(\d+)/.exec((await status.textContent()) ?? '')?.[1] ?? 0);
+        const first = await figureSizes(page);
+        const next = page.locator('.steps button', { hasText: /^Next/ });
+        for (let k = 1; k <= count + 1; k++) {
+          // The lesson's last scene has no "Scene done" after it.
+          if (!(await next.isEnabled())) break;
+          await next.click();
+          await settled(page);
+          const sizes = await figureSizes(page);
+          const at = k > count ? '“Scene done”' : `step ${k}`;
+          if (sizes !== first)
+            faults.push(`${scene || 'first scene'}: ${at}: ${sizes}, step 0: ${first}`);
+        }
+      }
+      expect(faults).toEqual([]);
+    });
+  }
+});
+
 test.describe('a student with a phone in hand', () => {
   test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
 
