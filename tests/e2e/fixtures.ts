@@ -150,3 +150,15 @@ export async function eachSceneEnd(
   }
   return faults;
 }
+
+/** The sizes of the figures on screen, in CSS pixels, e.g. "main 1280×700, basis 620×700". */
+export const figureSizes = (page: Page) =>
+  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
+    canvases
+      .filter((c) => c.checkVisibility())
+      .map((c) => {
+        const box = c.getBoundingClientRect();
+        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
+      })
+      .join(', '),
+  );

@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { eachSceneEnd, expect, sceneLinks, settled, test } from './fixtures';
+import { eachSceneEnd, expect, figureSizes, sceneLinks, settled, test } from './fixtures';
 
 /**
  * A student on a phone, in every scene of every lesson, at its first and
@@ -89,18 +89,6 @@ for (const phone of PHONES) {
     }
   });
 }
-
-/** Each shown figure's canvas size, in CSS pixels. */
-const figureSizes = (page: Page) =>
-  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
-    canvases
-      .filter((c) => c.checkVisibility())
-      .map((c) => {
-        const box = c.getBoundingClientRect();
-        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
-      })
-      .join(', '),
-  );
 
 test.describe('a phone of 360×740, step by step', () => {
   test.use({ viewport: PHONES[0], hasTouch: true, isMobile: true });

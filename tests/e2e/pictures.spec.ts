@@ -25,6 +25,7 @@ import { exportedDrawing, tickProblems } from './axes';
 import { legibleFromTheBackRow } from './clicker';
 import {
   expect,
+  figureSizes,
   inLecturesLetter,
   LECTURE_LETTER_LESSONS,
   lessonFolders,
@@ -76,18 +77,6 @@ async function labelProblems(page: Page): Promise<string[]> {
   }
   return problems;
 }
-
-/** The sizes of the figures on screen, in CSS pixels, e.g. "main 1280×700, basis 620×700". */
-const figureSizes = (page: Page) =>
-  page.locator('canvas[data-figure]').evaluateAll((canvases) =>
-    canvases
-      .filter((c) => c.checkVisibility())
-      .map((c) => {
-        const box = c.getBoundingClientRect();
-        return `${(c as HTMLElement).dataset.figure} ${Math.round(box.width)}×${Math.round(box.height)}`;
-      })
-      .join(', '),
-  );
 
 /** Is the caption taller than a caption may reserve (24% of the screen)? */
 const captionOverReserve = (page: Page) =>
