@@ -102,3 +102,35 @@ describe('a link to a step past the last', () => {
     });
   }
 });
+
+describe('a link without its scene', () => {
+  for (const meta of lessons) {
+    it(`${meta.slug}: opens the scene whose picture it shows, so the caption says the scene it is`, async () => {
+      const lesson = await meta.load();
+      const ids = (lesson.scenes ?? []).map((s) => s.id);
+      // Each recorded scene link with its "scene=" cut off: the scene is the
+      // first whose own link is the same state (two scenes may open alike).
+      const cut = links[meta.slug]
+        .filter((l) => l.startsWith('scene='))
+        .map((l) => ({ id: /^scene=([^&]+)/.exec(l)![1], rest: l.replace(/^scene=[^&]+&/, '') }));
+      for (const { id, rest } of cut) {
+        const first = cut.find((other) => other.rest === rest)!.id;
+        const loaded = loadState(lesson, rest, null);
+        expect(loaded.issues, rest).toEqual([]);
+        expect(ids[loaded.scene], `${id}: ${rest}`).toBe(first);
+      }
+    });
+  }
+
+  it('raster: a link written by hand, x=compare&step=4, is the comparison scene', async () => {
+    const lesson = await lessons.find((l) => l.slug === 'raster')!.load();
+    const loaded = loadState(lesson, 'x=compare&step=4', null);
+    expect(lesson.scenes![loaded.scene].id).toBe('compare');
+  });
+
+  it('a link that names one scene and sets another’s state opens the scene of its state', async () => {
+    const lesson = await lessons.find((l) => l.slug === 'raster')!.load();
+    const loaded = loadState(lesson, 'scene=plot&x=pixels', null);
+    expect(lesson.scenes![loaded.scene].id).toBe('pixels');
+  });
+});

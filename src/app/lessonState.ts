@@ -63,7 +63,7 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
       state: normalized.state as S,
       issues: [...decoded.issues, ...normalized.issues],
       views: decoded.views,
-      scene: decoded.scene,
+      scene: sceneIndexOf(lesson, normalized.state, decoded.sceneNamed ? decoded.scene : -1),
       practice: decoded.practice,
     };
   }
@@ -71,14 +71,16 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
   let issues: string[] = [];
   if (stored) {
     const decoded = decodeState<S>(lesson.schema, stored, figures, scenes, exercises);
-    if (decoded.issues.length === 0)
+    if (decoded.issues.length === 0) {
+      const state = normalizeState(lesson, decoded.state).state as S;
       return {
-        state: normalizeState(lesson, decoded.state).state as S,
+        state,
         issues: [],
         views: decoded.views,
-        scene: decoded.scene,
+        scene: sceneIndexOf(lesson, state, decoded.sceneNamed ? decoded.scene : -1),
         practice: decoded.practice,
       };
+    }
     // Kept by an older version, or damaged: say so rather than lose it quietly.
     issues = [
       `the state this device kept from your last visit could not be read (${decoded.issues[0]}), so the lesson opened with its defaults`,
@@ -91,6 +93,34 @@ export function loadState<S>(lesson: AnyLesson, query: string, storage: Storage 
     views: {},
     scene: 0,
   };
+}
+
+/**
+ * The scene a state is in (an index into `lesson.scenes`): the scene `named`
+ * (a link's `scene=`, an exercise's) if the state walks that scene's steps;
+ * else, among the scenes whose steps it walks, the one whose setup it is
+ * nearest (most fields alike). A link written by hand, `x=compare&step=4`,
+ * opens the scene it shows, so the caption's "scene k/n", the pressed scene
+ * button and the clicker's next scene say where the picture is.
+ */
+export function sceneIndexOf<S>(lesson: AnyLesson, state: S, named = -1): number {
+  const scenes = lesson.scenes ?? [];
+  if (scenes.length === 0) return 0;
+  const defaults = defaultsOf<S>(lesson.schema);
+  const familyOf = (s: S) => (lesson.sceneOf as ((s: S) => string | undefined) | undefined)?.(s);
+  const family = familyOf(state);
+  const setups = scenes.map((scene) => scene.apply(defaults) as S);
+  const walks = (i: number) => familyOf(setups[i]) === family;
+  if (named >= 0 && named < scenes.length && walks(named)) return named;
+  const fields = Object.keys(lesson.schema).filter((name) => name !== lesson.steps?.key);
+  const alike = (setup: S) =>
+    fields.filter(
+      (name) => JSON.stringify(setup[name as keyof S]) === JSON.stringify(state[name as keyof S]),
+    ).length;
+  let best = -1;
+  for (let i = 0; i < scenes.length; i++)
+    if (walks(i) && (best < 0 || alike(setups[i]) > alike(setups[best]))) best = i;
+  return best >= 0 ? best : Math.max(0, Math.min(named, scenes.length - 1));
 }
 
 /**

@@ -6,7 +6,7 @@
 import type { ExerciseSpec } from '../kit/exercise';
 import { h, setHidden } from './dom';
 import type { AnyLesson } from './lesson';
-import { type LessonStore, type Loaded, normalizeState } from './lessonState';
+import { type LessonStore, type Loaded, normalizeState, sceneIndexOf } from './lessonState';
 import { Practice } from './practice';
 import type { ScriptWalker } from './scriptWalker';
 import { defaultsOf, type PracticeLink, type Schema } from './urlState';
@@ -153,13 +153,12 @@ export class PracticeHost<S> {
 
   /**
    * The scene an exercise is set in becomes the walker's: the one it names,
-   * else the one its state is in, else the first.
+   * else the one its state is in (see `sceneIndexOf`).
    */
   private enterScene(id: string | undefined, state: S): void {
     const lesson = this.page.lesson;
-    const wanted = id ?? (lesson.sceneOf as ((s: S) => string | undefined) | undefined)?.(state);
-    const index = (lesson.scenes ?? []).findIndex((scene) => scene.id === wanted);
-    this.page.walker.restart(Math.max(0, index));
+    const named = (lesson.scenes ?? []).findIndex((scene) => scene.id === id);
+    this.page.walker.restart(sceneIndexOf(lesson, state, named));
   }
 
   stopWalk(): void {

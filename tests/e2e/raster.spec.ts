@@ -175,3 +175,22 @@ test('the number of uniform segments is shown as a whole number, the one the fig
   await expect(field).toHaveValue('9');
   expect(await numberOf(page, 'uniform', 'segments')).toBe(9);
 });
+
+test('a link written by hand opens the scene it shows: its caption, its button and its next press', async ({
+  page,
+}) => {
+  // "x=compare" sets the comparison's state; without "scene=" the page must
+  // still say it is the comparison, scene 2 of 6, not the first scene.
+  await page.goto('./#/raster?x=compare&step=4');
+  await page.keyboard.press('p');
+  await expect(page.locator('.caption-scene')).toContainText('scene 2/6, step 4/');
+  await expectHash(page, 'scene', (v) => v === 'compare');
+  await page.keyboard.press('m');
+  await expect(page.locator('[data-scene="compare"]')).toHaveAttribute('aria-pressed', 'true');
+  await expect(page.locator('[data-scene="plot"]')).toHaveAttribute('aria-pressed', 'false');
+  // Back from step 0 is the scene before it, the plot at its last step.
+  await page.keyboard.press('Home');
+  await expectHash(page, 'step', (v) => v === '0');
+  await page.keyboard.press('PageUp');
+  await expectHash(page, 'scene', (v) => v === 'plot');
+});
