@@ -32,6 +32,14 @@ describe('Ink: what a frame put on screen, asked box by box', () => {
     expect(dot.crossing(box)).toMatch(/disc at \(35, 15\)/);
   });
 
+  it('answers at once for a box with an infinite side (the widest of no labels), and finds nothing in it', () => {
+    const ink = new Ink();
+    ink.segment(0, 15, 40, 15, 1);
+    const endless = { x: -Infinity, y: 10, width: -Infinity, height: 10 };
+    expect(ink.crosses(endless)).toBe(false);
+    expect(ink.hits({ x: NaN, y: 10, width: 20, height: 10 }).strokes).toBe(0);
+  });
+
   it('finds a segment that spans far beyond the screen (a point a million away)', () => {
     const ink = new Ink();
     ink.segment(-1e6, 15, 1e6, 15, 1);

@@ -202,6 +202,9 @@ export class Ink {
     const x1 = Math.floor((b.x + b.width) / CELL);
     const y0 = Math.floor(b.y / CELL);
     const y1 = Math.floor((b.y + b.height) / CELL);
+    // A box with an infinite side (the widest of no labels) meets no cell:
+    // counted cell by cell, -Infinity + 1 never reaches the end.
+    if (!Number.isFinite(x0 + x1 + y0 + y1)) return;
     for (let cx = x0; cx <= x1; cx++)
       for (let cy = y0; cy <= y1; cy++)
         for (const i of this.cells.get(this.key(cx, cy)) ?? []) {
