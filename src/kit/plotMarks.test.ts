@@ -4,7 +4,7 @@ import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { plotYName, valueColumn } from './plotMarks';
+import { lineName, plotYName, valueColumn } from './plotMarks';
 
 /**
  * A 900 × 300 plot of [0, 1] × [0, 1.2] with its y name; `starts` draws a
@@ -45,8 +45,8 @@ describe('a plot’s y-axis name', () => {
   });
 });
 
-describe('a plot’s y-axis name with the labels hidden (presenter key A)', () => {
-  it('is not drawn', () => {
+describe('a plot’s y-axis name, values and line names with the labels hidden (presenter key A)', () => {
+  it('are not drawn', () => {
     const view = new Viewport(900, 300);
     view.resize(900, 300);
     const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.2 };
@@ -59,9 +59,13 @@ describe('a plot’s y-axis name with the labels hidden (presenter key A)', () =
     });
     painter.holdLabels();
     plotYName(painter, bounds, 'W(N, i, μ)');
+    // Nor the values at the cursor, nor a line's name.
+    valueColumn(painter, 0.3, bounds, 40, [{ text: 'κ = 0.5', color: '#000' }]);
+    lineName(painter, 0.5, bounds, 'C²');
     painter.placeLabels();
     expect(painter.labels).toEqual([]);
     expect(svg.elements.join('')).not.toContain('W(N');
+    expect(svg.texts).toEqual([]);
   });
 });
 
@@ -104,5 +108,127 @@ describe('the values at a plot’s cursor', () => {
               `${width} × ${height}: “${a.text}” and “${b.text}”`,
             ).toBe(false);
       }
+  });
+});
+
+/** A 900 × 300 plot of [0, 4] × [−1, 3], its labels held as the page holds them. */
+function strip(width = 900, height = 300) {
+  const view = new Viewport(width, height);
+  view.resize(width, height);
+  const bounds = { minX: 0, minY: -1, maxX: 4, maxY: 3 };
+  view.fit(bounds, [60, 30], false);
+  const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+  painter.holdLabels();
+  return { view, bounds, painter };
+}
+
+/** A peak of height 3 at x = `at`, 0.1 wide, as κ peaks where a spline bends hard. */
+const peak = (at: number): [number, number][] =>
+  Array.from({ length: 41 }, (_, i) => {
+    const x = at - 0.5 + i / 40;
+    return [x, 3 * Math.exp(-(((x - at) / 0.12) ** 2))];
+  });
+
+describe('the values at a plot’s cursor, in a column', () => {
+  it('move off a peak that runs up under the far corner, and stay on their side of the cursor', () => {
+    const { view, bounds, painter } = strip();
+    painter.polyline(peak(3.7), { width: 3 });
+    const entries = [{ text: 'κ = −0.974', color: '#000' }];
+    valueColumn(painter, 1.8, bounds, 20, entries);
+    painter.placeLabels();
+    const [box] = painter.labels;
+    const edge = box.frame ?? box;
+    // Worked by hand: the corner away from the cursor is the right one; the
+    // peak at 3.7 is under it, so the box moves left, and not past 1.8.
+    expect(painter.ink.crosses(edge)).toBe(false);
+    expect(edge.x).toBeGreaterThan(view.toScreen([1.8, 0])[0]);
+    expect(edge.x + edge.width).toBeLessThan(view.toScreen([3.7, 0])[0]);
+  });
+
+  it('where every place is crossed, never stay over another label: they go where the placer finds room', () => {
+    // joins on a phone: the y-axis name boxed along the top, the curve's
+    // peaks under the rest; the value was left boxed over the name.
+    const { bounds, painter } = strip(360, 140);
+    for (const at of [0.6, 1.6, 2.6, 3.6]) painter.polyline(peak(at), { width: 3 });
+    painter.screenLabel('κ, κ of Catmull-Rom, κ of a natural one', 4, 14, {
+      box: true,
+      fixed: true,
+    });
+    valueColumn(painter, 2, bounds, 8, [{ text: 'κ = −0.462', color: '#000' }]);
+    painter.placeLabels();
+    expect(painter.labels.map((b) => b.text)).toContain('κ = −0.462');
+    const [a, b] = painter.labels.map((l) => l.frame ?? l);
+    expect(boxesMeet(a, b)).toBe(false);
+  });
+
+  it('with no values (every one off the plot) draw nothing, and return', () => {
+    const { bounds, painter } = strip();
+    valueColumn(painter, 2, bounds, 20, []);
+    painter.placeLabels();
+    expect(painter.labels).toEqual([]);
+  });
+});
+
+describe('the name of a line across a plot', () => {
+  const lines = (painter: Painter, bounds: { minY: number; maxY: number }, xs: number[]) => {
+    for (const x of xs)
+      painter.polyline(
+        [
+          [x, bounds.minY],
+          [x, bounds.maxY],
+        ],
+        { width: 1.5, dash: [4, 4] },
+      );
+  };
+
+  it('sits against its own line, on its right, or on its left at the plot’s right end', () => {
+    const { view, bounds, painter } = strip();
+    lines(painter, bounds, [1, 4]);
+    lineName(painter, 1, bounds, 'C²');
+    lineName(painter, 4, bounds, 'κ = 0');
+    painter.placeLabels();
+    const named = (text: string) => painter.labels.find((b) => b.text === text)!;
+    const [one] = view.toScreen([1, 0]);
+    const [four] = view.toScreen([4, 0]);
+    const c2 = named('C²');
+    expect(c2.x).toBeGreaterThan(one);
+    expect(c2.x - one).toBeLessThan(15);
+    const end = named('κ = 0');
+    expect(end.x + end.width).toBeLessThan(four);
+    expect(four - (end.x + end.width)).toBeLessThan(15);
+  });
+
+  it('finds a clear height beside its line, off the curve and off the other names', () => {
+    const { bounds, painter } = strip();
+    lines(painter, bounds, [3, 3.5]);
+    painter.polyline(peak(3.08), { width: 3 });
+    lineName(painter, 3, bounds, 'C²');
+    lineName(painter, 3.5, bounds, 'κ = 0');
+    painter.placeLabels();
+    expect(painter.labels.map((b) => b.text).sort()).toEqual(['C²', 'κ = 0']);
+    for (const b of painter.labels) expect(painter.ink.crossing(b), b.text).toBeNull();
+    const [a, b] = painter.labels;
+    expect(boxesMeet(a, b)).toBe(false);
+  });
+
+  it('goes unnamed where there is no room beside it, rather than beside another line', () => {
+    // Lines 19.5 px apart (195 px to a unit): "middle" crosses a line on
+    // either side of its own, at every height, so it is left out; "first"
+    // would cross the middle line on its right, so it is named on its left;
+    // "last" on its right. Worked by hand from the widths (each > 19.5 px).
+    const { view, bounds, painter } = strip(900, 120);
+    const xs = [2, 2.1, 2.2];
+    lines(painter, bounds, xs);
+    xs.forEach((x, i) => lineName(painter, x, bounds, ['first', 'middle', 'last'][i]));
+    painter.placeLabels();
+    expect(painter.labels.map((b) => b.text).sort()).toEqual(['first', 'last']);
+    for (const b of painter.labels) expect(painter.ink.crossing(b), b.text).toBeNull();
+    const [a, , c] = xs.map((x) => view.toScreen([x, 0])[0]);
+    const first = painter.labels.find((b) => b.text === 'first')!;
+    const last = painter.labels.find((b) => b.text === 'last')!;
+    expect(a - (first.x + first.width)).toBeGreaterThan(0);
+    expect(a - (first.x + first.width)).toBeLessThan(15);
+    expect(last.x - c).toBeGreaterThan(0);
+    expect(last.x - c).toBeLessThan(15);
   });
 });

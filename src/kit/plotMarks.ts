@@ -1,9 +1,17 @@
-import type { Box } from '../render/ink';
-import { clearestPlace, drawScreenLabel, labelWidth } from '../render/labels';
+import { type Box, boxesMeet } from '../render/ink';
+import {
+  type LabelStyle,
+  clearestPlace,
+  drawScreenLabel,
+  firstClear,
+  labelWidth,
+  leastHidden,
+} from '../render/labels';
 import type { Painter } from '../render/painter';
 
-// Marks a function plot writes beside its curves: the y-axis name and the
-// values at the cursor, boxed and kept off the curves they name.
+// Marks a function plot writes beside its curves: the y-axis name, the
+// values at the cursor, boxed and kept off the curves they name, and the
+// names of the lines drawn across it.
 
 /**
  * A plot's y-axis name, boxed along the top of the plot, placed when the
@@ -87,13 +95,113 @@ export function valueColumn(
     }
     return;
   }
-  entries.forEach((entry, i) => {
-    painter.screenLabel(entry.text, edge, top + size * 0.6 + i * size * 1.75, {
-      color: entry.color,
-      size,
-      bold: true,
-      box: true,
-      align: right ? 'right' : 'left',
+  // Hidden with the labels (presenter key A), or with the numbers.
+  const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
+  if (shown.length === 0) return;
+  const style = { size, bold: true, box: true, align: right ? 'right' : 'left' } as const;
+  // In the corner away from the cursor; where a curve runs under it there (a
+  // peak of κ under the box), the first place towards the cursor where none
+  // does, short of the cursor's line.
+  painter.placing(() => {
+    const width = Math.max(...shown.map((e) => labelWidth(painter, e.text, style)));
+    const pad = size * 0.35;
+    const [cursorX] = view.toScreen([cursor, 0]);
+    const column = (at: number): Box => ({
+      x: (right ? at - width : at) - pad,
+      y: top + size * 0.6 - size * 0.65 - pad,
+      width: width + 2 * pad,
+      height: (shown.length - 1) * size * 1.75 + size * 1.3 + 2 * pad,
+    });
+    const towards = right ? -1 : 1;
+    const spots = Array.from({ length: NAME_SPOTS }, (_, i) => edge + towards * i * width * 0.5);
+    // Whole inside the figure (else a value pushed in from the edge lands on
+    // the one above it), and on one side of the cursor's line.
+    const clearOfCursor = spots.filter((at) => {
+      const box = column(at);
+      const within = box.x >= 2 && box.y >= 2 && box.x + box.width <= view.width - 2;
+      return (
+        within &&
+        box.y + box.height <= view.height - 2 &&
+        (box.x > cursorX + size * 0.5 || box.x + box.width < cursorX - size * 0.5)
+      );
+    });
+    // None clear (a phone's strip, its lines closer than a box is wide): of
+    // those over no label, point or handle, the one over fewest strokes (a
+    // dashed line rather than the curve), and there it stays (moved by the
+    // placer, it went across the cursor's line). Else the placer finds room.
+    const boxes = clearOfCursor.map(column);
+    const clear = firstClear(painter, boxes);
+    const bare = boxes.filter(
+      (box) =>
+        painter.ink.hits(box).discs === 0 &&
+        painter.ink.handlesUnder(box) === 0 &&
+        !painter.labels.some((b) => boxesMeet(b.frame ?? b, box)),
+    );
+    const least = bare[leastHidden(painter, bare)];
+    const pick = clear >= 0 ? clear : least ? boxes.indexOf(least) : -1;
+    const at = pick >= 0 ? clearOfCursor[pick] : edge;
+    shown.forEach((entry, i) => {
+      drawScreenLabel(painter, entry.text, at, top + size * 0.6 + i * size * 1.75, {
+        ...style,
+        color: entry.color,
+        stays: pick >= 0,
+      });
+    });
+  });
+}
+
+/**
+ * Names a line drawn across a plot at x = `at` (an inflection, a join, a
+ * flip), against it: on the first of its sides and heights, from the top
+ * down (or from the foot up), where no stroke, point, axis or label lies
+ * under the name. Where there is none (a phone's crowded strip) the line goes
+ * unnamed: pushed along the plot, its name stood beside the next line and
+ * said nothing of its own (two "κ = 0" stacked by the end's line). A line at
+ * the plot's right end is named on its left, one at the left end on its right.
+ */
+export function lineName(
+  painter: Painter,
+  at: number,
+  bounds: { minX: number; maxX: number; minY: number; maxY: number },
+  text: string,
+  style: LabelStyle & { from?: 'top' | 'foot' } = {},
+): void {
+  if (painter.labelHidden(text)) return;
+  const { view, theme } = painter;
+  const size = style.size ?? theme.sizes.small;
+  const [x, top] = view.toScreen([at, bounds.maxY]);
+  const [, foot] = view.toScreen([at, bounds.minY]);
+  if (x < 0 || x > view.width) return;
+  const sides: ('right' | 'left')[] =
+    at >= bounds.maxX - 1e-9 ? ['left'] : at <= bounds.minX + 1e-9 ? ['right'] : ['right', 'left'];
+  painter.placing(() => {
+    const width = labelWidth(painter, text, style);
+    const gap = Math.max(4, size * 0.25);
+    const rows: number[] = [];
+    const [first, last] = [Math.max(top, 0) + size, Math.min(foot, view.height) - size];
+    const step = Math.max(1, size * 1.4);
+    for (let y = first; y <= last && rows.length < 64; y += step) rows.push(y);
+    if (style.from === 'foot') rows.reverse();
+    const spots = rows.flatMap((y) =>
+      sides.map((side) => ({ x: side === 'right' ? x + gap : x - gap - width, y })),
+    );
+    if (!spots.length) return;
+    // Its letters on no stroke, and a little room either side of it from
+    // any label, as the placer keeps: "C²" and "κ = 0" side by side read as one.
+    const apart = size * 0.3;
+    const clear = spots.findIndex(({ x: left, y }) => {
+      const glyphs = { x: left, y: y - size * 0.65, width, height: size * 1.3 };
+      const room = { ...glyphs, x: left - apart, width: width + 2 * apart };
+      return (
+        !painter.ink.crosses(glyphs, false) &&
+        !painter.labels.some((b) => boxesMeet(b.frame ?? b, room))
+      );
+    });
+    if (clear < 0) return;
+    drawScreenLabel(painter, text, spots[clear].x, spots[clear].y, {
+      ...style,
+      align: 'left',
+      fixed: true,
     });
   });
 }

@@ -39,6 +39,12 @@ export interface LabelStyle {
   /** It stays where it is put (an axis number at its tick), or is left out. */
   fixed?: boolean;
   /**
+   * It stays where it is put even where that is not clear: its caller chose
+   * the place that hides least (a plot's values, boxed over a dashed line
+   * rather than over the curve, and never moved across the cursor's line).
+   */
+  stays?: boolean;
+  /**
    * It names the point it was asked at (`Painter.label`, or `around`): moved
    * away, a leader line back to there says whose it is. A heading or a value
    * at a screen position names no point: moved away, it goes without one
@@ -409,7 +415,7 @@ export function drawScreenLabel(
     !rivals || nearestIsOwn({ x: l, y: m - size * 0.65, width: total, height }, x, y, rivals);
   const clear = (l: number, m: number) => unmarked(l, m) && own(l, m);
   let leaderDrawn = false;
-  if (!style.inBox && !clear(left, middleY)) {
+  if (!style.inBox && !style.stays && !clear(left, middleY)) {
     if (style.fixed) return { width: 0 };
     const gap = size * 0.3;
     const shifts = [

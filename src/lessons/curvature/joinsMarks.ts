@@ -1,4 +1,5 @@
 import type { Painter } from '../../render/painter';
+import { lineName } from '../../kit/plotMarks';
 import type { Bounds } from '../../render/projection';
 import { kappaContinuous, slopeContinuous } from './joinsScript';
 import type { SplineJoin } from './joinsModel';
@@ -75,16 +76,15 @@ export function drawJoinMarks(
         );
     }
   if (thumbnail || !m.shown.has('g3')) return;
-  const label = (text: string, x: number, y: number, dy: number) =>
-    painter.label(text, [x, y], { color: theme.ink, halo: true, bold: true, dx: 4, dy });
-  natural.forEach((j) => label(naturalJoinName(j), j.s, bounds.minY, -theme.sizes.small));
+  // Each join named against its own line, from the foot (the natural
+  // spline's) or the top (Catmull-Rom's), where the name is clear, else not
+  // at all: pushed along, two names stood together by one line (a phone).
+  const style = { color: theme.ink, halo: true, bold: true };
+  natural.forEach((j) =>
+    lineName(painter, j.s, bounds, naturalJoinName(j), { ...style, from: 'foot' }),
+  );
   catmullJoins.forEach((j, i) =>
-    label(
-      catmullJoinName(j, catmull.pieces.joins[i].continuity),
-      j.s,
-      bounds.maxY,
-      theme.sizes.small * 1.2,
-    ),
+    lineName(painter, j.s, bounds, catmullJoinName(j, catmull.pieces.joins[i].continuity), style),
   );
 }
 

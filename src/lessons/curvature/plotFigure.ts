@@ -2,7 +2,7 @@ import type { KitFigure } from '../../kit/lesson';
 import type { Painter } from '../../render/painter';
 import { type Bounds, niceStep } from '../../render/projection';
 import { words } from '../../kit/format';
-import { valueColumn } from '../../kit/plotMarks';
+import { lineName, valueColumn } from '../../kit/plotMarks';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
 import { drawJoinMarks, joinSeries } from './joinsMarks';
@@ -99,6 +99,21 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
         axisName(m),
         shown.map((s) => s.name).join(', '),
       );
+    const entries = cursorValues(m).filter((e) => shown.some((s) => s.name === e.name));
+    // The values at the cursor, boxed in the top corner away from it, off the
+    // curves they name. Labels are placed when all is drawn, in the order
+    // given: these first, and the lines' names (drawMarks) find room round them.
+    if (!info.thumbnail)
+      valueColumn(
+        painter,
+        t,
+        bounds,
+        Math.max(painter.view.toScreen([bounds.minX, bounds.maxY])[1], 0),
+        entries
+          .filter((e) => e.y >= bounds.minY && e.y <= bounds.maxY)
+          .sort((a, b) => b.y - a.y)
+          .map((e) => ({ text: `${e.name} = ${words(e.y)}`, color: painter.color(e.colour) })),
+      );
     drawMarks(painter, m, bounds, info.thumbnail);
     for (const s of shown)
       for (const run of s.runs)
@@ -111,21 +126,8 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
       color: theme.accent,
       width: theme.sizes.line,
     });
-    const entries = cursorValues(m).filter((e) => shown.some((s) => s.name === e.name));
     for (const e of entries)
       if (e.y >= bounds.minY && e.y <= bounds.maxY) painter.dot([t, e.y], painter.color(e.colour));
-    // The values at the cursor, boxed in the top corner away from it, off the curves they name.
-    if (!info.thumbnail)
-      valueColumn(
-        painter,
-        t,
-        bounds,
-        Math.max(painter.view.toScreen([bounds.minX, bounds.maxY])[1], 0),
-        entries
-          .filter((e) => e.y >= bounds.minY && e.y <= bounds.maxY)
-          .sort((a, b) => b.y - a.y)
-          .map((e) => ({ text: `${e.name} = ${words(e.y)}`, color: painter.color(e.colour) })),
-      );
   },
   handles: (m) => [
     {
@@ -171,18 +173,7 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
       width: theme.sizes.thin,
       dash: [4, 4],
     });
-    // Beside its line, inside the plot: left of a line at the plot's right
-    // end (pushed in from the edge, it stood under the one before it, and
-    // neither said which line it was for).
-    const end = t >= bounds.maxX - 1e-9;
-    if (!thumbnail)
-      painter.label(text, [t, bounds.maxY], {
-        color: theme.muted,
-        halo: true,
-        dx: end ? -4 : 4,
-        dy: theme.sizes.small,
-        align: end ? 'right' : 'left',
-      });
+    if (!thumbnail) lineName(painter, t, bounds, text, { color: theme.muted, halo: true });
   };
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
   if (part === 'joins') drawJoinMarks(painter, m, bounds, thumbnail);
@@ -231,11 +222,10 @@ function drawJoins(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
       dash: [2, 4],
     });
     if (labels && (joins.length <= 8 || join.s === nearest))
-      painter.label(joinLabel(join), [join.s, bounds.minY], {
+      lineName(painter, join.s, bounds, joinLabel(join), {
         color: theme.muted,
         halo: true,
-        dx: 4,
-        dy: -theme.sizes.small,
+        from: 'foot',
       });
   }
 }
