@@ -1,5 +1,5 @@
 import { sameValues } from '../kit/memoOn';
-import { fitPadding, fitShape } from './headless';
+import { fitFigure, fitPadding } from './headless';
 import { HandleDrag, type KeySize, keyStep, nearestHandle } from '../interact/handleDrag';
 import { HandleKeys } from '../interact/handleKeys';
 import { attachPointer, hitTolerance, type Screen } from '../interact/pointer';
@@ -248,7 +248,7 @@ export class FigureView<S, M> {
 
   private applyFit(model: M, theme: Theme): void {
     const padding = fitPadding(this.spec.kind, theme, this.view.width, this.view.height);
-    this.view.fit(this.spec.bounds(model), padding, fitShape(this.spec));
+    fitFigure(this.view, this.spec, model, theme, padding);
     this.fitted = true;
   }
 

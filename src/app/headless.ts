@@ -52,6 +52,32 @@ export function fitPadding(
   return [Math.min(room, 0.12 * width), Math.min(room, 0.12 * Math.min(width, height))];
 }
 
+/** The band a figure's heading takes at its top: one line of label type and its margin above. */
+export const headlineBand = (theme: Theme): number => theme.sizes.label * 1.9;
+
+/**
+ * Fits a figure's view to its subject with `padding` round it, and for a
+ * figure with a heading (`headline`) a band above for it: the page, handouts
+ * and tests fit it the same way.
+ */
+export function fitFigure<S, M>(
+  view: Projection,
+  figure: FigureSpec<S, M>,
+  model: M,
+  theme: Theme,
+  padding: number | readonly [number, number],
+): void {
+  const band = figure.headline?.(model) && view instanceof Viewport ? headlineBand(theme) : 0;
+  if (band === 0) {
+    view.fit(figure.bounds(model), padding, fitShape(figure));
+    return;
+  }
+  const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
+  // Half the band at each end, then the subject down by half: all of it on top.
+  view.fit(figure.bounds(model), [padX, padY + band / 2], fitShape(figure));
+  (view as Viewport).panBy(0, band / 2);
+}
+
 /** Draws one figure of the model, fitted to its bounds as the page fits it, with its handles. */
 export function drawHeadless<S, M>(
   figure: FigureSpec<S, M>,
@@ -64,7 +90,7 @@ export function drawHeadless<S, M>(
   view.resize(width, height);
   if (options.view && view instanceof OrbitCamera) view.decode(options.view);
   const padding = thumbnail ? 18 : fitPadding(figure.kind, theme, width, height);
-  view.fit(figure.bounds(model), padding, fitShape(figure));
+  fitFigure(view, figure, model, theme, padding);
   const svg = new SvgContext();
   const painter = new Painter(svg, view, theme);
   painter.clear();

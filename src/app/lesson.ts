@@ -87,6 +87,14 @@ export interface FigureSpec<S, M = S> {
   pickAt?(model: M, at: Point, tolerance: number): string | null;
   /** Something other than a handle under the pointer (e.g. a basis curve), for linked highlighting. */
   hoverAt?(model: M, at: Point, tolerance: number): string | null;
+  /**
+   * Does the figure write a heading along its top in this state (raster's
+   * "Uniform: 14 segments")? Then the fit keeps a band one heading line tall
+   * clear above the subject for it: with the handles at the top, it was boxed
+   * over the curve. Answer per scene, so the figure keeps one scale through
+   * its steps.
+   */
+  headline?(model: M): boolean;
   /** Relative size in its row or column (default 1). */
   weight?: number;
   /** A fixed height in CSS pixels (a thin strip under another figure). */

@@ -8,7 +8,7 @@
  * its numbers filled in, finite and written as a reader writes them.
  */
 import { expect } from 'vitest';
-import { fitShape } from '../app/headless';
+import { fitFigure } from '../app/headless';
 import type { AnyLesson } from '../app/lesson';
 import { normalizeState } from '../app/lessonState';
 import { defaultsOf } from '../app/urlState';
@@ -29,9 +29,10 @@ export function drawState(lesson: AnyLesson, state: unknown, { projector = false
   for (const figure of lesson.figures) {
     const view = new Viewport();
     view.resize(900, 560);
-    view.fit(figure.bounds(model), 40, fitShape(figure));
+    const theme = makeTheme(false, projector);
+    fitFigure(view, figure, model, theme, 40);
     const context = new SvgContext();
-    const painter = new Painter(context, view, makeTheme(false, projector));
+    const painter = new Painter(context, view, theme);
     figure.draw(painter, model, { hover: null, thumbnail: false });
     figure.drawOver?.(painter, model, { hover: null, thumbnail: false });
     elements += context.elements.length;

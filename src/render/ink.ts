@@ -70,6 +70,14 @@ export class Ink {
    * A line drawn under the figure (a grid's axis): no letters may sit on it,
    * but a box (a note, a boxed value) may cover it, as it covers the grid.
    */
+  /** The x of every upright rule (a geometry grid's y-axis), in screen pixels. */
+  uprightRules(): number[] {
+    const r = this.rules;
+    const xs: number[] = [];
+    for (let i = 0; i < r.length; i += 4) if (r[i] === r[i + 2]) xs.push(r[i]);
+    return xs;
+  }
+
   rule(x1: number, y1: number, x2: number, y2: number): void {
     this.rules.push(x1, y1, x2, y2);
   }

@@ -173,6 +173,8 @@ export const curveFigure: KitFigure<RasterState, RasterModel> = {
   kind: 'geometry',
   weight: 1.25,
   bounds: (m) => unionBounds(boundsOf(m.state.points), RASTER_BOX),
+  // The comparison writes what each side shows along the top.
+  headline: (m) => m.state.view === 'compare',
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     if (m.oneSpot)

@@ -105,12 +105,21 @@ export function drawCurve(painter: Painter, curve: Float64Array, faint = false):
  */
 export function heading(painter: Painter, text: string): void {
   const { sizes } = painter.theme;
-  const room = painter.view.width - sizes.label * 1.2;
+  const { width: across } = painter.view;
   const width = (line: string, size: number) => labelWidth(painter, line, { bold: true, size });
   // As large as fits the figure's width, down to the least size; then on two lines.
   const least = sizes.minText ?? sizes.small;
-  const fit = (line: string) =>
+  const fitIn = (room: number) => (line: string) =>
     Math.max(least, Math.min(sizes.label, (sizes.label * room) / width(line, sizes.label)));
+  // Or, if it costs at most a fifth of its size, as large as fits beside the
+  // grid's y-axis: on a phone the axis ran through it, and it was boxed.
+  const cuts = painter.ink.uprightRules().filter((x) => x > 0 && x < across);
+  const stops = [0, ...cuts.sort((a, b) => a - b), across];
+  const open = Math.max(...stops.slice(1).map((x, i) => x - stops[i]));
+  const whole = across - sizes.label * 1.2;
+  const beside = open - sizes.label * 1.2;
+  const room = fitIn(beside)(text) >= 0.8 * fitIn(whole)(text) ? beside : whole;
+  const fit = fitIn(room);
   const split = text.indexOf(': ');
   const lines =
     width(text, fit(text)) <= room || split < 0

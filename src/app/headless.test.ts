@@ -1,0 +1,46 @@
+import { describe, expect, it } from 'vitest';
+import { makeTheme } from '../render/theme';
+import { Viewport } from '../render/viewport';
+import { fitFigure, headlineBand } from './headless';
+import type { FigureSpec } from './lesson';
+
+const bounds = { minX: 0, minY: 0, maxX: 4, maxY: 1 };
+const figure = (headline: boolean): FigureSpec<null, null> => ({
+  id: 'f',
+  title: 'f',
+  kind: 'geometry',
+  bounds: () => bounds,
+  draw: () => {},
+  headline: () => headline,
+});
+
+describe('a figure fitted with a heading', () => {
+  it('keeps a band of one heading line above the subject, and the padding below it', () => {
+    const theme = makeTheme(false, false);
+    // A tall box: the width sets the scale, so the subject is centred up and down without a heading.
+    for (const headline of [false, true]) {
+      const view = new Viewport(400, 300);
+      view.resize(400, 300);
+      fitFigure(view, figure(headline), null, theme, 20);
+      const [, top] = view.toScreen([0, bounds.maxY]);
+      const [, foot] = view.toScreen([0, bounds.minY]);
+      // Worked by hand: the scale is (400 − 2·20)/4 = 90 px a unit, so the
+      // subject is 90 px tall; centred, its top is at (300 − 90)/2 = 105.
+      expect(foot - top).toBeCloseTo(90, 6);
+      const band = headlineBand(theme);
+      expect(top).toBeCloseTo(headline ? 105 + band / 2 : 105, 6);
+    }
+  });
+
+  it('in a short box, shrinks the subject to leave the band clear at the top', () => {
+    const theme = makeTheme(false, true);
+    const view = new Viewport(800, 200);
+    view.resize(800, 200);
+    fitFigure(view, figure(true), null, theme, 20);
+    const band = headlineBand(theme);
+    const [, top] = view.toScreen([0, bounds.maxY]);
+    const [, foot] = view.toScreen([0, bounds.minY]);
+    expect(top).toBeCloseTo(20 + band, 6);
+    expect(foot).toBeCloseTo(200 - 20, 6);
+  });
+});
