@@ -150,8 +150,7 @@ function drawZoom(painter: Painter, m: RasterModel, labels: boolean): void {
     { color: theme.accent, width: theme.sizes.line * 1.2 },
     true,
   );
-  if (labels)
-    heading(painter, `The screen’s 32 × 24 pixels at zoom ×${zoomWords(size.zoom)}: the box`);
+  if (labels) heading(painter, `The box: 32 × 24 pixels at ×${zoomWords(size.zoom)}`);
 }
 
 /** What the curve figure draws in each scene. */
@@ -172,9 +171,14 @@ export const curveFigure: KitFigure<RasterState, RasterModel> = {
   title: 'The curve, the segments drawn for it, and the pixels they light',
   kind: 'geometry',
   weight: 1.25,
-  bounds: (m) => unionBounds(boundsOf(m.state.points), RASTER_BOX),
-  // The comparison writes what each side shows along the top.
-  headline: (m) => m.state.view === 'compare',
+  // The zoom scene takes in its screen's box too: at ×½ the box is twice the
+  // raster's size, and its heading named a box that was off the figure.
+  bounds: (m) => {
+    const shown = unionBounds(boundsOf(m.state.points), RASTER_BOX);
+    return m.state.view === 'zoom' && m.zoom ? unionBounds(shown, windowOf(m.zoom.size)) : shown;
+  },
+  // The comparison and the zoom write what they show along the top.
+  headline: (m) => m.state.view === 'compare' || m.state.view === 'zoom',
   draw(painter, m, info) {
     const labels = !info.thumbnail;
     if (m.oneSpot)

@@ -10,10 +10,11 @@ import { glyphBox } from '../../render/labels';
 import { makeTheme } from '../../render/theme';
 import { sceneStates } from '../../kit/scriptChecks';
 import lesson from './lesson';
+import { windowOf } from './raster';
 import type { RasterState } from './state';
 
 const curve = lesson.figures.find((f) => f.id === 'curve')!;
-const HEADING = /^Uniform/;
+const HEADING = /^(Uniform|The box)/;
 
 describe('the curve figure’s heading', () => {
   for (const [width, height, projector] of [
@@ -24,8 +25,8 @@ describe('the curve figure’s heading', () => {
     [1880, 560, true],
   ] as const)
     it(`stands clear above the curve, unboxed, at ${width} × ${height}`, () => {
-      const scenes = sceneStates(lesson).filter((s) => s.id === 'compare');
-      expect(scenes.length).toBe(1);
+      const scenes = sceneStates(lesson).filter((s) => s.id === 'compare' || s.id === 'zoom');
+      expect(scenes.length).toBe(2);
       for (const scene of scenes)
         for (let k = 0; k <= scene.count; k++) {
           const model = lesson.derive(scene.at(k) as unknown as RasterState);
@@ -43,4 +44,28 @@ describe('the curve figure’s heading', () => {
           }
         }
     });
+});
+
+describe('the zoom scene’s box', () => {
+  it('is on the figure at every zoom, ×½ too, where it is twice the raster’s size', () => {
+    const [scene] = sceneStates(lesson).filter((s) => s.id === 'zoom');
+    for (let k = 0; k <= scene.count; k++) {
+      const model = lesson.derive(scene.at(k) as unknown as RasterState);
+      const { view } = drawHeadless(curve, model, {
+        width: 342,
+        height: 205,
+        theme: makeTheme(false, false),
+      });
+      const box = windowOf(model.zoom!.size);
+      for (const corner of [
+        [box.minX, box.minY],
+        [box.maxX, box.maxY],
+      ]) {
+        const [x, y] = view.toScreen(corner);
+        expect(x >= 0 && x <= 342 && y >= 0 && y <= 205, `step ${k}: ${corner} at ${x}, ${y}`).toBe(
+          true,
+        );
+      }
+    }
+  });
 });
