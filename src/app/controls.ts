@@ -186,24 +186,6 @@ export class StepControl {
   /** The scene and width the status's height is held for (see `reserve`). */
   private reservedFor = '';
   private reserveFrame = 0;
-  /**
-   * The scene's step texts, and the width of the row of buttons and status
-   * they were measured in (the status's own width follows its words).
-   */
-  private reservedTexts: (() => readonly string[]) | null = null;
-  private measuredWidth = -1;
-  /**
-   * A phone turned, or the status laid out at last (it was in a hidden
-   * panel): the sentences wrap anew, so they are measured anew, before the
-   * next press rather than at it (the figure jumped on that press).
-   */
-  private readonly widthWatch = new ResizeObserver(([entry]) => {
-    if (
-      this.reservedTexts &&
-      Math.round(entry.target.getBoundingClientRect().width) !== this.measuredWidth
-    )
-      this.holdTallest(this.reservedTexts());
-  });
 
   constructor(advance: (delta: 1 | -1) => void) {
     this.back = h(
@@ -218,7 +200,6 @@ export class StepControl {
     );
     this.status = h('span', { class: 'step-status', 'aria-live': 'polite' });
     this.element = h('div', { class: 'steps' }, this.back, this.status, this.forward);
-    this.widthWatch.observe(this.element);
   }
 
   /** Shows where the script is: `first`/`last` say whether there is anything before/after. */
@@ -243,7 +224,6 @@ export class StepControl {
   reserve(key: string, texts: () => readonly string[]): void {
     if (key === this.reservedFor) return;
     this.reservedFor = key;
-    this.reservedTexts = texts;
     cancelAnimationFrame(this.reserveFrame);
     const measure = () => {
       if (this.reservedFor === key) this.holdTallest(texts());
@@ -256,8 +236,6 @@ export class StepControl {
     const status = this.status;
     status.style.minHeight = '';
     const style = getComputedStyle(status);
-    // Not laid out: its width is 0, and the watch measures it once it has one.
-    this.measuredWidth = Math.round(this.element.getBoundingClientRect().width);
     if (style.maxHeight !== 'none' || !status.getClientRects().length) return;
     const twin = h('div', { class: 'step-status-twin', 'aria-hidden': 'true' });
     Object.assign(twin.style, {

@@ -127,36 +127,6 @@ test.describe('a phone of 360×740, step by step', () => {
   }
 });
 
-test.describe('a phone of 360×740 that changes width', () => {
-  test.use({ viewport: PHONES[0], hasTouch: true, isMobile: true });
-  // The sentences wrap anew at the new width: their room is measured anew
-  // then, not at the next press (the figure jumped on that press).
-  for (const slug of ['lagrange', 'quadratic', 'de-casteljau'])
-    test(`${slug}: the figures keep one size from the first press after it`, async ({ page }) => {
-      const [query] = sceneLinks[slug].filter((q) => q.startsWith('scene='));
-      await page.goto(`./#/${slug}?${query}`);
-      await page.keyboard.press('Home');
-      await settled(page);
-      await page.setViewportSize({ width: 412, height: 740 });
-      await expect.poll(() => page.evaluate(() => window.innerWidth)).toBe(412);
-      await settled(page);
-      const status = page.locator('.step-status');
-      const count = Number(/Step \d+\/(\d+)/.exec((await status.textContent()) ?? '')?.[1] ?? 0);
-      expect(count).toBeGreaterThan(1);
-      const first = await figureSizes(page);
-      const next = page.locator('.steps button', { hasText: /^Next/ });
-      const faults: string[] = [];
-      for (let k = 1; k <= count; k++) {
-        await next.click();
-        await expect(status).toContainText(`Step ${k}/${count}`);
-        await settled(page);
-        const sizes = await figureSizes(page);
-        if (sizes !== first) faults.push(`step ${k}: ${sizes}, step 0: ${first}`);
-      }
-      expect(faults).toEqual([]);
-    });
-});
-
 test.describe('a student with a phone in hand', () => {
   test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
 
