@@ -68,14 +68,10 @@ export function fitFigure<S, M>(
   padding: number | readonly [number, number],
 ): void {
   const band = figure.headline?.(model) && view instanceof Viewport ? headlineBand(theme) : 0;
-  if (band === 0) {
-    view.fit(figure.bounds(model), padding, fitShape(figure));
-    return;
-  }
   const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
   // Half the band at each end, then the subject down by half: all of it on top.
-  view.fit(figure.bounds(model), [padX, padY + band / 2], fitShape(figure));
-  (view as Viewport).panBy(0, band / 2);
+  view.fit(figure.bounds(model), band ? [padX, padY + band / 2] : padding, fitShape(figure));
+  if (band) (view as Viewport).panBy(0, band / 2);
 }
 
 /** Draws one figure of the model, fitted to its bounds as the page fits it, with its handles. */
