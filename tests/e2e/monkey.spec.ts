@@ -77,10 +77,12 @@ async function watchLongFrames(page: Page): Promise<void> {
     store.frames = 0;
     let parts: [string, number][] = [];
     new PerformanceObserver((list) => {
-      // In the order they ended: a frame's parts end before the frame does.
-      const entries = list
-        .getEntries()
-        .sort((a, b) => a.startTime + a.duration - (b.startTime + b.duration));
+      // In the order they ended, a frame's parts before the frame: the last
+      // part ends with it, and started later.
+      const entries = list.getEntries().sort((a, b) => {
+        const ends = a.startTime + a.duration - (b.startTime + b.duration);
+        return Math.abs(ends) > 1e-3 ? ends : b.startTime - a.startTime;
+      });
       for (const entry of entries) {
         const part = /^spline-lab:frame:(.+)$/.exec(entry.name);
         if (part) parts.push([part[1], Math.round(entry.duration)]);
