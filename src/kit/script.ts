@@ -84,6 +84,11 @@ export class Revealed<N extends string = string> {
     return this.reached.get(name) ?? 0;
   }
 
+  /** Every step reached so far is one of `names` (what a figure needs none of its other inputs for). */
+  only(names: readonly N[]): boolean {
+    return [...this.reached.keys()].every((name) => names.includes(name as N));
+  }
+
   /** The current step is `name` (what only this step says, e.g. a label of its own). */
   is(name: N): boolean {
     return this.name === name;

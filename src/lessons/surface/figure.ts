@@ -5,6 +5,7 @@ import type { Painter, StrokeStyle } from '../../render/painter';
 import { SpaceScene } from '../../render/space';
 import { type PatchSamples, type SurfaceModel } from './model';
 import { type SurfaceState } from './state';
+import type { Reveal } from './scripts';
 import { drawConstruction, drawOverConstruction } from './construction';
 import { placeNetLabels } from './netLabels';
 import { namedPoints, netPoints, secondNetPoints } from './points';
@@ -227,4 +228,28 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
   },
   points: [netPoints, secondNetPoints],
   trail: (m) => (patchShown(m).point ? m.point : null),
+  drawnFrom: drawnFromState,
 };
+
+/** Steps that draw nothing at P(u, v): the net, its corners and edges, the patch without its point. */
+const AWAY_FROM_THE_POINT: readonly Reveal[] = [
+  'points',
+  'net',
+  'corners',
+  'cornerQuad',
+  'edges',
+  'isoCurves',
+  'surface',
+];
+
+/**
+ * What the patch is drawn from: the whole state, with (u, v) only once the
+ * scene reaches a step that draws something at P(u, v). Until then a slider's
+ * drag leaves the patch as it is.
+ */
+export function drawnFromState(m: SurfaceModel): readonly unknown[] {
+  const { state, shown } = m;
+  const atPoint = state.mode !== 'patch' || !shown.only(AWAY_FROM_THE_POINT);
+  const { u, v, ...rest } = state;
+  return [shown.key, ...Object.values(rest), ...(atPoint ? [u, v] : [])];
+}
