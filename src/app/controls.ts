@@ -226,13 +226,14 @@ export class StepControl {
     this.reservedFor = key;
     cancelAnimationFrame(this.reserveFrame);
     const measure = () => {
-      if (this.reservedFor === key) this.holdTallest(texts());
+      if (this.reservedFor === key) this.holdTallest(texts);
     };
     if (this.status.isConnected) measure();
     else this.reserveFrame = requestAnimationFrame(measure);
   }
 
-  private holdTallest(texts: readonly string[]): void {
+  /** `texts` is asked for only where the status can grow: each derives every step's model. */
+  private holdTallest(texts: () => readonly string[]): void {
     const status = this.status;
     status.style.minHeight = '';
     const style = getComputedStyle(status);
@@ -247,7 +248,7 @@ export class StepControl {
       wordBreak: style.wordBreak,
       hyphens: style.hyphens,
     });
-    for (const text of texts) twin.append(h('div', {}, text));
+    for (const text of texts()) twin.append(h('div', {}, text));
     status.after(twin);
     const tallest = Math.max(
       0,
