@@ -354,6 +354,30 @@ export class Painter {
     c.restore();
   }
 
+  /**
+   * Where a point the view leaves out lies: an arrow at the figure's edge,
+   * pointing at it, named `text` (P(t) carried off by a wild polynomial, say).
+   * Draws nothing and returns false for a point on the figure.
+   */
+  offView(p: P, text: string, color: string): boolean {
+    const [x, y] = this.view.toScreen(p);
+    if (!Number.isFinite(x) || !Number.isFinite(y) || this.visible(p)) return false;
+    const { width, height } = this.view;
+    const inset = this.sizes.label * 0.8;
+    const tip = [
+      Math.min(Math.max(x, inset), width - inset),
+      Math.min(Math.max(y, inset), height - inset),
+    ];
+    const away = Math.hypot(x - tip[0], y - tip[1]);
+    const [ux, uy] = [(x - tip[0]) / away, (y - tip[1]) / away];
+    const length = this.sizes.label * 2;
+    const tail = [tip[0] - ux * length, tip[1] - uy * length];
+    const world = (s: readonly number[]) => this.view.toWorld(s, p);
+    this.arrow(world(tail), world(tip), { color, width: this.sizes.line * 1.3 });
+    this.label(text, world(tail), { color, halo: true, bold: true });
+    return true;
+  }
+
   /** A constructed (not movable) point. */
   dot(p: P, color: string = this.theme.ink, radius: number = this.sizes.point): void {
     const [x, y] = this.view.toScreen(p);

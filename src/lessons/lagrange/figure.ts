@@ -38,7 +38,9 @@ export const curveFigure: KitFigure<LagrangeState, LagrangeModel> = {
         width: theme.sizes.line,
       });
     }
-    if (shown.has('curve')) painter.labelClear('P(t)', at, points, { halo: true, bold: true });
+    // A wild polynomial can carry P(t) off the figure: an arrow at the edge says where.
+    if (shown.has('curve') && !painter.offView(at, 'P(t)', theme.accent))
+      painter.labelClear('P(t)', at, points, { halo: true, bold: true });
     let top = theme.sizes.label * 0.5;
     if (m.collapsedNote) top = painter.note(m.collapsedNote);
     if (m.note) top = painter.note(m.note, { top });
