@@ -74,7 +74,7 @@ export function drawContinuity(painter: Painter, m: ContinuityModel, info: DrawI
         width: theme.sizes.line * 1.5,
       });
     differingArrows(painter, m, info);
-    drawCursor(painter, m.point, 'P(u)', info);
+    drawCursor(painter, m, 'P(u)', info);
   }
   ringHovered(painter, m, info);
 }

@@ -86,13 +86,18 @@ export function drawPolygon(painter: Painter, points: readonly Point[], closed =
   painter.polyline(points, { color: theme.polygon, width: theme.sizes.line, dash: [6, 5] }, closed);
 }
 
-/** The point at the cursor, labelled. */
-export function drawCursor(painter: Painter, at: Point, text: string, info: DrawInfo): void {
+/**
+ * The point at the cursor, labelled beside it, all round it, and on a leader
+ * if it must go farther, nearer it than any control point: shifted a label's
+ * width at a time, its name stood 109 px off by the polygon (Repeated knots).
+ */
+export function drawCursor(painter: Painter, m: BSplineModel, text: string, info: DrawInfo): void {
   const theme = painter.theme;
-  painter.dot(at, theme.accent, theme.sizes.point * 1.6);
-  if (!info.thumbnail) {
-    painter.label(text, at, { dx: 10, dy: -10, color: theme.ink, halo: true });
-  }
+  const radius = theme.sizes.point * 1.6;
+  painter.dot(m.point, theme.accent, radius);
+  if (info.thumbnail) return;
+  const rivals = m.state.points.map((p) => painter.view.toScreen(p) as [number, number]);
+  painter.label(text, m.point, { around: radius, color: theme.ink, halo: true, rivals });
 }
 
 /** Small labelled marks (Bézier points, crossings, joints). */

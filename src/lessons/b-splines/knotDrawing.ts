@@ -36,7 +36,7 @@ export function drawKnots(painter: Painter, m: KnotModel, info: DrawInfo): void 
           box: join.continuity <= 0,
         });
     }
-    drawCursor(painter, m.point, 'P(u)', info);
+    drawCursor(painter, m, 'P(u)', info);
   }
   ringHovered(painter, m, info);
 }
@@ -61,7 +61,7 @@ export function drawNurbs(painter: Painter, m: NurbsModel, info: DrawInfo): void
     drawSegments(painter, m, info);
     weightHalos(painter, m, info);
   }
-  if (shown.has('sum')) drawCursor(painter, m.point, 'P(u)', info);
+  if (shown.has('sum')) drawCursor(painter, m, 'P(u)', info);
 }
 
 /** The exact circle: weights as halos, four arcs, samples on the circle, and with weights 1. */

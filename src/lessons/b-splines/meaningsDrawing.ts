@@ -77,6 +77,6 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
         });
     }
   }
-  if (shown.has('values')) drawCursor(painter, m.point, 'P(u)', info);
+  if (shown.has('values')) drawCursor(painter, m, 'P(u)', info);
   ringHovered(painter, m, info);
 }

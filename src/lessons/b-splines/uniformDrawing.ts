@@ -18,7 +18,7 @@ export function drawUniform(painter: Painter, m: UniformModel, info: DrawInfo): 
         width: painter.theme.sizes.line * 1.5,
       });
     }
-    drawCursor(painter, m.point, `${segmentLabel(m.segment)}(t)`, info);
+    drawCursor(painter, m, `${segmentLabel(m.segment)}(t)`, info);
   }
   if (shown.has('segments')) {
     drawSegments(painter, m, info);
@@ -39,7 +39,7 @@ export function drawUniform(painter: Painter, m: UniformModel, info: DrawInfo): 
     const joints = m.beziers.map((bezier) => bezier[0]);
     if (!closed) joints.push(m.end);
     drawMarks(painter, joints, painter.theme.ink, null, info);
-    drawCursor(painter, m.point, 'P(s)', info);
+    drawCursor(painter, m, 'P(s)', info);
   }
   ringHovered(painter, m, info);
 }
@@ -92,7 +92,7 @@ export function drawLocal(painter: Painter, m: LocalModel, info: DrawInfo): void
   }
   if (shown.is('moved') && local.moved.length === 0)
     hint(painter, info, 'Drag a control point: only its four segments change');
-  if (shown.has('basis')) drawCursor(painter, m.point, 'P(s)', info);
+  if (shown.has('basis')) drawCursor(painter, m, 'P(s)', info);
   ringHovered(painter, m, info);
 }
 
