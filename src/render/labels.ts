@@ -52,6 +52,12 @@ export interface LabelStyle {
    */
   names?: boolean;
   /**
+   * Where the point it names is on screen (`Painter.label` says): moved from
+   * its first place, it tries places all round that point before it goes
+   * farther, rather than shifting a label's width at a time away from it.
+   */
+  of?: readonly [number, number];
+  /**
    * It is said elsewhere too (a number the step's formula or table also
    * shows): where no place near it is clear, it is left out rather than boxed
    * over the figure or sent out on a leader (a phone's crowded patch).
@@ -430,9 +436,10 @@ export function drawScreenLabel(
       [0, -2 * height],
       [0, 2 * height],
     ];
-    const spots = (around ?? shifts.map(([dx, dy]) => [left + dx, middleY + dy])).map(([l, m]) =>
-      inside(l, m),
-    );
+    const named = !around && style.of ? spotsAround(...style.of, size * 0.3, total, size) : [];
+    const spots = (
+      around ?? [...named, ...shifts.map(([dx, dy]) => [left + dx, middleY + dy])]
+    ).map(([l, m]) => inside(l, m));
     // None near: farther out, tied to its place by a leader line; failing
     // that, its own place if no label is there, else the nearest free one.
     const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];

@@ -539,7 +539,11 @@ export class Painter {
   label(text: string, p: P, style: LabelStyle = {}): void {
     const [x, y] = this.view.toScreen(p);
     if (!this.onScreen(x, y)) return;
-    this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), { ...style, names: true });
+    this.screenLabel(text, x + (style.dx ?? 0), y + (style.dy ?? 0), {
+      ...style,
+      names: true,
+      of: [x, y],
+    });
   }
 
   private onScreen(x: number, y: number): boolean {
