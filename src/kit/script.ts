@@ -86,7 +86,8 @@ export class Revealed<N extends string = string> {
 
   /** Every step reached so far is one of `names` (what a figure needs none of its other inputs for). */
   only(names: readonly N[]): boolean {
-    return [...this.reached.keys()].every((name) => names.includes(name as N));
+    for (const name of this.reached.keys()) if (!names.includes(name as N)) return false;
+    return true;
   }
 
   /** The current step is `name` (what only this step says, e.g. a label of its own). */
