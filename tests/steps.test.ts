@@ -18,7 +18,10 @@
  * - no caption that places a figure ("on the left", "the plot below"): the
  *   figures sit side by side on a projector and one under another on a phone;
  * - every press changes what the room sees besides the caption: a figure or
- *   the step's formula.
+ *   the step's formula;
+ * - the point a step is about (P(t) in the accent colour) never under a
+ *   handle: at every step, and at each scene's last step with the parameter at
+ *   its ends, where P(0) = P₀.
  */
 import { describe, expect, it } from 'vitest';
 import type { AnyLesson } from '../src/app/lesson';
@@ -147,6 +150,8 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
         if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
       }
     problems.push(...namedElsewhere(painter.labels, onScreen).map((p) => at + ' ' + p));
+    for (const [x, y] of painter.underHandles)
+      problems.push(`${at} a handle hides the point at (${x.toFixed(0)}, ${y.toFixed(0)})`);
     for (const handle of handles) {
       const [x, y] = view.toScreen(handle.position);
       if (!(x >= 0 && y >= 0 && x <= width && y <= height))
@@ -271,6 +276,20 @@ describe('every step of every scene, as the room sees it', () => {
             );
           before = seen;
         }
+        // At the parameter's ends the moving point is an end point, under its handle.
+        const parameter = lesson.parameter;
+        if (parameter)
+          for (const end of [parameter.min, parameter.max]) {
+            const state = normalizeState(lesson, {
+              ...opened,
+              [steps.key]: count,
+              [parameter.key]: end,
+            }).state;
+            for (const problem of drawStep(lesson, state).problems.filter((p) =>
+              p.includes('a handle hides'),
+            ))
+              found.push(`${scene.id} last step, ${parameter.label} = ${end}: ${problem}`);
+          }
       }
       expect(found).toEqual([]);
     }, 120_000);

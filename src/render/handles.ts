@@ -30,6 +30,8 @@ export function drawHandles(
       radius: radius(handle, state),
     });
   }
+  // The point a step is about goes over them (P(0) is on P₀'s handle).
+  painter.drawAbove();
   // The names after every handle is down: each goes to the first side of its
   // point where no line, point or other name runs through it.
   if (!painter.show.labels) return;

@@ -77,6 +77,24 @@ export class Painter {
   readonly ink = new Ink();
   /** Labels waiting for the figure's ink to be down (see holdLabels), in the order given. */
   private held: (() => void)[] | null = null;
+  /** The moving point's drawing, waiting for the handles to be down (see movingPoint). */
+  private above: (() => void)[] | null = null;
+  /**
+   * Large accent discs drawn so far (screen x, y, radius): the point a step is
+   * about, drawn larger than a constructed point. A handle drawn over one hides it.
+   */
+  private accents: [number, number, number][] = [];
+  /** The handles drawn so far, to outline again over a mark on one (markOnHandle). */
+  private outlines: {
+    x: number;
+    y: number;
+    r: number;
+    stroke: string;
+    width: number;
+    shape: HandleShape;
+  }[] = [];
+  /** Accent points a handle drawn after them covers (screen pixels): what the tests look for. */
+  readonly underHandles: [number, number][] = [];
   readonly clip: ClipRect;
   private scratch = new Float64Array(256);
   /** Draws handles as stamps on a screen canvas (null elsewhere); found at the first handle. */
@@ -383,6 +401,7 @@ export class Painter {
     const [x, y] = this.view.toScreen(p);
     if (!circleVisible(x, y, radius, this.clip)) return;
     this.ink.disc(x, y, radius);
+    if (color === this.theme.accent && radius > this.sizes.point) this.accents.push([x, y, radius]);
     const c = this.ctx;
     c.save();
     c.fillStyle = color;
@@ -483,12 +502,15 @@ export class Painter {
       (style.radius ?? this.sizes.handle) *
       (state === 'drag' ? 1.25 : state === 'hover' ? 1.15 : 1);
     if (!circleVisible(x, y, r * 2, this.clip)) return;
+    for (const [ax, ay, ar] of this.accents)
+      if (ar < r * 1.5 && Math.hypot(ax - x, ay - y) < r) this.underHandles.push([ax, ay]);
     this.ink.handle(x, y, r * (style.shape === 'diamond' ? 1.3 : 1) + this.sizes.line);
     const c = this.ctx;
     const stroke = style.color ?? this.theme.handleStroke;
     const shape = style.shape ?? 'circle';
     const fill = state === 'drag' ? stroke : this.theme.handleFill;
     const width = Math.max(2, this.sizes.line * 1.2);
+    this.outlines.push({ x, y, r, stroke, width, shape });
     if (this.stamper === undefined) this.stamper = HandleStamper.for(c);
     // A stamp needs only the alpha saved (a save and restore of the whole state costs more).
     if (this.stamper && state === 'idle') {
@@ -566,10 +588,57 @@ export class Painter {
    */
   holdLabels(): void {
     this.held = [];
+    this.above = [];
+  }
+
+  /**
+   * The point a step is about (P(t), P(μ), P(u, v)), in the accent colour and
+   * over the handles: at t = 0 it is P₀, and P₀'s handle drawn over it hid it.
+   * While labels are held it waits for `drawAbove` (the handles call it).
+   */
+  movingPoint(p: P, scale = 1.5): void {
+    this.aboveHandles(() => this.dot(p, this.theme.accent, this.sizes.point * scale));
+  }
+
+  /**
+   * A mark on a movable point smaller than its handle (a small weight's disc):
+   * drawn over the handle, whose outline is drawn again on top, so both are
+   * seen (under the handle, its fill hid the mark).
+   */
+  markOnHandle(p: P, color: string, radius: number): void {
+    this.aboveHandles(() => {
+      this.dot(p, color, radius);
+      const [x, y] = this.view.toScreen(p);
+      const handle = this.outlines.find((o) => Math.hypot(o.x - x, o.y - y) < 0.5);
+      if (!handle) return;
+      const c = this.ctx;
+      c.save();
+      c.setLineDash([]);
+      c.strokeStyle = handle.stroke;
+      c.lineWidth = handle.width;
+      c.beginPath();
+      handlePath(c, handle.x, handle.y, handle.r, handle.shape);
+      c.stroke();
+      c.restore();
+    });
+  }
+
+  /** Draws over the handles (see movingPoint): at once, unless labels are held. */
+  aboveHandles(draw: () => void): void {
+    if (this.above) this.above.push(draw);
+    else draw();
+  }
+
+  /** Draws the moving points held back: once the handles are down, before the labels. */
+  drawAbove(): void {
+    const above = this.above;
+    this.above = null;
+    above?.forEach((draw) => draw());
   }
 
   /** Places the labels held back, in the order they were given, on top of the figure. */
   placeLabels(): void {
+    this.drawAbove();
     const held = this.held;
     this.held = null;
     held?.forEach((place) => place());

@@ -94,7 +94,7 @@ export function drawPolygon(painter: Painter, points: readonly Point[], closed =
 export function drawCursor(painter: Painter, m: BSplineModel, text: string, info: DrawInfo): void {
   const theme = painter.theme;
   const radius = theme.sizes.point * 1.6;
-  painter.dot(m.point, theme.accent, radius);
+  painter.movingPoint(m.point, 1.6);
   if (info.thumbnail) return;
   const rivals = m.state.points.map((p) => painter.view.toScreen(p) as [number, number]);
   painter.label(text, m.point, { around: radius, color: theme.ink, halo: true, rivals });

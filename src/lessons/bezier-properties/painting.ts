@@ -23,7 +23,9 @@ export function drawMarked(
   info: DrawInfo,
   color = painter.theme.accent,
 ): void {
-  painter.dot(point, color, painter.theme.sizes.point * 1.3);
+  // The accent's point is the one the step is about: over the handles (P(0) = P₀).
+  if (color === painter.theme.accent) painter.movingPoint(point, 1.3);
+  else painter.dot(point, color, painter.theme.sizes.point * 1.3);
   if (info.thumbnail) return;
   painter.label(text, point, {
     dx: painter.theme.sizes.point + 5,

@@ -116,7 +116,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
         });
     }
     if (!drawn.point) return;
-    painter.dot(point, theme.accent, theme.sizes.point * 1.5);
+    painter.movingPoint(point, 1.5);
     if (!info.thumbnail) {
       painter.labelClear('P(μ)', point, other ? [...crowd, other.at] : crowd, {
         color: theme.ink,

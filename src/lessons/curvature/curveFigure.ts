@@ -131,7 +131,7 @@ function drawFrame(painter: Painter, m: CurvatureModel, plane: PlaneModel, label
     vectorArrow(painter, at.point, at.tangent, unit, 'T', painter.color(COLOURS.tangent), labels);
   if (shown.has('normal') && at.normal)
     vectorArrow(painter, at.point, at.normal, unit, 'N', painter.color(COLOURS.normal), labels);
-  painter.dot(at.point, theme.accent, theme.sizes.point * 1.3);
+  painter.movingPoint(at.point, 1.3);
   if (labels) painter.label('P(t)', at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
 }
 
@@ -183,7 +183,7 @@ function drawTicks(painter: Painter, m: CurvatureModel, labels: boolean): void {
   const faded = shown.is('equalLength') ? 0.3 : 1;
   if (shown.has('ticks')) tick(arc.byT, arc.byTDirection, painter.color(0), 1, faded);
   if (shown.has('equalLength')) tick(arc.byS, arc.bySDirection, painter.color(1), -1, 1);
-  painter.dot(m.plane!.at.point, theme.accent, theme.sizes.point * 1.3);
+  painter.movingPoint(m.plane!.at.point, 1.3);
   if (!labels) return;
   painter.label('P(t)', m.plane!.at.point, { halo: true, dx: -14, dy: 22, align: 'right' });
   // The key in the corner where it hides least: a name at a fixed spot sat on a handle.
@@ -211,7 +211,7 @@ function drawTopView(painter: Painter, m: CurvatureModel, labels: boolean): void
     width: theme.sizes.curve,
     role: 'curve',
   });
-  painter.dot(m.space.at.point.slice(0, 2), theme.accent, theme.sizes.point * 1.3);
+  painter.movingPoint(m.space.at.point.slice(0, 2), 1.3);
   if (labels) drawLegend(painter, [{ text: 'Top view (x, y)', color: theme.muted }]);
 }
 

@@ -75,7 +75,8 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
         if (labels)
           scene.label('frame flips: κ → 0', p, { halo: true, bold: true, dx: 10, dy: -12 });
       }
-    scene.dot(at.point, theme.accent, theme.sizes.point * 1.3);
+    // P(t) over the handles, and so over the scene: at t = 0 it is Q₀.
+    painter.movingPoint(at.point, 1.3);
     if (labels) scene.label('P(t)', at.point, { halo: true, dx: -12, dy: 22, align: 'right' });
     scene.flush();
     // The frame at t goes over everything: it is what the step talks about.

@@ -26,7 +26,7 @@ function drawLevels(painter: Painter, levels: readonly Point[][], computed: read
 
 /** P(t), the construction's last point, large and in the accent. */
 const drawPoint = (painter: Painter, m: DeCasteljauModel) =>
-  painter.dot(m.levels[m.n][0], painter.theme.accent, painter.theme.sizes.point * 1.6);
+  painter.movingPoint(m.levels[m.n][0], 1.6);
 
 /**
  * The pseudocode's run so far: level 0 once line 1 has copied it, every

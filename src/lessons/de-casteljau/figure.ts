@@ -60,14 +60,9 @@ function drawConstruction(painter: Painter, m: DeCasteljauModel, info: DrawInfo)
   for (let r = 1; r <= shown.count('level'); r++) {
     const color = levelColour(theme.palette, r);
     painter.polyline(levels[r], { color, width: theme.sizes.line, dash: levelDash(r) });
-    levels[r].forEach((point) => {
-      const last = r === n;
-      painter.dot(
-        point,
-        last ? theme.accent : color,
-        last ? theme.sizes.point * 1.6 : theme.sizes.point,
-      );
-    });
+    // The last level's one point is P(t): over the handles (P(0) is on P₀).
+    if (r === n) painter.movingPoint(levels[r][0], 1.6);
+    else levels[r].forEach((point) => painter.dot(point, color, theme.sizes.point));
   }
   if (!info.thumbnail) drawLabels(painter, m);
 }

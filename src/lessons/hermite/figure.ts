@@ -1,5 +1,4 @@
 import type { KitFigure } from '../../kit/lesson';
-import type { Painter } from '../../render/painter';
 import type { HermiteModel } from './model';
 import { controlPoints, gradientTips } from './points';
 import type { HermiteState } from './state';
@@ -51,11 +50,10 @@ export const curveFigure: KitFigure<HermiteState, HermiteModel> = {
     if (ends)
       for (const q of [patch.p0, patch.p1])
         painter.ring(q, theme.sizes.handle * 1.4, { color: theme.accent, width: theme.sizes.line });
-    // A thumbnail has no handles, and no drawOver: its P(μ) is drawn here.
-    if (info.thumbnail) {
-      if (shown.has('pointAtMu')) drawPoint(painter, m);
-      return;
-    }
+    // Over the handles: at μ = 0.3 on the second patch of "several points" it
+    // lies on D₁'s tip, and the handle drawn over it hid it.
+    if (shown.has('pointAtMu')) painter.movingPoint(m.patch.point, 1.5);
+    if (info.thumbnail) return;
     if (ends)
       [patch.p0, patch.p1].forEach((q, end) =>
         painter.labelClear(`μ = ${end}`, q, [...m.marks, ...patch.bezier], {
@@ -75,11 +73,6 @@ export const curveFigure: KitFigure<HermiteState, HermiteModel> = {
     }
     if (m.note) painter.note(m.note);
   },
-  // P(μ) over the handles: at μ = 0.3 on the second patch of "several points"
-  // it lies on D₁'s tip, and a handle drawn over it hid it.
-  drawOver(painter, m) {
-    if (m.shown.has('pointAtMu')) drawPoint(painter, m);
-  },
   trail: (m) => (m.shown.has('pointAtMu') ? m.patch.point : null),
   // The tips first: each point is drawn over its tip, so where a gradient is
   // zero (Catmull-Rom's ends) the point, not the tip, is what one grabs.
@@ -87,7 +80,3 @@ export const curveFigure: KitFigure<HermiteState, HermiteModel> = {
   interleave: true,
   addTo: controlPoints,
 };
-
-function drawPoint(painter: Painter, m: HermiteModel): void {
-  painter.dot(m.patch.point, painter.theme.accent, painter.theme.sizes.point * 1.5);
-}

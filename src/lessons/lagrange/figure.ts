@@ -28,7 +28,7 @@ export const curveFigure: KitFigure<LagrangeState, LagrangeModel> = {
     });
     if (shown.has('curve')) painter.polylineFlat(m.curve, { color: theme.curve, role: 'curve' });
     if (m.comparison) drawSpline(painter, m);
-    if (shown.has('curve')) painter.dot(at, theme.accent, theme.sizes.point * 1.5);
+    if (shown.has('curve')) painter.movingPoint(at, 1.5);
     if (info.thumbnail) return;
     // The point whose basis curve is under the pointer in the plot.
     const hovered = points.findIndex((_, k) => info.hover === basisId(k));

@@ -5,7 +5,7 @@ import type { SurfaceModel } from './model';
 import { coordinateIndex } from './state';
 import { continuityName } from './notation';
 import { drawPresetMarks, tangentPlane } from './presetMarks';
-import { type Lift, drawPoints, scaled } from './spaceMarks';
+import { type Lift, drawPoints, scaled, weightDisc } from './spaceMarks';
 
 // Each scene's own construction over the patch, revealed step by step.
 
@@ -118,7 +118,8 @@ export function drawConstruction(
             : shown.is('columnShares')
               ? m.columnShares[j] / 4
               : m.weights[i][j];
-          if (shown.has('rowShares')) scene.dot(p, theme.accent, Math.max(1, unit * Math.sqrt(w)));
+          if (shown.has('rowShares'))
+            weightDisc(scene, painter, p, Math.max(1, unit * Math.sqrt(w)));
           if (shown.has('average'))
             scene.line(p, m.point, {
               color: theme.accent,

@@ -207,7 +207,7 @@ export const spaceFigure: KitFigure<SurfaceState, SurfaceModel> = {
     drawConstruction(scene, painter, m, info, up);
     scene.flush();
     if (shown.point) {
-      painter.dot(up(m.point), theme.accent, theme.sizes.point * 1.6);
+      painter.movingPoint(up(m.point), 1.6);
       if (!info.thumbnail)
         painter.label('P(u,v)', m.point, {
           dx: 12,

@@ -1,7 +1,7 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { Painter, StrokeStyle } from '../../render/painter';
 import type { SpaceScene } from '../../render/space';
-import { type Lift, drawPoints, scaled } from './spaceMarks';
+import { type Lift, drawPoints, scaled, weightDisc } from './spaceMarks';
 import type { SurfaceModel } from './model';
 
 // What the steps of the nets worth seeing (flat, saddle, bump, wave, not
@@ -14,7 +14,7 @@ function weightDots(scene: SpaceScene, painter: Painter, m: SurfaceModel, toPoin
   m.state.net.forEach((row, i) =>
     row.forEach((p, j) => {
       const w = m.weights[i][j];
-      scene.dot(p, theme.accent, Math.max(1, unit * Math.sqrt(w)));
+      weightDisc(scene, painter, p, Math.max(1, unit * Math.sqrt(w)));
       if (toPoint)
         scene.line(p, m.point, {
           color: theme.accent,

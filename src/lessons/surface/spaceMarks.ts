@@ -7,6 +7,22 @@ import type { SpaceScene } from '../../render/space';
 /** Lifts a point on the surface a hair towards the viewer (figure.ts's lift). */
 export type Lift = (p: readonly number[]) => Point;
 
+/**
+ * A weight's disc on a control point, its area the weight: under the point's
+ * handle when it is larger (seen round it), else over it with the handle's
+ * outline on top (under it, the handle hid the small weights of the edge).
+ */
+export function weightDisc(
+  scene: SpaceScene,
+  painter: Painter,
+  p: readonly number[],
+  radius: number,
+): void {
+  const accent = painter.theme.accent;
+  if (radius >= painter.theme.sizes.handle) scene.dot(p, accent, radius);
+  else painter.markOnHandle(p, accent, radius);
+}
+
 export const scaled = (p: readonly number[], s: number): Point => p.map((x) => x * s);
 
 /** Named points (c₀ … c₃, r₀ … r₃), each in its colour; `named` false leaves out the names. */

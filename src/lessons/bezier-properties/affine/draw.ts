@@ -41,7 +41,7 @@ export function drawAffine(painter: Painter, m: ModelOf<'affine'>, info: DrawInf
     });
   }
   if (shown.has('point')) {
-    painter.dot(m.point, theme.accent, theme.sizes.point * 1.3);
+    painter.movingPoint(m.point, 1.3);
     painter.dot(images.onMapped, mapped, theme.sizes.point * 1.4);
     painter.ring(images.imageOfPoint, theme.sizes.point * 1.8, {
       color: map,
