@@ -51,11 +51,11 @@ const phoneTheme = makeTheme(false, false);
 
 /**
  * A number no lecturer reads out: more than six decimals ("1.000000000000",
- * "0.9411764706") or a rounding residue in powers of ten ("2.69×10⁻¹⁶"). Null
+ * "0.9411764706") or a rounding residue in powers of ten ("2.69×10⁻¹⁶", "3.7e-15"). Null
  * when the text has none.
  */
 function unreadableNumber(text: string): string | null {
-  return /\d\.\d{7,}|×\s?10[⁻-]/.exec(text)?.[0] ?? null;
+  return /\d\.\d{7,}|×\s?10[⁻-]|\de[-+−]?\d/.exec(text)?.[0] ?? null;
 }
 
 /** A value gone wrong, as quality.spec reads the page: NaN, Infinity, "= undefined", "undefined,". */

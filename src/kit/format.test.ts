@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
+  smallNumber,
+  superscript,
   filled,
   fixed,
   sub,
@@ -79,5 +81,19 @@ describe('subscriptNames', () => {
     expect(subscriptNames('P(t), P(0), N(u), Pixels, Ping, Dmitri, a Pi(')).toBe(
       'P(t), P(0), N(u), Pixels, Ping, Dmitri, a Pi(',
     );
+  });
+});
+
+describe('smallNumber', () => {
+  // Written by hand, as a lecturer writes them: never "3.7e-15".
+  it('writes a power of ten with superscript digits and true minus signs', () => {
+    expect(smallNumber(3.7e-15)).toBe('3.7 × 10⁻¹⁵');
+    expect(smallNumber(-2.04e-6)).toBe('−2.0 × 10⁻⁶');
+    expect(smallNumber(0)).toBe('0');
+    expect(smallNumber(1.25e3)).toBe('1.3 × 10³');
+  });
+  it('superscript writes any whole number', () => {
+    expect(superscript(2)).toBe('²');
+    expect(superscript(-10)).toBe('⁻¹⁰');
   });
 });

@@ -39,3 +39,15 @@ export const RESIDUE = 1e-9;
  * written to four decimals.
  */
 export const texResidue = (v: number) => (Math.abs(v) < RESIDUE ? '0' : texNumber(v, 4));
+
+const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+/** A whole number as Unicode superscript digits (C², 10⁻¹⁵), for captions, labels and tables. */
+export const superscript = (n: number) =>
+  [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
+
+/** A tiny number as a person writes it: "0", or "3.6 × 10⁻¹⁵" (never "3.6e-15" or "0.0e+0"). */
+export function smallNumber(v: number): string {
+  if (v === 0) return '0';
+  const [mantissa, exponent] = v.toExponential(1).split('e');
+  return `${mantissa.replace('-', '−')} × 10${superscript(Number(exponent))}`;
+}

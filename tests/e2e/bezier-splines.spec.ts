@@ -50,7 +50,10 @@ test('the solved (3n+1) system gives the natural cubic spline’s control points
   await expect(
     page.getByRole('table', { name: 'The linear system' }).locator('tbody tr'),
   ).toHaveCount(10);
-  const residual = Number(await page.locator('output[aria-label="Residual"]').textContent());
+  const residualOutput = page.locator('output[aria-label="Residual"]');
+  // Read as a person reads it: 0, or a power of ten (3.6 × 10⁻¹⁶), never 3.6e-16.
+  await expect(residualOutput).toHaveText(/^(0|\d\.\d × 10⁻[¹²³⁴⁵⁶⁷⁸⁹⁰]+)$/);
+  const residual = Number(await residualOutput.getAttribute('data-exact'));
   expect(residual).toBeLessThan(1e-9);
 
   const p = points((await linkState(page)).p);

@@ -1,3 +1,4 @@
+import { texResidue } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import type { ConvertModel, LocalModel, PropertiesModel } from './model';
 import { blend, n3, pt } from './notation';
@@ -81,6 +82,6 @@ export const propertiesScript = script<BSplineState, PropertiesModel, Properties
     'affine',
     'Affine invariance: the curve of the mapped points is the mapped curve',
     ({ model: m }) =>
-      `\\max\\,\\lvert A(P(s)) - P_{AP}(s) \\rvert = ${m.properties.deviation.toExponential(1)}`,
+      `\\max\\,\\lvert A(P(s)) - P_{AP}(s) \\rvert = ${texResidue(m.properties.deviation)}`,
   ),
 );

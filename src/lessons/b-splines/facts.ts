@@ -1,4 +1,5 @@
 import type { RowSpec } from '../../app/liveTable';
+import { smallNumber } from '../../kit/format';
 import { texNumber } from '../../render/formula';
 import { derivativeName, smoothName } from './continuityScript';
 import type { BSplineModel } from './model';
@@ -28,7 +29,7 @@ export function facts(m: BSplineModel): RowSpec[] {
       const through =
         join.through === null
           ? ''
-          : `, through P${join.through}: distance ${Math.hypot(join.at[0] - s.points[join.through][0], join.at[1] - s.points[join.through][1]).toExponential(1)}`;
+          : `, through P${join.through}: distance ${smallNumber(Math.hypot(join.at[0] - s.points[join.through][0], join.at[1] - s.points[join.through][1]))}`;
       rows.push(
         row(
           `knot ${texNumber(join.u, 3)} ×${join.multiplicity}`,
@@ -58,18 +59,18 @@ function sceneFacts(m: BSplineModel): RowSpec[] {
       return [
         row('line × polygon', String(m.properties.crossings.polygon)),
         row('line × curve', String(m.properties.crossings.curve)),
-        row('affine: largest gap', m.properties.deviation.toExponential(1)),
+        row('affine: largest gap', smallNumber(m.properties.deviation)),
       ];
     case 'circle':
       return [
-        row('circle: largest |‖P − c‖ − r|', m.circle.deviation.toExponential(1)),
+        row('circle: largest |‖P − c‖ − r|', smallNumber(m.circle.deviation)),
         row('all weights 1: largest gap', num(m.circle.plainDeviation)),
       ];
     case 'projective':
       return m.projective.error
         ? []
         : [
-            row('H(P) vs NURBS of H(Pi), w′', m.projective.deviation.toExponential(1)),
+            row('H(P) vs NURBS of H(Pi), w′', smallNumber(m.projective.deviation)),
             row('H(P) vs old weights', num(m.projective.plainDeviation)),
           ];
     case 'meanings':

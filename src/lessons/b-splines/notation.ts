@@ -5,10 +5,7 @@ export const n3 = (v: number) => texNumber(v, 3);
 /** A point in a formula: two decimals. */
 export const pt = (p: readonly number[]) => texPoint(p, 2);
 
-const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
-/** A small whole number as Unicode superscript digits (C², C⁰), for captions and labels. */
-export const superscript = (n: number) =>
-  [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
+export { superscript } from '../../kit/format';
 
 /** A segment is named after its last control point, as the slides' c_i: Q_i blends P_{i−3} … P_i. */
 export const segmentName = (first: number) => `Q${first + 3}`;

@@ -1,4 +1,4 @@
-import { texNumber } from '../../kit/format';
+import { texNumber, texResidue } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import type { CircleModel, NurbsModel, ProjectiveModel } from './model';
 import { n3, pt } from './notation';
@@ -36,7 +36,7 @@ export const circleScript = script<BSplineState, CircleModel, CircleReveal>(
   step(
     'samples',
     'Sampled points of the curve lie on the circle, to rounding',
-    ({ model: m }) => `${circleGap} = ${m.circle.deviation.toExponential(1)}`,
+    ({ model: m }) => `${circleGap} = ${texResidue(m.circle.deviation)}`,
   ),
   step(
     'plain',
@@ -58,7 +58,7 @@ export const projectiveScript = script<BSplineState, ProjectiveModel, Projective
     ({ model: { projective: pr } }) =>
       pr.error
         ? null
-        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert P_{HP,\\,w'}(u) - H(P(u)) \\rvert = ${pr.deviation.toExponential(1)}`,
+        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert P_{HP,\\,w'}(u) - H(P(u)) \\rvert = ${texResidue(pr.deviation)}`,
   ),
   step(
     'oldWeights',

@@ -47,25 +47,3 @@ export function arrangements(): (key: string, nodes: () => readonly Node[]) => r
     return shown;
   };
 }
-
-const SUPERSCRIPTS: Record<string, string> = {
-  '-': '⁻',
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-};
-
-/** A tiny number as a person writes it: "0", or "3.6 × 10⁻¹⁵" (never "0.0e+0"). */
-export function smallNumber(v: number): string {
-  if (v === 0) return '0';
-  const [mantissa, exponent] = v.toExponential(1).split('e');
-  const power = [...String(Number(exponent))].map((c) => SUPERSCRIPTS[c]).join('');
-  return `${mantissa.replace('-', '−')} × 10${power}`;
-}

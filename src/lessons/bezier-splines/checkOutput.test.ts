@@ -106,7 +106,7 @@ describe('correct output passes', () => {
     const verdict = checkOutput(eigen.join('\n'), FOUR_POINTS, 'C2');
     expect(verdict.status).toBe('rounded');
     expect(verdict.summary).toMatch(
-      /^All 10 control points agree to the digits printed \(the largest difference, 2\.2e−6/,
+      /^All 10 control points agree to the digits printed \(the largest difference, 2\.2 × 10⁻⁶/,
     );
   });
 

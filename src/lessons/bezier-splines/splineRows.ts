@@ -1,4 +1,4 @@
-import { sub, words } from '../../kit/format';
+import { smallNumber, sub, words } from '../../kit/format';
 import {
   type Point,
   type SplineEquation,
@@ -57,10 +57,6 @@ export function agree(got: readonly Point[], expected: readonly Point[], slack?:
   );
 }
 
-/** A small amount as a reader writes it: 0.25, 3.2e−6. */
+/** A small amount as a reader writes it: 0.25, 3.2 × 10⁻⁶. */
 export const amount = (v: number) =>
-  Number.isNaN(v)
-    ? 'not a number'
-    : v !== 0 && Math.abs(v) < 1e-3
-      ? v.toExponential(1).replace('-', '−')
-      : words(v);
+  Number.isNaN(v) ? 'not a number' : v !== 0 && Math.abs(v) < 1e-3 ? smallNumber(v) : words(v);

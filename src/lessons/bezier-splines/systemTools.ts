@@ -1,3 +1,4 @@
+import { smallNumber } from '../../kit/format';
 import { dataTable, fmt, h, setChildren, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import type { BezierSplinesModel } from './model';
@@ -70,8 +71,11 @@ export function systemTools() {
           ],
         })),
       );
-      setText(residual, m.system.residual.toExponential(2));
-      setText(difference, m.difference.toExponential(2));
+      // Written as a lecturer writes it; the exact value stays on the element for scripts.
+      setText(residual, smallNumber(m.system.residual));
+      residual.dataset.exact = String(m.system.residual);
+      setText(difference, smallNumber(m.difference));
+      difference.dataset.exact = String(m.difference);
       const natural = [m.natural[0][0], ...m.natural.flatMap((seg) => seg.slice(1))];
       solution.set(
         controls.map((c, j) => ({

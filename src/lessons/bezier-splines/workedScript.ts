@@ -1,4 +1,4 @@
-import { sub, trimmed } from '../../kit/format';
+import { smallNumber, sub, trimmed } from '../../kit/format';
 import { repeat, script, step } from '../../kit/script';
 import { controlPointName, type Point } from '../../math';
 import { texPoint } from '../../render/formula';
@@ -204,8 +204,7 @@ export const worked = script<State, Model, WorkedReveal>(
     ({ state, model }) => {
       // How far the hand's numbers are from the whole system solved at once (the maths' solver).
       const off = model.worked.c2.solverDifference;
-      const agree =
-        off < 1e-12 ? 'they agree to 12 digits' : `they differ by ${off.toExponential(1)}`;
+      const agree = off < 1e-12 ? 'they agree to 12 digits' : `they differ by ${smallNumber(off)}`;
       return `computeSplineC2 returns the ${3 * pieces(state) + 1} control points in order: the C² spline, as the whole system solved at once (${agree})`;
     },
     // Five to a line: the figure keeps its room on the projector.

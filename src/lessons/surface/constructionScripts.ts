@@ -1,3 +1,4 @@
+import { texResidue } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import type { SurfaceModel } from './model';
 import { DOUBLE_SUM, num, point, pointAt } from './notation';
@@ -122,7 +123,7 @@ export const casteljauScript = script<SurfaceState, SurfaceModel, CasteljauRevea
       const a = uThenV.point;
       const b = vThenU.point;
       const gap = Math.max(...a.map((value, d) => Math.abs(value - b[d])));
-      return `\\text{u, then v: } ${point(a)},\\quad \\text{v, then u: } ${point(b)},\\quad \\text{largest difference } ${gap === 0 ? '0' : gap.toExponential(1)}`;
+      return `\\text{u, then v: } ${point(a)},\\quad \\text{v, then u: } ${point(b)},\\quad \\text{largest difference } ${texResidue(gap)}`;
     },
   ),
 );

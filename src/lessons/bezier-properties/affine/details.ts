@@ -1,6 +1,7 @@
 import { h, setText } from '../../../app/dom';
 import { LiveFormula, SLOT, texNumber } from '../../../render/formula';
-import { type ExperimentPanel, arrangements, smallNumber } from '../experimentPanel';
+import { type ExperimentPanel, arrangements } from '../experimentPanel';
+import { smallNumber } from '../../../kit/format';
 import type { ModelOf } from '../model';
 import { CENTRE, SHIFT } from './maps';
 

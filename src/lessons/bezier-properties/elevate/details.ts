@@ -1,13 +1,8 @@
 import { dataTable, h, setText } from '../../../app/dom';
 import { LiveRows } from '../../../app/liveTable';
 import { LiveFormula, formula } from '../../../render/formula';
-import {
-  type ExperimentPanel,
-  arrangements,
-  coords,
-  slotPoint,
-  smallNumber,
-} from '../experimentPanel';
+import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
+import { smallNumber } from '../../../kit/format';
 import type { ModelOf } from '../model';
 import { DEVIATION_SAMPLES } from './model';
 

@@ -1,7 +1,8 @@
 import { h } from '../../../app/dom';
 import { LiveFormula, SLOT } from '../../../render/formula';
 import { texT } from '../../../kit/format';
-import { type ExperimentPanel, coords, slotPoint, smallNumber } from '../experimentPanel';
+import { type ExperimentPanel, coords, slotPoint } from '../experimentPanel';
+import { smallNumber } from '../../../kit/format';
 import type { ModelOf } from '../model';
 import { SAMPLES } from './model';
 

@@ -2,7 +2,8 @@ import { h, setText } from '../../../app/dom';
 import { notesSlip } from '../../../kit/notes';
 import { LiveFormula, SLOT } from '../../../render/formula';
 import { texT } from '../../../kit/format';
-import { type ExperimentPanel, coords, slotPoint, smallNumber } from '../experimentPanel';
+import { type ExperimentPanel, coords, slotPoint } from '../experimentPanel';
+import { smallNumber } from '../../../kit/format';
 import type { ModelOf } from '../model';
 
 const P = slotPoint();
