@@ -43,3 +43,33 @@ describe('a point’s name moved from its first place', () => {
       expect(gap).toBeLessThanOrEqual(size);
     });
 });
+
+// A wide name near crowded ink: the shifts to its right ran past the
+// figure's edge and were pulled back inside, 170 px from its point, where
+// curvature parked "inflection: κ = 0" on the projector with nothing to say
+// whose it was. A spot the edge moves far is no spot beside the point.
+describe('a name the figure’s edge would carry away from its point', () => {
+  it('stays beside it, or is tied to it by a leader', () => {
+    const view = new Viewport(800, 400);
+    view.resize(800, 400);
+    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
+    painter.holdLabels();
+    const point = [0.75, 0.5];
+    const [x, y] = view.toScreen(point);
+    // Ink everywhere a label beside the point would stand, and no farther
+    // right than x = 440: only a spot pulled back from past the edge is clear.
+    for (let ly = 60; ly <= 340; ly += 8)
+      painter.polyline([view.toWorld([0, ly]), view.toWorld([440, ly])], { width: 2 });
+    painter.label('inflection: κ = 0', point, { dx: 12, dy: -12, bold: true });
+    painter.placeLabels();
+    const [name] = painter.labels;
+    expect(name.text).toBe('inflection: κ = 0');
+    const box = glyphBox(name);
+    const gap = Math.hypot(
+      Math.max(box.x - x, 0, x - box.x - box.width),
+      Math.max(box.y - y, 0, y - box.y - box.height),
+    );
+    expect(name.leader || gap <= painter.theme.sizes.label).toBe(true);
+  });
+});

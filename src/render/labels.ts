@@ -437,9 +437,15 @@ export function drawScreenLabel(
       [0, 2 * height],
     ];
     const named = !around && style.of ? spotsAround(...style.of, size * 0.3, total, size) : [];
+    // A spot the figure's edge would move far (a shift to the right of a wide
+    // label near the right edge) is no longer beside its point: left out, so
+    // "inflection: κ = 0" is not parked at the edge 170 px from its ring.
     const spots = (
       around ?? [...named, ...shifts.map(([dx, dy]) => [left + dx, middleY + dy])]
-    ).map(([l, m]) => inside(l, m));
+    ).flatMap(([l, m]): [number, number][] => {
+      const [il, im] = inside(l, m);
+      return Math.abs(il - l) > size || Math.abs(im - m) > size ? [] : [[il, im]];
+    });
     // None near: farther out, tied to its place by a leader line; failing
     // that, its own place if no label is there, else the nearest free one.
     const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];

@@ -148,9 +148,13 @@ function drawComb(painter: Painter, plane: PlaneModel): void {
 }
 
 function markPoint(painter: Painter, at: Point, text: string, labels: boolean): void {
+  // Dashed and unfilled: a solid ring of this size reads as one more control
+  // point's handle (the natural spline's five points looked like six).
+  const width = painter.theme.sizes.line;
   painter.ring(at, painter.theme.sizes.point * 2, {
     color: painter.theme.ink,
-    width: painter.theme.sizes.line,
+    width,
+    dash: [width * 2.5, width * 2],
   });
   // The κ plot marks the same t with "κ = 0" and the caption says what it is:
   // where the figure is crowded (a phone's) the ring stands without its words.
