@@ -36,7 +36,11 @@ export function drawHandles(
   // point where no line, point or other name runs through it.
   if (!painter.show.labels) return;
   // Each name goes nearer its own point than any other (P₃'s never beside P₄).
-  const rivals = handles.map((handle) => painter.view.toScreen(handle.position));
+  // and nearer it than the moving point (P₂'s name beside P(u) reads as P(u)'s).
+  const rivals = [
+    ...handles.map((handle) => painter.view.toScreen(handle.position)),
+    ...painter.moving,
+  ];
   for (const handle of handles) {
     if (handle.showLabel === false) continue;
     painter.label(handle.label, handle.position, {

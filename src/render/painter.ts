@@ -84,6 +84,8 @@ export class Painter {
    * about, drawn larger than a constructed point. A handle drawn over one hides it.
    */
   private accents: [number, number, number][] = [];
+  /** Where the moving points are (screen pixels): a handle's name must be nearer its own point. */
+  readonly moving: [number, number][] = [];
   /** The handles drawn so far, to outline again over a mark on one (markOnHandle). */
   private outlines: {
     x: number;
@@ -597,6 +599,7 @@ export class Painter {
    * While labels are held it waits for `drawAbove` (the handles call it).
    */
   movingPoint(p: P, scale = 1.5): void {
+    this.moving.push(this.view.toScreen(p) as [number, number]);
     this.aboveHandles(() => this.dot(p, this.theme.accent, this.sizes.point * scale));
   }
 

@@ -145,20 +145,23 @@ export function drawProjective(painter: Painter, m: ProjectiveModel, info: DrawI
 function weightHalos(painter: Painter, m: NurbsModel | CircleModel, info: DrawInfo): void {
   const theme = painter.theme;
   const pixels = 1 / painter.view.worldLength(1);
+  // Each weight is its point's: written round that point, nearer it than any other.
+  const rivals = m.state.points.map((p) => painter.view.toScreen(p) as [number, number]);
   m.weights.forEach((w, i) => {
     const point = m.state.points[i];
     const strong = haloIds.index(info.hover) === i;
+    const radius = haloRadius(w, m.rational.haloUnit) * pixels;
     painter.ring(
       point,
-      haloRadius(w, m.rational.haloUnit) * pixels,
+      radius,
       { color: theme.accent, width: strong ? theme.sizes.line * 1.5 : theme.sizes.thin },
       theme.accent,
       strong ? 0.2 : 0.12,
     );
     if (!info.thumbnail) {
       painter.label(`w_{${i}} = ${Number(w.toFixed(3))}`, point, {
-        dx: 12,
-        dy: 22,
+        around: Math.min(radius, theme.sizes.handle * 2),
+        rivals,
         color: theme.ink,
         halo: true,
         size: theme.sizes.label * 0.85,
