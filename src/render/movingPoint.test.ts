@@ -73,3 +73,28 @@ describe('the moving point', () => {
     expect(svg.toSvg(600, 400)).toContain(`fill="${theme.accent}"`);
   });
 });
+
+describe('a handle’s name beside the moving point', () => {
+  // b-splines NURBS at 1366 × 768: P₂'s name went beside the P(u) dot, and read as its name.
+  it('goes nearer its own point than the moving point', () => {
+    const { painter, view } = figure();
+    const own = [2, 1.5];
+    const [x, y] = view.toScreen(own);
+    const moving = view.toWorld([x + 69, y + 35]);
+    // Ink across the places above the point: the name must go to a side or below.
+    for (let ly = y - 90; ly <= y - 12; ly += 8)
+      painter.polyline([view.toWorld([x - 200, ly]), view.toWorld([x + 200, ly])], { width: 2 });
+    painter.movingPoint(moving, 1.6);
+    drawHandles(painter, [{ id: 'p2', label: 'P_2', position: own }]);
+    painter.placeLabels();
+    const [name] = painter.labels;
+    // Measured as the placer and the steps test measure a name: its whole box.
+    const box = name;
+    const to = ([px, py]: readonly number[]) =>
+      Math.hypot(
+        Math.max(box.x - px, 0, px - box.x - box.width),
+        Math.max(box.y - py, 0, py - box.y - box.height),
+      );
+    expect(to([x, y])).toBeLessThan(to(view.toScreen(moving)));
+  });
+});
