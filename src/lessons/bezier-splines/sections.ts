@@ -125,7 +125,7 @@ export function introductions(): Record<Part, HTMLElement> {
       h(
         'p',
         { class: 'note' },
-        'Each function returns its control points in order, one row each: computeSplineC1 2n + 1 rows (p₀, b₀, p₁, b₁, …, pₙ), computeSplineC2 3n + 1 rows (c₀ … c₃ₙ, a point every third). The numbers on each point in the figure are those rows.',
+        'Each function returns its control points in order, one row each: computeSplineC1 2n + 1 rows (p₀, b₀, p₁, b₁, …, pₙ), computeSplineC2 3n + 1 rows (c₀ … c₃ₙ, a point every third). In the figure each point carries its row’s name: p₀, b₀, p₁, … for computeSplineC1, the practical’s letters A, B, C, … for computeSplineC2.',
       ),
       notesSlip(
         'practical',

@@ -70,7 +70,10 @@ describe('the worked example: computeSplineC1 and computeSplineC2 by hand', () =
       /= 2\(4\.00,\\ 2\.50\) - \(1\.50,\\ 3\.75\) = \(6\.50,\\ 1\.25\)/,
     );
     // Three rows a line: rows 3 … 5, then row 6 alone.
-    expect(steps[5].formula).toMatch(/5\\!:\\ \(6\.50,\\ 1\.25\)\\\\&6\\!:\\ \(5\.00,\\ 0\.00\)/);
+    // Each row by its number and by its name in the figure (b₂, p₃).
+    expect(steps[5].formula).toMatch(
+      /5\\ \(b_\{2\}\)\\!:\\ \(6\.50,\\ 1\.25\)\\\\&6\\ \(p_\{3\}\)\\!:\\ \(5\.00,\\ 0\.00\)/,
+    );
   });
 
   it('shows the C² walk worked by hand: each control point in terms of B, then B', () => {
@@ -103,8 +106,13 @@ describe('the worked example: computeSplineC1 and computeSplineC2 by hand', () =
       '\\begin{aligned}&C = (0.22,\\ 2.00),\\quad E = (1.78,\\ 3.00),\\quad F = (3.22,\\ 3.00)\\\\&H = (4.78,\\ 2.00),\\quad I = (4.89,\\ 1.00)\\end{aligned}',
     );
     // Ten control points, five to a line; the solver's agreement is said in the caption.
-    expect(steps[12].formula).toMatch(/4\\!:\\ \(1\.78,\\ 3\.00\)\\\\&5\\!:/);
-    expect(steps[12].formula).toMatch(/quad 9\\!:\\ \(5\.00,\\ 0\.00\)\\end\{aligned\}$/);
+    // The practical's letters, as the figure labels the points: row 4 is E, row 9 is J.
+    expect(steps[12].formula).toMatch(
+      /4\\ \(\\text\{E\}\)\\!:\\ \(1\.78,\\ 3\.00\)\\\\&5\\ \(\\text\{F\}\)\\!:/,
+    );
+    expect(steps[12].formula).toMatch(
+      /quad 9\\ \(\\text\{J\}\)\\!:\\ \(5\.00,\\ 0\.00\)\\end\{aligned\}$/,
+    );
     expect(steps[12].caption).toMatch(
       /as the whole system solved at once \(they agree to 12 digits\)$/,
     );

@@ -6,6 +6,7 @@ import type { BezierSplinesModel } from './model';
 import { pressItems, presses } from './presses';
 import type { BezierSplinesState } from './state';
 import type { InTermsOfB } from './workedExample';
+import { type SplineKind, rowName } from './splineRows';
 
 /** What the steps of the worked example reveal, by name. */
 export type WorkedReveal =
@@ -60,8 +61,23 @@ const c1Names = (n: number) => {
     : `${all.slice(0, 4).join(',\\ ')},\\ \\dots,\\ ${all.slice(-2).join(',\\ ')}`;
 };
 
-/** Each row of a function's output with its row number, as the checker below numbers them. */
-const rows = (output: readonly Point[]) => lines(output.map((q, j) => `${j}\\!:\\ ${pt(q)}`));
+/**
+ * A row of a function's output: its number, as the checker below numbers
+ * them, and its name as the figure labels that point (p₀, b₀, … for C¹; the
+ * practical's letters A, B, … for C²).
+ */
+const row = (q: Point, j: number, kind: SplineKind, n: number) => {
+  const name = rowName(j, kind, n);
+  const tex =
+    kind === 'C1'
+      ? `${name[0]}_{${(j - (j % 2)) / 2}}`
+      : name.length === 1
+        ? `\\text{${name}}`
+        : `c_{${j}}`;
+  return `${j}\\ (${tex})\\!:\\ ${pt(q)}`;
+};
+const rows = (output: readonly Point[], n: number) =>
+  lines(output.map((q, j) => row(q, j, 'C1', n)));
 
 /** The inner joints a press of the C² walk covers. */
 const jointsOf = (s: State, press: number) => pressItems(pieces(s) - 1, press);
@@ -117,7 +133,7 @@ export const worked = script<State, Model, WorkedReveal>(
     'c1Output',
     ({ state }) =>
       `computeSplineC1 returns the ${2 * pieces(state) + 1} control points in this order, numbered from row 0`,
-    ({ model }) => aligned(rows(model.worked.c1.output)),
+    ({ model, state }) => aligned(rows(model.worked.c1.output, pieces(state))),
   ),
   step(
     'c2Count',
@@ -208,10 +224,10 @@ export const worked = script<State, Model, WorkedReveal>(
       return `computeSplineC2 returns the ${3 * pieces(state) + 1} control points in order: the C² spline, as the whole system solved at once (${agree})`;
     },
     // Five to a line: the figure keeps its room on the projector.
-    ({ model }) =>
+    ({ model, state }) =>
       aligned(
         lines(
-          model.worked.c2.controls.map((q, j) => `${j}\\!:\\ ${pt(q)}`),
+          model.worked.c2.controls.map((q, j) => row(q, j, 'C2', pieces(state))),
           5,
         ),
       ),
