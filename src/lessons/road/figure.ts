@@ -1,6 +1,7 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
-import { nearestOnBezierPieces } from '../../math';
+import { bezierPoint, nearestOnBezierPieces } from '../../math';
+import { drawInset } from '../../render/inset';
 import type { Painter } from '../../render/painter';
 import {
   drawFixedGradients,
@@ -91,9 +92,35 @@ function drawMethodRoad(painter: Painter, m: RoadModel, shown: ShownRoad, info: 
   }
   drawMethodAids(painter, m, info);
   if (info.thumbnail) return;
+  if (!shown.missing) drawLoopInset(painter, m, shown);
   if (shown.ticks) drawParameterTicks(painter, shown.ticks);
   drawMarkerLabel(painter, m);
   if (m.mapNotes.length) drawFigureNote(painter, m.mapNotes);
+}
+
+/**
+ * Two villages on one spot: the segment between them has length zero but a
+ * unit of p̄, and the road makes a small loop there, under the two handles
+ * (about 60 px on the projector). It is drawn again, magnified, in an inset.
+ */
+function drawLoopInset(painter: Painter, m: RoadModel, shown: ShownRoad): void {
+  const v = m.state.villages;
+  const i = v.findIndex((p, k) => k + 1 < v.length && p[0] === v[k + 1][0] && p[1] === v[k + 1][1]);
+  const loop = i >= 0 ? shown.cubics[i] : undefined;
+  if (!loop) return;
+  const samples = Array.from({ length: 33 }, (_, k) => bezierPoint(loop, k / 32));
+  const xs = samples.map((q) => q[0]);
+  const ys = samples.map((q) => q[1]);
+  const region = {
+    minX: Math.min(...xs),
+    maxX: Math.max(...xs),
+    minY: Math.min(...ys),
+    maxY: Math.max(...ys),
+  };
+  drawInset(painter, { region, avoid: v }, (inset) => {
+    drawRoadway(inset, shown.cubics, painter.color(4), true);
+    for (const p of v) inset.handle(p);
+  });
 }
 
 /** Step 0: the villages alone, in the order the road will visit them, faintly. */
