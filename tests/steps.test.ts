@@ -262,6 +262,10 @@ describe('every step of every scene, as the room sees it', () => {
           // phone: a caption that says "on the left" or "the plot below" is wrong on one.
           const place = caption.match(PLACE_ON_SCREEN);
           if (place) found.push(`${scene.id} step ${k}: the caption says “${place[0]}”`);
+          // A caption is plain words and Unicode: a TeX subscript's underscore is read out as one.
+          const texInCaption = caption.match(/\w_\{?\w+\}?|\\[a-z]+/);
+          if (texInCaption)
+            found.push(`${scene.id} step ${k}: the caption writes “${texInCaption[0]}”`);
           const digits = unreadableNumber(caption);
           if (digits) found.push(`${scene.id} step ${k}: the caption writes ${digits}`);
           const formula = steps.formula?.(lesson.derive(state), state);

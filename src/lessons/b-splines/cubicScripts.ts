@@ -43,7 +43,7 @@ export const convertScript = script<BSplineState, ConvertModel, ConvertReveal>(
   step('curve', 'The uniform cubic B-spline'),
   step(
     'bezier',
-    'The segment under the cursor as a Bézier curve: G_Bez = M_Bez⁻¹ · M_B · G_B',
+    'The segment under the cursor as a Bézier curve: its four Bézier points from its four B-spline points',
     ({ model: m }) => {
       const [a, b, c, d] = fourNames(m);
       const bez = m.beziers[m.segment];
@@ -53,7 +53,7 @@ export const convertScript = script<BSplineState, ConvertModel, ConvertReveal>(
   step('beziers', 'Every segment as a Bézier curve: neighbours share their end points'),
   step(
     'back',
-    'And back: M_B⁻¹ · M_Bez · G_Bez gives the four B-spline points again',
+    'And back: the four Bézier points give the four B-spline points again',
     ({ model: m }) => {
       const [a, b, c, d] = fourNames(m);
       const back = m.back;
