@@ -22,13 +22,22 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
     drawSegments(painter, m, info);
   }
   if (shown.has('joins')) {
-    // Clear of the control points and of their handles' labels (up and right of each).
-    const step = painter.view.worldLength(16);
-    const avoid = points.flatMap((x) => [x, [x[0] + step, x[1] + step]]);
+    // Each name round its joint, nearer it than any other joint or control
+    // point: placed clear of one list of points, P(u₄) and P(u₅) stood 170 px
+    // off, each nearer the other's joint.
+    const radius = theme.sizes.point * 1.3;
+    const rivals = [...m.knotPoints.map((k) => k.at), ...points].map(
+      (p) => painter.view.toScreen(p) as [number, number],
+    );
     for (const k of m.knotPoints) {
-      painter.dot(k.at, theme.ink, theme.sizes.point * 1.3);
+      painter.dot(k.at, theme.ink, radius);
       if (!info.thumbnail)
-        painter.labelClear(`P(u_{${k.index}})`, k.at, avoid, { color: theme.ink, halo: true });
+        painter.label(`P(u_{${k.index}})`, k.at, {
+          around: radius + theme.sizes.line,
+          rivals,
+          color: theme.ink,
+          halo: true,
+        });
     }
   }
   const joinRing = theme.sizes.handle * 1.9;
