@@ -86,6 +86,8 @@ export class Painter {
   private accents: [number, number, number][] = [];
   /** Where the moving points are (screen pixels): a handle's name must be nearer its own point. */
   readonly moving: [number, number][] = [];
+  /** A mark waits to go on a handle (markOnHandle): the handles' outlines are kept for it. */
+  private marksOnHandles = false;
   /** The handles drawn so far, to outline again over a mark on one (markOnHandle). */
   private outlines: {
     x: number;
@@ -512,7 +514,8 @@ export class Painter {
     const shape = style.shape ?? 'circle';
     const fill = state === 'drag' ? stroke : this.theme.handleFill;
     const width = Math.max(2, this.sizes.line * 1.2);
-    this.outlines.push({ x, y, r, stroke, width, shape });
+    // Kept only where a mark waits to go on a handle: road's 500 handles pay nothing.
+    if (this.marksOnHandles) this.outlines.push({ x, y, r, stroke, width, shape });
     if (this.stamper === undefined) this.stamper = HandleStamper.for(c);
     // A stamp needs only the alpha saved (a save and restore of the whole state costs more).
     if (this.stamper && state === 'idle') {
@@ -609,6 +612,7 @@ export class Painter {
    * seen (under the handle, its fill hid the mark).
    */
   markOnHandle(p: P, color: string, radius: number): void {
+    this.marksOnHandles = true;
     this.aboveHandles(() => {
       this.dot(p, color, radius);
       const [x, y] = this.view.toScreen(p);
