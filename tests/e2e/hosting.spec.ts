@@ -106,10 +106,17 @@ test('after one visit to the gallery, every lesson opens offline with its formul
     .locator('a.card')
     .evaluateAll((cards) => cards.map((c) => c.getAttribute('data-slug')!));
   expect(slugs.length).toBeGreaterThan(0);
-  // The worker stores every file of the build when it installs.
+  // The worker stores every file of the build when it installs. `ready` comes
+  // when it activates; it controls this page only once its clients.claim() has
+  // run, and the lessons below open in this same page (a change of hash), so
+  // wait for that too: before it, one run in three fetched a lesson past the
+  // worker, offline.
   await page.evaluate(async () => {
     await navigator.serviceWorker.ready;
   });
+  await expect
+    .poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null))
+    .toBe(true);
   const cdp = await context.newCDPSession(page);
   await cdp.send('Network.clearBrowserCache');
   await context.setOffline(true);
