@@ -9,6 +9,9 @@
  * - no label's letters crossed by a stroke or a disc, drawn before it or
  *   after (the painter's own record of its ink), and no label on another;
  * - every handle of the step inside its figure;
+ * - the subject (the strokes of role 'curve') not buried under handles: at
+ *   most 35% of it hidden across its whole width (a road through 50
+ *   villages was 81–94% hidden, through 500 all of it);
  * - every point's name nearer its own point than any other, on the projector
  *   and on a phone (P₃'s name beside P₄ is read as P₄'s);
  * - numbers to sensible digits on the figures, in the caption and in the
@@ -32,6 +35,7 @@ import { drawHeadless } from '../src/app/headless';
 import { filled } from '../src/render/formula';
 import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
+import { subjectUnderHandles } from '../src/render/buried';
 import type { Painter } from '../src/render/painter';
 import { presenterSizes, stacked } from './presenterLayout';
 
@@ -41,6 +45,8 @@ const AREA = { width: 1900, height: 840 };
 /** Presenter sizes at 1920 × 1080 (issue #19): any text on a figure, and a point's label. */
 const MIN_TEXT = 28;
 const MIN_POINT_LABEL = 36;
+/** The most of the subject (a curve, a road) its handles may cover: it must still be seen. */
+const BURIED = 0.35;
 /**
  * The figures' share of a phone held upright (360 × 740): one under another,
  * 344 px wide and about 450 px between them (measured on the page: curvature's
@@ -150,6 +156,11 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
         if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
       }
     problems.push(...namedElsewhere(painter.labels, onScreen).map((p) => at + ' ' + p));
+    const buried = subjectUnderHandles(painter.ink);
+    if (buried > BURIED)
+      problems.push(
+        `${at} the curve lies under handles for ${(buried * 100).toFixed(0)}% of its length`,
+      );
     for (const [x, y] of painter.underHandles)
       problems.push(`${at} a handle hides the point at (${x.toFixed(0)}, ${y.toFixed(0)})`);
     for (const handle of handles) {

@@ -28,8 +28,14 @@ export interface Handle {
   shape?: 'circle' | 'square' | 'diamond';
   /** Draw the label beside the handle (default true). */
   showLabel?: boolean;
-  /** Draw it at half size, so hundreds of points do not hide what they shape (it is picked as usual). */
+  /** Draw it at half size, so many points do not hide what they shape (it is picked as usual). */
   small?: boolean;
+  /**
+   * Draw it as a dot narrower than a curve, for one of hundreds of points on
+   * the curve they shape (a road through 500 villages): the curve stays seen
+   * on either side of it. It is picked as usual, and full size while held.
+   */
+  dot?: boolean;
   /**
    * For handles stacked on one spot: the world direction in which pulling
    * picks this one (e.g. a repeated knot: [1, 0] for the one on the right).

@@ -25,7 +25,10 @@ export class Ink {
   private segs = new Float64Array(STRIDE * 256);
   private count = 0;
   private readonly discs: number[] = [];
-  /** The handles among the discs (x, y, radius): what a person drags must never be covered. */
+  /**
+   * The handles among the discs (x, y, radius with a margin, radius as drawn):
+   * what a person drags must never be covered.
+   */
   private readonly handleDiscs: number[] = [];
   private readonly areas: Box[] = [];
   /** Lines under the drawing (see rule), four numbers each. */
@@ -36,6 +39,8 @@ export class Ink {
   private indexed = 0;
   /** Segments too long to index cell by cell (a point a million away): always tested. */
   private readonly long: number[] = [];
+  /** Runs of segments [from, to) that draw the figure's subject (a stroke of role 'curve'). */
+  readonly subjectRuns: number[] = [];
 
   /** How many segments were recorded (for tests). */
   get segments(): number {
@@ -56,6 +61,23 @@ export class Ink {
     this.segs[k + 2] = x2;
     this.segs[k + 3] = y2;
     this.segs[k + 4] = halfWidth;
+  }
+
+  /** The segments recorded since `from` draw the subject: what handles must not bury. */
+  subject(from: number): void {
+    if (this.count > from) this.subjectRuns.push(from, this.count);
+  }
+
+  /** Segment i as [x1, y1, x2, y2, half width] (for tests). */
+  segmentAt(i: number): [number, number, number, number, number] {
+    const k = STRIDE * i;
+    const s = this.segs;
+    return [s[k], s[k + 1], s[k + 2], s[k + 3], s[k + 4]];
+  }
+
+  /** The handles' discs, flat (x, y, radius with a margin, radius as drawn) (for tests). */
+  get handles(): readonly number[] {
+    return this.handleDiscs;
   }
 
   /** A polyline from interleaved screen coordinates [x0, y0, x1, y1, …]. */
@@ -94,17 +116,17 @@ export class Ink {
   }
 
   /** A handle's disc: ink like any disc, and also what no box may cover. */
-  handle(x: number, y: number, radius: number): void {
+  handle(x: number, y: number, radius: number, drawn = radius): void {
     if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(radius))) return;
     this.discs.push(x, y, radius);
-    this.handleDiscs.push(x, y, radius);
+    this.handleDiscs.push(x, y, radius, drawn);
   }
 
   /** How many handles the box covers. */
   handlesUnder(b: Box): number {
     const h = this.handleDiscs;
     let n = 0;
-    for (let i = 0; i < h.length; i += 3) if (discMeetsBox(h[i], h[i + 1], h[i + 2], b)) n++;
+    for (let i = 0; i < h.length; i += 4) if (discMeetsBox(h[i], h[i + 1], h[i + 2], b)) n++;
     return n;
   }
 

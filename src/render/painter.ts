@@ -55,6 +55,8 @@ export interface HandleStyle {
   shape?: HandleShape;
   state?: HandleState;
   radius?: number;
+  /** The width of its outline (default: a little over a line's). */
+  ring?: number;
 }
 
 /** How far outside the figure drawing still reaches (pixels): thick strokes and arrow heads. */
@@ -220,7 +222,9 @@ export class Painter {
     c.beginPath();
     if (clipPolyline(xy, this.clip, c) > 0) c.stroke();
     c.restore();
+    const from = this.ink.segments;
     if (style.role !== 'grid') this.ink.polyline(xy, (style.width ?? this.sizes.curve) / 2);
+    if (style.role === 'curve') this.ink.subject(from);
   }
 
   /** A polyline from interleaved 2D coordinates [x0, y0, x1, y1, …]: for big samples. */
@@ -254,6 +258,7 @@ export class Painter {
     let pen: [number, number] | null = null;
     let drawn = false;
     const q = new Array<number>(8);
+    const from = this.ink.segments;
     for (const seg of segments) {
       if (!this.view.affine) {
         drawn = this.flattenedCubic(seg, (style.width ?? this.sizes.curve) / 2) || drawn;
@@ -276,6 +281,7 @@ export class Painter {
     }
     if (drawn) c.stroke();
     c.restore();
+    if (style.role === 'curve') this.ink.subject(from);
   }
 
   /** A cubic seen through a projection that bends lines (perspective): drawn as 48 chords. */
@@ -508,12 +514,13 @@ export class Painter {
     if (!circleVisible(x, y, r * 2, this.clip)) return;
     for (const [ax, ay, ar] of this.accents)
       if (ar < r * 1.5 && Math.hypot(ax - x, ay - y) < r) this.underHandles.push([ax, ay]);
-    this.ink.handle(x, y, r * (style.shape === 'diamond' ? 1.3 : 1) + this.sizes.line);
+    const width = style.ring ?? Math.max(2, this.sizes.line * 1.2);
+    const outer = r * (style.shape === 'diamond' ? 1.3 : 1);
+    this.ink.handle(x, y, outer + this.sizes.line, outer + width / 2);
     const c = this.ctx;
     const stroke = style.color ?? this.theme.handleStroke;
     const shape = style.shape ?? 'circle';
     const fill = state === 'drag' ? stroke : this.theme.handleFill;
-    const width = Math.max(2, this.sizes.line * 1.2);
     // Kept only where a mark waits to go on a handle: road's 500 handles pay nothing.
     if (this.marksOnHandles) this.outlines.push({ x, y, r, stroke, width, shape });
     if (this.stamper === undefined) this.stamper = HandleStamper.for(c);

@@ -29,7 +29,7 @@ const declared = pointList<RoadState>({
  * things differ from the kit's list, and are kept from before:
  * - each village keeps its own label, even on one spot as another (the notes
  *   say what villages on one spot do); with many villages none is labelled
- *   and each is a small dot. (The kit's labels for points on one spot compare
+ *   and each is a dot inside the road's width. (The kit's labels for points on one spot compare
  *   every pair: 150 ms for the 500 villages of the valley, on every edit.)
  * - a new village, wherever it comes from, is kept to 0.01 like a dragged one;
  * - "Add a village" puts the new one beyond the last into the nearest
@@ -44,7 +44,7 @@ export const villagePoints: PointList<RoadState> = {
       label: name(i),
       position,
       showLabel: few,
-      small: !few,
+      dot: !few,
     }));
   },
   add: (state, at) => declared.add(state, roundPoint(at)),

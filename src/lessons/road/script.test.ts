@@ -136,11 +136,9 @@ describe('the villages, declared once', () => {
       ['P_{2}', true],
       ['P_{3}', true],
     ]);
-    // Beyond 40 villages they are small and unlabelled.
+    // Beyond 40 villages they are dots on the road, unlabelled.
     const many = map.handles!(derive(state({ villages: valleyVillages(41) })));
-    expect(many.filter((h) => h.id.startsWith('p')).every((h) => h.small && !h.showLabel)).toBe(
-      true,
-    );
+    expect(many.filter((h) => h.id.startsWith('p')).every((h) => h.dot && !h.showLabel)).toBe(true);
   });
 
   it('a new village is kept to 0.01 and goes into the nearest stretch of road', () => {

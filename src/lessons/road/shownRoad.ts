@@ -1,11 +1,17 @@
 import { type Point, bezierPieceBoxes, bezierPoint } from '../../math';
+import { LABEL_VILLAGES } from './points';
 import { type CurvatureComb, curvatureComb, parameterTicks } from './roadMarks';
 import { type Road, asCubics } from './roads';
 import { type SolveProgress, builtPieces } from './solve';
 import { type RoadState, segmentCount } from './state';
 
-/** Up to this many segments the ticks of p̄ are worked out (and drawn). */
-const TICK_SEGMENTS = 60;
+/**
+ * Up to this many segments the ticks of p̄ are worked out (and drawn): beyond,
+ * a segment is too short on the map for its quarters to be told apart (50
+ * villages: 26 px in presenter view, a tick every 6 px), and the villages'
+ * dots mark where each segment begins.
+ */
+const TICK_SEGMENTS = LABEL_VILLAGES;
 
 /** The road as the map shows it: the finished road, or the pieces the solve has built so far. */
 export interface ShownRoad {
