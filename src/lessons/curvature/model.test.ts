@@ -208,6 +208,23 @@ describe('the κ plot of a spline without a cusp', () => {
 });
 
 describe('the κ plot’s marks', () => {
+  it('says κ = 0 once where the cursor stands on the inflection', async () => {
+    const { drawHeadless } = await import('../../app/headless');
+    const { makeTheme } = await import('../../render/theme');
+    const { plotFigure } = await import('./plotFigure');
+    const theme = makeTheme(false, true);
+    const count = (t: number) => {
+      const m = derive({ ...scene('inflection'), step: 6, t });
+      const { painter } = drawHeadless(plotFigure, m, { width: 1900, height: 330, theme });
+      return painter.labels.filter((l) => /^κ = 0$/.test(l.text.trim())).length;
+    };
+    // The S curve's inflection is at t = 1/2 (its control points are symmetric
+    // about their centre): the value column says κ = 0 and the line goes unnamed.
+    expect(count(0.5)).toBe(1);
+    // Elsewhere the line is named and the column says the cursor's κ.
+    expect(count(0.3)).toBe(1);
+  });
+
   it('names each κ = 0 line beside it, inside the plot: the last one on its left', async () => {
     const { drawHeadless } = await import('../../app/headless');
     const { makeTheme } = await import('../../render/theme');

@@ -167,18 +167,23 @@ function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnai
   const theme = painter.theme;
   const { part } = m.state;
   const { shown } = m;
-  const vertical = (t: number, text: string) => {
+  const vertical = (t: number, text: string | null) => {
     painter.segment([t, bounds.minY], [t, bounds.maxY], {
       color: theme.muted,
       width: theme.sizes.thin,
       dash: [4, 4],
     });
-    if (!thumbnail) lineName(painter, t, bounds, text, { color: theme.muted, halo: true });
+    if (!thumbnail && text) lineName(painter, t, bounds, text, { color: theme.muted, halo: true });
   };
   if (part === 'plane') drawJoins(painter, m, bounds, thumbnail);
   if (part === 'joins') drawJoinMarks(painter, m, bounds, thumbnail);
   if (part === 'plane' && shown.has('inflections')) {
-    for (const t of m.plane!.inflections) vertical(t, 'κ = 0');
+    // At the cursor the value column already says "κ = 0": the line is not named twice.
+    const [cursor] = painter.view.toScreen([m.state.t * pieces(m), 0]);
+    const atCursor = (t: number) => Math.abs(painter.view.toScreen([t, 0])[0] - cursor) < 1;
+    for (const t of m.plane!.inflections)
+      if (atCursor(t)) vertical(t, null);
+      else vertical(t, 'κ = 0');
     for (const t of m.plane!.cusps) vertical(t, t === 0 || t === pieces(m) ? 'P′ = 0' : 'cusp');
   }
   if (part === 'space' && shown.has('flips')) for (const t of m.space.flips) vertical(t, 'flip');

@@ -68,17 +68,26 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
     if (inSpace && shown.has('frames'))
       for (const frame of space.along)
         drawFrame(scene, painter, frame, 0.6 * unit, theme.sizes.thin);
-    if (inSpace && shown.has('flips'))
-      for (const t of space.flips) {
-        const p = space.curve[Math.round(t * (space.curve.length - 1))];
-        scene.dot(p, theme.ink, theme.sizes.point * 1.4);
-        if (labels)
-          scene.label('frame flips: κ → 0', p, { halo: true, bold: true, dx: 10, dy: -12 });
-      }
+    const flips =
+      inSpace && shown.has('flips')
+        ? space.flips.map((t) => space.curve[Math.round(t * (space.curve.length - 1))])
+        : [];
+    for (const p of flips) scene.dot(p, theme.ink, theme.sizes.point * 1.4);
     // P(t) over the handles, and so over the scene: at t = 0 it is Q₀.
     painter.movingPoint(at.point, 1.3);
     if (labels) scene.label('P(t)', at.point, { halo: true, dx: -12, dy: 22, align: 'right' });
     scene.flush();
+    // Each flip's name on whichever side of its dot the frames leave clear;
+    // where they leave none it is left out, not boxed over the frames it is
+    // about: the κ, τ plot names the flip's t too, and the caption says it.
+    if (labels)
+      for (const p of flips)
+        painter.label('frame flips: κ → 0', p, {
+          halo: true,
+          bold: true,
+          around: theme.sizes.point * 1.4 + theme.sizes.line,
+          optional: true,
+        });
     // The frame at t goes over everything: it is what the step talks about.
     if (part === 'space' || part === 'plane') {
       const frame = {
