@@ -272,7 +272,9 @@ describe('the continuity scene', () => {
     const state = { ...scene, step: k };
     const tex = steps.formula!(lesson.derive(state), state)!;
     // A column per derivative: P, P′ and P″ agree, P‴ does not; the left and right values in rows.
-    expect(tex).toContain("P'\\!:\\ = & P''\\!:\\ = & P'''\\!:\\ \\ne");
+    expect(tex).toContain(
+      "P(5^-) = P(5^+) & P'(5^-) = P'(5^+) & P''(5^-) = P''(5^+) & P'''(5^-) \\ne P'''(5^+)",
+    );
     expect(tex).toMatch(
       /u \\to 5\^- & [^\\]*\\ [^&]*& [^&]*& \(0\.50,\\ 2\.00\) & \(1\.00,\\ 6\.00\)/,
     );

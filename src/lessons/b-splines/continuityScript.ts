@@ -71,9 +71,12 @@ export function joinTex(m: ContinuityModel): string {
   const c = words(check.u);
   // One column per derivative, left and right under it: three rows whatever
   // the degree, so the figure keeps its room on the projector.
-  const heads = check.left.map(
-    (_, r) => `${derivativeTex(r)}\\!:\\ ${check.agree[r] ? '=' : '\\ne'}`,
-  );
+  // Each head says whether the column's two values agree, as the figure names
+  // them: P′(5⁻) ≠ P′(5⁺) ("P : =" was read as "P is defined as").
+  const heads = check.left.map((_, r) => {
+    const d = derivativeTex(r);
+    return `${d}(${c}^-) ${check.agree[r] ? '=' : '\\ne'} ${d}(${c}^+)`;
+  });
   const side = (values: typeof check.left) => values.map((v) => pt(v)).join(' & ');
   const smooth =
     check.smooth === Infinity
