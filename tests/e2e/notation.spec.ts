@@ -147,7 +147,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   );
 });
 
-test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\frac), nor P0 or N(i,2) in prose, at the last step of any scene', async ({
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0 or N(i,2) in prose, at the last step of any scene', async ({
   page,
 }) => {
   test.setTimeout(240_000);
@@ -179,7 +179,7 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, \\fra
       });
       for (const { text, prose } of texts) {
         const code =
-          /\^\(|\^\{|_\{|\\[a-zA-Z]{2,}/.exec(text) ??
+          /\^\(|\^\{|_\{|[A-Za-z]_\w|\\[a-zA-Z]{2,}/.exec(text) ??
           (prose
             ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/.exec(
                 text,

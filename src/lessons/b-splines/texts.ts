@@ -21,7 +21,7 @@ export const TEXTS: Record<Part, { title: string; text: string }> = {
   },
   convert: {
     title: 'B-spline ↔ Bézier, segment by segment',
-    text: 'Each segment is a cubic, so it is also a Bézier curve: G_Bez = M_Bez⁻¹ · M_B · G_B gives its four Bézier points from its four B-spline points, and M_B⁻¹ · M_Bez gives them back. The end point of a segment, (P(i−1) + 4Pi + P(i+1))/6, is shared with the next one.',
+    text: 'Each segment is a cubic, so it is also a Bézier curve: its four B-spline points, multiplied by the B-spline matrix and then by the inverse of the Bézier matrix, give its four Bézier points, and the inverse product gives them back. The end point of a segment, (P(i−1) + 4Pi + P(i+1))/6, is shared with the next one.',
   },
   properties: {
     title: 'Properties',
