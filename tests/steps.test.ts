@@ -263,10 +263,10 @@ describe('every step of every scene, as the room sees it', () => {
           const { svg, problems } = drawStep(lesson, state);
           for (const problem of [...problems, ...namesOnPhone(lesson, state)])
             found.push(`${scene.id} step ${k}: ${problem}`);
-          // The caption names points as the figure labels them: P₁, not P1.
+          // The caption names points as the figure labels them: P₁, not P1; y₃, not y3.
           const caption = steps.describe(state, k);
           const plain = caption.match(
-            /(?<![A-Za-z])(?:[PDBQLH]\d|[PDBQLHNux]\([ijkmnr](?:[+−]\d+)?(?:,\s?\w+)?\)|[PDBQLH][ijkmn]\b)/,
+            /(?<![A-Za-z])(?:[PDBQLH]\d|[xy]\d\b|[PDBQLHNux]\([ijkmnr](?:[+−]\d+)?(?:,\s?\w+)?\)|[PDBQLH][ijkmn]\b)/,
           );
           if (plain) found.push(`${scene.id} step ${k}: the caption writes “${plain[0]}”`);
           // Figures sit side by side on a wide screen and one under another on a

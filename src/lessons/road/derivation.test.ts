@@ -159,7 +159,7 @@ describe('the derivation scene', () => {
       'p = \\frac{\\bar p - \\bar p_{2}}{\\bar p_{3} - \\bar p_{2}} = \\frac{2.40 - 2}{3 - 2} = 0.40',
     );
     expect(steps.describe(at(8), 8)).toBe(
-      "Collect the D's: D₁ + 4D₂ + D₃ = 3(y3 − y1), the row of P₂ in the system",
+      'Collect the D’s: D₁ + 4D₂ + D₃ = 3(y₃ − y₁), the row of P₂ in the system',
     );
   });
 

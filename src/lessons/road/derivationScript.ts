@@ -1,3 +1,4 @@
+import { sub } from '../../kit/subscripts';
 import { filled, words } from '../../kit/format';
 import { repeat, script, step } from '../../kit/script';
 import type { StepAt } from '../../kit/script';
@@ -37,7 +38,7 @@ const joined = (name: DerivationStep & Reveal, caption: (at: At) => string) =>
 export const derivationScript = script<RoadState, RoadModel, Reveal>(
   derived('villages', ({ state }) => {
     const m = state.villages.length - 1;
-    return `The ${m + 1} villages P0 … P${m} and their heights y0 … y${m}; x is worked out the same way`;
+    return `The ${m + 1} villages P0 … P${m} and their heights y₀ … y${sub(m)}; x is worked out the same way`;
   }),
   derived(
     'pieces',
@@ -71,16 +72,16 @@ export const derivationScript = script<RoadState, RoadModel, Reveal>(
   }),
   joined('row', ({ model }) => {
     const j = joinOf(model);
-    return `Collect the D's: D${j - 1} + 4D${j} + D${j + 1} = 3(y${j + 1} − y${j - 1}), the row of P${j} in the system`;
+    return `Collect the D’s: D${j - 1} + 4D${j} + D${j + 1} = 3(y${sub(j + 1)} − y${sub(j - 1)}), the row of P${j} in the system`;
   }),
   derived(
     'start',
     () =>
-      'The natural end at P0: y″ = 0 where segment 0 starts, so c₀ = 0 and 2D0 + D1 = 3(y1 − y0)',
+      'The natural end at P0: y″ = 0 where segment 0 starts, so c₀ = 0 and 2D0 + D1 = 3(y₁ − y₀)',
   ),
   derived('end', ({ state }) => {
     const m = state.villages.length - 1;
-    return `The natural end at P${m}: y″ = 0 where segment ${m - 1} ends, so D${m - 1} + 2D${m} = 3(y${m} − y${m - 1})`;
+    return `The natural end at P${m}: y″ = 0 where segment ${m - 1} ends, so D${m - 1} + 2D${m} = 3(y${sub(m)} − y${sub(m - 1)})`;
   }),
   derived('system', ({ state }) => {
     const m = state.villages.length - 1;
