@@ -155,7 +155,9 @@ function drawStep(lesson: AnyLesson, state: unknown): Drawn {
         const h = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
         if (w > 1 && h > 1) problems.push(`${at} “${a.text}” on “${b.text}”`);
       }
-    problems.push(...namedElsewhere(painter.labels, onScreen).map((p) => at + ' ' + p));
+    problems.push(
+      ...namedElsewhere(painter.labels, [...onScreen, ...painter.named]).map((p) => at + ' ' + p),
+    );
     const buried = subjectUnderHandles(painter.ink);
     if (buried > BURIED)
       problems.push(
@@ -234,9 +236,10 @@ function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
       theme: phoneTheme,
     });
     const onScreen = handles.map((h) => view.toScreen(h.position));
-    return [...crossedLabels(painter, onScreen), ...namedElsewhere(painter.labels, onScreen)].map(
-      (p) => `phone ${figure.id}: ${p}`,
-    );
+    return [
+      ...crossedLabels(painter, onScreen),
+      ...namedElsewhere(painter.labels, [...onScreen, ...painter.named]),
+    ].map((p) => `phone ${figure.id}: ${p}`);
   });
 }
 

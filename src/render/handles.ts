@@ -46,12 +46,10 @@ export function drawHandles(
   // The names after every handle is down: each goes to the first side of its
   // point where no line, point or other name runs through it.
   if (!painter.show.labels) return;
-  // Each name goes nearer its own point than any other (P₃'s never beside P₄).
-  // and nearer it than the moving point (P₂'s name beside P(u) reads as P(u)'s).
-  const rivals = [
-    ...handles.map((handle) => painter.view.toScreen(handle.position)),
-    ...painter.moving,
-  ];
+  // Each name goes nearer its own point than any other (P₃'s never beside P₄),
+  // and the placer keeps it nearer than the figure's named points too (P₂'s
+  // name beside P(u) reads as P(u)'s, P₃'s beside B₂ as B₂'s).
+  const rivals = handles.map((handle) => painter.view.toScreen(handle.position));
   for (const handle of handles) {
     if (handle.showLabel === false) continue;
     painter.label(handle.label, handle.position, {

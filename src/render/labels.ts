@@ -31,7 +31,9 @@ export interface LabelStyle {
   around?: number;
   /**
    * Other named points on screen (pixels). A label placed `around` its point
-   * goes only where it is nearer its own point than any of these, so P₃'s name
+   * goes only where it is nearer its own point than any of these, and than
+   * any point the figure names (`Painter.namedPoint`) or handle it has
+   * drawn, so P₃'s name
    * beside P₄ is never read as P₄'s; failing that it goes farther out on a
    * leader line from its point.
    */
@@ -416,7 +418,14 @@ export function drawScreenLabel(
       boxed,
     ) &&
     (!boxed || open(l, m));
-  const rivals = around ? style.rivals : undefined;
+  // A name kept nearer its point than its rivals is kept nearer it than every
+  // named point of the figure too (P(u), B₂) and every handle drawn (a line's
+  // L₁ beside AP₀), wherever in the drawing they are.
+  const rivals = around && style.rivals ? [...style.rivals, ...painter.named] : undefined;
+  if (rivals) {
+    const h = painter.ink.handles;
+    for (let i = 0; i < h.length; i += 4) rivals.push([h[i], h[i + 1]]);
+  }
   const own = (l: number, m: number) =>
     !rivals || nearestIsOwn({ x: l, y: m - size * 0.65, width: total, height }, x, y, rivals);
   const clear = (l: number, m: number) => unmarked(l, m) && own(l, m);

@@ -86,8 +86,12 @@ export class Painter {
    * about, drawn larger than a constructed point. A handle drawn over one hides it.
    */
   private accents: [number, number, number][] = [];
-  /** Where the moving points are (screen pixels): a handle's name must be nearer its own point. */
-  readonly moving: [number, number][] = [];
+  /**
+   * Points named on the figure that are not handles (screen pixels): the
+   * moving point, a constructed point with a name (B₂). A handle's name must
+   * be nearer its own point than any of them (P₃'s beside B₂ reads as B₂'s).
+   */
+  readonly named: [number, number][] = [];
   /** A mark waits to go on a handle (markOnHandle): the handles' outlines are kept for it. */
   private marksOnHandles = false;
   /** The handles drawn so far, to outline again over a mark on one (markOnHandle). */
@@ -609,8 +613,15 @@ export class Painter {
    * While labels are held it waits for `drawAbove` (the handles call it).
    */
   movingPoint(p: P, scale = 1.5): void {
-    this.moving.push(this.view.toScreen(p) as [number, number]);
+    this.namedPoint(p);
     this.aboveHandles(() => this.dot(p, this.theme.accent, this.sizes.point * scale));
+  }
+
+  /** A point the figure names that is not a handle: the handles' names keep nearer their own. */
+  namedPoint(p: P): [number, number] {
+    const at = this.view.toScreen(p) as [number, number];
+    this.named.push(at);
+    return at;
   }
 
   /**

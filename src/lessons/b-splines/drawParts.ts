@@ -109,16 +109,21 @@ export function drawMarks(
   info: DrawInfo,
 ): void {
   const theme = painter.theme;
+  const radius = theme.sizes.point * 1.1;
+  // Named marks are rivals of the handles' names, and of each other's: each
+  // name goes on the side of its own mark, nearer it than any other mark or
+  // handle (the placer adds the handles and the figure's other named points).
+  const rivals = labels && !info.thumbnail ? points.map((p) => painter.namedPoint(p)) : [];
   points.forEach((point, k) => {
-    painter.dot(point, color, theme.sizes.point * 1.1);
+    painter.dot(point, color, radius);
     const text = labels?.[k];
     if (text && !info.thumbnail) {
       painter.label(text, point, {
-        dx: 8,
-        dy: 16,
+        around: radius + theme.sizes.line,
         color,
         halo: true,
         size: theme.sizes.label * 0.85,
+        rivals,
       });
     }
   });
