@@ -75,7 +75,7 @@ export class Ink {
     return [s[k], s[k + 1], s[k + 2], s[k + 3], s[k + 4]];
   }
 
-  /** The handles' discs, flat (x, y, radius with a margin, radius as drawn) (for tests). */
+  /** The handles' discs, flat (x, y, radius with a margin, radius as drawn): a name's rivals, and tests'. */
   get handles(): readonly number[] {
     return this.handleDiscs;
   }

@@ -32,10 +32,9 @@ export interface LabelStyle {
   /**
    * Other named points on screen (pixels). A label placed `around` its point
    * goes only where it is nearer its own point than any of these, and than
-   * any point the figure names (`Painter.namedPoint`) or handle it has
-   * drawn, so P₃'s name
-   * beside P₄ is never read as P₄'s; failing that it goes farther out on a
-   * leader line from its point.
+   * any point the figure names (`Painter.namedPoint`) or handle it has drawn,
+   * so P₃'s name beside P₄ is never read as P₄'s; failing that it goes
+   * farther out on a leader line from its point.
    */
   rivals?: readonly (readonly [number, number])[];
   /** It stays where it is put (an axis number at its tick), or is left out. */
