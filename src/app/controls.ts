@@ -225,19 +225,37 @@ export class StepControl {
     if (key === this.reservedFor) return;
     this.reservedFor = key;
     cancelAnimationFrame(this.reserveFrame);
+    this.reserveFrame = 0;
+    // Not on the page yet (a page still mounting on a busy machine): tried
+    // again frame by frame, else the scene kept no room and its figures shrank
+    // at its first long step (phone.spec, once in a fresh-clone run).
+    let tries = 0;
     const measure = () => {
-      if (this.reservedFor === key) this.holdTallest(texts);
+      this.reserveFrame = 0;
+      if (this.reservedFor !== key || this.holdTallest(texts) || ++tries > MEASURE_TRIES) return;
+      this.reserveFrame = requestAnimationFrame(measure);
     };
     if (this.status.isConnected) measure();
     else this.reserveFrame = requestAnimationFrame(measure);
   }
 
-  /** `texts` is asked for only where the status can grow: each derives every step's model. */
-  private holdTallest(texts: () => readonly string[]): void {
+  /** A scene's room is still to be measured: the page is not settled. */
+  get measuring(): boolean {
+    return this.reserveFrame !== 0;
+  }
+
+  /**
+   * `texts` is asked for only where the status can grow: each derives every
+   * step's model. False when the status is not on the page yet, so nothing
+   * could be measured; true when it is measured, or has nothing to hold (it
+   * is clamped, or hidden as in presenter view).
+   */
+  private holdTallest(texts: () => readonly string[]): boolean {
     const status = this.status;
     status.style.minHeight = '';
+    if (!status.isConnected) return false;
     const style = getComputedStyle(status);
-    if (style.maxHeight !== 'none' || !status.getClientRects().length) return;
+    if (style.maxHeight !== 'none' || !status.getClientRects().length) return true;
     const twin = h('div', { class: 'step-status-twin', 'aria-hidden': 'true' });
     Object.assign(twin.style, {
       width: style.width,
@@ -258,5 +276,9 @@ export class StepControl {
     // for a reader, a search or a test to find beside the status.
     twin.remove();
     status.style.minHeight = `${Math.ceil(tallest)}px`;
+    return true;
   }
 }
+
+/** Frames a scene's room waits for its status to be on the page (two seconds at 60 Hz). */
+const MEASURE_TRIES = 120;

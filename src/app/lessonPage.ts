@@ -610,6 +610,8 @@ export class LessonPage<S, M> {
         typesetWaiting() ||
         // Formula fonts still on their way: the caption and the figure beside it change size when they come.
         document.fonts?.status === 'loading' ||
+        // The room a scene holds for its longest step, measured once the status is laid out.
+        this.walker.steps?.measuring === true ||
         this.panelState !== this.store.state ||
         this.drawnState !== this.store.state;
       // The state is final: the link it would write in a moment is written now

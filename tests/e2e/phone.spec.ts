@@ -143,6 +143,38 @@ test.describe('a student with a phone in hand', () => {
     await expect(page.locator('[data-scene="quadratic"]')).toHaveAttribute('aria-pressed', 'true');
   });
 
+  test('a scene opened while the step line is off the page still keeps room for its longest step', async ({
+    page,
+  }) => {
+    // A page mounting late on a busy machine: the step line joins the page
+    // some frames after the scene opens. The room for the scene's longest step
+    // is measured once it is there (measured only on the next frame, the scene
+    // kept none, and its figures shrank at its first long step).
+    await page.goto('./#/hermite?scene=one&step=0');
+    await settled(page);
+    const held = await page.evaluate(async () => {
+      const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+      const steps = document.querySelector('.steps')!;
+      const [parent, next] = [steps.parentNode!, steps.nextSibling];
+      steps.remove();
+      document.querySelector<HTMLButtonElement>('button[data-scene="long"]')!.click();
+      for (let i = 0; i < 6; i++) await frame();
+      parent.insertBefore(steps, next);
+      for (let i = 0; i < 3; i++) await frame();
+      return steps.querySelector<HTMLElement>('.step-status')!.style.minHeight;
+    });
+    await settled(page);
+    expect(held).toMatch(/^\d+px$/);
+    // The figures keep that size from step 0 to the scene's longest step.
+    const first = await figureSizes(page);
+    const next = page.getByRole('button', { name: 'Next ▶' });
+    for (let k = 1; k <= 7; k++) {
+      await next.tap();
+      await settled(page);
+      expect(await figureSizes(page), `step ${k}`).toBe(first);
+    }
+  });
+
   test('a tapped point offers its Delete button, and the point goes', async ({ page }) => {
     await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0&step=0');
     const proxy = page.locator('[data-handle="p1"]');
