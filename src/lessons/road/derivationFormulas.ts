@@ -86,18 +86,18 @@ export function derivationFormula(
       if (j === null) return null;
       const D = c.gradients;
       const left = D[j - 1] + 4 * D[j] + D[j + 1];
-      return tex`D_{${j - 1}} + 4D_{${j}} + D_{${j + 1}} = 3(${v}_{${j + 1}} - ${v}_{${j - 1}}):\quad ${number(D[j - 1])} + 4${bracket(D[j])} + ${term(D[j + 1])} = ${live(texNumber(left, 4))} = 3(${place(c.values[j + 1])} - ${place(c.values[j - 1])})`;
+      return tex`D_{${j - 1}} + 4D_{${j}} + D_{${j + 1}} = 3(${v}_{${j + 1}} - ${v}_{${j - 1}}):\quad ${number(D[j - 1])} + 4${bracket(D[j])} + ${term(D[j + 1])} = ${live(trimmed(left, 4))} = 3(${place(c.values[j + 1])} - ${place(c.values[j - 1])})`;
     }
     case 'start': {
       const D = c.gradients;
       const left = 2 * D[0] + D[1];
-      return tex`${v}''_0(0) = 2c_0 = 0 \;\Rightarrow\; 2D_0 + D_1 = 3(${v}_1 - ${v}_0):\quad 2${bracket(D[0])} + ${term(D[1])} = ${live(texNumber(left, 4))} = 3(${place(c.values[1])} - ${place(c.values[0])})`;
+      return tex`${v}''_0(0) = 2c_0 = 0 \;\Rightarrow\; 2D_0 + D_1 = 3(${v}_1 - ${v}_0):\quad 2${bracket(D[0])} + ${term(D[1])} = ${live(trimmed(left, 4))} = 3(${place(c.values[1])} - ${place(c.values[0])})`;
     }
     case 'end': {
       const D = c.gradients;
       const i = m - 1;
       const left = D[i] + 2 * D[m];
-      return tex`${v}''_{${i}}(1) = 2c_{${i}} + 6d_{${i}} = 0 \;\Rightarrow\; D_{${i}} + 2D_{${m}} = 3(${v}_{${m}} - ${v}_{${i}}):\quad ${number(D[i])} + 2${bracket(D[m])} = ${live(texNumber(left, 4))} = 3(${place(c.values[m])} - ${place(c.values[i])})`;
+      return tex`${v}''_{${i}}(1) = 2c_{${i}} + 6d_{${i}} = 0 \;\Rightarrow\; D_{${i}} + 2D_{${m}} = 3(${v}_{${m}} - ${v}_{${i}}):\quad ${number(D[i])} + 2${bracket(D[m])} = ${live(trimmed(left, 4))} = 3(${place(c.values[m])} - ${place(c.values[i])})`;
     }
     case 'system':
       return systemFormula(c, m);
