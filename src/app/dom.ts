@@ -29,12 +29,13 @@ export function h<K extends keyof HTMLElementTagNameMap>(
 }
 
 /**
- * Elements of running prose: a paragraph, an item, a heading. Their text names
- * points as the figures label them, P₀ … Pₘ and Nᵢ,₂, whatever the lesson
- * wrote (P0 … Pm, N(i,2)). Tables, buttons and accessible names keep the
- * plain names a screen reader spells out and a row is found by.
+ * Elements of running prose, and a table's cells: a paragraph, an item, a
+ * heading, a cell. Their text names points as the figures label them, P₀ … Pₘ
+ * and Nᵢ,₂, whatever the lesson wrote (P0 … Pm, N(i,2)): a table's "P0" beside
+ * the figure's P₀ read as another name. Buttons and accessible names keep the
+ * plain names a screen reader spells out.
  */
-const PROSE = new Set(['P', 'LI', 'H2', 'H3', 'H4', 'SUMMARY', 'FIGCAPTION']);
+const PROSE = new Set(['P', 'LI', 'H2', 'H3', 'H4', 'SUMMARY', 'FIGCAPTION', 'TD', 'TH']);
 
 export function append(parent: Node, children: (Child | readonly Child[])[]): void {
   for (const child of children.flat()) {
@@ -60,7 +61,14 @@ const asShown = (element: Node, text: string) =>
   PROSE.has(element.nodeName) ? subscriptNames(text) : text;
 
 /** Unicode subscript runs: ₀–₉ and the letters and signs `subscriptNames` writes. */
-const INDEX_RUN = /([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+)/;
+const SUBSCRIPT_RUN = /^[₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+$/;
+
+/**
+ * An index as `indexedRuns` splits it out: a run of Unicode subscripts, or the
+ * capital N of the last point or gradient, P_N, P_{N−1}, D_N, which Unicode has
+ * no subscript for (the lesson writes PN, PN−1).
+ */
+const INDEX_RUN = /([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+|(?<=(?<![A-Za-z])[PD])N(?:−1)?(?![\p{L}\d(]))/u;
 
 /** Elements whose text may hold spans (not an option's, a text area's or an SVG text's). */
 const indexable = (node: Node): node is HTMLElement =>
@@ -78,7 +86,8 @@ function indexedRuns(text: string): (Node | string)[] {
     .map((run, i) => {
       if (i % 2 === 0) return run;
       const index = document.createElement('span');
-      index.className = 'index';
+      // A letter is set smaller and lowered, as a subscript glyph is drawn.
+      index.className = SUBSCRIPT_RUN.test(run) ? 'index' : 'index-letter';
       index.textContent = run;
       return index;
     })

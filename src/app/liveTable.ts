@@ -3,6 +3,7 @@
  * elements, and each frame writes only the texts, classes and swatch colours
  * that changed, instead of building the table again.
  */
+import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
@@ -89,7 +90,8 @@ export class LiveRows implements Unseen {
 
   private fill(live: LiveCell, cell: string | Cell): void {
     const { text, swatch } = typeof cell === 'string' ? { text: cell, swatch: undefined } : cell;
-    setIndexedText(live.text, text);
+    // A cell names points as the figure does (P₀, not P0): see dom.ts' PROSE.
+    setIndexedText(live.text, subscriptNames(text));
     if (swatch && !live.swatch) {
       live.swatch = h('span', { class: 'swatch' });
       live.element.prepend(live.swatch);

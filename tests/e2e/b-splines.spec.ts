@@ -58,7 +58,7 @@ test('clamped knots interpolate the end points; a knot of multiplicity p passes 
 
   await openScene(page, 'Repeated knots', 'repeated');
   const join = await value(page, /^knot 1\.000 ×3/).innerText();
-  expect(join).toMatch(/^C0, through P3: distance /);
+  expect(join).toMatch(/^C0, through P₃: distance /);
   expect(written(join.split('distance ')[1])).toBeLessThan(1e-12);
 });
 
@@ -86,7 +86,7 @@ test('the Cox–de Boor triangle: its last row sums to 1 and matches bsplineBasi
   await expectHash(page, 'k', (v) => v === '6');
   const knots = (await linkState(page)).u.split(',').map(Number);
   const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
-    name: /^N\(i,3\)/,
+    name: /^Nᵢ,₃/,
   });
   const number = page.getByRole('spinbutton', { name: 't value' });
   for (const t of [0, 0.137, 0.5, 0.77, 1]) {
@@ -212,7 +212,7 @@ test('the uniform cubic bases, derived row by row on the equally spaced knots: t
   const stepFormula = page.locator('.step-formulas .katex-html');
   await expect(stepFormula).toContainText('t=u−u4=0.600');
   const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
-    name: /^N\(i,3\)/,
+    name: /^Nᵢ,₃/,
   });
   const cells = (await lastRow.locator('td').allInnerTexts()).slice(1).map(Number);
   const nonZero = cells.filter((v) => v > 0);

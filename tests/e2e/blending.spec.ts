@@ -113,7 +113,7 @@ test('hovering a weight row highlights its control point in both figures', async
   const plotBefore = await pixels(page, 'blending');
   const row = page
     .getByRole('table', { name: 'Weights at μ', exact: true })
-    .getByRole('row', { name: /^P2/ });
+    .getByRole('row', { name: /^P₂/ });
   await row.hover();
   await expect(row).toHaveClass(/current/);
   await expect.poll(() => pixels(page, 'curve')).not.toBe(curveBefore);

@@ -56,7 +56,7 @@ test('the clicker builds the construction from the points up, then opens the nex
   await expect(status(page)).toHaveText(
     'Step 0/5: The 4 control points P₀ … P₃, and nothing else yet',
   );
-  await expect(row(page, 'P1,0')).toContainText('—');
+  await expect(row(page, 'P₁,₀')).toContainText('—');
   const points = await pixels(page);
   await page.keyboard.press('PageDown');
   await expect(status(page)).toHaveText(
@@ -66,15 +66,15 @@ test('the clicker builds the construction from the points up, then opens the nex
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('Step 2/5: Level 1:');
   // P1,0 = 0.4·P0 + 0.6·P1 = (0.6, 1.2) at t = 0.6 (Figure 5's).
-  await expect(row(page, 'P1,0')).toContainText('0.6000');
-  await expect(row(page, 'P1,0')).toContainText('1.2000');
-  await expect(row(page, 'P2,0')).toContainText('—');
+  await expect(row(page, 'P₁,₀')).toContainText('0.6000');
+  await expect(row(page, 'P₁,₀')).toContainText('1.2000');
+  await expect(row(page, 'P₂,₀')).toContainText('—');
   await page.keyboard.press('PageDown');
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('Step 4/5: Level 3: one point is left');
   // P(0.6) = 0.064·P0 + 0.288·P1 + 0.432·P2 + 0.216·P3 = (2.448, 1.44).
-  await expect(row(page, 'P3,0')).toContainText('2.4480');
-  await expect(row(page, 'P3,0')).toContainText('1.4400');
+  await expect(row(page, 'P₃,₀')).toContainText('2.4480');
+  await expect(row(page, 'P₃,₀')).toContainText('1.4400');
   await page.keyboard.press('PageDown');
   await expect(status(page)).toContainText('traces the Bézier curve');
   await snapshot(page, 'de-casteljau-traced');
@@ -99,7 +99,7 @@ test('the slider and the number field move t', async ({ page }) => {
   await slider.fill('0.75');
   await expectHash(page, 't', (v) => v === '0.75');
   // P(0.75) = 1/64·P0 + 9/64·P1 + 27/64·P2 + 27/64·P3 → x = (9 + 81 + 108)/64
-  await expect(row(page, 'P3,0')).toContainText((198 / 64).toFixed(4));
+  await expect(row(page, 'P₃,₀')).toContainText((198 / 64).toFixed(4));
   const number = page.getByRole('spinbutton', { name: 't value' });
   await number.fill('0.25');
   await number.press('Enter');
@@ -113,16 +113,16 @@ test('subdivision lists both halves legibly, even for many points', async ({ pag
   const halves = page.getByRole('table', { name: 'Control points of the two halves' });
   // At t = 0.6: P1,0 = (0.6, 1.2), P1,1 = 0.4·(1, 2) + 0.6·(3, 2) = (2.2, 2), and
   // P2,0 = 0.4·(0.6, 1.2) + 0.6·(2.2, 2) = (1.56, 1.68), the left half's third point.
-  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('1.5600');
-  await expect(halves.getByRole('row', { name: /^Left P2,0 / })).toContainText('1.6800');
+  await expect(halves.getByRole('row', { name: /^Left P₂,₀ / })).toContainText('1.5600');
+  await expect(halves.getByRole('row', { name: /^Left P₂,₀ / })).toContainText('1.6800');
   // Its right half ends at P3: (4, 0), named P0,3.
-  await expect(halves.getByRole('row', { name: /^Right P0,3 / })).toContainText('4.0000');
+  await expect(halves.getByRole('row', { name: /^Right P₀,₃ / })).toContainText('4.0000');
   for (let i = 0; i < 6; i++)
     await page.getByRole('button', { name: 'Add a control point' }).click();
   await expectHash(page, 'p', (v) => v.split(';').length === 10);
   await expect(halves.getByRole('row')).toHaveCount(1 + 2 * 10);
   const size = await halves
-    .getByRole('row', { name: /^Right P0,9 / })
+    .getByRole('row', { name: /^Right P₀,₉ / })
     .evaluate((r) => parseFloat(getComputedStyle(r).fontSize));
   expect(size).toBeGreaterThanOrEqual(12);
   await snapshot(page, 'de-casteljau-subdivision');

@@ -159,12 +159,12 @@ test('the basis cursor shows H0…H3 at μ and what each weighs', async ({ page 
   // At μ = 1/2: H0 = H1 = 1/2, H2 = 1/8, H3 = −1/8.
   const weights = page.getByRole('table', { name: 'Hermite weights at μ' });
   for (const [k, value, weighs] of [
-    [0, '0.5000', 'P0'],
-    [1, '0.5000', 'P1'],
-    [2, '0.1250', 'D0'],
-    [3, '-0.1250', 'D1'],
+    [0, '0.5000', 'P₀'],
+    [1, '0.5000', 'P₁'],
+    [2, '0.1250', 'D₀'],
+    [3, '-0.1250', 'D₁'],
   ]) {
-    const row = weights.getByRole('row', { name: new RegExp(`^H${k} `) });
+    const row = weights.getByRole('row', { name: new RegExp(`^H${'₀₁₂₃'[Number(k)]} `) });
     await expect(row).toContainText(String(value));
     await expect(row).toContainText(String(weighs));
   }
@@ -184,7 +184,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
   await expect(page.getByRole('heading', { name: /^Patch 2 of 4/ })).toBeVisible();
   const joins = page.getByRole('table', { name: 'Joins' });
   for (const k of [1, 2, 3]) {
-    const row = joins.getByRole('row', { name: new RegExp(`^P${k} `) });
+    const row = joins.getByRole('row', { name: new RegExp(`^P${'₀₁₂₃'[k]} `) });
     await expect(row).toContainText(/C1|C2/);
   }
   // D2 = (P3 − P1) / 2 = ((6.5 − 2) / 2, (−1 − 2) / 2), drawn at P2 + D2/3.
@@ -239,8 +239,8 @@ test('the Bézier view lists B0…B3 at P ± D/3 and walks its own steps', async
   await expect(status).toHaveText('Step 6/6: P(μ) from either blend is one point');
   // P0 = (0, 0), D0 = (3, 4.5) → B1 = (1, 1.5); P1 = (4, 0), D1 = (3, −4.5) → B2 = (3, 1.5).
   const controls = page.getByRole('table', { name: 'Bézier control points' });
-  await expect(controls.getByRole('row', { name: /^B1 / })).toHaveText(/B1\s*1\.0000\s*1\.5000/);
-  await expect(controls.getByRole('row', { name: /^B2 / })).toHaveText(/B2\s*3\.0000\s*1\.5000/);
+  await expect(controls.getByRole('row', { name: /^B₁ / })).toHaveText(/B₁\s*1\.0000\s*1\.5000/);
+  await expect(controls.getByRole('row', { name: /^B₂ / })).toHaveText(/B₂\s*3\.0000\s*1\.5000/);
   expect(await pixels(page)).not.toBe(before);
   // B1 is the tip of D0's arrow; B2 = (3, 1.5) is D1's tip (5, −1.5) mirrored through P1 = (4, 0).
   await expect(page.getByRole('button', { name: /^D0 at \(1\.00, 1\.50\)/ })).toBeVisible();

@@ -89,7 +89,7 @@ test('once loaded, the app works offline', async ({ page, context }) => {
     page.getByRole('heading', { name: 'The de Casteljau construction', level: 1 }),
   ).toBeVisible();
   // P(0.6) of the first scene (Figure 5's t), worked by hand: (2.448, 1.44).
-  await expect(page.getByRole('row', { name: /^P3,0 / })).toContainText('2.4480');
+  await expect(page.getByRole('row', { name: /^P₃,₀ / })).toContainText('2.4480');
   await page.goto('./#/');
   await expect(page.getByRole('link', { name: /The de Casteljau construction/ })).toBeVisible();
   await context.setOffline(false);

@@ -21,7 +21,7 @@ test.beforeEach(async ({ page }) => {
 test('the table shows L_k(t) of the product formula, and they add up to 1', async ({ page }) => {
   const ts = [0, 0.25, 0.5, 0.75, 1];
   for (const k of ts.keys()) {
-    const row = weightsTable(page).getByRole('row', { name: new RegExp(`^L${k} `) });
+    const row = weightsTable(page).getByRole('row', { name: new RegExp(`^L${'₀₁₂₃₄'[k]} `) });
     await expect(row).toContainText(ts[k].toFixed(4));
     await expect(row).toContainText(lagrangeWeight(ts, k, 0.4).toFixed(4));
   }
@@ -33,7 +33,7 @@ test('the table shows L_k(t) of the product formula, and they add up to 1', asyn
   // Moving t with the slider moves the weights.
   await page.getByRole('slider', { name: 't' }).fill('0.9');
   await expectHash(page, 't', (v) => v === '0.9');
-  await expect(weightsTable(page).getByRole('row', { name: /^L4 / })).toContainText(
+  await expect(weightsTable(page).getByRole('row', { name: /^L₄ / })).toContainText(
     lagrangeWeight(ts, 4, 0.9).toFixed(4),
   );
 });
@@ -49,7 +49,7 @@ test('chord-length spacing gives t_k by the lengths of the polygon', async ({ pa
   const gaps = p.slice(1).map((q, i) => Math.hypot(q[0] - p[i][0], q[1] - p[i][1]));
   const total = gaps.reduce((a, b) => a + b, 0);
   const t2 = (gaps[0] + gaps[1]) / total;
-  await expect(weightsTable(page).getByRole('row', { name: /^L2 / })).toContainText(t2.toFixed(4));
+  await expect(weightsTable(page).getByRole('row', { name: /^L₂ / })).toContainText(t2.toFixed(4));
   expect(await pixels(page)).not.toBe(before);
   await snapshot(page, 'lagrange-chord');
 });
@@ -59,7 +59,7 @@ test('two equal neighbours with chord length: it says why and falls back to equa
 }) => {
   await page.goto('./#/lagrange?p=0,0;1,2;1,2;4,1&spacing=chord');
   await expect(page.getByText(/P₁ and P₂ are the same point, so chord length/)).toBeVisible();
-  await expect(weightsTable(page).getByRole('row', { name: /^L1 / })).toContainText('0.3333');
+  await expect(weightsTable(page).getByRole('row', { name: /^L₁ / })).toContainText('0.3333');
   await snapshot(page, 'lagrange-coincident-chord');
 });
 
@@ -151,8 +151,8 @@ test('points can be added and removed; two points give a line', async ({ page })
   await expect(page.getByRole('heading', { name: /^Degree 1,/ })).toBeVisible();
   await expect(page.getByRole('button', { name: 'Remove the last point' })).toBeDisabled();
   // At t = 0.5 both points weigh one half: P(0.5) is the midpoint.
-  await expect(weightsTable(page).getByRole('row', { name: /^L0 / })).toContainText('0.5000');
-  await expect(weightsTable(page).getByRole('row', { name: /^L1 / })).toContainText('0.5000');
+  await expect(weightsTable(page).getByRole('row', { name: /^L₀ / })).toContainText('0.5000');
+  await expect(weightsTable(page).getByRole('row', { name: /^L₁ / })).toContainText('0.5000');
 });
 
 test('the script reveals each Lₖ, then the polynomial, then opens the next scene at step 0', async ({

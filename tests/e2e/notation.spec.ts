@@ -147,7 +147,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   );
 });
 
-test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0 or N(i,2) in prose, at the last step of any scene', async ({
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0, PN or N(i,2) in prose or a table, at the last step of any scene', async ({
   page,
 }) => {
   test.setTimeout(240_000);
@@ -171,8 +171,8 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez
           const parent = n.parentElement!;
           if (parent.closest(skip) || parent.closest('[hidden]') || !parent.checkVisibility())
             continue;
-          // Prose (not a table, a button or a label) names points as the figures do.
-          const prose = !!parent.closest('p, li, h2, h3, h4, summary, figcaption');
+          // Prose and tables (not a button or a label) name points as the figures do.
+          const prose = !!parent.closest('p, li, h2, h3, h4, summary, figcaption, td, th');
           if (n.nodeValue!.trim()) texts.push({ text: n.nodeValue!, prose });
         }
         return texts;
@@ -181,7 +181,7 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez
         const code =
           /\^\(|\^\{|_\{|[A-Za-z]_\w|\\[a-zA-Z]{2,}/.exec(text) ??
           (prose
-            ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/.exec(
+            ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PD]N(?![\p{L}\d(])|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/u.exec(
                 text,
               )
             : null);
