@@ -38,7 +38,7 @@ for (const slug of Object.keys(sceneLinks)) {
         // not "D" with "ₖ" a gap away on a line of its own (a label laid out
         // as a row of boxes made each run of text and each index a box).
         const apart = new Set<string>();
-        for (const index of document.querySelectorAll<HTMLElement>('.index')) {
+        for (const index of document.querySelectorAll<HTMLElement>('.index, .index-letter')) {
           const before = index.previousSibling;
           if (!before || !index.checkVisibility({ visibilityProperty: true })) continue;
           if (index.closest('.katex-mathml, .visually-hidden, [aria-hidden="true"]')) continue;
