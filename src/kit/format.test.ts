@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import {
+  continuityName,
   smallNumber,
   superscript,
   filled,
@@ -95,5 +96,12 @@ describe('smallNumber', () => {
   it('superscript writes any whole number', () => {
     expect(superscript(2)).toBe('²');
     expect(superscript(-10)).toBe('⁻¹⁰');
+  });
+
+  it('continuityName raises the order, as the notes write C¹ and G²', () => {
+    expect(continuityName('C0')).toBe('C⁰');
+    expect(continuityName('C1')).toBe('C¹');
+    expect(continuityName('G2')).toBe('G²');
+    expect(continuityName('none')).toBe('none');
   });
 });

@@ -45,6 +45,16 @@ const SUPERSCRIPTS = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 export const superscript = (n: number) =>
   [...String(n)].map((c) => (c === '-' ? '⁻' : SUPERSCRIPTS[Number(c)])).join('');
 
+/**
+ * A continuity as the notes write it, its order raised: "C1" → "C¹", "G2" →
+ * "G²"; anything else ("none") as it is. For tables and captions of plain text.
+ */
+export const continuityName = (c: string) =>
+  c.replace(
+    /^([CG])(\d)$/,
+    (_, letter: string, order: string) => letter + superscript(Number(order)),
+  );
+
 /** A tiny number as a person writes it: "0", or "3.6 × 10⁻¹⁵" (never "3.6e-15" or "0.0e+0"). */
 export function smallNumber(v: number): string {
   if (v === 0) return '0';

@@ -185,7 +185,7 @@ test('Catmull-Rom: gradients from the neighbours, C1 joins measured on the patch
   const joins = page.getByRole('table', { name: 'Joins' });
   for (const k of [1, 2, 3]) {
     const row = joins.getByRole('row', { name: new RegExp(`^P${'₀₁₂₃'[k]} `) });
-    await expect(row).toContainText(/C1|C2/);
+    await expect(row).toContainText(/C¹|C²/);
   }
   // D2 = (P3 − P1) / 2 = ((6.5 − 2) / 2, (−1 − 2) / 2), drawn at P2 + D2/3.
   const p = list((await linkState(page)).p);

@@ -179,7 +179,7 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez
       });
       for (const { text, prose } of texts) {
         const code =
-          /\^\(|\^\{|_\{|[A-Za-z]_\w|\\[a-zA-Z]{2,}/.exec(text) ??
+          /\^\(|\^\{|_\{|[A-Za-z]_\w|\\[a-zA-Z]{2,}|(?<![\p{L}\d])[CG][0-2](?![\d,])/u.exec(text) ??
           (prose
             ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PD]N(?![\p{L}\d(])|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/u.exec(
                 text,

@@ -1,5 +1,5 @@
 import type { RowSpec } from '../../app/liveTable';
-import { smallNumber } from '../../kit/format';
+import { smallNumber, superscript } from '../../kit/format';
 import { texNumber } from '../../render/formula';
 import { derivativeName, smoothName } from './continuityScript';
 import type { BSplineModel } from './model';
@@ -33,7 +33,7 @@ export function facts(m: BSplineModel): RowSpec[] {
       rows.push(
         row(
           `knot ${texNumber(join.u, 3)} ×${join.multiplicity}`,
-          `${join.continuity < 0 ? 'jump' : `C${join.continuity}`}${through}`,
+          `${join.continuity < 0 ? 'jump' : `C${superscript(join.continuity)}`}${through}`,
           join.continuity <= 0 ? 'current' : '',
         ),
       );

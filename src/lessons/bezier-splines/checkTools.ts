@@ -85,7 +85,7 @@ export function datasetDownloads(api: Api): HTMLElement {
   );
 }
 
-/** "Check your computeSplineC1/C2 output": paste, choose the spline and the points, read what differs and why. */
+/** "Check your computeSplineC1 or computeSplineC2 output": paste, choose the spline and the points, read what differs and why. */
 export function checkTools(api: Api) {
   const check = () => run(api.get());
   const spline = choices('bs-check-spline', 'Spline', SPLINES, 'C2', check);
@@ -138,7 +138,7 @@ export function checkTools(api: Api) {
   const element = h(
     'section',
     { 'aria-labelledby': 'bs-check-title' },
-    h('h3', { id: 'bs-check-title' }, 'Check your computeSplineC1/C2 output'),
+    h('h3', { id: 'bs-check-title' }, 'Check your computeSplineC1 or computeSplineC2 output'),
     h(
       'p',
       {},

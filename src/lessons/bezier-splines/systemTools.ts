@@ -1,4 +1,4 @@
-import { smallNumber } from '../../kit/format';
+import { continuityName, smallNumber, sub, words } from '../../kit/format';
 import { dataTable, fmt, h, setChildren, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import type { BezierSplinesModel } from './model';
@@ -64,8 +64,10 @@ export function systemTools() {
         equations.map((e) => ({
           heading: true,
           cells: [
-            e.kind === 'point' ? `p${e.at}` : `${e.kind} ${e.at}`,
-            ...e.coefficients.map((v) => (v === 0 ? '·' : String(v))),
+            e.kind === 'point'
+              ? `p${sub(e.at)}`
+              : `${e.kind === 'natural' ? 'natural' : continuityName(e.kind)} at p${sub(e.at)}`,
+            ...e.coefficients.map((v) => (v === 0 ? '·' : words(v))),
             fmt(e.right[0]),
             fmt(e.right[1]),
           ],

@@ -1,5 +1,6 @@
 import { dataTable, fmtPoint, h, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
+import { continuityName } from '../../kit/format';
 import type { HermiteModel } from './model';
 
 const NONE = 'One patch, no joins yet: add a point to chain a second patch on.';
@@ -22,7 +23,12 @@ export function joinsSection() {
       );
       rows.set(
         joins.map((join) => ({
-          cells: [`P${join.k}`, fmtPoint(join.before, 3), fmtPoint(join.after, 3), join.continuity],
+          cells: [
+            `P${join.k}`,
+            fmtPoint(join.before, 3),
+            fmtPoint(join.after, 3),
+            continuityName(join.continuity),
+          ],
         })),
       );
     },
