@@ -17,6 +17,15 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   title: 'Bézier curve with every control point weighted at μ',
   kind: 'geometry',
   bounds: (m) => m.curveBounds,
+  // The points, what is compared and the step; μ only from the step that
+  // draws something at μ (a halo, P(μ), the compared point, P(1 − μ)): until
+  // then a drag of μ moves the plot's cursor and leaves this canvas as it is.
+  drawnFrom: ({ state, shown, drawn }) => [
+    state.p,
+    state.comparison,
+    shown.key,
+    drawn.weights > 0 || drawn.point || drawn.atMu || drawn.reversed ? state.mu : null,
+  ],
   draw(painter, m, info) {
     const theme = painter.theme;
     const { state, n, weights, point, compared, drawn } = m;
