@@ -1,17 +1,10 @@
+import { continuityName } from '../../kit/format';
 import type { Point } from '../../math';
 import type { Draw } from './drawParts';
 import { polygons } from './strokes';
 
-const VERDICT: Record<string, string> = {
-  none: '—',
-  C0: 'C⁰',
-  G1: 'G¹',
-  C1: 'C¹',
-  G2: 'G²',
-  C2: 'C²',
-};
 /** A joint's continuity as written: C⁰, G¹, C¹, G², C² (or — for none). */
-export const verdict = (c: string) => VERDICT[c] ?? c;
+export const verdict = (c: string) => (c === 'none' ? '—' : continuityName(c));
 
 /** Part 5: the hand-built pieces, then at each joint its verdict, tangents, curvature, and the comb. */
 export const inspector: Draw = (painter, m, info) => {

@@ -11,7 +11,9 @@ function shownPoints(m: BezierSplinesModel): Point[] {
   const { part, points: p, firstControl: b } = m.state;
   switch (part) {
     case 'inspector':
-      return m.state.handBuilt;
+      // With the comb's tips, drawn at the scene's last step: the view is
+      // fitted once a scene, so its first step leaves room for them too.
+      return [...m.state.handBuilt, ...m.comb.map(([, tip]) => tip)];
     case 'quadratic':
       return [...p, ...b, ...m.quadraticControls];
     case 'system':
