@@ -1,4 +1,4 @@
-import { texT } from '../../kit/format';
+import { superscript, texT } from '../../kit/format';
 import { type Point, binomial } from '../../math';
 import { texNumber } from '../../render/formula';
 import { type FormulaParts, joined, live, livePoint, tex } from '../../render/formulaParts';
@@ -36,6 +36,20 @@ export function weightFormula(n: number, i: number, mu: number): FormulaParts {
   if (i > 0) factors.push(i === 1 ? power(mu) : tex`${power(mu)}^{${i}}`);
   if (n - i > 0) factors.push(n - i === 1 ? power(1 - mu) : tex`${power(1 - mu)}^{${n - i}}`);
   return tex`W(${n},${i},${liveMu(mu)}) = ${joined(factors, '\\cdot ')}`;
+}
+
+/**
+ * The same weight as plain text, `W(3, 1, 0.3) = 3 · 0.3 · 0.7²`, for the
+ * weights table: a typeset formula in each row was laid out again on every
+ * frame of a μ drag (4 ms of a 20 ms frame, with N + 1 rows of them).
+ */
+export function weightText(n: number, i: number, mu: number): string {
+  const number = (v: number) => texNumber(v, 4).replace(/\.?0+$/, '') || '0';
+  const raised = (v: number, k: number) => (k === 1 ? number(v) : `${number(v)}${superscript(k)}`);
+  const factors = [String(binomial(n, i))];
+  if (i > 0) factors.push(raised(mu, i));
+  if (n - i > 0) factors.push(raised(1 - mu, n - i));
+  return `W(${n}, ${i}, ${texT(mu)}) = ${factors.join(' · ')}`;
 }
 
 /** Worked-out weights and the point stay readable on screen up to this degree. */

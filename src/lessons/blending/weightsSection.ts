@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setAttr, setChildren, setClass, setText } from '../../app/dom';
+import { dataTable, fmt, h, setAttr, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { texT, words } from '../../kit/format';
@@ -6,7 +6,7 @@ import { LiveFormula } from '../../render/formula';
 import { highlightedIndex, weightIds } from './hover';
 import type { BlendingModel } from './model';
 import type { BlendingState } from './state';
-import { pointFormula, weightFormula } from './tex';
+import { pointFormula, weightText } from './tex';
 
 /**
  * The weights at μ: one row per control point (its W(N, i, μ) worked out),
@@ -16,8 +16,6 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
   const title = h('h2', {});
   const body = h('tbody', {});
   const rows = new LiveRows(body);
-  // One live formula per row, typeset again only when N changes its shape.
-  const formulas: LiveFormula[] = [];
   const bar = h('div', {
     class: 'partition-bar',
     role: 'img',
@@ -62,20 +60,10 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
       setText(title, `Weights at μ = ${texT(mu)} (N = ${n})`);
       rows.set(
         weights.map((w, i) => ({
-          cells: [{ text: `P${i}`, swatch: color(i) }, '', fmt(w, 6)],
+          cells: [{ text: `P${i}`, swatch: color(i) }, weightText(n, i, mu), fmt(w, 6)],
           data: { value: String(w) },
         })),
       );
-      weights.forEach((_, i) => {
-        formulas[i] ??= new LiveFormula();
-        formulas[i].set(weightFormula(n, i, mu));
-        const [, middle, weight] = body.rows[i].cells;
-        if (formulas[i].element.parentNode !== middle) {
-          // A new row: LiveRows writes its texts, the formula and the class go in here.
-          middle.append(formulas[i].element);
-          setClass(weight, 'weight');
-        }
-      });
 
       if (pieces.length !== weights.length) {
         pieces = weights.map(() => h('span', {}));
