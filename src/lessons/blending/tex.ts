@@ -27,14 +27,24 @@ export function expansionTex(n: number, termsPerLine = Infinity): string {
 }
 
 /** μ and 1 − μ as typed into a power: four decimals at most, no trailing zeros. */
-const power = (v: number) => live(texNumber(v, 4).replace(/\.?0+$/, '') || '0');
+const base = (v: number) => texNumber(v, 4).replace(/\.?0+$/, '') || '0';
 const liveMu = (mu: number) => live(texT(mu));
+
+/** W(n, i, μ) = C(n, i) μⁱ (1 − μ)ⁿ⁻ⁱ as its bases and powers, a power 0 left out. */
+function powersOf(n: number, i: number, mu: number): [base: string, power: number][] {
+  const powers: [string, number][] = [[String(binomial(n, i)), 1]];
+  if (i > 0) powers.push([base(mu), i]);
+  if (n - i > 0) powers.push([base(1 - mu), n - i]);
+  return powers;
+}
 
 /** `W(3,1,0.3) = 3\cdot 0.3\cdot 0.7^{2}`: a weight with the numbers of μ in. */
 export function weightFormula(n: number, i: number, mu: number): FormulaParts {
-  const factors = [tex`${binomial(n, i)}`];
-  if (i > 0) factors.push(i === 1 ? power(mu) : tex`${power(mu)}^{${i}}`);
-  if (n - i > 0) factors.push(n - i === 1 ? power(1 - mu) : tex`${power(1 - mu)}^{${n - i}}`);
+  const [binomialFactor, ...rest] = powersOf(n, i, mu);
+  const factors = [
+    tex`${binomialFactor[0]}`,
+    ...rest.map(([b, k]) => (k === 1 ? live(b) : tex`${live(b)}^{${k}}`)),
+  ];
   return tex`W(${n},${i},${liveMu(mu)}) = ${joined(factors, '\\cdot ')}`;
 }
 
@@ -44,11 +54,7 @@ export function weightFormula(n: number, i: number, mu: number): FormulaParts {
  * frame of a μ drag (4 ms of a 20 ms frame, with N + 1 rows of them).
  */
 export function weightText(n: number, i: number, mu: number): string {
-  const number = (v: number) => texNumber(v, 4).replace(/\.?0+$/, '') || '0';
-  const raised = (v: number, k: number) => (k === 1 ? number(v) : `${number(v)}${superscript(k)}`);
-  const factors = [String(binomial(n, i))];
-  if (i > 0) factors.push(raised(mu, i));
-  if (n - i > 0) factors.push(raised(1 - mu, n - i));
+  const factors = powersOf(n, i, mu).map(([b, k]) => (k === 1 ? b : b + superscript(k)));
   return `W(${n}, ${i}, ${texT(mu)}) = ${factors.join(' · ')}`;
 }
 
