@@ -47,7 +47,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
   return {
     elements: [
       title,
-      dataTable('Weights at μ', ['Point', 'W(N, i, μ)', 'Weight'], body),
+      dataTable('Weights at μ', ['Point', 'W(N, i, μ)', 'Weight'], body, 'expressions'),
       bar,
       sum,
       point.element,
