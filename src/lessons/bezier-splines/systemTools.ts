@@ -1,5 +1,5 @@
 import { continuityName, smallNumber, sub, words } from '../../kit/format';
-import { dataTable, fmt, h, setChildren, setHidden, setText } from '../../app/dom';
+import { dataTable, fmt, h, setAttr, setChildren, setHidden, setText } from '../../app/dom';
 import { LiveRows } from '../../app/liveTable';
 import type { BezierSplinesModel } from './model';
 
@@ -12,7 +12,7 @@ export function systemTools() {
   const matrix = new LiveRows(matrixBody);
   const matrixTable = h(
     'table',
-    { class: 'data-table', 'aria-label': 'The linear system' },
+    { class: 'data-table matrix', 'aria-label': 'The linear system' },
     matrixHead,
     matrixBody,
   );
@@ -75,9 +75,9 @@ export function systemTools() {
       );
       // Written as a lecturer writes it; the exact value stays on the element for scripts.
       setText(residual, smallNumber(m.system.residual));
-      residual.dataset.exact = String(m.system.residual);
+      setAttr(residual, 'data-exact', String(m.system.residual));
       setText(difference, smallNumber(m.difference));
-      difference.dataset.exact = String(m.difference);
+      setAttr(difference, 'data-exact', String(m.difference));
       const natural = [m.natural[0][0], ...m.natural.flatMap((seg) => seg.slice(1))];
       solution.set(
         controls.map((c, j) => ({

@@ -16,10 +16,10 @@ export const LISTING: readonly (readonly [number, string])[] = [
   [0, 'deCasteljau(P₀ … Pₙ, t)'],
   [1, 'for i = 0 … n:  P₀,ᵢ = Pᵢ'],
   [2, 'for r = 1 … n:'],
-  [3, '    for i = 0 … n − r:'],
-  [4, '        Pᵣ,ᵢ = (1 − t)·Pᵣ₋₁,ᵢ + t·Pᵣ₋₁,ᵢ₊₁'],
+  [3, '  for i = 0 … n − r:'],
+  [4, '    Pᵣ,ᵢ = (1−t)·Pᵣ₋₁,ᵢ + t·Pᵣ₋₁,ᵢ₊₁'],
   [5, 'return Pₙ,₀'],
-  [6, 'drawCurve: for j = 0 … L:  plot deCasteljau(P₀ … Pₙ, j/L)'],
+  [6, 'drawCurve: for j = 0 … L:\n  plot deCasteljau(P₀ … Pₙ, j/L)'],
 ];
 
 /** The lines each step runs (the listing's numbers). */

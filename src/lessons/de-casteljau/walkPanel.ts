@@ -30,14 +30,15 @@ export function lineValues(m: DeCasteljauModel): string[] {
 
 /** The listing, the line each step runs marked, with the lecture notes' own recursive version. */
 function pseudocodeSection() {
+  // What a line holds now sits under the line, not in a third column: a
+  // laptop's 404 px panel had the values 230 px to the right of its edge.
   const rows = LISTING.map(([line, text]) => {
-    const now = h('td', { style: 'text-align:left' });
+    const now = h('div', { class: 'now' });
     const row = h(
       'tr',
       {},
       h('td', {}, String(line)),
-      h('td', { style: 'text-align:left;white-space:pre' }, text),
-      now,
+      h('td', {}, h('div', { class: 'code' }, text), now),
     );
     return { row, now };
   });
@@ -57,8 +58,9 @@ function pseudocodeSection() {
     ),
     dataTable(
       'Pseudocode of the de Casteljau construction',
-      ['Line', 'Pseudocode', 'Now'],
+      ['Line', 'Pseudocode, and what it holds now'],
       h('tbody', {}, ...rows.map(({ row }) => row)),
+      'listing',
     ),
     h(
       'p',
@@ -83,7 +85,7 @@ function pseudocodeSection() {
       rows.forEach(({ row, now }, k) => {
         const className = run.includes(LISTING[k][0]) ? 'current' : '';
         if (row.className !== className) setClass(row, className);
-        setText(now, values[k]);
+        setText(now, values[k] && `→ ${values[k]}`);
       });
     },
   };

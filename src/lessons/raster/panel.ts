@@ -115,6 +115,7 @@ export function rasterPanel(
       'Uniform against adaptive',
       ['Polyline', 'Segments', 'Largest gap (px)', 'at t'],
       compareBody,
+      'names',
     ),
     h('h2', {}, 'The raster'),
     h(
