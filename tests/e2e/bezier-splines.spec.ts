@@ -4,10 +4,9 @@ import { expect, expectHash, snapshot, test, linkState } from './fixtures';
 
 const scene = (page: Page, name: string) =>
   page.getByRole('group', { name: 'Scenes' }).getByRole('button', { name, exact: true });
-const verdict = (page: Page, joint: number) =>
-  page
-    .getByRole('table', { name: 'Continuity at each joint' })
-    .locator(`tr[data-joint="${joint}"]`);
+const joints = (page: Page) => page.getByRole('table', { name: 'Continuity at each joint' });
+/** A joint's column heading, which carries its verdict (one column a joint). */
+const verdict = (page: Page, joint: number) => joints(page).locator(`th[data-joint="${joint}"]`);
 const points = (raw: string) => raw.split(';').map((p) => p.split(',').map(Number));
 
 test.beforeEach(async ({ page }) => {
@@ -39,7 +38,8 @@ test('the inspector reads C² on the C² spline, C¹ on the quadratic one, and w
 
   await page.getByRole('button', { name: 'Sharp corner at joint 1' }).click();
   await expect(verdict(page, 1)).toHaveAttribute('data-continuity', 'C0');
-  await expect(verdict(page, 1).locator('td').first()).toHaveText('C⁰');
+  await expect(joints(page).locator('tr[data-quantity="verdict"] td').first()).toHaveText('C⁰');
+  await expect(joints(page).locator('tr[data-quantity="ratio"] td').first()).toHaveText('—');
 });
 
 test('the solved (3n+1) system gives the natural cubic spline’s control points, residual below 1e-9', async ({

@@ -1,4 +1,4 @@
-import { dataTable, fmt, fmtPoint, h, setChildren } from '../../app/dom';
+import { fmt, fmtPoint, h, setChildren } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { type Point, quadraticSplineC1, snapJoint } from '../../math';
@@ -14,8 +14,18 @@ const withVerdicts = (s: BezierSplinesState) => Math.max(s.step, inspector.stepO
 
 /** The inspector's panel: every joint's numbers, "Make G¹ / C¹" at each joint, and chains to start from. */
 export function inspectorTools(api: LessonApi<BezierSplinesState, BezierSplinesModel>) {
+  // One column a joint and one row a quantity: two joints' ten numbers fit a
+  // 336 px phone panel, where a row a joint ran 783 px wide.
+  const header = h('tr', {});
   const body = h('tbody', {});
   const rows = new LiveRows(body);
+  const table = h(
+    'table',
+    { class: 'data-table', 'aria-label': 'Continuity at each joint' },
+    h('thead', {}, header),
+    body,
+  );
+  let jointHeads: HTMLTableCellElement[] = [];
   const snaps = h('div', { class: 'button-row' });
   let jointCount = -1;
   const snap = (k: number, mode: 'G1' | 'C1') => () => {
@@ -59,26 +69,7 @@ export function inspectorTools(api: LessonApi<BezierSplinesState, BezierSplinesM
       'div',
       {},
       h('h3', {}, 'Every joint'),
-      h(
-        'div',
-        { class: 'table-scroll' },
-        dataTable(
-          'Continuity at each joint',
-          [
-            'joint',
-            'verdict',
-            'P′ left',
-            'P′ right',
-            'angle',
-            'ratio',
-            'P″ left',
-            'P″ right',
-            'κ left',
-            'κ right',
-          ],
-          body,
-        ),
-      ),
+      h('div', { class: 'table-scroll' }, table),
       snaps,
       h('h3', {}, 'Start from'),
       presets,
@@ -86,6 +77,10 @@ export function inspectorTools(api: LessonApi<BezierSplinesState, BezierSplinesM
     update(m: BezierSplinesModel) {
       if (m.joints.length !== jointCount) {
         jointCount = m.joints.length;
+        jointHeads = m.joints.map((_, i) =>
+          h('th', { scope: 'col', 'data-joint': String(i + 1) }, `joint ${i + 1}`),
+        );
+        setChildren(header, h('th', { scope: 'col' }, 'at the joint'), jointHeads);
         setChildren(
           snaps,
           m.joints.flatMap((_, i) => [
@@ -102,24 +97,28 @@ export function inspectorTools(api: LessonApi<BezierSplinesState, BezierSplinesM
           ]),
         );
       }
-      rows.set(
-        m.joints.map((r, i) => ({
-          heading: true,
-          data: { joint: String(i + 1), continuity: r.continuity },
-          cells: [
-            String(i + 1),
-            verdict(r.continuity),
-            fmtPoint(r.leftVelocity),
-            fmtPoint(r.rightVelocity),
-            Number.isNaN(r.angle) ? '—' : `${fmt(r.angle, 1)}°`,
-            Number.isFinite(r.lengthRatio) ? fmt(r.lengthRatio, 3) : '—',
-            fmtPoint(r.leftSecond),
-            fmtPoint(r.rightSecond),
-            Number.isNaN(r.leftCurvature) ? '—' : fmt(r.leftCurvature, 3),
-            Number.isNaN(r.rightCurvature) ? '—' : fmt(r.rightCurvature, 3),
-          ],
-        })),
-      );
+      m.joints.forEach((r, i) => {
+        if (jointHeads[i].dataset.continuity !== r.continuity)
+          jointHeads[i].dataset.continuity = r.continuity;
+      });
+      const row = (name: string, cell: (r: (typeof m.joints)[number]) => string) => ({
+        heading: true,
+        data: { quantity: name },
+        cells: [name, ...m.joints.map(cell)],
+      });
+      const maybe = (x: number, text: (x: number) => string) =>
+        Number.isFinite(x) ? text(x) : '—';
+      rows.set([
+        row('verdict', (r) => verdict(r.continuity)),
+        row('P′ left', (r) => fmtPoint(r.leftVelocity)),
+        row('P′ right', (r) => fmtPoint(r.rightVelocity)),
+        row('angle', (r) => maybe(r.angle, (a) => `${fmt(a, 1)}°`)),
+        row('ratio', (r) => maybe(r.lengthRatio, (x) => fmt(x, 3))),
+        row('P″ left', (r) => fmtPoint(r.leftSecond)),
+        row('P″ right', (r) => fmtPoint(r.rightSecond)),
+        row('κ left', (r) => maybe(r.leftCurvature, (x) => fmt(x, 3))),
+        row('κ right', (r) => maybe(r.rightCurvature, (x) => fmt(x, 3))),
+      ]);
     },
   };
 }
