@@ -85,9 +85,13 @@ test('the Cox–de Boor triangle: its last row sums to 1 and matches bsplineBasi
   await page.keyboard.press('End');
   await expectHash(page, 'k', (v) => v === '6');
   const knots = (await linkState(page)).u.split(',').map(Number);
-  const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
-    name: /^Nᵢ,₃/,
-  });
+  // One row a basis function i; the column N(i,3) is each row's fourth value.
+  const lastColumn = page
+    .getByRole('table', { name: 'Cox–de Boor triangle' })
+    .locator('tbody tr td:nth-of-type(4)');
+  await expect(
+    page.getByRole('table', { name: 'Cox–de Boor triangle' }).locator('thead th').last(),
+  ).toHaveText('Nᵢ,₃');
   const number = page.getByRole('spinbutton', { name: 't value' });
   for (const t of [0, 0.137, 0.5, 0.77, 1]) {
     await number.fill(String(t));
@@ -96,9 +100,9 @@ test('the Cox–de Boor triangle: its last row sums to 1 and matches bsplineBasi
     // u runs over the domain [u3, u7] = [3, 7].
     const u = 3 + 4 * t;
     await expect(value(page, /^parameter u/)).toHaveText(u.toFixed(4));
-    const cells = (await lastRow.locator('td').allInnerTexts())
-      .slice(1, knots.length - 3)
-      .map(Number);
+    // Rows past the last function of degree 3 have no N(i,3): m + 1 = 7 have.
+    const cells = (await lastColumn.allInnerTexts()).slice(0, knots.length - 4).map(Number);
+    expect(cells).toHaveLength(7);
     expect(Math.abs(cells.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(3e-4);
     cells.forEach((cell, i) =>
       expect(Math.abs(cell - bsplineBasis(knots, 3, i, u))).toBeLessThan(6e-5),
@@ -211,10 +215,10 @@ test('the uniform cubic bases, derived row by row on the equally spaced knots: t
   await expectHash(page, 'k', (v) => v === '5');
   const stepFormula = page.locator('.step-formulas .katex-html');
   await expect(stepFormula).toContainText('t=u−u4=0.600');
-  const lastRow = page.getByRole('table', { name: 'Cox–de Boor triangle' }).getByRole('row', {
-    name: /^Nᵢ,₃/,
-  });
-  const cells = (await lastRow.locator('td').allInnerTexts()).slice(1).map(Number);
+  const lastColumn = page
+    .getByRole('table', { name: 'Cox–de Boor triangle' })
+    .locator('tbody tr td:nth-of-type(4)');
+  const cells = (await lastColumn.allInnerTexts()).map(Number);
   const nonZero = cells.filter((v) => v > 0);
   expect(nonZero).toHaveLength(4);
   const text = (await stepFormula.innerText()).replace(/\s+/g, '');

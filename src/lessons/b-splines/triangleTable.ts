@@ -5,7 +5,12 @@ import { shownRow } from './basisFigure';
 import type { BSplineModel } from './model';
 import { type BSplineState, isUniformPart } from './state';
 
-/** The Cox–de Boor triangle at the cursor, one row per degree r up to the row the step shows. */
+/**
+ * The Cox–de Boor triangle at the cursor: one column per degree r, up to the
+ * column the step shows, and one row per basis function i. Set this way it
+ * is as wide as the degree, not as the number of points: row by row, the
+ * seven columns i = 0 … 6 of the knots scene ran 535 px in a laptop's 404.
+ */
 export function triangleTable() {
   const head = h('tr', {});
   const body = h('tbody', {});
@@ -18,7 +23,7 @@ export function triangleTable() {
     body,
   );
   const element = h('div', {}, h('h2', {}, 'The Cox–de Boor triangle at u'), caption, table);
-  let columns = -1;
+  let columns = -2;
   return {
     element,
     update(m: BSplineModel, state: BSplineState, palette: readonly string[]) {
@@ -26,39 +31,43 @@ export function triangleTable() {
       setHidden(element, hidden);
       if (hidden) return;
       const count = m.table[0].length;
-      if (count !== columns) {
-        columns = count;
+      const last = shownRow(m) ?? -1;
+      if (last !== columns) {
+        columns = last;
         setChildren(
           head,
-          h('th', { scope: 'col' }, 'row'),
-          Array.from({ length: count }, (_, i) => h('th', { scope: 'col' }, `i=${i}`)),
+          h('th', { scope: 'col' }, 'i'),
+          Array.from({ length: last + 1 }, (_, r) =>
+            h('th', { scope: 'col', class: r === last ? 'current' : '' }, `N(i,${r})`),
+          ),
         );
       }
-      const last = shownRow(m) ?? -1;
       setText(
         caption,
         last < 0
-          ? 'Step on: the rows appear one by one, from N(i,0) to N(i,p).'
-          : `u = ${texNumber(m.u, 4)}; each row from the one above; the last row sums to ${texNumber(
+          ? 'Step on: the columns appear one by one, from N(i,0) to N(i,p).'
+          : `u = ${texNumber(m.u, 4)}; each column from the one before it; the last column sums to ${texNumber(
               m.basis.reduce((a, b) => a + b, 0),
               4,
             )}.`,
       );
       rows.set(
-        m.table.slice(0, last + 1).map((row, r) => ({
-          className: r === last ? 'current' : '',
-          cells: [
-            `N(i,${r})`,
-            ...Array.from({ length: count }, (_, i) =>
-              i < row.length
-                ? {
-                    text: row[i] === 0 ? '0' : texNumber(row[i], 4),
-                    swatch: row[i] > 0 ? palette[i % palette.length] : undefined,
-                  }
-                : '',
-            ),
-          ],
-        })),
+        last < 0
+          ? []
+          : Array.from({ length: count }, (_, i) => ({
+              heading: true,
+              cells: [
+                String(i),
+                ...m.table.slice(0, last + 1).map((row) =>
+                  i < row.length
+                    ? {
+                        text: row[i] === 0 ? '0' : texNumber(row[i], 4),
+                        swatch: row[i] > 0 ? palette[i % palette.length] : undefined,
+                      }
+                    : '',
+                ),
+              ],
+            })),
       );
     },
   };
