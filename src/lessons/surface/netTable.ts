@@ -35,7 +35,7 @@ export function netTable(
   const body = h('tbody', {});
   const message = h('p', { class: 'net-table-message', role: 'status' });
   for (let m = 0; m < 4; m++) {
-    const row = h('tr', {}, h('th', { scope: 'row' }, `m = ${m}`));
+    const row = h('tr', {}, h('th', { scope: 'row', 'aria-label': `m = ${m}` }, String(m)));
     inputs.push([]);
     for (let n = 0; n < 4; n++) {
       const input = h('input', {
@@ -69,15 +69,21 @@ export function netTable(
   }
   const table = h(
     'table',
-    { class: 'data-table net-table', 'aria-label': `Control net ${name} (x, y, z of each point)` },
+    {
+      class: 'data-table matrix net-table',
+      'aria-label': `Control net ${name} (x, y, z of each point)`,
+    },
     h(
       'thead',
       {},
       h(
         'tr',
         {},
-        h('th', { scope: 'col' }, h('span', { class: 'visually-hidden' }, 'Row')),
-        ...[0, 1, 2, 3].map((n) => h('th', { scope: 'col' }, `n = ${n}`)),
+        // m down and n across, as the weights' grid is headed (m\n): the row
+        // heads are a digit wide, and the four columns of "x, y, z" fit a
+        // laptop's panel.
+        h('th', { scope: 'col' }, 'm\\n'),
+        ...[0, 1, 2, 3].map((n) => h('th', { scope: 'col', 'aria-label': `n = ${n}` }, String(n))),
       ),
     ),
     body,

@@ -1,4 +1,4 @@
-import { fmt, h, setHidden, setText } from '../../app/dom';
+import { fmt, h, setAttr, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { radioGroup } from '../../app/panelControls';
@@ -10,9 +10,11 @@ import type { Coordinate, SurfaceLook, SurfaceState } from './state';
 import { continuityName, joinVerdict } from './notation';
 import './surface.css';
 import { gestures } from '../../kit/gestures';
+import { trimmed } from '../../kit/format';
 
 /** Digits of the check table: enough to see that three ways agree to the last digit shown. */
-const DIGITS = 10;
+/** Digits of the point three ways: the rows agree to all of them; the exact value is on the row. */
+const DIGITS = 6;
 const vector = (p: readonly number[]) => p.map((value) => fmt(value, 4));
 const slots = (count: number) => Array.from({ length: count }, () => SLOT);
 const row = (count: number) => `\\begin{bmatrix}${slots(count).join(' & ')}\\end{bmatrix}`;
@@ -165,6 +167,7 @@ export function surfacePanel(
         vField.value = String(state.v);
       const three = (name: string, p: readonly number[]) => ({
         cells: [name, ...p.map((value) => fmt(value, DIGITS))],
+        data: { exact: p.map(String).join(',') },
       });
       pointRows.set([
         three('Σ fₘ fₙ Pₘ,ₙ', m.point),
@@ -201,7 +204,10 @@ export function surfacePanel(
           cells: [`m = ${i}`, ...weights.map((w) => fmt(w, 4))],
         })),
       );
-      setText(weightSum, m.weightSum.toPrecision(17));
+      // 1, not 0.99999999999999978: the sum is 1, and the last bits are
+      // rounding (the exact value stays on the element for scripts).
+      setText(weightSum, trimmed(m.weightSum, 12));
+      setAttr(weightSum, 'data-exact', String(m.weightSum));
       setHidden(joinSection, !m.join);
       if (m.join) {
         setText(
