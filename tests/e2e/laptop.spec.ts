@@ -2,7 +2,9 @@ import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
 
 /**
  * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
- * first and last step: the page never scrolls sideways, and no text on it,
+ * first and last step: the page never scrolls sideways, nor does its panel or
+ * a table in its box, a slider or a number field is wide enough to use, a
+ * text field shows all of its value, and no text on it,
  * in the panel or its formulas (subscripts included), is
  * set under 12 px, and no subscript index (P₀) smaller than 12 px text's
  * digits. Read from the page: the root's scroll width and each shown
@@ -55,9 +57,41 @@ for (const slug of Object.keys(sceneLinks)) {
               `“${(before.textContent ?? '').slice(-12)}” and its index “${index.textContent}” apart`,
             );
         }
+        // The side panel does not scroll sideways either (a wide table in it did).
+        const wide: string[] = [];
+        const panel = document.querySelector<HTMLElement>('aside.panel');
+        if (panel && panel.scrollWidth > panel.clientWidth + 1)
+          wide.push(`the panel is ${panel.scrollWidth - panel.clientWidth} px too wide`);
+        // A table as wide as its panel: a column scrolled out of sight in
+        // its box is as lost as one off the page.
+        for (const table of document.querySelectorAll<HTMLElement>('table')) {
+          if (!table.checkVisibility({ visibilityProperty: true })) continue;
+          const room = table.parentElement!.clientWidth;
+          if (table.scrollWidth > room + 1)
+            wide.push(
+              `table “${table.getAttribute('aria-label')}” ${table.scrollWidth} px in ${room}`,
+            );
+        }
+        // A slider or a number field too narrow to drag or to read its value.
+        for (const input of document.querySelectorAll<HTMLInputElement>(
+          'input[type="range"], input[type="number"]',
+        )) {
+          const width = input.getBoundingClientRect().width;
+          if (input.checkVisibility({ visibilityProperty: true }) && width < 40)
+            wide.push(`“${input.getAttribute('aria-label')}” only ${width.toFixed(0)} px wide`);
+        }
+        // A field shows the whole of the value it holds (the surface's net
+        // cells cut "2.2, 0.9, -0.4" short).
+        for (const input of document.querySelectorAll<HTMLInputElement>('input[type="text"]')) {
+          if (
+            input.checkVisibility({ visibilityProperty: true }) &&
+            input.scrollWidth > input.clientWidth + 1
+          )
+            wide.push(`“${input.getAttribute('aria-label')}” cuts “${input.value}” short`);
+        }
         return {
           overflow: root.scrollWidth - root.clientWidth,
-          small: [...small, ...apart],
+          small: [...small, ...apart, ...wide],
         };
       });
       return [
