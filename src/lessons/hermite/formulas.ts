@@ -8,8 +8,8 @@ import { type FormulaParts, joined, live, livePoint, tex } from '../../render/fo
 // panel shows them in full; a step's formula (presenter view) is the same
 // parts, filled in.
 
-/** Points as a column of rows (4 × 2 for a patch's data), one point a row. */
-const column = (rows: readonly Point[], digits = 3) =>
+/** Points as a column of rows (4 × 2 for a patch's data), one point a row, to 2 decimals as points are written (at 3, equation 7 with its numbers ran up to 434 px in a laptop's 404 px panel). */
+const column = (rows: readonly Point[], digits = 2) =>
   tex`\begin{pmatrix}${joined(
     rows.map((q) =>
       joined(

@@ -152,14 +152,14 @@ describe('the script of Hermite patches, by named step', () => {
     );
     // The lecture's matrix (typed from the notes) and the data P0, D0, P1, D1.
     const data =
-      '\\begin{pmatrix}0.000 & 0.000\\\\3.000 & 4.500\\\\4.000 & 0.000\\\\3.000 & -4.500\\end{pmatrix}';
+      '\\begin{pmatrix}0.00 & 0.00\\\\3.00 & 4.50\\\\4.00 & 0.00\\\\3.00 & -4.50\\end{pmatrix}';
     expect(formula(atStep('matrix'))).toBe(
       `\\begin{pmatrix}1 & 0 & 0 & 0\\\\0 & 1 & 0 & 0\\\\1 & 1 & 1 & 1\\\\0 & 1 & 2 & 3\\end{pmatrix}${UNKNOWNS} = \\begin{pmatrix}P_{0}\\\\D_{0}\\\\P_{1}\\\\D_{1}\\end{pmatrix} = ${data}`,
     );
     // Its inverse (equation 7) times the data: a2 = −3P0 − 2D0 + 3P1 − D1 = (3, −4.5), a3 = 2P0 + D0 − 2P1 + D1 = (−2, 0).
     expect(formula(atStep('patch'))).toBe(
       `${UNKNOWNS} = \\begin{pmatrix}1 & 0 & 0 & 0\\\\0 & 1 & 0 & 0\\\\-3 & -2 & 3 & -1\\\\2 & 1 & -2 & 1\\end{pmatrix}${data} = ` +
-        '\\begin{pmatrix}0.000 & 0.000\\\\3.000 & 4.500\\\\3.000 & -4.500\\\\-2.000 & 0.000\\end{pmatrix}',
+        '\\begin{pmatrix}0.00 & 0.00\\\\3.00 & 4.50\\\\3.00 & -4.50\\\\-2.00 & 0.00\\end{pmatrix}',
     );
     // H(0.3) = (0.784, 0.216, 0.147, −0.063): P(0.3) = 0.216·(4, 0) + 0.147·(3, 4.5) − 0.063·(3, −4.5).
     expect(formula(atStep('pointAtMu'))).toBe(
@@ -181,7 +181,7 @@ describe('the script of Hermite patches, by named step', () => {
       '\\begin{pmatrix}B_0\\\\3(B_1 - B_0)\\\\B_3\\\\3(B_3 - B_2)\\end{pmatrix}',
     );
     expect(product).toMatch(
-      /-3 & -2 & 3 & -1\\\\2 & 1 & -2 & 1\\end\{pmatrix\}\\begin\{pmatrix\}0\.000 & 0\.000\\\\3\.000 & 4\.500\\\\4\.000 & 0\.000\\\\3\.000 & -4\.500\\end\{pmatrix\} = \\begin\{pmatrix\}0\.000 & 0\.000\\\\3\.000 & 4\.500\\\\3\.000 & -4\.500\\\\-2\.000 & 0\.000\\end\{pmatrix\}$/,
+      /-3 & -2 & 3 & -1\\\\2 & 1 & -2 & 1\\end\{pmatrix\}\\begin\{pmatrix\}0\.00 & 0\.00\\\\3\.00 & 4\.50\\\\4\.00 & 0\.00\\\\3\.00 & -4\.50\\end\{pmatrix\} = \\begin\{pmatrix\}0\.00 & 0\.00\\\\3\.00 & 4\.50\\\\3\.00 & -4\.50\\\\-2\.00 & 0\.00\\end\{pmatrix\}$/,
     );
     // Equation 11 from B0 … B3 alone: a3 = B3 − 3B2 + 3B1 − B0 = (4 − 9 + 3, 0 − 4.5 + 4.5) = (−2, 0).
     expect(formula(atBezierStep('expanded'))).toContain(
