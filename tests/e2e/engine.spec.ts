@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, lessonFolders, settled, test, linkState } from './fixtures';
+import { expect, lessonFolders, openHash, settled, test, linkState } from './fixtures';
 
 test('a moved view is part of the link and opens exactly as shared', async ({ page }) => {
   await page.goto('./#/de-casteljau');
@@ -256,8 +256,7 @@ test('a link typed into the address bar opens fitted to its points, as a fresh p
     '1000,1000;1000.001,1000.002;1000.003,1000.002;1000.004,1000',
     '0,0;1,2;3,2;4,0',
   ]) {
-    await page.evaluate((p) => (location.hash = `#/de-casteljau?p=${p}`), points);
-    await settled(page);
+    await openHash(page, `#/de-casteljau?p=${points}`);
     expect(await onCanvas(), points).toEqual([true, true, true, true]);
   }
 });

@@ -75,6 +75,35 @@ export async function settled(page: Page): Promise<void> {
 }
 
 /**
+ * Goes to `hash` (e.g. `#/road?scene=swing&step=6`) as a pasted link does, and
+ * returns once the page has applied it (not yet settled: see openHash). The
+ * page applies a new hash on its hashchange event, a task of its own: a key
+ * pressed or a check made straight after setting the hash could reach the page
+ * first and act on the previous link's state (phone.spec's Home then left the
+ * road's swing scene at its last step, once in a ×3 run on a busy machine).
+ */
+export async function goHash(page: Page, hash: string): Promise<void> {
+  await page.evaluate(
+    (target) =>
+      new Promise<void>((resolve) => {
+        const before = location.href;
+        location.hash = target;
+        // The same link again fires no hashchange: there is nothing to apply.
+        if (location.href === before) resolve();
+        // After the page's own listener, which applies the link (main.ts).
+        else addEventListener('hashchange', () => resolve(), { once: true });
+      }),
+    hash,
+  );
+}
+
+/** goHash, then the page settled: the link's state drawn, its panel written. */
+export async function openHash(page: Page, hash: string): Promise<void> {
+  await goHash(page, hash);
+  await settled(page);
+}
+
+/**
  * Every lesson, as the app's registry finds them (a folder with a meta.ts), for
  * generating one test per lesson (no list kept by hand).
  */
@@ -144,8 +173,7 @@ export async function eachSceneEnd(
   const queries = sceneLinks[slug];
   await page.goto(`./#/${slug}?${queries[0]}`);
   for (const query of queries) {
-    await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
-    await settled(page);
+    await openHash(page, `#/${slug}?${query}`);
     faults.push(...(await look(`${slug}?${query}`)));
   }
   return faults;

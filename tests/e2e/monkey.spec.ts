@@ -11,7 +11,7 @@
  */
 import type { Page } from '@playwright/test';
 import { seededRandom } from '../../src/math/seededRandom';
-import { expect, hashState, lessonFolders, settled, test } from './fixtures';
+import { expect, goHash, hashState, lessonFolders, settled, test } from './fixtures';
 
 const slugs = lessonFolders();
 
@@ -245,7 +245,7 @@ for (const [index, slug] of slugs.entries()) {
       }
       await settled(page);
       await longFrames(page);
-      await page.evaluate((h) => (location.hash = h), far);
+      await goHash(page, far);
       await expect.poll(() => new URL(page.url()).hash).toContain('1000000');
       await settled(page);
       await nextFrame(page);

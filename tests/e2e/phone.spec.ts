@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { eachSceneEnd, expect, figureSizes, sceneLinks, settled, test } from './fixtures';
+import { eachSceneEnd, expect, figureSizes, openHash, sceneLinks, settled, test } from './fixtures';
 
 /**
  * A student on a phone, in every scene of every lesson, at its first and
@@ -104,7 +104,7 @@ test.describe('a phone of 360×740, step by step', () => {
         scenes.set(/(?:^|&)scene=([^&]*)/.exec(query)?.[1] ?? '', query);
       await page.goto(`./#/${slug}?${[...scenes.values()][0]}`);
       for (const [scene, query] of scenes) {
-        await page.evaluate((hash) => (location.hash = hash), `#/${slug}?${query}`);
+        await openHash(page, `#/${slug}?${query}`);
         await page.keyboard.press('Home');
         await settled(page);
         const status = page.locator('.step-status');
