@@ -1,8 +1,11 @@
 /**
  * Fitting wide content to a narrow panel: a matrix, a long expansion or a
- * table is shrunk (down to half size, then it scrolls) so it is seen whole in
- * the side panel, and on a projector, where everything is larger, instead of
- * being cut at the panel's edge. Elements are marked when their content
+ * table is shrunk (down to half size, and never under 12 px) so it is seen
+ * whole in the side panel, and on a projector, where everything is larger,
+ * instead of being cut at the panel's edge. A formula still too wide at its
+ * smallest is set at its full size on several lines, broken after an = or a +
+ * as TeX breaks a formula in running text; only a piece wider than the box
+ * by itself (a matrix) scrolls. Elements are marked when their content
  * changes, and only marked ones are measured: all are read, then all are
  * written, so the browser lays the page out once per pass, not once per
  * element.
@@ -28,23 +31,37 @@ export function markForFit(el: HTMLElement): HTMLElement {
 export function fitToWidth(root: ParentNode): void {
   const pending = [...root.querySelectorAll<HTMLElement>('[data-fit="pending"]')];
   if (!pending.length) return;
-  const sizes = pending.map((el) => ({
-    box: el.clientWidth,
-    scroll: el.scrollWidth,
-    width: contentWidth(el),
-    font: smallestFont(el),
-  }));
+  const sizes = pending.map((el) => {
+    const pieces = lineWidths(el);
+    return {
+      box: el.clientWidth,
+      scroll: el.scrollWidth,
+      // Set on lines, its width as one line is the sum of its pieces.
+      width: el.classList.contains(WRAPS) ? pieces.sum : contentWidth(el),
+      widest: pieces.widest,
+      font: smallestFont(el),
+      indent: hangingIndent(el),
+    };
+  });
   pending.forEach((el, i) => {
-    const { box, scroll, width, font } = sizes[i];
+    const { box, scroll, width, widest, font, indent } = sizes[i];
     // Not laid out yet (hidden, or not in the page): try again next time.
     if (box <= 0) return;
     el.dataset.fit = 'done';
     const scale = Number(el.dataset.scale ?? '1');
-    const natural = Math.max(width, scroll > box + 1 ? scroll : 0) / scale;
+    const wrapped = el.classList.contains(WRAPS);
+    const natural = Math.max(width, scroll > box + 1 && !wrapped ? scroll : 0) / scale;
     const smallest = Math.min(1, Math.max(SMALLEST, SMALLEST_PX / (font / scale)));
-    const fitted = natural > box + 1 ? Math.max(smallest, (box / natural) * 0.98) : 1;
-    // Still too wide at the smallest size: it scrolls, so the keyboard must reach it.
-    const scrolls = natural * fitted > box + 1;
+    let fitted = natural > box + 1 ? Math.max(smallest, (box / natural) * 0.98) : 1;
+    // Too wide at the smallest size: a formula that can break takes lines, at
+    // full size if its widest piece and the further lines' indent fit the box.
+    const line = (widest + indent) / scale;
+    const wrappedScale = line > 0 ? Math.min(1, (box / line) * 0.98) : 0;
+    const wraps = natural * fitted > box + 1 && widest > 0 && wrappedScale >= smallest;
+    if (wraps) fitted = wrappedScale > 0.995 ? 1 : wrappedScale;
+    if (wraps !== wrapped) el.classList.toggle(WRAPS, wraps);
+    // Still too wide: it scrolls, so the keyboard must reach it.
+    const scrolls = wraps ? line * fitted > box + 1 : natural * fitted > box + 1;
     if (scrolls !== el.hasAttribute('tabindex')) {
       if (scrolls) el.setAttribute('tabindex', '0');
       else el.removeAttribute('tabindex');
@@ -72,6 +89,39 @@ export function contentWidth(el: HTMLElement): number {
     right = Math.max(right, box.right);
   }
   return right > left ? right - left : 0;
+}
+
+/** The class of a formula set on several lines (styles.css lets its pieces wrap). */
+const WRAPS = 'wraps';
+
+/**
+ * A typeset formula's width as one line (the sum of its unbreakable pieces,
+ * the widest of its own lines if it has some), and its widest piece: what is
+ * left when it is broken after each = and +. 0 and 0 for a table.
+ */
+function lineWidths(el: HTMLElement): { sum: number; widest: number } {
+  const html = el.querySelector('.katex-html');
+  if (!html) return { sum: 0, widest: 0 };
+  let sum = 0;
+  let line = 0;
+  let widest = 0;
+  for (const piece of html.children) {
+    if (piece.classList.contains('newline')) {
+      sum = Math.max(sum, line);
+      line = 0;
+      continue;
+    }
+    const width = piece.getBoundingClientRect().width;
+    line += width;
+    widest = Math.max(widest, width);
+  }
+  return { sum: Math.max(sum, line), widest };
+}
+
+/** How far a wrapped formula's further lines are set in (styles.css: 1.5em of its typeset size). */
+function hangingIndent(el: HTMLElement): number {
+  const katex = el.querySelector('.katex');
+  return katex ? 1.5 * (parseFloat(getComputedStyle(katex).fontSize) || 0) : 0;
 }
 
 /**

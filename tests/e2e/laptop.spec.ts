@@ -2,8 +2,8 @@ import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
 
 /**
  * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
- * first and last step: the page never scrolls sideways, nor does its panel or
- * a table in its box, a slider or a number field is wide enough to use, a
+ * first and last step: the page never scrolls sideways, nor does its panel,
+ * a table or a formula in its box, a slider or a number field is wide enough to use, a
  * text field shows all of its value, and no text on it,
  * in the panel or its formulas (subscripts included), is
  * set under 12 px, and no subscript index (P₀) smaller than 12 px text's
@@ -70,6 +70,16 @@ for (const slug of Object.keys(sceneLinks)) {
           if (table.scrollWidth > room + 1)
             wide.push(
               `table “${table.getAttribute('aria-label')}” ${table.scrollWidth} px in ${room}`,
+            );
+        }
+        // A formula seen whole: one too wide even at 12 px takes lines (an
+        // expansion of ten terms ran 638 px in a 404 px box, scrolled in it).
+        for (const box of document.querySelectorAll<HTMLElement>('[data-fit]')) {
+          if (!box.checkVisibility({ visibilityProperty: true }) || !box.querySelector('.katex'))
+            continue;
+          if (box.scrollWidth > box.clientWidth + 1)
+            wide.push(
+              `formula “${(box.dataset.tex ?? box.textContent ?? '').slice(0, 30)}” ${box.scrollWidth} px in ${box.clientWidth}`,
             );
         }
         // A slider or a number field too narrow to drag or to read its value.
