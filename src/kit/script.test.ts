@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { repeat, script, step } from './script';
+import { narrow, repeat, script, step } from './script';
 
 // The de Casteljau construction of degree n: points, polygon, levels 1 … n, curve.
 interface S {
@@ -47,6 +47,21 @@ describe('a script of named steps', () => {
       'P(t) = P_{3,0}',
       'P(t) = \\sum W P_i',
     ]);
+  });
+
+  it('gives a narrow box the narrow layout of a step that has one, and its one formula otherwise', () => {
+    const wideAndNarrow = script<S, M, 'sum' | 'point'>(
+      narrow(
+        step('sum', 'The sum', () => '\\begin{aligned}&a + b & c + d\\end{aligned}'),
+        () => 'a + b\\\\ c + d',
+      ),
+      step('point', 'The point', () => 'P = (1, 2)'),
+    );
+    const s = { n: 3 };
+    expect(wideAndNarrow.formula(s, model, 0)).toBe('\\begin{aligned}&a + b & c + d\\end{aligned}');
+    expect(wideAndNarrow.formula(s, model, 0, true)).toBe('a + b\\\\ c + d');
+    expect(wideAndNarrow.formula(s, model, 1, true)).toBe('P = (1, 2)');
+    expect(wideAndNarrow.caption(s, model, 0)).toBe('The sum');
   });
 
   it('reveals by name: what was reached stays shown, repeats count up', () => {

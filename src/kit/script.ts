@@ -32,7 +32,19 @@ export interface StepSpec<S, M, N extends string = string> {
   readonly caption: Text<S, M>;
   /** The step's formula with its numbers (TeX), or null where it has none. */
   readonly formula?: (at: StepAt<S, M>) => string | null;
+  /**
+   * The same formula laid out for a narrow box (a laptop's side panel, a
+   * phone), where `formula` is laid out for the projector's width: fewer
+   * terms a line, a table turned on its side. See `narrow`.
+   */
+  readonly narrow?: (at: StepAt<S, M>) => string | null;
 }
+
+/** `spec` with a layout of its formula for a narrow box (the panel's copy). */
+export const narrow = <S, M, N extends string>(
+  spec: StepSpec<S, M, N>,
+  formula: (at: StepAt<S, M>) => string | null,
+): StepSpec<S, M, N> => ({ ...spec, narrow: formula });
 
 /** A step shown once. */
 export function step<S, M, N extends string>(
@@ -166,10 +178,11 @@ export class Script<S, M, N extends string = string> {
     return typeof caption === 'string' ? caption : caption(this.at(state, model, place));
   }
 
-  /** Step k's formula, or null. */
-  formula(state: S, model: M, k: number): string | null {
+  /** Step k's formula, or null; `narrowBox`: laid out for a narrow box, where the step has such a layout. */
+  formula(state: S, model: M, k: number, narrowBox = false): string | null {
     const place = this.place(state, k);
-    return place.spec.formula?.(this.at(state, model, place)) ?? null;
+    const layout = (narrowBox && place.spec.narrow) || place.spec.formula;
+    return layout?.(this.at(state, model, place)) ?? null;
   }
 
   /** The step number of the first (or `index`-th) repeat of `name`; −1 if the script has none now. */

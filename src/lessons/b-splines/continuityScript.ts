@@ -1,5 +1,5 @@
 import { sub, words } from '../../kit/format';
-import { script, step } from '../../kit/script';
+import { narrow, script, step } from '../../kit/script';
 import type { ContinuityCase, JoinCheck } from './continuityGeometry';
 import type { ContinuityModel } from './model';
 import { pt, superscript } from './notation';
@@ -66,7 +66,7 @@ function caseCaption(m: ContinuityModel): string {
 }
 
 /** The derivatives left and right of the watched knot, each row said equal or not. */
-export function joinTex(m: ContinuityModel): string {
+export function joinTex(m: ContinuityModel, narrowBox = false): string {
   const check = m.watched;
   const c = words(check.u);
   // One column per derivative, left and right under it: three rows whatever
@@ -85,8 +85,18 @@ export function joinTex(m: ContinuityModel): string {
         ? '\\text{a jump}'
         : `C^{${check.smooth}}`;
   const through = check.through === null ? '' : `,\\quad P(${c}) = P_{${check.through}}`;
+  const verdict = `\\;\\Rightarrow\\; ${smooth}${through}`;
+  if (narrowBox) {
+    // On its side: one row per derivative, its two values and = or ≠ between
+    // them (a laptop's panel: four columns of points ran 589 px in 404).
+    const rows = check.left.map(
+      (left, r) =>
+        `${derivativeTex(r)} & ${pt(left)} & ${check.agree[r] ? '=' : '\\ne'} & ${pt(check.right[r])}`,
+    );
+    return `\\begin{array}{r|ccc} & u \\to ${c}^- & & u \\to ${c}^+ \\\\ \\hline ${rows.join(' \\\\ ')}\\end{array}${verdict}`;
+  }
   const columns = 'c'.repeat(check.left.length);
-  return `\\begin{array}{r|${columns}} & ${heads.join(' & ')} \\\\ \\hline u \\to ${c}^- & ${side(check.left)} \\\\ u \\to ${c}^+ & ${side(check.right)}\\end{array}\\;\\Rightarrow\\; ${smooth}${through}`;
+  return `\\begin{array}{r|${columns}} & ${heads.join(' & ')} \\\\ \\hline u \\to ${c}^- & ${side(check.left)} \\\\ u \\to ${c}^+ & ${side(check.right)}\\end{array}${verdict}`;
 }
 
 /**
@@ -99,29 +109,44 @@ export const continuityScript = script<BSplineState, ContinuityModel, Continuity
     const n = state.points.length;
     return `The m + 1 = ${n} control points P0 … P${n - 1}: curves of degree 1, 2 and 3 come next`;
   }),
-  step(
-    'linear',
-    ({ model }) => caseCaption(model),
-    ({ model }) => joinTex(model),
+  narrow(
+    step(
+      'linear',
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
   ),
-  step(
-    'quadratic',
-    ({ model }) => caseCaption(model),
-    ({ model }) => joinTex(model),
+  narrow(
+    step(
+      'quadratic',
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
   ),
-  step(
-    'cubic',
-    ({ model }) => caseCaption(model),
-    ({ model }) => joinTex(model),
+  narrow(
+    step(
+      'cubic',
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
   ),
-  step(
-    'double',
-    ({ model }) => caseCaption(model),
-    ({ model }) => joinTex(model),
+  narrow(
+    step(
+      'double',
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
   ),
-  step(
-    'triple',
-    ({ model }) => caseCaption(model),
-    ({ model }) => joinTex(model),
+  narrow(
+    step(
+      'triple',
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
   ),
 );

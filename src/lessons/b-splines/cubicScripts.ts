@@ -1,5 +1,5 @@
 import { texResidue } from '../../kit/format';
-import { script, step } from '../../kit/script';
+import { narrow, script, step } from '../../kit/script';
 import type { ConvertModel, LocalModel, PropertiesModel } from './model';
 import { blend, n3, pt } from './notation';
 import type { BSplineState } from './state';
@@ -37,28 +37,57 @@ export type ConvertReveal = 'points' | 'curve' | 'bezier' | 'beziers' | 'back';
 /** The four B-spline points of the segment under the cursor, as TeX names. */
 const fourNames = (m: ConvertModel) => [0, 1, 2, 3].map((k) => `P_{${m.segment + k}}`);
 
+/** The four Bézier points of the segment under the cursor from its four B-spline points, as `name &= rule = value`. */
+function toBezier(m: ConvertModel): string[] {
+  const [a, b, c, d] = fourNames(m);
+  const bez = m.beziers[m.segment];
+  return [
+    `B_0 &= \\tfrac16(${a} + 4${b} + ${c}) = ${pt(bez[0])}`,
+    `B_1 &= \\tfrac13(2${b} + ${c}) = ${pt(bez[1])}`,
+    `B_2 &= \\tfrac13(${b} + 2${c}) = ${pt(bez[2])}`,
+    `B_3 &= \\tfrac16(${b} + 4${c} + ${d}) = ${pt(bez[3])}`,
+  ];
+}
+
+/** And back: the four B-spline points from the four Bézier points. */
+function fromBezier(m: ConvertModel): string[] {
+  const [a, b, c, d] = fourNames(m);
+  const back = m.back;
+  return [
+    `${a} &= 6B_0 - 7B_1 + 2B_2 = ${pt(back[0])}`,
+    `${b} &= 2B_1 - B_2 = ${pt(back[1])}`,
+    `${c} &= 2B_2 - B_1 = ${pt(back[2])}`,
+    `${d} &= 2B_1 - 7B_2 + 6B_3 = ${pt(back[3])}`,
+  ];
+}
+
+/** Four equations two to a line, so the figure keeps its room on the projector. */
+const twoByTwo = ([a, b, c, d]: string[]) =>
+  `\\begin{aligned}${a} & ${b}\\\\ ${c} & ${d}\\end{aligned}`;
+
+/** The four equations one under another, for a narrow box (a laptop's panel: 422 px two by two in 404). */
+const oneAColumn = (rows: string[]) => `\\begin{aligned}${rows.join('\\\\ ')}\\end{aligned}`;
+
 /** B-spline ↔ Bézier, segment by segment. */
 export const convertScript = script<BSplineState, ConvertModel, ConvertReveal>(
   step('points', 'The control points'),
   step('curve', 'The uniform cubic B-spline'),
-  step(
-    'bezier',
-    'The segment under the cursor as a Bézier curve: its four Bézier points from its four B-spline points',
-    ({ model: m }) => {
-      const [a, b, c, d] = fourNames(m);
-      const bez = m.beziers[m.segment];
-      return `\\begin{aligned}B_0 &= \\tfrac16(${a} + 4${b} + ${c}) = ${pt(bez[0])} & B_1 &= \\tfrac13(2${b} + ${c}) = ${pt(bez[1])}\\\\ B_2 &= \\tfrac13(${b} + 2${c}) = ${pt(bez[2])} & B_3 &= \\tfrac16(${b} + 4${c} + ${d}) = ${pt(bez[3])}\\end{aligned}`;
-    },
+  narrow(
+    step(
+      'bezier',
+      'The segment under the cursor as a Bézier curve: its four Bézier points from its four B-spline points',
+      ({ model: m }) => twoByTwo(toBezier(m)),
+    ),
+    ({ model: m }) => oneAColumn(toBezier(m)),
   ),
   step('beziers', 'Every segment as a Bézier curve: neighbours share their end points'),
-  step(
-    'back',
-    'And back: the four Bézier points give the four B-spline points again',
-    ({ model: m }) => {
-      const [a, b, c, d] = fourNames(m);
-      const back = m.back;
-      return `\\begin{aligned}${a} &= 6B_0 - 7B_1 + 2B_2 = ${pt(back[0])} & ${b} &= 2B_1 - B_2 = ${pt(back[1])}\\\\ ${c} &= 2B_2 - B_1 = ${pt(back[2])} & ${d} &= 2B_1 - 7B_2 + 6B_3 = ${pt(back[3])}\\end{aligned}`;
-    },
+  narrow(
+    step(
+      'back',
+      'And back: the four Bézier points give the four B-spline points again',
+      ({ model: m }) => twoByTwo(fromBezier(m)),
+    ),
+    ({ model: m }) => oneAColumn(fromBezier(m)),
   ),
 );
 

@@ -1,5 +1,5 @@
 import { texNumber, texResidue } from '../../kit/format';
-import { script, step } from '../../kit/script';
+import { narrow, script, step } from '../../kit/script';
 import type { CircleModel, NurbsModel, ProjectiveModel } from './model';
 import { n3, pt } from './notation';
 import type { BSplineState } from './state';
@@ -15,13 +15,22 @@ export const nurbsScript = script<BSplineState, NurbsModel, NurbsReveal>(
     'weights',
     'Weights: a heavier point pulls the curve towards itself, a lighter one lets it go',
   ),
-  step('sum', 'P(u) = Σ wᵢNᵢ(u)Pᵢ / Σ wᵢNᵢ(u), with the numbers at u', ({ model: m }) => {
-    const terms = m.basis.flatMap((b, i) =>
-      b === 0 ? [] : [`${texNumber(m.weights[i], 2)}\\cdot${n3(b)}\\,P_{${i}}`],
-    );
-    return `P(${n3(m.u)}) = \\dfrac{${terms.join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
-  }),
+  narrow(
+    step('sum', 'P(u) = Σ wᵢNᵢ(u)Pᵢ / Σ wᵢNᵢ(u), with the numbers at u', ({ model: m }) => {
+      return `P(${n3(m.u)}) = \\dfrac{${weightedTerms(m).join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
+    }),
+    // The sum over its denominator as a factor in front, its terms on as
+    // many lines as a narrow box needs (a laptop's panel: 496 px in 404).
+    ({ model: m }) =>
+      `P(${n3(m.u)}) = \\tfrac{1}{${n3(m.rational.denominator)}}\\bigl(${weightedTerms(m).join(' + ')}\\bigr) = ${pt(m.point)}`,
+  ),
 );
+
+/** The sum's terms wᵢ·Nᵢ(u) Pᵢ with their numbers, those of the points that count at u. */
+const weightedTerms = (m: NurbsModel) =>
+  m.basis.flatMap((b, i) =>
+    b === 0 ? [] : [`${texNumber(m.weights[i], 2)}\\cdot${n3(b)}\\,P_{${i}}`],
+  );
 
 /** What the steps of the exact circle reveal, by name. */
 export type CircleReveal = 'points' | 'weights' | 'arcs' | 'samples' | 'plain';

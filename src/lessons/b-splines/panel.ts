@@ -115,7 +115,7 @@ export function bsplinePanel(
       const script = scriptOf(state);
       const caption = script.caption(state, m, state.step);
       setText(stepLine, `Step ${state.step} of ${m.shown.lastStep}: ${caption}`);
-      const tex = script.formula(state, m, state.step);
+      const tex = script.formula(state, m, state.step, true);
       setHidden(stepBox, tex === null);
       if (tex !== null) stepFormula.set(slotNumbers(tex));
       segments.update(m, state);

@@ -93,6 +93,43 @@ describe('the scenes and their named steps', () => {
     expect(formula(4)).not.toMatch(/sum/);
   });
 
+  it('the panel gets a narrow layout of the wide formulas: the same equations and numbers, fewer a line', () => {
+    const wideAndNarrow = (id: string, name: string) => {
+      const s = sceneState(id);
+      const script = partScript(s.part);
+      const step = script.stepOf(s, name as never);
+      const at = { ...s, step };
+      return [false, true].map((narrowBox) => script.formula(at, derive(at), step, narrowBox)!);
+    };
+    // Back from Bézier: the four B-spline points of the segment again, one a line.
+    const convert = sceneState('convert');
+    const [wideBack, narrowBack] = wideAndNarrow('convert', 'back');
+    const rows = narrowBack.replace(/^\\begin\{aligned\}|\\end\{aligned\}$/g, '').split('\\\\ ');
+    expect(rows).toHaveLength(4);
+    const segment = derive({ ...convert, step: 4 }).segment;
+    rows.forEach((row, r) => {
+      const [x, y] = convert.points[segment + r];
+      expect(row).toContain(`= (${x.toFixed(2)},\\ ${y.toFixed(2)})`);
+      expect(wideBack).toContain(row.replace(/^\s+/, ''));
+    });
+    // The weighted sum over its denominator: the same terms, as a factor 1/Σ in front.
+    const [wideSum, narrowSum] = wideAndNarrow('nurbs', 'sum');
+    const [, numerator, denominator] = /\\dfrac\{(.*)\}\{([\d.]+)\}/.exec(wideSum)!;
+    expect(narrowSum).toContain(`\\tfrac{1}{${denominator}}\\bigl(${numerator}\\bigr)`);
+    expect(narrowSum).not.toContain('dfrac');
+    // The derivatives either side of the knot on their side: a row each, = or ≠ between.
+    const [wideJoin, narrowJoin] = wideAndNarrow('continuity', 'cubic');
+    expect(narrowJoin).toMatch(
+      /^\\begin\{array\}\{r\|ccc\} & u \\to [\d.]+\^- & & u \\to [\d.]+\^\+ /,
+    );
+    const points = (tex: string) => tex.match(/\(-?[\d.]+,\\ -?[\d.]+\)/g)!.sort();
+    expect(points(narrowJoin)).toEqual(points(wideJoin));
+    expect(narrowJoin.split('\\hline ')[1].split(' \\\\ ')).toHaveLength(4);
+    expect(narrowJoin.slice(narrowJoin.indexOf('\\end{array}'))).toBe(
+      wideJoin.slice(wideJoin.indexOf('\\end{array}')),
+    );
+  });
+
   it('the state says which scene it is in', () => {
     for (const scene of SCENES) expect(sceneState(scene.id).part).toBe(scene.id);
     expect(lesson.scenes!.map((scene) => scene.id)).toEqual(SCENES.map((scene) => scene.id));

@@ -112,7 +112,7 @@ export function bezierSplinesPanel(api: Api): LessonPanel<BezierSplinesState, Be
       }
       const script = scripts[s.part];
       setText(caption, script.caption(s, m, s.step));
-      const next = script.formula(s, m, s.step) ?? '';
+      const next = script.formula(s, m, s.step, true) ?? '';
       if (next !== tex) {
         tex = next;
         setHidden(stepFormula, next === '');

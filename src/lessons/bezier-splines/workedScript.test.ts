@@ -118,6 +118,20 @@ describe('the worked example: computeSplineC1 and computeSplineC2 by hand', () =
     );
   });
 
+  it('gives the side panel the ten points two to a line (five ran 592 px in a laptop’s 404)', () => {
+    const state = { ...opened('worked'), step: 12 };
+    const narrow = scripts.worked.formula(state, derive(state), 12, true)!;
+    const lines = narrow.replace(/^\\begin\{aligned\}|\\end\{aligned\}$/g, '').split('\\\\');
+    expect(lines).toHaveLength(5);
+    expect(lines[2]).toBe(
+      '&4\\ (\\text{E})\\!:\\ (1.78,\\ 3.00),\\quad 5\\ (\\text{F})\\!:\\ (3.22,\\ 3.00)',
+    );
+    // The same ten rows as the projector's five a line.
+    const rows = (tex: string) => tex.match(/\d\\ \(\\text\{[A-J]\}\)\\!:\\ \([^)]*\)/g);
+    expect(rows(narrow)).toEqual(rows(steps[12].formula!));
+    expect(rows(narrow)).toHaveLength(10);
+  });
+
   it('draws the row numbers, then B, then every letter and the C² curve', () => {
     const at = (step: number) => drawState(lesson, { ...opened('worked'), step }).texts;
     expect(at(4)).not.toContain('6');

@@ -1,5 +1,5 @@
 import { smallNumber, sub, trimmed } from '../../kit/format';
-import { repeat, script, step } from '../../kit/script';
+import { narrow, repeat, script, step } from '../../kit/script';
 import { controlPointName, type Point } from '../../math';
 import { texPoint } from '../../render/formula';
 import type { BezierSplinesModel } from './model';
@@ -76,6 +76,9 @@ const row = (q: Point, j: number, kind: SplineKind, n: number) => {
         : `c_{${j}}`;
   return `${j}\\ (${tex})\\!:\\ ${pt(q)}`;
 };
+/** computeSplineC2's output, each point with its number and name. */
+const c2Rows = (model: Model, state: State) =>
+  model.worked.c2.controls.map((q, j) => row(q, j, 'C2', pieces(state)));
 const rows = (output: readonly Point[], n: number) =>
   lines(output.map((q, j) => row(q, j, 'C1', n)));
 
@@ -215,21 +218,20 @@ export const worked = script<State, Model, WorkedReveal>(
       controls.flatMap((q, j) => (j % 3 === 0 || j === 1 ? [] : [`${texName(j, n)} = ${pt(q)}`])),
     );
   }),
-  step(
-    'c2Output',
-    ({ state, model }) => {
-      // How far the hand's numbers are from the whole system solved at once (the maths' solver).
-      const off = model.worked.c2.solverDifference;
-      const agree = off < 1e-12 ? 'they agree to 12 digits' : `they differ by ${smallNumber(off)}`;
-      return `computeSplineC2 returns the ${3 * pieces(state) + 1} control points in order: the C² spline, as the whole system solved at once (${agree})`;
-    },
-    // Five to a line: the figure keeps its room on the projector.
-    ({ model, state }) =>
-      aligned(
-        lines(
-          model.worked.c2.controls.map((q, j) => row(q, j, 'C2', pieces(state))),
-          5,
-        ),
-      ),
+  narrow(
+    step(
+      'c2Output',
+      ({ state, model }) => {
+        // How far the hand's numbers are from the whole system solved at once (the maths' solver).
+        const off = model.worked.c2.solverDifference;
+        const agree =
+          off < 1e-12 ? 'they agree to 12 digits' : `they differ by ${smallNumber(off)}`;
+        return `computeSplineC2 returns the ${3 * pieces(state) + 1} control points in order: the C² spline, as the whole system solved at once (${agree})`;
+      },
+      // Five to a line: the figure keeps its room on the projector.
+      ({ model, state }) => aligned(lines(c2Rows(model, state), 5)),
+    ),
+    // Two to a line in a narrow box (a laptop's panel: five ran 592 px in 404).
+    ({ model, state }) => aligned(lines(c2Rows(model, state), 2)),
   ),
 );
