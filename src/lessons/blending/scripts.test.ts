@@ -9,7 +9,7 @@ import type { BlendingModel } from './model';
 import { NOTES_KEY } from './notesKey';
 import { bsplineScript, hermiteScript, lagrangeScript, symmetryScript } from './script';
 import { type BlendingState, schema } from './state';
-import { matrixFormTex, rowFormula } from './tex';
+import { centroidFormula, matrixFormTex, pointFormula, rowFormula } from './tex';
 
 const cubic: BlendingState = defaultsOf(schema);
 const derive = (s: BlendingState) => lesson.derive(s) as BlendingModel;
@@ -158,6 +158,20 @@ describe('one letter for the parameter: μ, as the lecture notes write it (issue
       ),
     );
     expect(filled(rowFormula(0.5, m.weights))).toMatch(/^\\text\{at \} \\mu = 0\.5:/);
+  });
+
+  it('the panel’s formulas are one line its box may break after a + or a comma (a laptop’s panel is 404 px)', () => {
+    // The cubic (0, 0), (1, 2), (3, 2), (4, 0) at μ = ½: weights 1/8, 3/8, 3/8, 1/8, point (2, 1.5).
+    const m = derive(cubic);
+    expect(filled(rowFormula(0.5, m.weights))).toBe(
+      '\\text{at } \\mu = 0.5:\\quad U M = (0.1250,\\allowbreak\\ 0.3750,\\allowbreak\\ 0.3750,\\allowbreak\\ 0.1250)',
+    );
+    expect(filled(pointFormula(0.5, m.weights, cubic.p, m.point, true))).toBe(
+      'P(0.5) = 0.1250\\,(0.00,\\ 0.00) + 0.3750\\,(1.00,\\ 2.00) + 0.3750\\,(3.00,\\ 2.00) + 0.1250\\,(4.00,\\ 0.00) = (2.0000,\\ 1.5000)',
+    );
+    expect(filled(centroidFormula(3, m.centre))).toBe(
+      'P(0.5) = \\tfrac{1}{8}P_{0} + \\tfrac{3}{8}P_{1} + \\tfrac{3}{8}P_{2} + \\tfrac{1}{8}P_{3} = (2.0000,\\ 1.5000)',
+    );
   });
 
   it('the key says how the slides (u) and the practical (t) write μ: the kit’s row, in the reader’s letter', () => {

@@ -71,11 +71,15 @@ export function pointFormula(
   weights: readonly number[],
   p: readonly Point[],
   point: Point,
+  flowing = false,
 ): FormulaParts {
   const n = p.length - 1;
   if (n > SPELL_OUT_UP_TO)
     return tex`P(${liveMu(mu)}) = \sum_{i=0}^{${n}} W(${n},i,${liveMu(mu)})\,P_i = ${livePoint(point, 4)}`;
   const terms = weights.map((w, i) => tex`${live(texNumber(w, 4))}\,${livePoint(p[i], 2)}`);
+  // In the panel, one line the box breaks after a + where it must (a
+  // laptop's panel fits two terms a line, a phone's one).
+  if (flowing) return tex`P(${liveMu(mu)}) = ${joined(terms, ' + ')} = ${livePoint(point, 4)}`;
   const perLine = Math.ceil(terms.length / 2);
   const lines = [terms.slice(0, perLine), terms.slice(perLine)].map((line) => joined(line, ' + '));
   return tex`\begin{aligned}P(${liveMu(mu)}) &= ${joined(lines, '\\\\ &\\quad + ')}\\ &= ${livePoint(point, 4)}\end{aligned}`;
@@ -97,12 +101,16 @@ export function matrixFormTex(matrix: readonly (readonly number[])[]): string {
   return `${head}M &= \\begin{pmatrix}${rows}\\end{pmatrix}\\end{aligned}`;
 }
 
-/** U·M at μ: the weights again, as a row. */
+/**
+ * U·M at μ: the weights again, as a row, its entries apart by commas so the
+ * panel may break the row after one (seven entries of four decimals are wider
+ * than a laptop's panel).
+ */
 export const rowFormula = (mu: number, weights: readonly number[]) =>
-  tex`\text{at } \mu = ${liveMu(mu)}:\quad U M = \begin{pmatrix}${joined(
+  tex`\text{at } \mu = ${liveMu(mu)}:\quad U M = (${joined(
     weights.map((w) => live(texNumber(w, 4))),
-    ' & ',
-  )}\end{pmatrix}`;
+    ',\\allowbreak\\ ',
+  )})`;
 
 /** P(½) = Σ C(N, i)/2ᴺ Pᵢ: the "centre-weighted centroid", then its value. */
 export function centroidFormula(n: number, centre: Point): FormulaParts {
@@ -110,5 +118,6 @@ export function centroidFormula(n: number, centre: Point): FormulaParts {
     { length: n + 1 },
     (_, i) => `\\tfrac{${binomial(n, i)}}{${2 ** n}}P_{${i}}`,
   );
-  return tex`\begin{aligned}P(0.5) &= ${terms.join(' + ')}\\ &= ${livePoint(centre, 4)}\end{aligned}`;
+  // One line, broken after a + where the panel must (N = 10: 584 px).
+  return tex`P(0.5) = ${terms.join(' + ')} = ${livePoint(centre, 4)}`;
 }

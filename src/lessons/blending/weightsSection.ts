@@ -84,7 +84,7 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
         sum,
         `Together they fill the bar: ΣW = ${words(m.sum)}. The weights are never negative and always sum to 1 (a partition of unity), so P(μ) is a convex combination of the control points and stays in their convex hull.`,
       );
-      point.set(pointFormula(mu, weights, p, m.point));
+      point.set(pointFormula(mu, weights, p, m.point, true));
     },
     hover(id: string | null) {
       lit = highlightedIndex(id);

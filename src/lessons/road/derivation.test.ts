@@ -7,6 +7,8 @@ import {
   naturalCubicSystem,
 } from '../../math';
 import { joinNear } from './derivation';
+import { derivationFormula } from './derivationFormulas';
+import { filled } from '../../render/formula';
 import { derivationFocus } from './sceneDrawing';
 import lesson from './lesson';
 import type { RoadModel } from './model';
@@ -155,6 +157,21 @@ describe('the derivation scene', () => {
     expect(formula(at(11))).toContain('D_{4} + 2D_{5} = 54');
     expect(formula(at(11))).toContain(
       '(D_{0}, \\dots, D_{5}) = (24.3254,\\ -0.6507,\\ 8.2775,\\ 9.5407,\\ 1.5598,\\ 26.2201)',
+    );
+    // The panel's copy of the system: the same rows and numbers in one flowing
+    // line (no aligned block), which may break after a comma as well as an =.
+    const m11 = derive(at(11));
+    const panel = filled(
+      derivationFormula('system', m11.derivation!, 1, { pBar: 0, piece: 0, p: 0 }, true)!,
+    );
+    expect(panel).not.toContain('aligned');
+    expect(panel).toContain('2D_{0} + D_{1} = 48,\\allowbreak\\quad ');
+    expect(panel).toContain(
+      'D_{i-1} + 4D_{i} + D_{i+1} = 30,\\allowbreak\\ 42,\\allowbreak\\ 48,\\allowbreak\\ 42',
+    );
+    expect(panel).toContain('D_{4} + 2D_{5} = 54\\ \\Rightarrow');
+    expect(panel).toContain(
+      '(D_{0}, \\dots, D_{5}) = (24.3254,\\allowbreak\\ -0.6507,\\allowbreak\\ 8.2775,\\allowbreak\\ 9.5407,\\allowbreak\\ 1.5598,\\allowbreak\\ 26.2201)',
     );
     expect(formula(at(2))).toBe(
       'p = \\frac{\\bar p - \\bar p_{2}}{\\bar p_{3} - \\bar p_{2}} = \\frac{2.40 - 2}{3 - 2} = 0.40',

@@ -44,13 +44,15 @@ export interface Marker {
 
 /**
  * The formula of `step` for coordinate k (0: x, 1: y), with its numbers;
- * null where the step has none (a join step with no inner village).
+ * null where the step has none (a join step with no inner village). In the
+ * panel (`flowing`) the system is one line its box breaks where it must.
  */
 export function derivationFormula(
   step: DerivationStep,
   work: Derivation,
   k: 0 | 1,
   marker: Marker,
+  flowing = false,
 ): FormulaParts | null {
   const c = work.coordinates[k];
   const v = k === 0 ? 'x' : 'y';
@@ -100,7 +102,7 @@ export function derivationFormula(
       return tex`${v}''_{${i}}(1) = 2c_{${i}} + 6d_{${i}} = 0 \;\Rightarrow\; D_{${i}} + 2D_{${m}} = 3(${v}_{${m}} - ${v}_{${i}}):\quad ${number(D[i])} + 2${bracket(D[m])} = ${live(trimmed(left, 4))} = 3(${place(c.values[m])} - ${place(c.values[i])})`;
     }
     case 'system':
-      return systemFormula(c, m);
+      return systemFormula(c, m, flowing);
   }
 }
 
@@ -108,9 +110,9 @@ export function derivationFormula(
 const bracket = (value: number) => tex`(${number(value)})`;
 
 /** Values separated by commas, the middle ones left out when there are many. */
-function listed(values: readonly FormulaParts[]): FormulaParts {
-  if (values.length <= FULL_ROWS) return joined(values, ',\\ ');
-  return joined([...values.slice(0, 3), tex`\dots`, ...values.slice(-2)], ',\\ ');
+function listed(values: readonly FormulaParts[], comma = ',\\ '): FormulaParts {
+  if (values.length <= FULL_ROWS) return joined(values, comma);
+  return joined([...values.slice(0, 3), tex`\dots`, ...values.slice(-2)], comma);
 }
 
 /**
@@ -143,15 +145,24 @@ function substituted(c: CoordinateWork, v: string, j: number): FormulaParts {
 /**
  * The whole system with its numbers, in two lines so the map keeps its room
  * on the projector: the end rows and the inner rows' right-hand sides, then
- * the D's it gives.
+ * the D's it gives. Flowing, the same rows in one line broken after a comma
+ * or an = where the box needs (a laptop's panel: 473–498 px in 404).
  */
-function systemFormula(c: CoordinateWork, m: number): FormulaParts {
+function systemFormula(c: CoordinateWork, m: number, flowing: boolean): FormulaParts {
   const rhs = (i: number) => number(c.rhs[i]);
+  // Flowing, a line may break after any comma of a list, as well as after an =.
+  const comma = flowing ? ',\\allowbreak\\ ' : ',\\ ';
+  const gap = flowing ? tex`,\allowbreak\quad ` : tex`,\quad `;
   const inner = Array.from({ length: m - 1 }, (_, k) => k + 1);
   const innerRows =
     inner.length === 0
       ? tex``
-      : tex`,\quad D_{i-1} + 4D_{i} + D_{i+1} = ${listed(inner.map(rhs))}\ (i = 1, \dots, ${m - 1})`;
-  const solved = listed(c.gradients.map((d) => number(d)));
+      : tex`${gap}D_{i-1} + 4D_{i} + D_{i+1} = ${listed(inner.map(rhs), comma)}\ (i = 1, \dots, ${m - 1})`;
+  const solved = listed(
+    c.gradients.map((d) => number(d)),
+    comma,
+  );
+  if (flowing)
+    return tex`2D_{0} + D_{1} = ${rhs(0)}${innerRows}${gap}D_{${m - 1}} + 2D_{${m}} = ${rhs(m)}\ \Rightarrow\ (D_{0}, \dots, D_{${m}}) = (${solved})`;
   return tex`\begin{aligned}&2D_{0} + D_{1} = ${rhs(0)}${innerRows},\quad D_{${m - 1}} + 2D_{${m}} = ${rhs(m)}\\ &\Rightarrow\ (D_{0}, \dots, D_{${m}}) = (${solved})\end{aligned}`;
 }

@@ -76,7 +76,7 @@ export function derivationSection() {
       setText(text, TEXT[name] ?? '');
       const marker = { pBar: m.state.pBar, ...m.along };
       formulas.forEach((formula, k) => {
-        const parts = derivationFormula(name, work, k as 0 | 1, marker);
+        const parts = derivationFormula(name, work, k as 0 | 1, marker, true);
         setHidden(formula.element, !parts);
         setHidden(labels[k], !parts);
         if (parts) formula.set(parts);
