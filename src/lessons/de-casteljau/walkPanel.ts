@@ -67,11 +67,16 @@ function pseudocodeSection() {
       {},
       'The lecture notes write it as a recursive function, with a drawCurve that plots it:',
     ),
-    // A long line scrolls in its own box, never the page (a phone's screen is narrow).
+    // As the notes write it, line for line; a line longer than the panel
+    // (casteljau's recursive call: 831 px in a laptop's 404) goes on under
+    // itself, indented further, as a listing is printed on a narrow page.
     h(
       'pre',
-      { 'aria-label': 'The lecture notes’ pseudocode', style: 'overflow-x:auto;max-width:100%' },
-      LECTURE_PSEUDOCODE,
+      { 'aria-label': 'The lecture notes’ pseudocode', class: 'quoted-code' },
+      ...LECTURE_PSEUDOCODE.split('\n').map((line) => {
+        const code = line.trimStart();
+        return h('span', { style: `--indent:${line.length - code.length}ch` }, code);
+      }),
     ),
     recursionSlip(),
     notesSymbols(),
