@@ -45,12 +45,13 @@ export function append(parent: Node, children: (Child | readonly Child[])[]): vo
       continue;
     }
     const text = asShown(parent, String(child));
-    if (indexable(parent) && INDEX_RUN.test(text)) {
+    const runs = parent.nodeName === 'LABEL' ? LABEL_INDEX_RUN : INDEX_RUN;
+    if (indexable(parent) && runs.test(text)) {
       // One box for the words and their indices: in a row of boxes (a radio's
       // label, a toolbar) each run of text and each index would be a box of
       // its own, "D" on one line and "ₖ" a gap away on another.
       const words = document.createElement('span');
-      words.append(...indexedRuns(text));
+      words.append(...indexedRuns(text, runs));
       parent.appendChild(words);
     } else parent.appendChild(document.createTextNode(text));
   }
@@ -70,6 +71,14 @@ const SUBSCRIPT_RUN = /^[₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+$/;
  */
 const INDEX_RUN = /([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+|(?<=(?<![A-Za-z])[PD])N(?:−1)?(?![\p{L}\d(]))/u;
 
+/**
+ * In a control's label, also a point's index as the lesson wrote it, P0, P2,1,
+ * Pn, Di: it is set as a subscript, its text unchanged, so the control's
+ * accessible name ("Hermite H0…H3") stays what scripts and screen readers know.
+ */
+const LABEL_INDEX_RUN =
+  /([₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+|(?<=(?<![A-Za-z])[PD])N(?:−1)?(?![\p{L}\d(])|(?<=(?<![A-Za-z])[PDBQLH])(?:\d+(?:,\d+)?|[ijkmn])(?![\p{L}\d(.]))/u;
+
 /** Elements whose text may hold spans (not an option's, a text area's or an SVG text's). */
 const indexable = (node: Node): node is HTMLElement =>
   node instanceof HTMLElement && !['OPTION', 'TEXTAREA', 'TITLE'].includes(node.nodeName);
@@ -80,9 +89,9 @@ const indexable = (node: Node): node is HTMLElement =>
  * small to tell P₁,₀ from P₁,₁ at the back of the room or in a laptop's panel.
  * The nodes' text reads as `text`.
  */
-function indexedRuns(text: string): (Node | string)[] {
+function indexedRuns(text: string, runs = INDEX_RUN): (Node | string)[] {
   return text
-    .split(INDEX_RUN)
+    .split(runs)
     .map((run, i) => {
       if (i % 2 === 0) return run;
       const index = document.createElement('span');

@@ -147,7 +147,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   );
 });
 
-test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0, PN or N(i,2) in prose or a table, at the last step of any scene', async ({
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0, PN or N(i,2) in prose, a table or a label, at the last step of any scene', async ({
   page,
 }) => {
   test.setTimeout(240_000);
@@ -171,8 +171,10 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez
           const parent = n.parentElement!;
           if (parent.closest(skip) || parent.closest('[hidden]') || !parent.checkVisibility())
             continue;
-          // Prose and tables (not a button or a label) name points as the figures do.
-          const prose = !!parent.closest('p, li, h2, h3, h4, summary, figcaption, td, th');
+          // Prose, tables and a control's label (not a button) name points as
+          // the figures do: a radio's "P0 … Pn" reads P₀ … Pₙ, its index a
+          // subscript of its own (its accessible name keeps the digits).
+          const prose = !!parent.closest('p, li, h2, h3, h4, summary, figcaption, td, th, label');
           if (n.nodeValue!.trim()) texts.push({ text: n.nodeValue!, prose });
         }
         return texts;
