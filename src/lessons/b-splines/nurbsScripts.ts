@@ -20,9 +20,12 @@ export const nurbsScript = script<BSplineState, NurbsModel, NurbsReveal>(
       return `P(${n3(m.u)}) = \\dfrac{${weightedTerms(m).join(' + ')}}{${n3(m.rational.denominator)}} = ${pt(m.point)}`;
     }),
     // The sum over its denominator as a factor in front, its terms on as
-    // many lines as a narrow box needs (a laptop's panel: 496 px in 404).
+    // many lines as a narrow box needs (a laptop's panel: 496 px in 404),
+    // each term a group, so a line breaks after a +, never inside w·N.
     ({ model: m }) =>
-      `P(${n3(m.u)}) = \\tfrac{1}{${n3(m.rational.denominator)}}\\bigl(${weightedTerms(m).join(' + ')}\\bigr) = ${pt(m.point)}`,
+      `P(${n3(m.u)}) = \\tfrac{1}{${n3(m.rational.denominator)}}\\bigl(${weightedTerms(m)
+        .map((term) => `{${term}}`)
+        .join(' + ')}\\bigr) = ${pt(m.point)}`,
   ),
 );
 

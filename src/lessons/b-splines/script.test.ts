@@ -115,7 +115,12 @@ describe('the scenes and their named steps', () => {
     // The weighted sum over its denominator: the same terms, as a factor 1/Σ in front.
     const [wideSum, narrowSum] = wideAndNarrow('nurbs', 'sum');
     const [, numerator, denominator] = /\\dfrac\{(.*)\}\{([\d.]+)\}/.exec(wideSum)!;
-    expect(narrowSum).toContain(`\\tfrac{1}{${denominator}}\\bigl(${numerator}\\bigr)`);
+    expect(narrowSum).toContain(
+      `\\tfrac{1}{${denominator}}\\bigl(${numerator
+        .split(' + ')
+        .map((term) => `{${term}}`)
+        .join(' + ')}\\bigr)`,
+    );
     expect(narrowSum).not.toContain('dfrac');
     // The derivatives either side of the knot on their side: a row each, = or ≠ between.
     const [wideJoin, narrowJoin] = wideAndNarrow('continuity', 'cubic');
