@@ -99,6 +99,17 @@ export function joinTex(m: ContinuityModel, narrowBox = false): string {
   return `\\begin{array}{r|${columns}} & ${heads.join(' & ')} \\\\ \\hline u \\to ${c}^- & ${side(check.left)} \\\\ u \\to ${c}^+ & ${side(check.right)}\\end{array}${verdict}`;
 }
 
+/** One case of the continuity walk: its caption, the derivatives as a table, on its side in the panel. */
+const joinStep = (name: Exclude<ContinuityReveal, 'points'>) =>
+  narrow(
+    step<BSplineState, ContinuityModel, ContinuityReveal>(
+      name,
+      ({ model }) => caseCaption(model),
+      ({ model }) => joinTex(model),
+    ),
+    ({ model }) => joinTex(model, true),
+  );
+
 /**
  * Degree p ⇒ Cᵖ⁻¹: the same points with degree 1, 2 and 3 on simple knots,
  * then the cubic with a double and a triple knot; at each, the derivatives of
@@ -109,44 +120,5 @@ export const continuityScript = script<BSplineState, ContinuityModel, Continuity
     const n = state.points.length;
     return `The m + 1 = ${n} control points P0 … P${n - 1}: curves of degree 1, 2 and 3 come next`;
   }),
-  narrow(
-    step(
-      'linear',
-      ({ model }) => caseCaption(model),
-      ({ model }) => joinTex(model),
-    ),
-    ({ model }) => joinTex(model, true),
-  ),
-  narrow(
-    step(
-      'quadratic',
-      ({ model }) => caseCaption(model),
-      ({ model }) => joinTex(model),
-    ),
-    ({ model }) => joinTex(model, true),
-  ),
-  narrow(
-    step(
-      'cubic',
-      ({ model }) => caseCaption(model),
-      ({ model }) => joinTex(model),
-    ),
-    ({ model }) => joinTex(model, true),
-  ),
-  narrow(
-    step(
-      'double',
-      ({ model }) => caseCaption(model),
-      ({ model }) => joinTex(model),
-    ),
-    ({ model }) => joinTex(model, true),
-  ),
-  narrow(
-    step(
-      'triple',
-      ({ model }) => caseCaption(model),
-      ({ model }) => joinTex(model),
-    ),
-    ({ model }) => joinTex(model, true),
-  ),
+  ...(['linear', 'quadratic', 'cubic', 'double', 'triple'] as const).map(joinStep),
 );

@@ -68,26 +68,33 @@ const twoByTwo = ([a, b, c, d]: string[]) =>
 /** The four equations one under another, for a narrow box (a laptop's panel: 422 px two by two in 404). */
 const oneAColumn = (rows: string[]) => `\\begin{aligned}${rows.join('\\\\ ')}\\end{aligned}`;
 
+/** A step of four equations: two by two on the projector, one a line in the panel. */
+const fourEquations = (
+  name: ConvertReveal,
+  caption: string,
+  equations: (m: ConvertModel) => string[],
+) =>
+  narrow(
+    step<BSplineState, ConvertModel, ConvertReveal>(name, caption, ({ model }) =>
+      twoByTwo(equations(model)),
+    ),
+    ({ model }) => oneAColumn(equations(model)),
+  );
+
 /** B-spline ↔ Bézier, segment by segment. */
 export const convertScript = script<BSplineState, ConvertModel, ConvertReveal>(
   step('points', 'The control points'),
   step('curve', 'The uniform cubic B-spline'),
-  narrow(
-    step(
-      'bezier',
-      'The segment under the cursor as a Bézier curve: its four Bézier points from its four B-spline points',
-      ({ model: m }) => twoByTwo(toBezier(m)),
-    ),
-    ({ model: m }) => oneAColumn(toBezier(m)),
+  fourEquations(
+    'bezier',
+    'The segment under the cursor as a Bézier curve: its four Bézier points from its four B-spline points',
+    toBezier,
   ),
   step('beziers', 'Every segment as a Bézier curve: neighbours share their end points'),
-  narrow(
-    step(
-      'back',
-      'And back: the four Bézier points give the four B-spline points again',
-      ({ model: m }) => twoByTwo(fromBezier(m)),
-    ),
-    ({ model: m }) => oneAColumn(fromBezier(m)),
+  fourEquations(
+    'back',
+    'And back: the four Bézier points give the four B-spline points again',
+    fromBezier,
   ),
 );
 
