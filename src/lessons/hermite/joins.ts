@@ -10,7 +10,15 @@ export function joinsSection() {
   const text = h('p', {});
   const body = h('tbody', {});
   const rows = new LiveRows(body);
-  const table = dataTable('Joins', ['Join', 'P′ before', 'P′ after', 'Continuity'], body);
+  // Points to 2 decimals, as everywhere in the app; a heading may take two
+  // lines, Continuity broken where its soft hyphen is (at 3 decimals the
+  // table ran 384 px in a phone's 336).
+  const table = dataTable(
+    'Joins',
+    ['Join', 'P′ before', 'P′ after', 'Conti\u00ADnuity'],
+    body,
+    'names',
+  );
   return {
     element: h('section', {}, h('h2', {}, 'Joins'), text, table),
     update({ joins, onlyC1 }: HermiteModel) {
@@ -25,8 +33,8 @@ export function joinsSection() {
         joins.map((join) => ({
           cells: [
             `P${join.k}`,
-            fmtPoint(join.before, 3),
-            fmtPoint(join.after, 3),
+            fmtPoint(join.before),
+            fmtPoint(join.after),
             continuityName(join.continuity),
           ],
         })),
