@@ -3,7 +3,9 @@ import { describe, expect, it } from 'vitest';
 import { defaultsOf } from '../../app/urlState';
 import { type Point, cubicSplinePoint, distance, naturalCubicTangents } from '../../math';
 import { type AffineMap, applyMap, globalChange, naturalRoad } from './globalChange';
+import { mapFormula } from './globalPanel';
 import lesson from './lesson';
+import { filled } from '../../render/formula';
 import type { RoadModel } from './model';
 import { scenes } from './scenes';
 import { type RoadState, SIX_VILLAGES, normalize, schema } from './state';
@@ -79,6 +81,8 @@ describe('the global scene: an affine map', () => {
     expect(mapped.gap).toBeLessThan(1e-12);
     expect(mapped.samples).toBe(101);
     expect(steps.formula!(derive(at(5)), at(5))).toMatch(/= 0$/);
+    // The panel's copy too: the residue reads 0, not 0.000000.
+    expect(filled(mapFormula(derive(at(5)).globalChange!, true))).toMatch(/\| = 0$/);
     expect(steps.describe(at(5), 5)).toBe(
       'The natural road through the mapped villages is the mapped road: at 101 values of p̄ the two are 0.000 apart, rounding aside',
     );

@@ -3,7 +3,7 @@ import { type RowSpec, LiveRows } from '../../app/liveTable';
 import { fixed, sub, words } from '../../kit/format';
 import { LiveFormula } from '../../render/formula';
 import { type FormulaParts, live, livePoint, tex } from '../../render/formulaParts';
-import { texNumber } from '../../kit/format';
+import { texNumber, texResidue } from '../../kit/format';
 import type { GlobalChange } from './globalChange';
 import type { RoadModel } from './model';
 import { LABEL_VILLAGES } from './points';
@@ -45,14 +45,18 @@ function gradientRows(change: GlobalChange, moved: boolean): RowSpec[] {
   }));
 }
 
-/** The map, and once the road through the mapped villages is drawn, how far it is from the mapped road. */
-function mapFormula(change: GlobalChange, compared: boolean): FormulaParts {
+/**
+ * The map, and once the road through the mapped villages is drawn, how far it
+ * is from the mapped road: a rounding residue reads 0, as in the step's formula
+ * (it read 0.000000).
+ */
+export function mapFormula(change: GlobalChange, compared: boolean): FormulaParts {
   const { map, gap } = change.mapped;
   const entry = (v: number) => live(texNumber(v, 4));
   const [[a, b], [c, d]] = map.matrix;
   const matrix = tex`A = \begin{bmatrix}${entry(a)} & ${entry(b)}\\ ${entry(c)} & ${entry(d)}\end{bmatrix},\ t = ${livePoint(map.shift)}`;
   return compared
-    ? tex`${matrix},\quad \max_{\bar p} |S(AP_i + t) - (A\,S(P_i) + t)| = ${live(texNumber(gap, 6))}`
+    ? tex`${matrix},\quad \max_{\bar p} |{S(AP_i + t) - (A\,S(P_i) + t)}| = ${live(texResidue(gap))}`
     : matrix;
 }
 
@@ -62,11 +66,13 @@ export function globalSection() {
   const text = h('p', {});
   const body = h('tbody', {});
   const rows = new LiveRows(body);
+  // The rows' heading is their name, Dᵢ (a phone's panel: "Gradient" took
+  // the room the |change| column needed, 384 px in 336); columns set close.
   const table = dataTable(
     'Gradients before and after the move',
-    ['Gradient', 'before', 'after', '|change|'],
+    ['Dᵢ', 'before', 'after', '|change|'],
     body,
-    'road-gradients',
+    'road-gradients matrix',
   );
   const formula = new LiveFormula(true);
   const why = h('p', { class: 'note' }, WHY);
