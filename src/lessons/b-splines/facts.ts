@@ -6,7 +6,8 @@ import type { BSplineModel } from './model';
 import { isUniformPart } from './state';
 
 const num = (v: number) => texNumber(v, 4);
-const point = (p: readonly number[]) => `(${num(p[0])}, ${num(p[1])})`;
+/** A point whole on its line (a no-break space): a value may wrap between points, not inside one. */
+const point = (p: readonly number[]) => `(${num(p[0])},\u00A0${num(p[1])})`;
 const row = (name: string, value: string, className = ''): RowSpec => ({
   cells: [name, value],
   className,

@@ -84,7 +84,7 @@ export function bsplinePanel(
     triangle.element,
     curvature.element,
     h('h2', {}, 'Numbers'),
-    dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody, 'names'),
+    dataTable('Numbers of the curve', ['Quantity', 'Value'], factBody, 'names lists'),
   );
   let shownPart = '';
   /** The points the shape note was written for: t and the step leave them alone. */

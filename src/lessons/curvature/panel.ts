@@ -75,7 +75,7 @@ export function curvaturePanel(
   const rows = new LiveRows(body);
   const arcBody = h('tbody', {});
   const arcTable = new LiveRows(arcBody);
-  const values = dataTable('Values at t', ['Quantity', 'Value'], body, 'names');
+  const values = dataTable('Values at t', ['Quantity', 'Value'], body, 'names lists');
   const table = h(
     'div',
     {},

@@ -10,7 +10,8 @@ import type { CurvatureState } from './state';
  * for whoever checks it against the maths.
  */
 const shown = (value: number) => trimmed(value, 4);
-const vector = (v: Point | null) => (v ? `(${v.map(shown).join(', ')})` : 'undefined');
+/** A vector whole on its line (no-break spaces): the value column may wrap between words, not inside it. */
+const vector = (v: Point | null) => (v ? `(${v.map(shown).join(',\u00A0')})` : 'undefined');
 
 interface Row {
   cells: (string | { text: string; swatch?: string })[];

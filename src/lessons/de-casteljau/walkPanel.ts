@@ -109,7 +109,13 @@ function bernsteinSection() {
       {},
       'Each point of level r blends r + 1 neighbouring control points with the Bernstein weights: Pᵣ,ᵢ = Σⱼ W(r, j, t) Pᵢ₊ⱼ, whose weights are never negative and add up to 1. The lecture notes (“The de Casteljau form”) expand the recursion backwards from P₃,₀; here it is built forwards, level by level, and the sums are the same.',
     ),
-    dataTable('Weights of each level', ['Level r', 'W(r, 0, t) … W(r, r, t)', 'Pᵣ,₀'], body),
+    dataTable(
+      'Weights of each level',
+      // Each W(…) whole on its line (no-break spaces): the heading breaks at the dots.
+      ['Level r', 'W(r,\u00A00,\u00A0t) … W(r,\u00A0r,\u00A0t)', 'Pᵣ,₀'],
+      body,
+      'names lists',
+    ),
     h(
       'p',
       { class: 'note' },

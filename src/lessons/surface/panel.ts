@@ -110,7 +110,7 @@ export function surfacePanel(
     h('p', {}, 'By the double sum, and by de Casteljau in u then v and in v then u:'),
     h(
       'table',
-      { class: 'data-table', 'aria-label': 'The point P(u, v) three ways' },
+      { class: 'data-table names', 'aria-label': 'The point P(u, v) three ways' },
       h(
         'thead',
         {},
