@@ -3,9 +3,11 @@
  * table is shrunk (down to half size, and never under 12 px) so it is seen
  * whole in the side panel, and on a projector, where everything is larger,
  * instead of being cut at the panel's edge. A formula still too wide at its
- * smallest is set at its full size on several lines, broken after an = or a +
- * as TeX breaks a formula in running text; only a piece wider than the box
- * by itself (a matrix) scrolls. Elements are marked when their content
+ * smallest is set on several lines, broken after an = or a + as TeX breaks a
+ * formula in running text, at full size or as large as its widest piece
+ * allows (never under 12 px); only a piece wider than the box at 12 px (a
+ * matrix) scrolls. (Each marked formula's pieces are read twice, for its
+ * width and for its lines: one loop would do.) Elements are marked when their content
  * changes, and only marked ones are measured: all are read, then all are
  * written, so the browser lays the page out once per pass, not once per
  * element.
