@@ -5,7 +5,7 @@
 import { subscriptNames } from '../kit/subscripts';
 import { shownAttribute, shownText } from './notationDom';
 
-type Child = Node | string | number | null | undefined | false;
+export type Child = Node | string | number | null | undefined | false;
 type Attrs = Record<string, string | number | boolean | null | undefined | EventListener>;
 
 export function h<K extends keyof HTMLElementTagNameMap>(

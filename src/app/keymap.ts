@@ -44,6 +44,16 @@ export interface KeyTarget {
   gallery(): void;
 }
 
+/** The keys' actions that belong to the open lesson page (the rest are the app's). */
+export type PageKeys = Omit<
+  KeyTarget,
+  'presenter' | 'dark' | 'fullscreen' | 'help' | 'gallery' | 'blanked'
+> & {
+  /** The screen is blanked: a clicker key only brings it back. */
+  blanked(): boolean;
+  unblank(): void;
+};
+
 /** Presenter tools that are switched on and off. */
 export type PresenterTool =
   'laser' | 'ink' | 'hideCurve' | 'hideNumbers' | 'hideLabels' | 'ghost' | 'trail';

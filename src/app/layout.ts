@@ -3,7 +3,7 @@
  * rows, columns and grids with headings (Observable Plot's facets: one scale
  * and one heading for a row or column of figures).
  */
-import { h } from './dom';
+import { h, setHidden } from './dom';
 import type { LayoutNode } from './lesson';
 
 export function buildLayout(
@@ -49,4 +49,28 @@ function node(layout: LayoutNode, figures: ReadonlyMap<string, HTMLElement>): HT
     box.append(el);
   });
   return box;
+}
+
+/**
+ * Shows the figures a scene declares (`ids`, or all for null) and hides the
+ * others, with any row, column or grid of the layout left with no figure to show.
+ */
+export function showFigures(
+  box: HTMLElement,
+  figures: readonly { readonly element: HTMLElement; readonly spec: { readonly id: string } }[],
+  ids: readonly string[] | null,
+): void {
+  for (const figure of figures)
+    setHidden(figure.element, ids !== null && !ids.includes(figure.spec.id));
+  const groups = [...box.querySelectorAll<HTMLElement>('.figures')].reverse();
+  for (const group of groups)
+    setHidden(
+      group,
+      ![...group.children].some(
+        (child) =>
+          child instanceof HTMLElement &&
+          !child.hidden &&
+          !child.matches('.grid-heading, .grid-corner'),
+      ),
+    );
 }

@@ -10,8 +10,9 @@ import { applySettings, loadSettings, saveSettings } from './settings';
 import { helpDialog, openHelp } from './help';
 import { watchNotation } from './notationDom';
 import { takeLetter, withLetter } from './urlState';
-import { LETTERS, LETTER_FORMS, type Letter, setNotation } from '../render/notation';
-import { type KeyTarget, bindingFor, restoresBlank } from './keymap';
+import { type Letter, setNotation } from '../render/notation';
+import { listenForKeys } from './appKeys';
+import { TopBar } from './topBar';
 
 const settings = loadSettings();
 let theme = applySettings(settings);
@@ -32,60 +33,13 @@ const announcer = h('div', {
 });
 const help = helpDialog();
 
-function button(
-  label: string,
-  title: string,
-  action: () => void,
-  pressed?: boolean,
-  className?: string,
-): HTMLButtonElement {
-  return h(
-    'button',
-    {
-      type: 'button',
-      class: className,
-      title,
-      'aria-pressed': pressed === undefined ? undefined : String(pressed),
-      onclick: action,
-    },
-    label,
-  );
-}
-
-const projectorButton = button(
-  'Presenter',
-  'Presenter view: the figure fills the screen, large captions and strokes, high contrast (P)',
-  () => toggleProjector(),
-  settings.projector,
-  'for-projector',
-);
-const darkButton = button('Dark', 'Dark theme (D)', () => toggleDark(), settings.dark);
-const LETTER_WORDS: Record<Letter, string> = { mu: 'lecture', u: 'slides', t: 'practical' };
-const letterSelect = h(
-  'select',
-  {
-    class: 'letter-setting',
-    'aria-label': 'Parameter letter',
-    title: `How the curve parameter is written: ${LETTERS.map((l) => `${LETTER_FORMS[l].plain} as in ${LETTER_FORMS[l].source}`).join(', ')}`,
-    onchange: () => chooseLetter(letterSelect.value as Letter),
-  },
-  ...LETTERS.map((l) => h('option', { value: l }, `${LETTER_FORMS[l].plain} (${LETTER_WORDS[l]})`)),
-);
-letterSelect.value = settings.letter;
-const topBar = h(
-  'header',
-  { class: 'top-bar' },
-  h('a', { class: 'brand', href: '#/' }, 'Spline Lab'),
-  h(
-    'nav',
-    { class: 'app-tools', 'aria-label': 'Display' },
-    projectorButton,
-    darkButton,
-    letterSelect,
-    button('Full screen', 'Full screen (F)', () => toggleFullscreen(), undefined, 'for-projector'),
-    button('?', 'Help: touch, mouse, keyboard and clicker (?)', () => openHelp(help)),
-  ),
-);
+const topBar = new TopBar(settings, {
+  projector: () => toggleProjector(),
+  dark: () => toggleDark(),
+  letter: (letter) => chooseLetter(letter),
+  fullscreen: () => toggleFullscreen(),
+  help: () => openHelp(help),
+});
 document.body.append(
   h(
     'a',
@@ -99,7 +53,7 @@ document.body.append(
     },
     'Skip to content',
   ),
-  topBar,
+  topBar.element,
   notices,
   main,
   announcer,
@@ -127,8 +81,7 @@ function announce(message: string): void {
 function rerender(): void {
   theme = applySettings(settings);
   saveSettings(settings);
-  projectorButton.setAttribute('aria-pressed', String(settings.projector));
-  darkButton.setAttribute('aria-pressed', String(settings.dark));
+  topBar.pressed(settings.projector, settings.dark);
   if (page) page.refresh();
   else if (parseHash(location.hash).slug === null) showGallery();
 }
@@ -138,7 +91,7 @@ function chooseLetter(letter: Letter): void {
   if (letter === settings.letter) return;
   settings.letter = letter;
   saveSettings(settings);
-  letterSelect.value = letter;
+  topBar.letter(letter);
   setNotation(page?.lesson.letter ?? null, letter);
   // The link takes the letter now; the page is built again in it.
   page?.writeUrl();
@@ -197,7 +150,7 @@ async function route(): Promise<void> {
   if (taken.letter && taken.letter !== settings.letter) {
     settings.letter = taken.letter;
     saveSettings(settings);
-    letterSelect.value = taken.letter;
+    topBar.letter(taken.letter);
   }
   const handout = path?.endsWith(HANDOUT) ?? false;
   const slug = handout && path ? path.slice(0, -HANDOUT.length) : path;
@@ -215,8 +168,8 @@ async function route(): Promise<void> {
     // screen, as opening it afresh restores the last state; a link with a
     // state (typed into the address bar, or back/forward) applies it.
     if (taken.issue) notice(taken.issue);
-    if (query === '') page.keepState();
-    else page.applyQuery(loadState(page.lesson, query, null));
+    if (query === '') page.links.keepState();
+    else page.links.applyQuery(loadState(page.lesson, query, null));
     return;
   }
   page?.destroy();
@@ -306,55 +259,16 @@ watchNotation(main);
 window.addEventListener('hashchange', () => {
   routing = route();
 });
-/** What the keys act on: the app's own actions, and the open lesson's. */
-const keyTarget: KeyTarget = {
-  undo: () => page?.undo(),
-  redo: () => page?.redo(),
-  advance: (delta) => page?.advance(delta),
-  stepTo: (end) => page?.stepTo(end),
-  togglePlay: () => page?.togglePlay(),
-  playSpeed: (delta) => page?.playSpeed(delta),
-  fit: () => page?.fit(),
-  zoom: (factor) => page?.zoom(factor),
-  orbit: (yaw, pitch) => page?.orbit(yaw, pitch),
+listenForKeys(() => page, {
   presenter: () => toggleProjector(),
-  sidePanel: () => page?.sidePanel(),
-  lecturerControls: () => page?.lecturerControls(),
-  ask: () => page?.ask(),
-  blank: () => page?.blank(),
-  get blanked() {
-    return page?.blanked ?? false;
-  },
-  tool: (name) => page?.tool(name),
-  clearInk: () => page?.clearInk(),
   dark: () => toggleDark(),
   fullscreen: () => toggleFullscreen(),
   help: () => openHelp(help),
   gallery: () => {
     location.hash = '#/';
   },
-};
-
-// Capture phase: the page's keys are taken before a focused control sees them,
-// so a clicker's PageDown never also moves a slider or ticks a box.
-window.addEventListener(
-  'keydown',
-  (e) => {
-    if (help.open) return;
-    if (keyTarget.blanked && restoresBlank(e)) {
-      page?.unblank();
-      e.preventDefault();
-      e.stopPropagation();
-      return;
-    }
-    const binding = bindingFor(e, page !== null);
-    if (!binding) return;
-    e.preventDefault();
-    e.stopPropagation();
-    binding.run(keyTarget);
-  },
-  { capture: true },
-);
+  helpOpen: () => help.open,
+});
 window.addEventListener('pagehide', () => page?.writeUrl());
 
 // For tests and tools driving the page: resolves once a change has settled
