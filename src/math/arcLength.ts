@@ -1,5 +1,6 @@
 import { bezierDerivative } from './bezier';
-import { checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Arc length ∫ |P′(t)| dt by adaptive Gauss–Legendre quadrature: five-point

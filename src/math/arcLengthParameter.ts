@@ -1,6 +1,7 @@
 import { bezierArcLength } from './arcLength';
+import { checkPoints } from './checkPoints';
 import { bezierTangent } from './curvature';
-import { checkNumber, checkPoints } from './validate';
+import { checkNumber } from './validate';
 import type { Point } from './vec';
 
 // Reparametrising by arc length: s(t) = ∫₀ᵗ |P′(u)| du never decreases, so

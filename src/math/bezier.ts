@@ -1,4 +1,5 @@
-import { checkInteger, checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Bézier curves by de Casteljau's construction (lecture notes: P_{r,i} =

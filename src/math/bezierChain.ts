@@ -1,6 +1,7 @@
 import { bezierDerivative, evaluateBezier } from './bezier';
+import { checkPoints } from './checkPoints';
 import { cubicInflections } from './cubicInflections';
-import { checkInteger, checkPoints } from './validate';
+import { checkInteger } from './validate';
 import type { Point } from './vec';
 
 // A piecewise Bézier curve written as one list of control points: piece i is

@@ -1,6 +1,8 @@
 import { evaluateBezier } from './bezier';
+import { nonFiniteError } from './checkCoordinateArrays';
+import { checkPoint, checkPoints } from './checkPoints';
 import { fillNaturalBezierControls, type CubicBezierControls } from './naturalCubicBatch';
-import { checkParameter, checkPoint, checkPoints, nonFiniteError } from './validate';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Splines built from Bézier segments (lecture notes): a quadratic spline is C¹

@@ -1,4 +1,4 @@
-import { checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
 import type { Point } from './vec';
 
 // The C² cubic Bézier spline as the practical writes it: n pieces through

@@ -1,5 +1,6 @@
+import { checkPoints } from './checkPoints';
 import { bezierJet, checkSpeed } from './curvature';
-import { checkParameter, checkPoints } from './validate';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Torsion (do Carmo, Differential Geometry of Curves and Surfaces, §1.5):

@@ -1,5 +1,6 @@
+import { checkPoints } from './checkPoints';
 import { cubicSplinePoint, cubicSplineSegments } from './cubicSpline';
-import { checkParameter, checkPoints } from './validate';
+import { checkParameter } from './validate';
 import { distance, type Point } from './vec';
 
 // Catmull-Rom splines: a cubic Hermite spline whose gradient at each inner

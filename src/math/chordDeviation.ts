@@ -1,5 +1,6 @@
 import { bezierDerivative, bezierPoint } from './bezier';
-import { checkInteger, checkNumber, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkNumber } from './validate';
 import type { Point } from './vec';
 
 // How far a curve strays from the polyline drawn for it. The polyline's

@@ -1,6 +1,7 @@
+import { checkPoints } from './checkPoints';
 import { cyclicThomas } from './cyclicTridiagonal';
 import type { TridiagonalSystem } from './tridiagonal';
-import { checkNumbers, checkPoints } from './validate';
+import { checkNumbers } from './validate';
 import type { Point } from './vec';
 
 // The closed cubic spline through y0 … ym and back to y0 (lecture notes): with

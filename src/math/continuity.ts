@@ -1,5 +1,5 @@
+import { checkPoints } from './checkPoints';
 import { bezierJet } from './curvature';
-import { checkPoints } from './validate';
 import type { Point } from './vec';
 
 // Continuity at the joint where one Bézier segment ends (t = 1) and the next

@@ -1,5 +1,5 @@
 import { bezierPoint } from './bezier';
-import { checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
 import { distance, type Point } from './vec';
 
 /**

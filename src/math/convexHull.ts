@@ -1,4 +1,5 @@
-import { checkNumber, checkPoint, checkPoints } from './validate';
+import { checkPoint, checkPoints } from './checkPoints';
+import { checkNumber } from './validate';
 import type { Point } from './vec';
 
 // Andrew's monotone chain (A. M. Andrew, "Another efficient algorithm for

@@ -1,5 +1,5 @@
+import { checkPoints } from './checkPoints';
 import { bezierToPowerBasis } from './powerBasis';
-import { checkPoints } from './validate';
 import type { Point } from './vec';
 
 // With P(t) = a0 + a1 t + a2 t² + a3 t³, the curvature's numerator

@@ -1,5 +1,5 @@
+import { checkPoints } from './checkPoints';
 import { bezierToPowerBasis } from './powerBasis';
-import { checkPoints } from './validate';
 import type { Point } from './vec';
 
 // P(t) − P(s) = (t − s)·[a1 + a2 σ + a3 (σ² − π)] with σ = t + s, π = t·s.

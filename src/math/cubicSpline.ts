@@ -1,11 +1,6 @@
+import { checkPoints } from './checkPoints';
 import { hermiteWeights } from './hermite';
-import {
-  checkInteger,
-  checkNumbers,
-  checkParameter,
-  checkPoints,
-  checkSameLength,
-} from './validate';
+import { checkInteger, checkNumbers, checkParameter, checkSameLength } from './validate';
 import type { Point } from './vec';
 
 // A piecewise cubic Hermite curve (lecture notes): segment i joins Pi to

@@ -1,4 +1,5 @@
-import { checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Differential geometry of a Bézier curve at t. The derivatives come from the

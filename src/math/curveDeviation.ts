@@ -1,5 +1,6 @@
 import { sampleBezier } from './bezier';
-import { checkInteger, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger } from './validate';
 import type { Point } from './vec';
 
 /** Where two curves are farthest apart at equal parameters, and how far. */

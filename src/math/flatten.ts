@@ -1,5 +1,5 @@
 import { splitBezier } from './bezier';
-import { checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
 import type { Point } from './vec';
 
 // Flattening by adaptive bisection. A Bézier curve of degree n stays within

@@ -1,6 +1,7 @@
 import { splitBezier } from './bezier';
+import { checkPoints } from './checkPoints';
 import { flatness, flatteningDepth } from './flatten';
-import { checkNumber, checkPoints } from './validate';
+import { checkNumber } from './validate';
 import type { Point } from './vec';
 
 // The recursion of flattenBezier, kept: every piece it looks at, with its

@@ -1,5 +1,6 @@
+import { checkPoints } from './checkPoints';
 import { bezierJet, checkSpeed } from './curvature';
-import { checkParameter, checkPoints } from './validate';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // The Frenet frame (do Carmo, Differential Geometry of Curves and Surfaces,

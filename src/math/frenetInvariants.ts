@@ -1,4 +1,4 @@
-import { checkPoint } from './validate';
+import { checkPoint } from './checkPoints';
 import type { Point } from './vec';
 
 // Curvature and torsion of any regular space curve from its first three

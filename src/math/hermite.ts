@@ -1,4 +1,5 @@
-import { checkInteger, checkParameter, checkPoint } from './validate';
+import { checkPoint } from './checkPoints';
+import { checkInteger, checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Cubic Hermite interpolation: the cubic x(μ) = a0 + a1 μ + a2 μ² + a3 μ³

@@ -1,4 +1,5 @@
-import { checkNumber, checkPoint } from './validate';
+import { checkPoint } from './checkPoints';
+import { checkNumber } from './validate';
 import type { Point } from './vec';
 
 // Plane maps as 3×3 matrices acting on homogeneous coordinates [x, y, 1]

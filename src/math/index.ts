@@ -8,12 +8,11 @@ export {
   checkInteger,
   checkParameter,
   checkOpenParameter,
-  checkPoint,
-  checkPoints,
   checkNumbers,
   checkSameLength,
-  checkCoordinateArrays,
 } from './validate';
+export { checkPoint, checkPoints } from './checkPoints';
+export { checkCoordinateArrays } from './checkCoordinateArrays';
 
 // Bézier curves
 export { binomial } from './binomial';

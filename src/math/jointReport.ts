@@ -1,6 +1,6 @@
+import { checkPoints } from './checkPoints';
 import { bezierJointContinuity, type Continuity } from './continuity';
 import { bezierJet } from './curvature';
-import { checkPoints } from './validate';
 import type { Point } from './vec';
 
 // The numbers behind a joint's verdict (lecture: continuity of Bézier

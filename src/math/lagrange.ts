@@ -1,4 +1,5 @@
-import { checkNumber, checkNumbers, checkPoints, checkSameLength } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkNumber, checkNumbers, checkSameLength } from './validate';
 import type { Point } from './vec';
 
 // Lagrange interpolation (lecture notes): the polynomial of degree n through

@@ -1,14 +1,9 @@
+import { nonFiniteError } from './checkCoordinateArrays';
+import { checkPoint, checkPoints } from './checkPoints';
 import { cubicSplineCoefficients, sampleCubicSpline } from './cubicSpline';
 import { fillNaturalDerivatives } from './naturalSolver';
 import { thomas, type TridiagonalSystem } from './tridiagonal';
-import {
-  checkNumber,
-  checkNumbers,
-  checkPoint,
-  checkPoints,
-  copyCheckedNumbers,
-  nonFiniteError,
-} from './validate';
+import { checkNumber, checkNumbers, copyCheckedNumbers } from './validate';
 import type { Point } from './vec';
 
 // The natural cubic spline through y0 … ym with uniform local parameter

@@ -1,9 +1,9 @@
+import { checkCoordinateArrays, nonFiniteError } from './checkCoordinateArrays';
 import {
   fillNaturalDerivatives,
   naturalBackSubstitution,
   naturalForwardSweep,
 } from './naturalSolver';
-import { checkCoordinateArrays, nonFiniteError } from './validate';
 
 // The natural cubic spline for very many points (10^5 – 10^6): typed arrays
 // in, typed arrays out, no per-point objects; the same solver as

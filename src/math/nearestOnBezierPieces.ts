@@ -1,6 +1,6 @@
 import { evaluateBezier } from './bezier';
 import { binomial } from './binomial';
-import { checkPoint, checkPoints } from './validate';
+import { checkPoint, checkPoints } from './checkPoints';
 import type { Point } from './vec';
 
 // The nearest point of a Bézier curve to Q (Schneider, "Solving the

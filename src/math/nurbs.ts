@@ -1,12 +1,6 @@
 import { checkKnots, fillBasis, knotSpan } from './bsplineBasis';
-import {
-  checkNumber,
-  checkNumbers,
-  checkParameter,
-  checkPoint,
-  checkPoints,
-  checkSameLength,
-} from './validate';
+import { checkPoint, checkPoints } from './checkPoints';
+import { checkNumber, checkNumbers, checkParameter, checkSameLength } from './validate';
 import type { Point } from './vec';
 
 // Non-uniform rational B-splines (Piegl & Tiller, The NURBS Book, eq. 4.2):

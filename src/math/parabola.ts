@@ -1,4 +1,5 @@
-import { checkOpenParameter, checkParameter, checkPoint } from './validate';
+import { checkPoint } from './checkPoints';
+import { checkOpenParameter, checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Interpolating parabolas (lecture notes, "villages" example): the explicit

@@ -1,4 +1,5 @@
-import { checkParameter, checkPoint, checkPoints } from './validate';
+import { checkPoint, checkPoints } from './checkPoints';
+import { checkParameter } from './validate';
 import { distance, type Point } from './vec';
 
 // Choosing parameter values from the geometry (lecture notes, parametric

@@ -1,5 +1,6 @@
 import { binomial } from './binomial';
-import { checkInteger, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger } from './validate';
 import type { Point } from './vec';
 
 // The power (monomial) basis 1, u, u², … against the Bernstein basis. Expanding

@@ -1,4 +1,4 @@
-import { checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
 import type { Point } from './vec';
 
 /**

@@ -1,11 +1,6 @@
 import { fillBernstein } from './bernstein';
-import {
-  checkInteger,
-  checkNumbers,
-  checkParameter,
-  checkPoints,
-  checkSameLength,
-} from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkNumbers, checkParameter, checkSameLength } from './validate';
 import type { Point } from './vec';
 
 // A rational Bézier curve (Farin, Curves and Surfaces for CAGD, ch. 13):

@@ -1,4 +1,4 @@
-import { checkPoint } from './validate';
+import { checkPoint } from './checkPoints';
 import type { Point } from './vec';
 
 /**

@@ -1,5 +1,6 @@
 import { splitBezier } from './bezier';
-import { checkInteger, checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkParameter } from './validate';
 import type { Point } from './vec';
 
 /**

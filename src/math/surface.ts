@@ -1,5 +1,6 @@
 import { fillBernstein } from './bernstein';
-import { checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkParameter } from './validate';
 import type { Point } from './vec';
 
 // Tensor-product Bézier patches (lecture notes, surfaces):

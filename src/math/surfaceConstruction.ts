@@ -1,6 +1,7 @@
 import { fillBernstein } from './bernstein';
 import { deCasteljau } from './bezier';
-import { checkInteger, checkParameter, checkPoints } from './validate';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkParameter } from './validate';
 import type { Point } from './vec';
 
 // The construction of a tensor-product patch in the lecture notes (surfaces):

@@ -1,10 +1,6 @@
-import {
-  checkCoordinateArrays,
-  checkInteger,
-  checkParameter,
-  checkPoints,
-  nonFiniteError,
-} from './validate';
+import { checkCoordinateArrays, nonFiniteError } from './checkCoordinateArrays';
+import { checkPoints } from './checkPoints';
+import { checkInteger, checkParameter } from './validate';
 import type { Point } from './vec';
 
 // The uniform (unclamped) cubic B-spline of the lecture: segment i blends

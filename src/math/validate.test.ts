@@ -1,13 +1,12 @@
 import { describe, expect, it } from 'vitest';
+import { checkCoordinateArrays } from './checkCoordinateArrays';
+import { checkPoint, checkPoints } from './checkPoints';
 import {
-  checkCoordinateArrays,
   checkInteger,
   checkNumber,
   checkNumbers,
   checkOpenParameter,
   checkParameter,
-  checkPoint,
-  checkPoints,
   checkSameLength,
   copyCheckedNumbers,
 } from './validate';

@@ -1,12 +1,13 @@
-import type { Point } from './vec';
-
 // Input checks shared by every maths function. Each throws a RangeError whose
 // message names the function, the argument, what was wrong and what is allowed,
 // so a student who drags a point somewhere odd reads a sentence, not NaN.
 // They are single passes over the input with no allocation: they run on every
-// call, inside animation frames.
+// call, inside animation frames. Here are the checks of numbers, one or many;
+// points are checked in checkPoints.ts, a batch's typed arrays in
+// checkCoordinateArrays.ts.
 
-function describe(value: unknown): string {
+/** A value as a message names it: a number as itself, anything else by its kind. */
+export function describe(value: unknown): string {
   if (typeof value === 'number') return String(value);
   if (value === null) return 'null';
   if (value === undefined) return 'undefined';
@@ -62,107 +63,6 @@ export function checkOpenParameter(
     );
   }
   return value;
-}
-
-/**
- * Throws unless `point` is an array of finite numbers with at least one
- * coordinate, and exactly `dimension` of them when `dimension` is given.
- * Returns the dimension.
- */
-export function checkPoint(caller: string, name: string, point: Point, dimension?: number): number {
-  if (!Array.isArray(point)) {
-    throw new RangeError(
-      `${caller}: ${name} is ${describe(point)}; a point must be an array of coordinates such as [x, y].`,
-    );
-  }
-  const length = point.length;
-  if (dimension === undefined) {
-    if (length === 0) {
-      throw new RangeError(`${caller}: ${name} has no coordinates; a point needs at least one.`);
-    }
-  } else if (length !== dimension) {
-    throw new RangeError(
-      `${caller}: ${name} has ${length} coordinates but ${dimension} are expected; every point must have the same dimension.`,
-    );
-  }
-  for (let d = 0; d < length; d++) {
-    const coordinate = point[d];
-    if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) {
-      throw new RangeError(
-        `${caller}: ${name}[${d}] is ${describe(coordinate)}; every coordinate must be a finite number.`,
-      );
-    }
-  }
-  return length;
-}
-
-/**
- * Throws unless `points` is an array of at least `minimum` points, all with the
- * same dimension (that of `dimension` when given) and finite coordinates.
- * Returns the dimension (0 for an empty array when `minimum` is 0).
- */
-export function checkPoints(
-  caller: string,
-  name: string,
-  points: readonly Point[],
-  minimum: number,
-  dimension?: number,
-): number {
-  // The common case is one tight loop with no strings built; only a failure
-  // goes through the slow path that words the message.
-  if (!Array.isArray(points) || points.length < minimum) {
-    return explainPoints(caller, name, points, minimum, dimension);
-  }
-  if (points.length === 0) return dimension ?? 0;
-  const first = points[0];
-  const size = Array.isArray(first) ? first.length : 0;
-  if (size === 0 || (dimension !== undefined && size !== dimension)) {
-    return explainPoints(caller, name, points, minimum, dimension);
-  }
-  for (let i = 0; i < points.length; i++) {
-    const point = points[i];
-    if (!Array.isArray(point) || point.length !== size) {
-      return explainPoints(caller, name, points, minimum, dimension);
-    }
-    for (let d = 0; d < size; d++) {
-      const coordinate = point[d];
-      if (typeof coordinate !== 'number' || !Number.isFinite(coordinate)) {
-        return explainPoints(caller, name, points, minimum, dimension);
-      }
-    }
-  }
-  return size;
-}
-
-/** The slow path of checkPoints: finds the first problem and throws it in words. */
-function explainPoints(
-  caller: string,
-  name: string,
-  points: readonly Point[],
-  minimum: number,
-  dimension?: number,
-): number {
-  if (!Array.isArray(points)) {
-    throw new RangeError(
-      `${caller}: ${name} is ${describe(points)}; it must be an array of points.`,
-    );
-  }
-  if (points.length < minimum) {
-    throw new RangeError(
-      `${caller}: ${name} needs at least ${minimum} point${minimum === 1 ? '' : 's'}, but got ${points.length}.`,
-    );
-  }
-  const first = checkPoint(caller, `${name}[0]`, points[0], dimension);
-  for (let i = 1; i < points.length; i++) {
-    const point = points[i];
-    if (Array.isArray(point) && point.length !== first) {
-      throw new RangeError(
-        `${caller}: ${name}[${i}] has ${point.length} coordinates but ${name}[0] has ${first}; every point must have the same dimension.`,
-      );
-    }
-    checkPoint(caller, `${name}[${i}]`, point, first);
-  }
-  return first;
 }
 
 /** Throws unless `values` is an array of at least `minimum` finite numbers. */
@@ -234,61 +134,4 @@ export function checkSameLength(
       `${caller}: ${name} has ${values.length} entries but ${otherName} has ${other.length}; they must match one for one.`,
     );
   }
-}
-
-/**
- * Throws unless `coordinates` is a non-empty array of equally long typed
- * arrays (`[xs, ys]`, `[xs, ys, zs]`) with at least `minimum` points; returns
- * the point count. Finiteness is left to the caller, which can fold it into
- * its own pass (see `nonFiniteError`).
- */
-export function checkCoordinateArrays(
-  caller: string,
-  coordinates: readonly Float64Array[],
-  minimum: number,
-): number {
-  if (!Array.isArray(coordinates) || coordinates.length < 1) {
-    throw new RangeError(
-      `${caller}: coordinates must be an array of Float64Arrays, one per coordinate ([xs, ys]).`,
-    );
-  }
-  const n = coordinates[0].length;
-  for (let c = 0; c < coordinates.length; c++) {
-    if (!(coordinates[c] instanceof Float64Array)) {
-      throw new RangeError(`${caller}: coordinates[${c}] is not a Float64Array.`);
-    }
-    if (coordinates[c].length !== n) {
-      throw new RangeError(
-        `${caller}: coordinates[${c}] has ${coordinates[c].length} values but coordinates[0] has ${n}; each point needs every coordinate.`,
-      );
-    }
-  }
-  if (n < minimum) {
-    throw new RangeError(
-      `${caller}: needs at least ${minimum} point${minimum === 1 ? '' : 's'}, but got ${n}.`,
-    );
-  }
-  return n;
-}
-
-/**
- * The RangeError for a batch whose result came out non-finite: names the first
- * NaN or ±Infinity in `values`, or says the values overflowed. Only called on
- * the failing path, so batch functions need no separate checking pass.
- */
-export function nonFiniteError(
-  caller: string,
-  name: string,
-  values: ArrayLike<number>,
-): RangeError {
-  for (let i = 0; i < values.length; i++) {
-    if (!Number.isFinite(values[i])) {
-      return new RangeError(
-        `${caller}: ${name}[${i}] is ${values[i]}; every value must be a finite number.`,
-      );
-    }
-  }
-  return new RangeError(
-    `${caller}: ${name} holds values so large that the result overflows; scale them down.`,
-  );
 }
