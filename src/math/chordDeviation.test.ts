@@ -2,14 +2,10 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { polygon2D } from './arbitraries.test-helpers';
 import { bezierPoint } from './bezier';
-import {
-  chordDeviation,
-  uniformCountEstimate,
-  uniformCountWithin,
-  uniformParameters,
-} from './chordDeviation';
+import { chordDeviation } from './chordDeviation';
 import { flattenBezier } from './flatten';
 import { flatteningTree } from './flatteningTree';
+import { uniformCountEstimate, uniformCountWithin, uniformParameters } from './uniformCount';
 
 // The parabola P(t) = (2t, 4t(1 − t)) of the control points (0,0), (1,2), (2,0).
 const PARABOLA = [

@@ -1,5 +1,6 @@
-import { bezierDerivative, bezierPoint } from './bezier';
+import { bezierPoint } from './bezier';
 import { checkPoints } from './checkPoints';
+import { distanceToChord, nearestOnSegment } from './nearestOnSegment';
 import { checkInteger, checkNumber } from './validate';
 import type { Point } from './vec';
 
@@ -9,6 +10,7 @@ import type { Point } from './vec';
 // deviation is the largest distance from a point of the piece to that chord.
 // The largest over the pieces is the error a screen shows: flattening to a
 // tolerance (flattenBezier) keeps it within the tolerance.
+// uniformCount.ts finds how many uniform pieces keep it within a tolerance.
 
 /** Where the curve is farthest from the chord drawn for its piece, and how far. */
 export interface ChordDeviation {
@@ -22,23 +24,6 @@ export interface ChordDeviation {
   point: Point;
   /** The nearest point of the chord to P(t). */
   foot: Point;
-}
-
-/** Where the nearest point of segment a–b to p lies along it: 0 at a, 1 at b (0 if a = b). */
-function alongSegment(p: ArrayLike<number>, a: Point, b: Point): number {
-  let along = 0;
-  let length = 0;
-  for (let d = 0; d < a.length; d++) {
-    along += (p[d] - a[d]) * (b[d] - a[d]);
-    length += (b[d] - a[d]) ** 2;
-  }
-  return length > 0 ? Math.min(1, Math.max(0, along / length)) : 0;
-}
-
-/** The nearest point of segment a–b to p. */
-export function nearestOnSegment(p: Point, a: Point, b: Point): Point {
-  const s = alongSegment(p, a, b);
-  return a.map((value, d) => value + s * (b[d] - value));
 }
 
 function distanceBetween(p: Point, q: Point): number {
@@ -184,17 +169,6 @@ function curveEvaluator(points: readonly Point[]): (t: number) => Float64Array {
   };
 }
 
-/** The distance from p to segment a–b: nearestOnSegment and distanceBetween's arithmetic, without the arrays. */
-function distanceToChord(p: ArrayLike<number>, a: Point, b: Point): number {
-  const s = alongSegment(p, a, b);
-  let squared = 0;
-  for (let d = 0; d < a.length; d++) {
-    const foot = a[d] + s * (b[d] - a[d]);
-    squared += (p[d] - foot) ** 2;
-  }
-  return Math.sqrt(squared);
-}
-
 const GOLDEN = (Math.sqrt(5) - 1) / 2;
 
 /** The parameter of the largest value of `f` on [low, high] (golden-section search, f unimodal there). */
@@ -223,104 +197,4 @@ function refineMaximum(f: (t: number) => number, low: number, high: number): num
   const middle = (a + b) / 2;
   // The end points of the bracket can be larger (a maximum at the bracket's edge).
   return [low, middle, high].reduce((x, y) => (f(y) > f(x) ? y : x));
-}
-
-/** The parameters k / count, k = 0 … count: uniform sampling. */
-export function uniformParameters(count: number): number[] {
-  checkInteger('uniformParameters', 'count', count, 1);
-  return Array.from({ length: count + 1 }, (_, k) => k / count);
-}
-
-/**
- * The uniform count the curvature asks for: a piece of parameter length h
- * strays about h²/8 · ‖P″⊥‖ from its chord (the second-order Taylor term; P″⊥
- * is the part of P″ across the tangent, as speeding up along a straight line
- * strays nowhere), so n uniform segments stray about max‖P″⊥‖ / (8n²), and
- * n ≈ √(max‖P″⊥‖ / (8·tolerance)), rounded up and at least 1. P′ and P″ are
- * sampled at 65 parameters of the hodographs. An estimate to start a search
- * from, not a guarantee.
- */
-export function uniformCountEstimate(points: readonly Point[], tolerance: number): number {
-  const caller = 'uniformCountEstimate';
-  checkPoints(caller, 'points', points, 1);
-  checkPositive(caller, tolerance);
-  if (points.length < 3) return 1;
-  const first = bezierDerivative(points);
-  const second = bezierDerivative(first);
-  let largest = 0;
-  for (let i = 0; i <= 64; i++) {
-    const velocity = bezierPoint(first, i / 64);
-    const acceleration = bezierPoint(second, i / 64);
-    let speed = 0;
-    let along = 0;
-    let size = 0;
-    for (let d = 0; d < velocity.length; d++) {
-      speed += velocity[d] ** 2;
-      along += velocity[d] * acceleration[d];
-      size += acceleration[d] ** 2;
-    }
-    // ‖P″⊥‖² = ‖P″‖² − (P′·P″)²/‖P′‖²; where the curve stops, P″ is its tangent.
-    if (speed === 0) continue;
-    const across = size - (along * along) / speed;
-    largest = Math.max(largest, Math.sqrt(Math.max(0, across)));
-  }
-  return Math.max(1, Math.ceil(Math.sqrt(largest / (8 * tolerance))));
-}
-
-/**
- * A uniform count n ≤ `maximum` (parameters k / n) whose chords stay within
- * `tolerance` of the curve while those of n − 1 do not (or n = 1), found from
- * uniformCountEstimate by steps doubling away from it, then bisection: a few
- * chordDeviation calls, not one per count. Where the deviation falls as n
- * grows (it need not everywhere) this is the fewest. `maximum` + 1 when
- * `maximum` segments do not reach the tolerance either: more than `maximum`.
- */
-export function uniformCountWithin(
-  points: readonly Point[],
-  tolerance: number,
-  maximum = 512,
-): number {
-  checkNumber('uniformCountWithin', 'tolerance', tolerance);
-  checkInteger('uniformCountWithin', 'maximum', maximum, 1);
-  const within = (n: number) => chordDeviation(points, uniformParameters(n)).distance <= tolerance;
-  // A tolerance of 0 (a straight curve's own gap) is only met by a straight piece.
-  const guess =
-    tolerance > 0 ? Math.min(maximum, uniformCountEstimate(points, tolerance)) : maximum;
-  // `pass` reaches the tolerance, `fail` does not (0 segments never do).
-  let pass: number;
-  let fail = 0;
-  if (within(guess)) {
-    pass = guess;
-    for (let step = 1; pass - step >= 1; step *= 2) {
-      if (!within(pass - step)) {
-        fail = pass - step;
-        break;
-      }
-      pass -= step;
-    }
-  } else {
-    fail = guess;
-    for (let step = 1; ; step *= 2) {
-      if (fail === maximum) return maximum + 1;
-      const n = Math.min(maximum, fail + step);
-      if (within(n)) {
-        pass = n;
-        break;
-      }
-      fail = n;
-    }
-  }
-  while (pass - fail > 1) {
-    const middle = Math.floor((pass + fail) / 2);
-    if (within(middle)) pass = middle;
-    else fail = middle;
-  }
-  return pass;
-}
-
-function checkPositive(caller: string, tolerance: number): void {
-  checkNumber(caller, 'tolerance', tolerance);
-  if (!(tolerance > 0)) {
-    throw new RangeError(`${caller}: tolerance = ${tolerance}; it must be a positive distance.`);
-  }
 }

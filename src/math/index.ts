@@ -142,12 +142,9 @@ export { helixDerivatives } from './helix';
 export type { FrenetInvariants } from './frenetInvariants';
 export { frenetInvariants } from './frenetInvariants';
 export type { ChordDeviation } from './chordDeviation';
-export {
-  chordDeviation,
-  nearestOnSegment,
-  uniformParameters,
-  uniformCountWithin,
-} from './chordDeviation';
+export { chordDeviation } from './chordDeviation';
+export { nearestOnSegment } from './nearestOnSegment';
+export { uniformParameters, uniformCountWithin } from './uniformCount';
 export type { FlatteningNode } from './flatteningTree';
 export { flatteningTree } from './flatteningTree';
 export { segmentCoverage } from './strokeCoverage';
@@ -165,7 +162,7 @@ export {
 export type { JointReport } from './jointReport';
 export { bezierJointReport, snapJoint } from './jointReport';
 export { bezierChainSelfIntersections } from './chainIntersections';
-export { uniformCountEstimate } from './chordDeviation';
+export { uniformCountEstimate } from './uniformCount';
 export type { PixelBox } from './rasterizeLine';
 export { rasterizeLineInBox } from './rasterizeLine';
 export { onOneSpot } from './oneSpot';
