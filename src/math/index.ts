@@ -25,6 +25,7 @@ export {
   elevateDegree,
   sampleBezier,
 } from './bezier';
+export { samplePlanarCubic } from './planarCubic';
 export { bezierBasisMatrix, bezierToPowerBasis, powerBasisToBezier } from './powerBasis';
 export { type BasisExtreme, type BasisSamples, basisValuesAt, sampleBasis } from './basisSamples';
 
