@@ -76,7 +76,6 @@ export { catmullRomTangents, catmullRomSegments, catmullRomPoint } from './catmu
 export { quadraticSplineC1, cubicSplineC2, bezierSplinePoint } from './bezierSpline';
 
 // B-splines and NURBS
-export type { BSplineBezierControls } from './uniformBSpline';
 export {
   uniformBSplineMatrix,
   uniformBSplineBasis,
@@ -84,9 +83,9 @@ export {
   uniformBSplineToBezier,
   bezierToUniformBSpline,
   uniformBSplineSegments,
-  sampleUniformBSpline,
-  uniformBSplineBezierBatch,
 } from './uniformBSpline';
+export type { BSplineBezierControls } from './uniformBSplineBatch';
+export { sampleUniformBSpline, uniformBSplineBezierBatch } from './uniformBSplineBatch';
 export { bsplineBasis, clampedUniformKnots, uniformKnots } from './bsplineBasis';
 export { coxDeBoorTable } from './coxDeBoorTable';
 export type { NurbsCurve } from './nurbs';

@@ -6,14 +6,13 @@ import { bezierDerivative, bezierPoint } from './bezier';
 import { bsplineBasis, uniformKnots } from './bsplineBasis';
 import {
   bezierToUniformBSpline,
-  sampleUniformBSpline,
   uniformBSplineBasis,
-  uniformBSplineBezierBatch,
   uniformBSplineMatrix,
   uniformBSplinePoint,
   uniformBSplineSegments,
   uniformBSplineToBezier,
 } from './uniformBSpline';
+import { sampleUniformBSpline, uniformBSplineBezierBatch } from './uniformBSplineBatch';
 import type { Point } from './vec';
 import { recordD3Bezier } from './d3Reference.test-helpers';
 
