@@ -1,4 +1,6 @@
-import { clearestPlace, drawPanelBox, edgePlaces, labelWidth } from '../render/labels';
+import { clearestPlace, edgePlaces } from '../render/boxPlaces';
+import { labelWidth } from '../render/labelWidth';
+import { drawPanelBox } from '../render/note';
 import type { Painter, StrokeStyle } from '../render/painter';
 
 // A figure's key: which line is which, in a box in a corner of the figure.

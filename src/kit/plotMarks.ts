@@ -1,12 +1,8 @@
 import { type Box, boxesMeet } from '../render/ink';
-import {
-  type LabelStyle,
-  clearestPlace,
-  drawScreenLabel,
-  firstClear,
-  labelWidth,
-  leastHidden,
-} from '../render/labels';
+import { clearestPlace, firstClear, leastHidden } from '../render/boxPlaces';
+import type { LabelStyle } from '../render/labels';
+import { drawScreenLabel } from '../render/labelPlacer';
+import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
 
 // Marks a function plot writes beside its curves: the y-axis name, the

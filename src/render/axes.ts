@@ -4,7 +4,7 @@
  * Lines are counted by an integer index, never by adding a step to a large
  * coordinate (which stops moving once the step is below its precision).
  */
-import { labelWidth } from './labels';
+import { labelWidth } from './labelWidth';
 import type { Painter } from './painter';
 import { type Bounds, niceStep } from './projection';
 

@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { labelWidth } from './labels';
+import { labelWidth } from './labelWidth';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';

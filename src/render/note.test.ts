@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { leastHidden } from './labels';
+import { leastHidden } from './boxPlaces';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';

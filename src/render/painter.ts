@@ -2,15 +2,11 @@ import { Ink } from './ink';
 import { type ClipRect, circleVisible, clipCubic, clipPolygon, clipPolyline } from './clip';
 import { drawGrid, drawPlotAxes, gridAxesAsInk } from './axes';
 import { bezierPoint } from '../math';
-import {
-  type LabelBox,
-  type LabelStyle,
-  type NoteStyle,
-  drawLabelClear,
-  drawNote,
-  drawScreenLabel,
-  labelWidth,
-} from './labels';
+import type { LabelBox, LabelStyle } from './labels';
+import { drawLabelClear } from './labelClear';
+import { drawScreenLabel } from './labelPlacer';
+import { labelWidth } from './labelWidth';
+import { type NoteStyle, drawNote } from './note';
 import type { Bounds, Projection } from './projection';
 import { type HandleShape, HandleStamper, handlePath } from './handleStamp';
 import type { DrawingSurface } from './surface';

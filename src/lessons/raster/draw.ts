@@ -1,5 +1,6 @@
 import type { Point } from '../../math';
-import { edgePlaces, firstClear, labelWidth } from '../../render/labels';
+import { edgePlaces, firstClear } from '../../render/boxPlaces';
+import { labelWidth } from '../../render/labelWidth';
 import type { Painter } from '../../render/painter';
 import type { Polyline } from './model';
 import type { Pixel, RasterSize } from './raster';
