@@ -8,7 +8,7 @@ import {
 } from '../../kit/exercise';
 import { sub, words } from '../../kit/format';
 import { type Point, bernstein, bernsteinBasis, bezierPoint, binomial } from '../../math';
-import { blendingScript } from './script';
+import { blendingScript } from './bernsteinScript';
 import type { BlendingState } from './state';
 
 /** Values of μ a student can raise to a power by hand. */

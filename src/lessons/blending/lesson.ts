@@ -5,7 +5,9 @@ import { exercises } from './exercises';
 import { derive } from './model';
 import { blendingPanel } from './panel';
 import { plotFigure } from './plotFigure';
-import { bsplineScript, hermiteScript, lagrangeScript, lessonScript, passesScript } from './script';
+import { bsplineScript, hermiteScript, lagrangeScript } from './compareScripts';
+import { passesScript } from './passesScript';
+import { lessonScript } from './script';
 import { type BlendingState, type Comparison, LECTURE_CUBIC, schema } from './state';
 
 /** A scene: its control points, μ and the basis compared with (the clicker opens it at step 0). */

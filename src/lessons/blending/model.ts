@@ -6,7 +6,7 @@ import type { Revealed } from '../../kit/script';
 import { type Compared, type ComparedShape, comparedAt, comparedShape } from './comparison';
 import { type Family, family } from './families';
 import { type Passes, passes } from './passes';
-import type { Reveal } from './script';
+import type { Reveal } from './reveals';
 import type { BlendingState } from './state';
 
 export type { Compared } from './comparison';

@@ -6,7 +6,7 @@ import lesson from './lesson';
 import type { BlendingModel } from './model';
 import { WORDS_SLIP } from './notesKey';
 import { lagrangeAsBezier, passes } from './passes';
-import { passesScript } from './script';
+import { passesScript } from './passesScript';
 import { type BlendingState, schema } from './state';
 
 // The lecture cubic P0 = (0, 0), P1 = (1, 2), P2 = (3, 2), P3 = (4, 0), worked by hand.

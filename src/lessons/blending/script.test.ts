@@ -3,7 +3,7 @@ import { decodeState, defaultsOf, encodeState } from '../../app/urlState';
 import lesson from './lesson';
 import type { BlendingModel } from './model';
 import { controlPoints } from './points';
-import { blendingScript } from './script';
+import { blendingScript } from './bernsteinScript';
 import { type BlendingState, schema } from './state';
 
 // The lecture's cubic P0 = (0, 0), P1 = (1, 2), P2 = (3, 2), P3 = (4, 0) at μ = ½,

@@ -7,7 +7,8 @@ import { filled } from '../../kit/format';
 import lesson from './lesson';
 import type { BlendingModel } from './model';
 import { NOTES_KEY } from './notesKey';
-import { bsplineScript, hermiteScript, lagrangeScript, symmetryScript } from './script';
+import { bsplineScript, hermiteScript, lagrangeScript } from './compareScripts';
+import { symmetryScript } from './symmetryScript';
 import { type BlendingState, schema } from './state';
 import { centroidFormula, matrixFormTex, pointFormula, rowFormula } from './tex';
 
