@@ -4,13 +4,11 @@ import { defaultsOf } from '../../app/urlState';
 import type { Posed } from '../../kit/exercise';
 import { checkExercises, checkPracticeData, dragOnFigures, seeds } from '../../kit/exerciseChecks';
 import type { Point } from '../../math';
-import {
-  FLATNESS_TOLERANCE,
-  GAP_TOLERANCE,
-  PIXEL_TOLERANCE,
-  SPLIT_TOLERANCE,
-  exercises,
-} from './exercises';
+import { exercises } from './exercises';
+import { GAP_TOLERANCE } from './farthestPointExercise';
+import { FLATNESS_TOLERANCE } from './flatnessExercise';
+import { PIXEL_TOLERANCE } from './nextPixelExercise';
+import { SPLIT_TOLERANCE } from './twoSegmentsExercise';
 import data from '../../../tests/e2e/practice/raster';
 import lesson from './lesson';
 import type { RasterModel } from './model';
