@@ -4,10 +4,10 @@
  * a scene button. A scene the clicker left is found again as it was left.
  * Owns the scene buttons and the step status under the figure.
  */
-import { StepControl } from './controls';
 import { h } from './dom';
 import type { AnyLesson } from './lesson';
 import type { LessonStore } from './lessonState';
+import { StepControl } from './stepControl';
 
 export interface WalkerHost {
   /** Fits every figure to the new scene. */
