@@ -3,7 +3,9 @@
  * screen, the SVG export and the tests draw them with this one routine.
  */
 import type { Handle } from '../app/lesson';
-import { type HandleState, Painter, splitSubscripts } from './painter';
+import type { HandleState } from './handleDrawing';
+import { splitSubscripts } from './labels';
+import { Painter } from './painter';
 
 /** Plain-text name of a lecture label: `P_{1,2}` → `P1,2`. */
 export const plainLabel = (label: string) =>

@@ -4,7 +4,8 @@
  * so a surface hides what is behind it without WebGL. Quads are flat-shaded
  * from a fixed light.
  */
-import type { LabelStyle, Painter, StrokeStyle } from './painter';
+import type { LabelStyle } from './labels';
+import type { Painter, StrokeStyle } from './painter';
 import type { OrbitCamera } from './orbitCamera';
 
 type P = readonly number[];

@@ -1,6 +1,7 @@
 import type { Point } from '../../app/lesson';
 import { memoLast } from '../../kit/memoOn';
-import type { LabelBox, Painter } from '../../render/painter';
+import type { LabelBox } from '../../render/labels';
+import type { Painter } from '../../render/painter';
 
 /** Directions tried around a point, and how far out (in label heights past the point's dot). */
 const ANGLES = Array.from({ length: 16 }, (_, k) => (k * Math.PI) / 8);

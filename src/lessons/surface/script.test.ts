@@ -17,7 +17,7 @@ import { SCRIPTS } from './scripts';
 import { LEANING_HILL_NET, type SurfaceState, schema } from './state';
 import { weightsShown } from './weightsFigure';
 import { drawHandles } from '../../render/handles';
-import type { LabelBox } from '../../render/painter';
+import type { LabelBox } from '../../render/labels';
 import { namedPoints } from './points';
 import type { Point } from '../../app/lesson';
 
