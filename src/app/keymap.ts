@@ -10,53 +10,14 @@
  * Keys a control uses itself (arrows and Home/End on a slider, Space on a
  * checkbox, arrows on a radio group, anything typed into a number field)
  * stay with that control and never also step.
+ *
+ * What the keys act on is keyTarget.ts; what has focus, keyFocus.ts.
  */
+import { isControl, isTyping } from './keyFocus';
+import type { KeyTarget } from './keyTarget';
 
-/** What the keys act on: the app, and the lesson page when one is open. */
-export interface KeyTarget {
-  undo(): void;
-  redo(): void;
-  /** The clicker's next (+1) or previous (−1): a step, or the next scene. */
-  advance(delta: 1 | -1): void;
-  /** First or last step of the current scene. */
-  stepTo(end: 'first' | 'last'): void;
-  togglePlay(): void;
-  /** Play slower (−1) or faster (+1). */
-  playSpeed(delta: 1 | -1): void;
-  fit(): void;
-  zoom(factor: number): void;
-  /** Turns the first figure in space, in degrees. */
-  orbit(yaw: number, pitch: number): void;
-  presenter(): void;
-  sidePanel(): void;
-  /** Presenter view: shows or hides the lecturer's controls (toolbar, slider, steps, tools). */
-  lecturerControls(): void;
-  /** Poses the next step as a question to the room; the next press reveals it. */
-  ask(): void;
-  blank(): void;
-  /** The screen is blanked: a clicker key only brings it back. */
-  readonly blanked: boolean;
-  tool(name: PresenterTool): void;
-  clearInk(): void;
-  dark(): void;
-  fullscreen(): void;
-  help(): void;
-  gallery(): void;
-}
-
-/** The keys' actions that belong to the open lesson page (the rest are the app's). */
-export type PageKeys = Omit<
-  KeyTarget,
-  'presenter' | 'dark' | 'fullscreen' | 'help' | 'gallery' | 'blanked'
-> & {
-  /** The screen is blanked: a clicker key only brings it back. */
-  blanked(): boolean;
-  unblank(): void;
-};
-
-/** Presenter tools that are switched on and off. */
-export type PresenterTool =
-  'laser' | 'ink' | 'hideCurve' | 'hideNumbers' | 'hideLabels' | 'ghost' | 'trail';
+// Still importable from here by the files that use them with the keymap.
+export type { KeyTarget, PageKeys, PresenterTool } from './keyTarget';
 
 /**
  * Who owns a key when something has focus:
@@ -250,26 +211,6 @@ export const KEYS: readonly Binding[] = [
 
 /** Keys that bring a blanked screen back (and do nothing else then). */
 const CLICKER = new Set(['PageDown', 'PageUp', 'b', 'B', '.', 'Escape', 'ArrowRight', 'ArrowLeft']);
-
-/** A field that takes typed text: letters and `.` are its own. */
-export const isTyping = (target: EventTarget | null): boolean =>
-  target instanceof HTMLElement &&
-  (target.isContentEditable ||
-    target.tagName === 'TEXTAREA' ||
-    target.tagName === 'SELECT' ||
-    (target instanceof HTMLInputElement &&
-      !['range', 'checkbox', 'radio', 'button', 'submit', 'reset', 'color'].includes(target.type)));
-
-/** A control with keys of its own: a button, a point, a slider, a checkbox, a radio button. */
-export const isControl = (target: EventTarget | null): boolean =>
-  target instanceof HTMLElement &&
-  (isTyping(target) ||
-    target.tagName === 'BUTTON' ||
-    target.tagName === 'A' ||
-    target.tagName === 'INPUT' ||
-    target.classList.contains('handle-proxy') ||
-    target.getAttribute('role') === 'slider' ||
-    target.getAttribute('role') === 'radio');
 
 /**
  * The binding for a key press, or null when the key belongs to whatever has

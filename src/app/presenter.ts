@@ -8,7 +8,7 @@
 import type { Shown } from '../render/painter';
 import { CaptionBox } from './captionBox';
 import { h, setHidden } from './dom';
-import type { PresenterTool } from './keymap';
+import type { PresenterTool } from './keyTarget';
 import { PresenterInk } from './presenterInk';
 
 export type ToolState = Record<PresenterTool, boolean>;
