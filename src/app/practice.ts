@@ -4,14 +4,17 @@
  * typed; numbers are typed; a construction is made on the figure itself.
  * Check says right or wrong with a hint, "Show me" walks the working, "New
  * numbers" draws a new seed. Results are announced politely; progress is kept
- * on this device.
+ * on this device. The card's parts are practiceCard.ts, its answer fields
+ * practiceFields.ts.
  */
 import type { ExerciseSpec, Posed, Verdict } from '../kit/exercise';
 import { newSeed } from '../kit/exercise';
 import type { Point } from '../math';
 import { fmt, h, setChildren, setClass, setDisabled, setHidden, setText } from './dom';
 import type { FigureMark } from './figureView';
-import { lessonProgress, readProgress, recordTotal, recordTry } from './progress';
+import { exerciseButtons, practiceCard, tallyText } from './practiceCard';
+import { answerFields, readNumber } from './practiceFields';
+import { recordTotal, recordTry } from './progress';
 import type { PracticeLink } from './urlState';
 
 /** What the card needs from the page. */
@@ -41,12 +44,6 @@ export interface PracticeHost<S> {
   tappable(id: string): boolean;
 }
 
-/** Reads a typed number: a minus sign or a decimal comma is accepted. */
-export function readNumber(text: string): number {
-  const cleaned = text.trim().replace(/[−–]/g, '-').replace(',', '.');
-  return cleaned === '' ? NaN : Number(cleaned);
-}
-
 export class Practice<S> {
   readonly element: HTMLElement;
   private readonly list: HTMLElement;
@@ -65,66 +62,20 @@ export class Practice<S> {
     private readonly host: PracticeHost<S>,
   ) {
     recordTotal(host.slug, exercises.length);
-    this.list = h('div', { class: 'practice-list', role: 'group', 'aria-label': 'Exercises' });
-    this.prompt = h('p', { class: 'practice-prompt' });
-    this.fields = h('div', { class: 'practice-fields' });
-    this.result = h('p', { class: 'practice-result', role: 'status', 'aria-live': 'polite' });
-    this.tally = h('p', { class: 'practice-tally' });
-    this.showButton = h('button', { type: 'button', onclick: () => this.showMe() }, 'Show me');
-    const form = h(
-      'form',
-      {
-        class: 'practice-form',
-        onsubmit: (e: Event) => {
-          e.preventDefault();
-          this.check();
-        },
-      },
-      this.fields,
-      h(
-        'div',
-        { class: 'practice-actions' },
-        h('button', { type: 'submit', class: 'primary' }, 'Check'),
-        this.showButton,
-        h(
-          'button',
-          {
-            type: 'button',
-            title: 'The same exercise with numbers of your own',
-            onclick: () =>
-              this.start(
-                this.current?.spec.id ?? exercises[0].id,
-                newSeed(this.current?.seed ?? 0),
-              ),
-          },
-          'New numbers',
-        ),
-      ),
-    );
-    this.element = h(
-      'section',
-      { class: 'practice', 'aria-label': 'Practice', hidden: true },
-      h(
-        'div',
-        { class: 'practice-head' },
-        h('h2', {}, 'Practice'),
-        h(
-          'button',
-          { type: 'button', class: 'practice-close', onclick: () => this.close() },
-          'Close practice',
-        ),
-      ),
-      this.prompt,
-      h(
-        'p',
-        { class: 'practice-quiet-note' },
-        'The lesson’s text is folded away until you have answered, or asked Show me: its numbers would give the answer away.',
-      ),
-      form,
-      this.result,
-      this.list,
-      this.tally,
-    );
+    const card = practiceCard({
+      check: () => this.check(),
+      showMe: () => this.showMe(),
+      newNumbers: () =>
+        this.start(this.current?.spec.id ?? exercises[0].id, newSeed(this.current?.seed ?? 0)),
+      close: () => this.close(),
+    });
+    this.element = card.element;
+    this.list = card.list;
+    this.prompt = card.prompt;
+    this.fields = card.fields;
+    this.result = card.result;
+    this.tally = card.tally;
+    this.showButton = card.showButton;
   }
 
   get active(): boolean {
@@ -201,64 +152,28 @@ export class Practice<S> {
   }
 
   private renderList(): void {
-    const progress = readProgress();
     setChildren(
       this.list,
-      this.exercises.map((spec, i) => {
-        const done = progress.exercises[`${this.host.slug}/${spec.id}`]?.done ?? false;
-        return h(
-          'button',
-          {
-            type: 'button',
-            class: 'practice-pick',
-            'aria-pressed': String(spec === this.current?.spec),
-            'data-exercise': spec.id,
-            onclick: () => this.start(spec.id, this.current?.seed ?? 1),
-          },
-          `${i + 1}. ${spec.title}`,
-          done ? h('span', { class: 'practice-done', 'aria-label': ' (solved)' }, ' ✓') : null,
-        );
-      }),
+      exerciseButtons(this.host.slug, this.exercises, this.current?.spec, (spec) =>
+        this.start(spec.id, this.current?.seed ?? 1),
+      ),
     );
   }
 
   private renderFields(posed: Posed<S>): void {
     const task = posed.task;
-    const input = (label: string, i: number) => {
-      const el = h('input', {
-        type: 'text',
-        inputmode: 'decimal',
-        autocomplete: 'off',
-        spellcheck: 'false',
-        'data-field': i,
-      });
-      if (task.kind === 'point')
-        el.addEventListener('input', () => {
-          if (this.revealed) return;
-          const [x, y] = this.inputs.map((e) => readNumber(e.value));
-          this.setGuess(Number.isFinite(x) && Number.isFinite(y) ? [x, y] : null);
-        });
-      return h('label', { class: 'practice-field' }, h('span', {}, label), el);
-    };
-    let help: string;
-    let labels: readonly string[];
-    if (task.kind === 'number') {
-      labels = task.fields;
-      help = `Work it out, type ${labels.length === 1 ? 'it' : 'each number'}, then Check.`;
-    } else if (task.kind === 'point') {
-      labels = ['x', 'y'];
-      help = this.host.tappable(task.figure)
-        ? `Tap ${this.host.figureTitle(task.figure)} where you think it is (or type x and y), then Check.`
-        : `Type x and y of your guess, then Check: it is marked on ${this.host.figureTitle(task.figure)}.`;
-    } else {
-      labels = [];
-      help = 'Move the points on the figure, then Check.';
-    }
-    const rows = labels.map(input);
+    const { help, rows } = answerFields(task, this.host, () => this.typedGuess());
     this.inputs = rows.map((row) => row.querySelector('input') as HTMLInputElement);
     setChildren(this.fields, h('p', { class: 'practice-help' }, help), rows);
     if (task.kind === 'point') this.fields.dataset.figure = task.figure;
     else delete this.fields.dataset.figure;
+  }
+
+  /** x or y of a guessed point typed: the guess follows, until the answer is shown. */
+  private typedGuess(): void {
+    if (this.revealed) return;
+    const [x, y] = this.inputs.map((e) => readNumber(e.value));
+    this.setGuess(Number.isFinite(x) && Number.isFinite(y) ? [x, y] : null);
   }
 
   private check(): void {
@@ -323,16 +238,7 @@ export class Practice<S> {
   }
 
   private renderTally(): void {
-    const { done, total } = lessonProgress(this.host.slug);
-    const mine = this.current
-      ? readProgress().exercises[`${this.host.slug}/${this.current.spec.id}`]
-      : undefined;
-    const here = mine
-      ? mine.done
-        ? ` This one is solved (${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'}).`
-        : ` ${mine.tries} ${mine.tries === 1 ? 'check' : 'checks'} on this one so far.`
-      : '';
-    setText(this.tally, `Solved ${done} of ${total} in this lesson.${here}`);
+    setText(this.tally, tallyText(this.host.slug, this.current?.spec));
   }
 }
 
