@@ -3,7 +3,8 @@
  * clicker's PageDown never also moves a focused slider or ticks a box, and
  * sent to the open lesson page or to the app's own display actions.
  */
-import { type KeyTarget, type PageKeys, bindingFor, restoresBlank } from './keymap';
+import { bindingFor, restoresBlank } from './keymap';
+import type { KeyTarget, PageKeys } from './keyTarget';
 
 /** What the app itself does (the rest is the open page's). */
 export interface AppKeys {

@@ -17,7 +17,6 @@ import { isControl, isTyping } from './keyFocus';
 import type { KeyTarget } from './keyTarget';
 
 // Still importable from here by the files that use them with the keymap.
-export type { KeyTarget, PageKeys, PresenterTool } from './keyTarget';
 
 /**
  * Who owns a key when something has focus:

@@ -7,12 +7,12 @@
 import { refitAll } from '../render/fit';
 import { holdUnseenWhilePressed } from '../render/unseen';
 import type { Theme } from '../render/theme';
-import { ParameterControl } from './controls';
+import { ParameterControl } from './parameterControl';
 import { memoize } from './derive';
 import { h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
-import type { PageKeys, PresenterTool } from './keymap';
+import type { PageKeys, PresenterTool } from './keyTarget';
 import { buildLayout, showFigures } from './layout';
 import { buildPageDom } from './pageDom';
 import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
