@@ -3,6 +3,7 @@
  * so nothing from a URL can become HTML.
  */
 import { subscriptNames } from '../kit/subscripts';
+import { minusSigns } from '../render/notation';
 import { shownAttribute, shownText } from './notationDom';
 
 export type Child = Node | string | number | null | undefined | false;
@@ -57,9 +58,24 @@ export function append(parent: Node, children: (Child | readonly Child[])[]): vo
   }
 }
 
-/** The text as `element` shows it: point names with subscripts in prose. */
-const asShown = (element: Node, text: string) =>
-  PROSE.has(element.nodeName) ? subscriptNames(text) : text;
+/**
+ * The text as `element` shows it: a negative number with a minus sign (not in
+ * code or what the reader types), point names with subscripts in prose.
+ */
+function asShown(element: Node, text: string): string {
+  const shown = text.includes('-') && !asWritten(element) ? minusSigns(text) : text;
+  return PROSE.has(element.nodeName) ? subscriptNames(shown) : shown;
+}
+
+/**
+ * Code (the notes' pseudocode), what the reader types, and a typeset
+ * formula (its TeX copy is TeX; its numbers are set by render/formula) keep
+ * their text as written.
+ */
+function asWritten(node: Node): boolean {
+  const element = node instanceof Element ? node : node.parentElement;
+  return element?.closest('pre, code, .code, textarea, .katex, annotation') != null;
+}
 
 /** Unicode subscript runs: ₀–₉ and the letters and signs `subscriptNames` writes. */
 const SUBSCRIPT_RUN = /^[₀-₉ᵢⱼₖₘₙₚᵣ₊₋]+$/;
@@ -140,6 +156,7 @@ export function dataTable(
 /** Sets an element's text only when it changes (a panel updated every frame writes little). */
 export function setText(element: Node, text: string): void {
   if (indexable(element)) return setIndexedText(element, asShown(element, text));
+  if (element.nodeName !== 'TEXTAREA') text = asShown(element, text);
   const now = element.textContent;
   if (now !== text && now !== shownText(element, text)) element.textContent = text;
 }
@@ -149,6 +166,7 @@ export function setText(element: Node, text: string): void {
  * own (`indexedRuns`), only when it changed.
  */
 export function setIndexedText(element: HTMLElement, text: string): void {
+  if (text.includes('-') && !asWritten(element)) text = minusSigns(text);
   const now = element.textContent;
   if (now === text || now === shownText(element, text)) return;
   const only = element.firstChild;

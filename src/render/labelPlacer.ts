@@ -4,7 +4,7 @@
  * letters and, for a name, nearer its own point than any other; failing
  * that, farther out on a leader line back to its point, or boxed.
  */
-import { say } from './notation';
+import { minusSigns, say } from './notation';
 import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import { type LabelStyle, glyphBox, labelFrame } from './labels';
 import { measureLabel } from './labelWidth';
@@ -46,7 +46,7 @@ export function drawScreenLabel(
   const theme = painter.theme;
   const view = painter.view;
   const { size, runs, mainFont, subFont, widths, total } = measureLabel(painter, text, style);
-  text = say(text);
+  text = minusSigns(say(text));
   const align = style.align ?? 'left';
   const baseline = style.baseline ?? 'middle';
   const around = style.around ? spotsAround(x, y, style.around, total, size) : null;

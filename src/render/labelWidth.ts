@@ -3,7 +3,7 @@
  * a subscript smaller), its runs, and their widths, measured once per font
  * and text on a screen canvas.
  */
-import { say } from './notation';
+import { minusSigns, say } from './notation';
 import { type LabelStyle, splitSubscripts } from './labels';
 import type { Painter } from './painter';
 import type { DrawingSurface } from './surface';
@@ -15,7 +15,7 @@ export function measureLabel(painter: Painter, text: string, style: LabelStyle) 
   // No text under the theme's least size, subscripts included.
   const least = theme.sizes.minText ?? 0;
   const size = Math.max(style.size ?? theme.sizes.label, least);
-  const runs = splitSubscripts(say(text));
+  const runs = splitSubscripts(minusSigns(say(text)));
   const weight = style.bold ? 'bold ' : '';
   const mainFont = `${weight}${size}px ${theme.fontFamily}`;
   const subFont = `${weight}${Math.max(Math.round(size * 0.78), least)}px ${theme.fontFamily}`;

@@ -1,6 +1,7 @@
 import katex from 'katex';
 import { afterEach, describe, expect, it } from 'vitest';
 import {
+  minusSigns,
   parseLetter,
   renamePlain,
   renameTex,
@@ -84,5 +85,30 @@ describe('the page’s letters', () => {
     expect(parseLetter('μ')).toBe('mu');
     expect(parseLetter('t')).toBe('t');
     expect(parseLetter('x')).toBeNull();
+  });
+});
+
+describe('a negative number reads with a minus sign', () => {
+  it('turns the hyphen that starts a number into U+2212', () => {
+    expect(minusSigns('-0.65')).toBe('\u22120.65');
+    expect(minusSigns('(6.2920, -0.1907)')).toBe('(6.2920, \u22120.1907)');
+    expect(minusSigns('κ(0.3) = -1.1144')).toBe('κ(0.3) = \u22121.1144');
+    expect(minusSigns('-3.3943 | -3.3943')).toBe('\u22123.3943 | \u22123.3943');
+    expect(minusSigns('from -.5 to [-2, 3]')).toBe('from \u2212.5 to [\u22122, 3]');
+  });
+
+  it('leaves a hyphen between words, digits or after a bracket, and text that has none', () => {
+    for (const text of [
+      'P0-P1',
+      'steps 2-4',
+      'x-1',
+      'well-known',
+      '1e-9',
+      '(a)-1',
+      'a - 3',
+      '−0.5',
+      'C²',
+    ])
+      expect(minusSigns(text)).toBe(text);
   });
 });

@@ -148,6 +148,16 @@ export function say(text: string): string {
   return lessonLetter === null ? text : renamePlain(text, lessonLetter, readerLetter);
 }
 
+/**
+ * A negative number written with a hyphen (−0.65 as `toFixed` and `String`
+ * write it, "-0.65") with a true minus sign instead, as the figures and
+ * formulas write it (#19). Only a hyphen that starts a number: not one after
+ * a letter, a digit or a closing bracket (P0-P1, 2-4, x-1 are left alone).
+ */
+export function minusSigns(text: string): string {
+  return text.includes('-') ? text.replace(/(?<![\p{L}\p{N}_)\]])-(?=\.?\d)/gu, '\u2212') : text;
+}
+
 /** TeX as the reader reads it. */
 export function sayTex(tex: string): string {
   return lessonLetter === null ? tex : renameTex(tex, lessonLetter, readerLetter);

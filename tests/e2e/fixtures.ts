@@ -31,6 +31,13 @@ export const test = base.extend<{ watch: { errors: string[]; foreign: string[] }
 export { expect };
 
 /**
+ * A number as the page writes it, read back: a true minus sign (−0.65, as the
+ * figures, formulas and tables write it) reads as JavaScript's minus.
+ */
+export const readNumber = (text: string | null): number =>
+  Number((text ?? '').trim().replace(/\u2212/g, '-'));
+
+/**
  * Saves a screenshot to look at, under artifacts/screenshots/, when the run
  * asks for them (`npm run screenshots`). `npm test` compares each scene with
  * its reviewed reference instead (pictures.spec.ts); writing these too cost

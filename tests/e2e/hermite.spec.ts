@@ -8,6 +8,7 @@ import {
   linkState,
   inLecturesLetter,
   settled,
+  readNumber,
 } from './fixtures';
 
 // This lesson follows the lecture notes, and its tests read its text in their letter, μ.
@@ -30,7 +31,7 @@ async function coefficients(page: Page): Promise<number[][]> {
       .getByRole('row', { name: new RegExp(`^a${k} `) })
       .locator('td')
       .allInnerTexts();
-    rows.push([Number(cells[1]), Number(cells[2])]);
+    rows.push([readNumber(cells[1]), readNumber(cells[2])]);
   }
   return rows;
 }
@@ -162,7 +163,7 @@ test('the basis cursor shows H0…H3 at μ and what each weighs', async ({ page 
     [0, '0.5000', 'P₀'],
     [1, '0.5000', 'P₁'],
     [2, '0.1250', 'D₀'],
-    [3, '-0.1250', 'D₁'],
+    [3, '−0.1250', 'D₁'],
   ]) {
     const row = weights.getByRole('row', { name: new RegExp(`^H${'₀₁₂₃'[Number(k)]} `) });
     await expect(row).toContainText(String(value));

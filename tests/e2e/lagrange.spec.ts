@@ -23,7 +23,8 @@ test('the table shows L_k(t) of the product formula, and they add up to 1', asyn
   for (const k of ts.keys()) {
     const row = weightsTable(page).getByRole('row', { name: new RegExp(`^L${'₀₁₂₃₄'[k]} `) });
     await expect(row).toContainText(ts[k].toFixed(4));
-    await expect(row).toContainText(lagrangeWeight(ts, k, 0.4).toFixed(4));
+    // Written with a true minus sign, as every number on the page is.
+    await expect(row).toContainText(lagrangeWeight(ts, k, 0.4).toFixed(4).replace('-', '−'));
   }
   await expect(page.getByText(/The weights add up to 1 at every t/)).toBeVisible();
   // The continuation notes' slip, said beside the formula: Lₖ(tᵢ), not Lₖ(t).

@@ -147,7 +147,7 @@ test('every lesson has its key to the notes’ symbols, and a lesson with a para
   );
 });
 
-test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0, PN or N(i,2) in prose, a table or a label, at the last step of any scene', async ({
+test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez, \\frac), nor P0, PN or N(i,2) in prose, a table or a label, nor a hyphen for a minus sign (-0.65), at the last step of any scene', async ({
   page,
 }) => {
   test.setTimeout(240_000);
@@ -186,7 +186,9 @@ test('no page writes code for mathematics as plain text (C^(p−1), P_{1}, G_Bez
             ? /(?<![A-Za-z])(?:[PDBQLH]\d|[PD]N(?![\p{L}\d(])|[PDBQLHNux]\([ijkmnrp](?:[+−]\d+)?(?:,[^)]*)?\))/u.exec(
                 text,
               )
-            : null);
+            : null) ??
+          // A negative number is written with a true minus (−0.65), as the figures and formulas write it.
+          /(?:^|[\s(=,;:[≤≥<>])-\d/u.exec(text);
         if (code) found.push(`${slug} ${scene}: “${code[0]}” in “${text.slice(0, 90)}”`);
       }
     }

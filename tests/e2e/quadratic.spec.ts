@@ -1,5 +1,13 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, snapshot, test, linkState, inLecturesLetter } from './fixtures';
+import {
+  expect,
+  expectHash,
+  snapshot,
+  test,
+  linkState,
+  inLecturesLetter,
+  readNumber,
+} from './fixtures';
 
 // This lesson follows the lecture notes, and its tests read its text in their letter, μ.
 test.beforeEach(({ page }) => inLecturesLetter(page));
@@ -20,7 +28,7 @@ async function coefficients(page: Page): Promise<number[][]> {
       .getByRole('row', { name: new RegExp(`^${name} `) })
       .locator('td')
       .allInnerTexts();
-    rows.push([Number(cells[1]), Number(cells[2])]);
+    rows.push([readNumber(cells[1]), readNumber(cells[2])]);
   }
   return rows;
 }

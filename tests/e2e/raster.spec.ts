@@ -67,7 +67,9 @@ test('a rasterised segment is an 8-connected path from end pixel to end pixel, o
       const ends = document.querySelector<HTMLElement>('[data-from][data-to]')!.dataset;
       return {
         rows: [...element.querySelectorAll('tbody tr')].map((tr) =>
-          [...tr.querySelectorAll('td')].map((td) => Number(td.textContent)),
+          [...tr.querySelectorAll('td')].map((td) =>
+            Number(td.textContent!.replace(/\u2212/g, '-')),
+          ),
         ),
         from: ends.from!.split(',').map(Number),
         to: ends.to!.split(',').map(Number),

@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { naturalCubicDerivatives } from '../../src/math';
-import { expect, expectHash, snapshot, test, linkState } from './fixtures';
+import { expect, expectHash, snapshot, test, linkState, readNumber } from './fixtures';
 
 /** 12 → ₁₂: a village's index as the page's prose writes it. */
 const subscript = (i: number) => [...String(i)].map((d) => '₀₁₂₃₄₅₆₇₈₉'[Number(d)]).join('');
@@ -175,7 +175,7 @@ test('the script: the villages, the system, one row swept per step, one D fixed 
   for (let i = 0; i < n; i++) {
     const gradients = page.getByRole('table', { name: 'Gradients found' });
     const cells = await gradients.locator(`tr[data-row="${i}"] td`).allTextContents();
-    const [dx, dy] = cells.map(Number);
+    const [dx, dy] = cells.map(readNumber);
     expect(Math.abs(dx - expected[0][i])).toBeLessThanOrEqual(0.0005);
     expect(Math.abs(dy - expected[1][i])).toBeLessThanOrEqual(0.0005);
   }

@@ -13,7 +13,7 @@ const AROUND_ROWS = 2;
 /** Right-hand sides and gradients: three decimals. */
 const number = (value: number) => fmt(value, 3);
 /** Matrix entries: whole numbers as they are (2, 4, 1, 0), γ to three decimals. */
-const entry = (value: number) => (Number.isInteger(value) ? String(value) : fmt(value, 3));
+const entry = (value: number) => fmt(value, Number.isInteger(value) ? 0 : 3);
 
 /**
  * The tridiagonal system with the current numbers, one table row per matrix
