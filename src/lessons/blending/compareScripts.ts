@@ -55,7 +55,7 @@ export const hermiteScript: BlendingScript = script<BlendingState, BlendingModel
   repeat(
     'tangents',
     (state) => (degree(state) === 3 ? 1 : 0),
-    'Then the end gradients of the cubic: 3(P1 − P0) at the start, 3(P3 − P2) at the end',
+    'Then the end gradients of the cubic: 3(P1 − P0) at the start, 3(P3 − P2) at the end, drawn at half length',
     ({ model }) => {
       const [[from0, tip0], [from1, tip1]] = model.compared!.arrows;
       const d = (a: readonly number[], b: readonly number[]) =>

@@ -5,6 +5,7 @@ import {
   convexHull,
   convexHullContains,
   lagrangePoint,
+  pointBetween,
   uniformBSplinePoint,
 } from '../../math';
 import { type Family, SAMPLES, equallySpacedNodes, family } from './families';
@@ -99,3 +100,6 @@ function shareOutside(p: readonly Point[], curve: readonly Point[]): number {
   const hull = convexHull(p);
   return curve.filter((q) => !convexHullContains(hull, q, 1e-9)).length / curve.length;
 }
+
+/** The point halfway from `from` to `tip`: a gradient's arrow drawn at half length. */
+export const halfway = (from: Point, tip: Point): Point => pointBetween(from, tip, 0.5);

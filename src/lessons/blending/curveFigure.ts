@@ -4,6 +4,7 @@ import { seriesDash } from '../../kit/seriesColours';
 import type { Painter } from '../../render/painter';
 import { words } from '../../kit/format';
 import { highlightedIndex } from './hover';
+import { halfway } from './comparison';
 import type { BlendingModel, Compared } from './model';
 import type { Passes } from './passes';
 import { controlPoints } from './points';
@@ -139,12 +140,18 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   addTo: controlPoints,
 };
 
-/** The Hermite data of the same cubic, the gradients D0 and D3 at true length, labelled. */
+/**
+ * The Hermite data of the same cubic, the gradients D0 and D3, drawn at half
+ * length and labelled so (as bezier-properties draws its end tangents): at
+ * full length, three times the polygon's end legs, they took the view and
+ * left the curve a small loop in its middle (#19).
+ */
 function drawHermiteData(painter: Painter, compared: Compared): void {
   const theme = painter.theme;
   compared.arrows.forEach(([from, tip], end) => {
-    painter.arrow(from, tip, { color: theme.accent, width: theme.sizes.line });
-    painter.label(end === 0 ? 'D_0' : 'D_3', tip, {
+    const half = halfway(from, tip);
+    painter.arrow(from, half, { color: theme.accent, width: theme.sizes.line });
+    painter.label(end === 0 ? '½D_0' : '½D_3', half, {
       dx: 6,
       dy: -theme.sizes.label * 0.7,
       color: theme.accent,

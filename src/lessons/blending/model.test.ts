@@ -68,9 +68,11 @@ describe('derive (blending)', () => {
         [7, -6],
       ],
     ]);
-    // The plot reaches below 0 to show the dip, and the fit shows the arrow tips.
+    // The plot reaches below 0 to show the dip. The arrows are drawn at half
+    // length, tips (1.5, 3) and (5.5, −3), and the fit shows those, not (3, 6)
+    // and (7, −6), which left the curve small in the middle of the view.
     expect(m.plotBounds.minY).toBeLessThan(-4 / 27);
-    expect(m.curveBounds).toEqual({ minX: 0, minY: -6, maxX: 7, maxY: 6 });
+    expect(m.curveBounds).toEqual({ minX: 0, minY: -3, maxX: 5.5, maxY: 3 });
   });
 
   it('compares with the uniform B-spline: B(0) = (P₀ + 4P₁ + P₂) / 6, nothing negative', () => {

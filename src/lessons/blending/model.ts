@@ -3,7 +3,13 @@ import { type Bounds, boundsOf } from '../../render/projection';
 import { degenerate, repeatsText } from '../../kit/degenerate';
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
-import { type Compared, type ComparedShape, comparedAt, comparedShape } from './comparison';
+import {
+  type Compared,
+  type ComparedShape,
+  comparedAt,
+  comparedShape,
+  halfway,
+} from './comparison';
 import { type Family, family } from './families';
 import { type Passes, passes } from './passes';
 import type { Reveal } from './reveals';
@@ -133,7 +139,8 @@ const comparison = memoOn<
     curveBounds: boundsOf([
       ...p,
       ...(compared?.curve ?? []),
-      ...(compared?.arrows.map(([, tip]) => tip) ?? []),
+      // The gradients are drawn at half length (curveFigure).
+      ...(compared?.arrows.map(([from, tip]) => halfway(from, tip)) ?? []),
     ]),
     plotBounds,
     handleY: plotBounds.maxY - 0.05 * (plotBounds.maxY - plotBounds.minY),
