@@ -37,7 +37,8 @@ import { type LabelBox, glyphBox } from '../src/render/labels';
 import { makeTheme } from '../src/render/theme';
 import { subjectUnderHandles } from '../src/render/buried';
 import type { Painter } from '../src/render/painter';
-import { presenterSizes, stacked } from './presenterLayout';
+import { presenterSizes, stacked } from '../src/app/figureSizes';
+import { layoutFor } from '../src/app/tallLayout';
 
 const theme = makeTheme(false, true);
 /** The figures' share of presenter view at 1920 × 1080, under the caption and formula. */
@@ -106,10 +107,10 @@ interface Drawn {
 }
 
 /** Every figure the state's scene shows, drawn as the projector shows it, with what is wrong in it. */
-function drawStep(lesson: AnyLesson, state: unknown): Drawn {
+function drawStep(lesson: AnyLesson, state: unknown, layout: AnyLesson['layout']): Drawn {
   const model = lesson.derive(state);
   const figures = figuresOf(lesson, state);
-  const sizes = presenterSizes(lesson.layout, figures, AREA, theme.sizes.strip ?? 1);
+  const sizes = presenterSizes(layout, figures, AREA, theme.sizes.strip ?? 1);
   const problems: string[] = [];
   let svg = '';
   for (const figure of figures) {
@@ -260,10 +261,18 @@ describe('every step of every scene, as the room sees it', () => {
       for (const scene of lesson.scenes ?? []) {
         const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
         const count = steps.count(opened);
+        // Presenter view arranges a scene's figures once, as it opens (tallLayout.ts).
+        const layout = layoutFor(
+          lesson,
+          figuresOf(lesson, opened),
+          lesson.derive(opened),
+          AREA,
+          theme,
+        );
         let before: string | null = null;
         for (let k = 0; k <= count; k++) {
           const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
-          const { svg, problems } = drawStep(lesson, state);
+          const { svg, problems } = drawStep(lesson, state, layout);
           for (const problem of [...problems, ...namesOnPhone(lesson, state)])
             found.push(`${scene.id} step ${k}: ${problem}`);
           // The caption names points as the figure labels them: P₁, not P1; y₃, not y3.
@@ -303,7 +312,7 @@ describe('every step of every scene, as the room sees it', () => {
               [steps.key]: count,
               [parameter.key]: end,
             }).state;
-            for (const problem of drawStep(lesson, state).problems.filter((p) =>
+            for (const problem of drawStep(lesson, state, layout).problems.filter((p) =>
               p.includes('a handle hides'),
             ))
               found.push(`${scene.id} last step, ${parameter.label} = ${end}: ${problem}`);

@@ -79,7 +79,6 @@ export class FigureView<S, M> {
     this.element = document.createElement('div');
     setClass(this.element, `figure figure-${spec.kind}`);
     this.element.dataset.figure = spec.id;
-    this.element.style.flexGrow = String(spec.weight ?? 1);
     if (spec.height) stripHeight(this.element, spec.height, host.theme());
     if (spec.aspect) this.element.style.aspectRatio = String(spec.aspect);
     this.canvas = document.createElement('canvas');

@@ -218,6 +218,12 @@ export interface LessonDefinition<S, M = S> {
   figures: FigureSpec<S, M>[];
   /** Side by side on a wide screen (default), stacked, or a tree of rows, columns and grids. */
   layout?: 'row' | 'column' | LayoutNode;
+  /**
+   * The same figures arranged for a tall subject (a plot beside the curve
+   * rather than under it): presenter view takes it for a scene whose
+   * subject it draws clearly larger (see tallLayout.ts).
+   */
+  tallLayout?: LayoutNode;
   parameter?: ParameterSpec<S>;
   /**
    * The letter the lesson's text writes its curve parameter with ('t' or

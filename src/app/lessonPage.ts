@@ -13,7 +13,7 @@ import { h } from './dom';
 import { download, figuresToPng, figuresToSvg } from './exportFigure';
 import { FigureView } from './figureView';
 import type { PageKeys, PresenterTool } from './keyTarget';
-import { buildLayout, showFigures } from './layout';
+import { FigureArrangement } from './figureArrangement';
 import { buildPageDom } from './pageDom';
 import type { AnyLesson, DrawInfo, LessonPanel } from './lesson';
 import { LessonStore, type Loaded } from './lessonState';
@@ -71,9 +71,9 @@ export class LessonPage<S, M> {
   private ghostModel: M | null = null;
   /** The trail of each figure's moving point (presenter tool). */
   private readonly trails = new Trails();
-  /** The figures' box, and which figures the scene shows now (ids joined; '' for all). */
+  /** The figures' box, and the figures in it as the scene shows and arranges them. */
   private readonly figureBox: HTMLElement;
-  private figuresShownKey = '';
+  private readonly arrangement: FigureArrangement<S, M>;
 
   /** What the keys and the clicker do on this page (keymap.ts). */
   readonly keys: PageKeys = {
@@ -140,7 +140,7 @@ export class LessonPage<S, M> {
       fitted: () => [this.panel.element, this.presenter.caption],
       prepare: (state, model, moved) => {
         if (moved && this.presenter.tools.trail) this.trails.extend(this.figures, model);
-        this.showFigures(state);
+        this.showFigures(state, model);
       },
       updatePanel: (state, model) => this.updatePanel(state, model),
       hovered: () => this.panel.hover?.(this.hover),
@@ -201,10 +201,9 @@ export class LessonPage<S, M> {
       () => ({ element: this.element, figureBox: this.figureBox }),
     );
 
-    const figures = h(
-      'div',
-      { class: 'stage-figures' },
-      buildLayout(lesson.layout, new Map(this.figures.map((f) => [f.spec.id, f.element]))),
+    const figures = h('div', { class: 'stage-figures' });
+    this.arrangement = new FigureArrangement<S, M>(lesson, this.figures, figures, () =>
+      this.frame.redrawAll(),
     );
     this.figureBox = figures;
     this.presenter = new Presenter(
@@ -310,13 +309,15 @@ export class LessonPage<S, M> {
     return this.figures.filter((figure) => !figure.element.hidden);
   }
 
-  /** Shows the figures this state's scene declares, once a change of scene. */
-  private showFigures(state: S): void {
-    const ids = this.lesson.figuresShown?.(state) ?? null;
-    const key = ids === null ? '' : ids.join(',');
-    if (key === this.figuresShownKey) return;
-    this.figuresShownKey = key;
-    showFigures(this.figureBox, this.figures, ids);
+  /** Shows and arranges the figures this state's scene declares (their DOM changes once a change of scene). */
+  private showFigures(state: S, model: M): void {
+    this.arrangement.arrange(
+      this.lesson.figuresShown?.(state) ?? null,
+      document.documentElement.classList.contains('projector'),
+      this.store.scene,
+      () => model,
+      () => this.shell.theme(),
+    );
   }
 
   /** Resolves when the page is settled (see PageFrame.settled): tests wait on this. */
@@ -366,6 +367,7 @@ export class LessonPage<S, M> {
     this.parameter?.stop();
     this.unsubscribe();
     this.stopLayout();
+    this.arrangement.disconnect();
     document.fonts?.removeEventListener('loadingdone', this.fontsLoaded);
     this.releaseUnseen();
     this.frame.stop();

@@ -84,6 +84,8 @@ export interface KitLessonSpec<S, M extends { state: S }, N extends string> {
   scenes: readonly ScriptedScene<S, M, N>[];
   figures: readonly KitFigure<S, M>[];
   layout?: 'row' | 'column' | LayoutNode;
+  /** The figures arranged for a tall subject, in presenter view (see LessonDefinition.tallLayout). */
+  tallLayout?: LayoutNode;
   parameter?: ParameterSpec<S>;
   /** The letter the lesson writes its curve parameter with (see LessonDefinition.letter). */
   letter?: Letter;
@@ -126,6 +128,7 @@ export function defineLesson<S, M extends { state: S }, N extends string>(
     derive,
     figures: spec.figures.map((figure) => shellFigure(figure)),
     layout: spec.layout,
+    tallLayout: spec.tallLayout,
     parameter: spec.parameter,
     letter: spec.letter,
     steps: {

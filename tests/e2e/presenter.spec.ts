@@ -174,3 +174,60 @@ test('Q asks the room to predict the next step; the next press reveals it', asyn
   await expect(caption).not.toHaveClass(/asking/);
   expect((await linkState(page)).step).toBe('2');
 });
+
+test.describe('at 1920 × 1080', () => {
+  test.use({ viewport: { width: 1920, height: 1080 } });
+
+  /** Each shown figure's box on the page. */
+  const boxes = (page: Page) =>
+    page.evaluate(() =>
+      Object.fromEntries(
+        [...document.querySelectorAll<HTMLCanvasElement>('canvas[data-figure]')]
+          .filter((c) => c.offsetParent !== null)
+          .map((c) => {
+            const b = c.getBoundingClientRect();
+            return [c.dataset.figure!, { x: b.x, y: b.y, w: b.width, h: b.height }];
+          }),
+      ),
+    );
+
+  test('presenter view puts a tall subject’s plot beside it for the whole scene, a wide one’s under it', async ({
+    page,
+  }) => {
+    // Long gradients: the patch and its arrows are about as tall as wide.
+    await page.goto('./#/hermite?scene=long&step=0');
+    await settled(page);
+    let b = await boxes(page);
+    expect(b.basis.y).toBeGreaterThanOrEqual(b.patches.y + b.patches.h - 1);
+    await page.keyboard.press('p');
+    await settled(page);
+    b = await boxes(page);
+    // Beside it, as tall, and the patch is given the figures' whole height.
+    expect(b.basis.x).toBeGreaterThanOrEqual(b.patches.x + b.patches.w - 1);
+    expect(Math.abs(b.basis.y - b.patches.y)).toBeLessThan(2);
+    expect(b.patches.h).toBeGreaterThan(700);
+    // Through every step of the scene the figures keep that arrangement and size.
+    for (let k = 1; k <= 7; k++) {
+      await page.keyboard.press('PageDown');
+      await settled(page);
+      expect(await boxes(page)).toEqual(b);
+    }
+    // D₁'s handle (off the figure under the wide arrangement) is on it.
+    const handle = (await page.getByRole('button', { name: /^D1 at/ }).boundingBox())!;
+    expect(handle.x + handle.width / 2).toBeLessThan(b.patches.x + b.patches.w);
+    expect(handle.y + handle.height / 2).toBeLessThan(b.patches.y + b.patches.h);
+    // Five points across the screen: the plot stays under the patches.
+    await page.goto('./#/hermite?scene=several&step=0');
+    await settled(page);
+    b = await boxes(page);
+    expect(b.basis.y).toBeGreaterThanOrEqual(b.patches.y + b.patches.h - 1);
+    // Back at the long gradients, beside again; leaving presenter view takes the lesson's own arrangement back.
+    await page.goto('./#/hermite?scene=long&step=0');
+    await settled(page);
+    expect((await boxes(page)).basis.x).toBeGreaterThan(1000);
+    await page.keyboard.press('p');
+    await settled(page);
+    b = await boxes(page);
+    expect(b.basis.y).toBeGreaterThanOrEqual(b.patches.y + b.patches.h - 1);
+  });
+});

@@ -43,6 +43,8 @@ export default defineLesson({
   derive,
   figures: [curveFigure, plotFigure, spaceFigure],
   layout: { column: [{ row: ['curve', 'space'] }, 'plot'], weights: [3, 2] },
+  // A curve taller than wide is drawn larger with the space view (as large as before) and κ beside it.
+  tallLayout: { row: ['curve', { column: ['space', 'plot'], weights: [1.5, 1] }], weights: [1, 1] },
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
   scenes: SCENES,
   normalize,

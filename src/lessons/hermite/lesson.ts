@@ -67,6 +67,8 @@ export default defineLesson({
   normalize,
   figures: [curveFigure, basisFigure],
   layout: 'column',
+  // A patch taller than wide (long gradients) is drawn larger with its weights beside it.
+  tallLayout: { row: ['patches', 'basis'] },
   parameter: { key: 'mu', label: 'μ', min: 0, max: 1, step: 0.01 },
   scenes: [
     scene('one', 'One patch', ONE_PATCH, ONE_PATCH_GRADIENTS),

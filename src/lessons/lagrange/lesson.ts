@@ -37,6 +37,8 @@ export default defineLesson({
   derive,
   figures: [curveFigure, basisFigure],
   layout: 'column',
+  // A curve taller than wide (Runge's bell) is drawn larger with its basis beside it.
+  tallLayout: { row: ['curve', 'basis'] },
   parameter: { key: 't', label: 't', min: 0, max: 1, step: 0.01 },
   scenes: [
     scene('five', 'Five points', DEFAULT_POINTS),

@@ -6,8 +6,8 @@
  * height has taken its own; a grid splits both evenly. Figures the step
  * hides take no room, and neither does a row or column left empty.
  */
-import { holdsShown, layoutTree } from '../src/app/handout/frameLayout';
-import type { LayoutNode } from '../src/app/lesson';
+import { holdsShown, layoutTree } from './handout/frameLayout';
+import type { LayoutNode } from './lesson';
 
 export interface Placed {
   width: number;

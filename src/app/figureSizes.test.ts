@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { presenterSizes } from './presenterLayout';
+import { presenterSizes } from './figureSizes';
 
 // Sizes worked by hand, and checked against the page: curvature at
 // 1920 × 1080 in presenter view measured 1137 × 551, 759 × 551 and
