@@ -10,7 +10,7 @@ import {
   type Point,
   sampleBasis,
 } from '../../math';
-import { type Bounds, boundsOf } from '../../render/projection';
+import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
 import { degenerate, repeatsText } from '../../kit/degenerate';
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
@@ -201,14 +201,27 @@ export function derive(state: LagrangeState, shown: Revealed<Reveal>): LagrangeM
   const { points, t } = state;
   const geometry = polynomial(state);
   const weights = lagrangeBasis(geometry.ts, t);
+  const comparison = splineThrough(state);
   return {
     ...geometry,
+    // Beside the spline, its gradients' arrows (drawn at true length) stay on the figure too.
+    curveBounds: comparison
+      ? unionBounds(
+          geometry.curveBounds,
+          boundsOf(
+            points.map((p, k) => [
+              p[0] + comparison.gradients[k][0],
+              p[1] + comparison.gradients[k][1],
+            ]),
+          ),
+        )
+      : geometry.curveBounds,
     state,
     shown,
     weights,
     weightSum: weights.reduce((a, b) => a + b, 0),
     at: [0, 1].map((d) => weights.reduce((sum, w, k) => sum + w * points[k][d], 0)),
-    comparison: splineThrough(state),
+    comparison,
   };
 }
 
