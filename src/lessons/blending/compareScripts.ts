@@ -24,12 +24,20 @@ const bezier = step<BlendingState, BlendingModel, Reveal>(
 const plainName = (m: BlendingModel, k: number) =>
   m.compared!.labels[k].replace(/_\{?([^}]*)\}?/, '$1');
 
-/** The compared functions' values at μ and their sum, as TeX. */
-const valuesAtMu = (m: BlendingModel) => {
+/**
+ * The compared functions' values at μ and what they sum to, as TeX: all of
+ * them, or (Hermite's) only those that weight points, the others weighting
+ * gradients: H₀ + H₁ = 1, where the four would sum to a number of no meaning.
+ */
+const valuesAtMu = (m: BlendingModel, weightingPoints = m.compared!.atMu.length) => {
   const c = m.compared!;
   const mu = texT(m.state.mu);
   const values = c.atMu.map((v, k) => `${c.labels[k]}(${mu}) = ${texNumber(v, 4)}`);
-  return `${values.join(',\\ ')},\\quad \\textstyle\\sum = ${words(c.sum)}`;
+  if (weightingPoints === c.atMu.length)
+    return `${values.join(',\\ ')},\\quad \\textstyle\\sum = ${words(c.sum)}`;
+  const points = c.atMu.slice(0, weightingPoints);
+  const sum = points.reduce((a, b) => a + b, 0);
+  return `${values.join(',\\ ')},\\quad ${c.labels.slice(0, weightingPoints).join(' + ')} = ${words(sum)}`;
 };
 
 const HERMITE_ROLES = [
@@ -74,8 +82,9 @@ export const hermiteScript: BlendingScript = script<BlendingState, BlendingModel
   ),
   step(
     'atMu',
-    ({ state }) => `At μ = ${texT(state.mu)}, the four Hermite weights give the same point P(μ)`,
-    ({ model }) => valuesAtMu(model),
+    ({ state }) =>
+      `At μ = ${texT(state.mu)}, the four Hermite weights give the same point P(μ); the two that weight points sum to 1`,
+    ({ model }) => valuesAtMu(model, 2),
   ),
 );
 

@@ -77,6 +77,16 @@ describe('the blending script, step by named step', () => {
     expect(walk(line)[2][0]).toBe('The weight of P₁: W(1, 1, μ), largest at μ = 1');
   });
 
+  it('ends Hermite’s comparison with H₀ + H₁ = 1: those two weight points, H₂ and H₃ gradients', () => {
+    const at = { ...cubic, comparison: 'hermite' as const, mu: 0.3 };
+    const last = { ...at, step: lesson.steps!.count(at) };
+    // H₀(0.3) = 2 · 0.027 − 3 · 0.09 + 1 = 0.784, H₁ = −0.054 + 0.27 = 0.216,
+    // H₂ = 0.027 − 0.18 + 0.3 = 0.147, H₃ = 0.027 − 0.09 = −0.063; 0.784 + 0.216 = 1.
+    expect(lesson.steps!.formula!(derive(last), last)).toBe(
+      'H_0(0.3) = 0.7840,\\ H_1(0.3) = 0.2160,\\ H_2(0.3) = 0.1470,\\ H_3(0.3) = -0.0630,\\quad H_0 + H_1 = 1',
+    );
+  });
+
   it('reveals by name: the weights count up, P(μ) and the curve follow', () => {
     const shown = (step: number) => derive({ ...cubic, step }).shown;
     expect(shown(0).count('weight')).toBe(0);
