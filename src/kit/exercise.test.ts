@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { MAX_SEED, checkNumbers, checkPoint, newSeed, random } from './exercise';
+import { MAX_SEED, checkNumbers, checkPoint, newSeed, pointTask, random } from './exercise';
 
 describe('random(seed)', () => {
   it('gives the same numbers for the same seed, and other numbers for another', () => {
@@ -91,5 +91,30 @@ describe('checkPoint', () => {
       correct: false,
       message: 'Not yet: your guess is 1 from the point (2, 1.5). Look at P₁,₁.',
     });
+  });
+});
+
+describe('pointTask', () => {
+  it('places a guess on its figure, checked as checkPoint checks it, with a hint for that guess', () => {
+    const task = pointTask('curve', [2, 1.5], 0.25, (guess) =>
+      guess[1] < 1.5 ? 'Too low.' : 'Too high.',
+    );
+    expect(task).toMatchObject({
+      kind: 'point',
+      figure: 'curve',
+      answer: [2, 1.5],
+      tolerance: 0.25,
+    });
+    expect(task.check([2.2, 1.5]).correct).toBe(true);
+    // (2, 0.5) is 1 below the point; (2, 2.5) is 1 above it.
+    expect(task.check([2, 0.5]).message).toBe(
+      'Not yet: your guess is 1 from the point (2, 1.5). Too low.',
+    );
+    expect(task.check([2, 2.5]).message).toBe(
+      'Not yet: your guess is 1 from the point (2, 1.5). Too high.',
+    );
+    expect(pointTask('curve', [0, 0], 0.1, 'Look again.').check([1, 0]).message).toBe(
+      'Not yet: your guess is 1 from the point (0, 0). Look again.',
+    );
   });
 });

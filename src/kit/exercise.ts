@@ -159,6 +159,27 @@ export function checkNumbers(
   return { correct: false, message: `Not yet. ${mistake ? mistake.hint : hint}` };
 }
 
+/**
+ * The task of placing a guess for `answer` on `figure`: right within
+ * `tolerance` (in the figure's units), and a wrong guess told how far off it
+ * is, with `hint` (or the hint for that guess).
+ */
+export function pointTask(
+  figure: string,
+  answer: Point,
+  tolerance: number,
+  hint: string | ((guess: Point) => string),
+): PointTask {
+  return {
+    kind: 'point',
+    figure,
+    answer,
+    tolerance,
+    check: (guess) =>
+      checkPoint(guess, answer, tolerance, typeof hint === 'string' ? hint : hint(guess)),
+  };
+}
+
 /** Checks a guessed point: within `tolerance` of the answer is right; either way says how far off. */
 export function checkPoint(guess: Point, answer: Point, tolerance: number, hint: string): Verdict {
   if (!guess.every(Number.isFinite)) return { correct: false, message: 'Place a guess first.' };

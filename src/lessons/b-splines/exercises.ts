@@ -3,7 +3,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { sub, words } from '../../kit/format';
@@ -84,19 +84,12 @@ const segmentPoint: ExerciseSpec<BSplineState> = {
       // The polygon without the curve, the cursor at the far end (the panel's P(s) is not the answer).
       state: { ...base, t: first < 2 ? 1 : 0, step: 1 },
       prompt: `Segment ${segment} blends ${blended} with the bases B0(t) … B3(t). Where is its point ${segment}(${local}) (within ${tolerance})?`,
-      task: {
-        kind: 'point',
-        figure: 'curve',
+      task: pointTask(
+        'curve',
         answer,
         tolerance,
-        check: (guess) =>
-          checkPoint(
-            guess,
-            answer,
-            tolerance,
-            `Look again at the step “Segment ${segment} blends …”: the weights B0(${local}) … B3(${local}) are never negative and sum to 1, so ${segment}(${local}) lies among ${blended}, pulled most to the middle two.`,
-          ),
-      },
+        `Look again at the step “Segment ${segment} blends …”: the weights B0(${local}) … B3(${local}) are never negative and sum to 1, so ${segment}(${local}) lies among ${blended}, pulled most to the middle two.`,
+      ),
       // The cursor at s = first + local of the m − 2 = 4 segments.
       working: { ...base, t: (first + local) / 4 },
     };

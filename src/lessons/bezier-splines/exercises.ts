@@ -9,7 +9,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { pointWords, sub, words } from '../../kit/format';
@@ -75,13 +75,7 @@ const mirrorControl: ExerciseSpec<State> = {
     return {
       state,
       prompt: `The C¹ quadratic spline through ${listed(points)} starts with b₀ = ${pointWords(b0)}. Where is b${i}, the middle control point of the piece from p${i} to p${sub(k + 1)} (within ${MIRROR_TOLERANCE})?`,
-      task: {
-        kind: 'point',
-        figure: 'main',
-        answer,
-        tolerance: MIRROR_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, MIRROR_TOLERANCE, hint(guess)),
-      },
+      task: pointTask('main', answer, MIRROR_TOLERANCE, hint),
       // b₀, then one mirror image bᵢ = 2pᵢ − bᵢ₋₁ per step, with its numbers.
       working: state,
     };

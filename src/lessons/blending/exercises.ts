@@ -3,7 +3,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { sub, words } from '../../kit/format';
@@ -118,19 +118,12 @@ const blend: ExerciseSpec<BlendingState> = {
     return {
       state: pointsOnly(defaults, p),
       prompt: `Where is P(${words(mu)}) = Σ W(${n}, i, ${words(mu)})·Pᵢ, the blend of these control points? Tap your guess; within ${words(tolerance)} of the point counts.`,
-      task: {
-        kind: 'point',
-        figure: 'curve',
+      task: pointTask(
+        'curve',
         answer,
         tolerance,
-        check: (guess) =>
-          checkPoint(
-            guess,
-            answer,
-            tolerance,
-            `At μ = ${words(mu)} the weights of P₀ … P${sub(n)} are ${weights.join(', ')}: P(μ) is the points averaged with these weights, pulled hardest by the largest.`,
-          ),
-      },
+        `At μ = ${words(mu)} the weights of P₀ … P${sub(n)} are ${weights.join(', ')}: P(μ) is the points averaged with these weights, pulled hardest by the largest.`,
+      ),
       working: walked(defaults, p, mu),
     };
   },
@@ -150,17 +143,14 @@ const peak: ExerciseSpec<BlendingState> = {
     const answer = [top, bernstein(n, i, top)];
     const tolerance = 0.05;
     const p = controlPolygon(r, n);
-    const check = (guess: Point): Verdict => {
-      const rightMu = Math.abs(guess[0] - top) <= tolerance;
-      const hint = rightMu
+    const hint = (guess: Point): string =>
+      Math.abs(guess[0] - top) <= tolerance
         ? `Right μ; the top is as high as ${formulaText(n, i)} at μ = ${i}/${n}, which is ${words(answer[1])}.`
         : `${formulaText(n, i)} grows with μ${sup(i)} and falls with (1 − μ)${sup(n - i)}: it is highest where μ : (1 − μ) = ${i} : ${n - i}.`;
-      return checkPoint(guess, answer, tolerance, hint);
-    };
     return {
       state: pointsOnly(defaults, p),
       prompt: `Where is the top of the blending function W(${n}, ${i}, μ) on the plot of μ against W? Tap your guess; within ${words(tolerance)} counts.`,
-      task: { kind: 'point', figure: 'blending', answer, tolerance, check },
+      task: pointTask('blending', answer, tolerance, hint),
       working: walked(defaults, p, Number(top.toFixed(4))),
     };
   },

@@ -3,7 +3,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { pointWords, sub, words } from '../../kit/format';
@@ -72,19 +72,12 @@ const circleCentre: ExerciseSpec<CurvatureState> = {
     return {
       state: planeState(defaults, 'bezier', points, start >= end ? 0 : 1),
       prompt: `The osculating circle at P(${t}) touches the curve with radius 1/|κ|. Where is its centre (within ${tolerance})?`,
-      task: {
-        kind: 'point',
-        figure: 'curve',
+      task: pointTask(
+        'curve',
         answer,
         tolerance,
-        check: (guess) =>
-          checkPoint(
-            guess,
-            answer,
-            tolerance,
-            `The centre is P(t) + N/|κ|: from P(${t}) along the normal N, on the inside of the bend, a distance R = 1/|κ| (the steps “normal” and “curvature”).`,
-          ),
-      },
+        `The centre is P(t) + N/|κ|: from P(${t}) along the normal N, on the inside of the bend, a distance R = 1/|κ| (the steps “normal” and “curvature”).`,
+      ),
       working: planeState(defaults, 'bezier', points, t),
     };
   },

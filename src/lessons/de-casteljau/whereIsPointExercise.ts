@@ -1,4 +1,4 @@
-import { type ExerciseSpec, checkPoint, random } from '../../kit/exercise';
+import { type ExerciseSpec, pointTask, random } from '../../kit/exercise';
 import { words } from '../../kit/format';
 import { bezierPoint } from '../../math';
 import { FRIENDLY_T, arch, polygonOnly, walked } from './exerciseSetup';
@@ -22,19 +22,12 @@ export const whereIsPoint: ExerciseSpec<DeCasteljauState> = {
     return {
       state: polygonOnly(defaults, p, t),
       prompt: `Where is P(${words(t)}) on the Bézier curve of this control polygon? Tap your guess; within ${words(tolerance)} of the point counts.`,
-      task: {
-        kind: 'point',
-        figure: 'construction',
+      task: pointTask(
+        'construction',
         answer,
         tolerance,
-        check: (guess) =>
-          checkPoint(
-            guess,
-            answer,
-            tolerance,
-            `Level 1 cuts every edge at t = ${words(t)} from its first end, level 2 cuts the new edges, ${cuts}: the last point is P(t).`,
-          ),
-      },
+        `Level 1 cuts every edge at t = ${words(t)} from its first end, level 2 cuts the new edges, ${cuts}: the last point is P(t).`,
+      ),
       working: walked(defaults, p, t),
     };
   },

@@ -3,7 +3,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { degenerate } from '../../kit/degenerate';
@@ -74,13 +74,7 @@ const where: ExerciseSpec<HermiteState> = {
     return {
       state,
       prompt: `The patch leaves P₀ = ${pointWords(p0)} with gradient D₀ = ${pointWords(d0)} and arrives at P₁ = ${pointWords(p1)} with D₁ = ${pointWords(d1)}. Where is P(${mu})?`,
-      task: {
-        kind: 'point',
-        figure: 'patches',
-        answer,
-        tolerance: GUESS_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, GUESS_TOLERANCE, hint),
-      },
+      task: pointTask('patches', answer, GUESS_TOLERANCE, hint),
       // The patch solved, H₀ … H₃ read off the inverse, and P(μ) from them.
       working: { ...state, mu, step: lastStep(state) },
     };

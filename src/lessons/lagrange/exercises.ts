@@ -4,7 +4,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { pointWords, sub, words } from '../../kit/format';
@@ -81,13 +81,7 @@ const where: ExerciseSpec<LagrangeState> = {
     return {
       state,
       prompt: `The polynomial passes P₀ … P₄ at t = ${nodesWords}. Where is P(${t})?`,
-      task: {
-        kind: 'point',
-        figure: 'curve',
-        answer,
-        tolerance: GUESS_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, GUESS_TOLERANCE, hint),
-      },
+      task: pointTask('curve', answer, GUESS_TOLERANCE, hint),
       // Each Lₖ(t) in turn, then the polynomial with P(t) drawn on it.
       working: { ...state, t, step: lastStep(state) },
     };

@@ -2,7 +2,7 @@ import {
   type ExerciseSpec,
   type Random,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { pointWords, words } from '../../kit/format';
@@ -82,13 +82,7 @@ const where: ExerciseSpec<QuadraticState> = {
     return {
       state,
       prompt: `${passes(points, mu1)}. Where is P(${mu})?`,
-      task: {
-        kind: 'point',
-        figure: 'quadratic',
-        answer,
-        tolerance: GUESS_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, GUESS_TOLERANCE, hint),
-      },
+      task: pointTask('quadratic', answer, GUESS_TOLERANCE, hint),
       // The dots at equal steps of μ (step 3 on) include the one asked for.
       working: { ...state, step: LAST_STEP },
     };

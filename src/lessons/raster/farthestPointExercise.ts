@@ -2,7 +2,7 @@
  * The exercise on plotting a curve: where a quadratic drawn as one
  * segment strays furthest from it.
  */
-import { type ExerciseSpec, type Random, checkPoint, random } from '../../kit/exercise';
+import { type ExerciseSpec, type Random, pointTask, random } from '../../kit/exercise';
 import { type Point, bezierPoint, distance } from '../../math';
 import { listed, sceneState } from './exerciseSetup';
 import type { RasterState } from './state';
@@ -56,13 +56,7 @@ export const farthestPoint: ExerciseSpec<RasterState> = {
     return {
       state,
       prompt: `The quadratic Bézier curve with control points ${listed(points)} is drawn as one segment, from P₀ to P₂. Where is the curve furthest from that segment (within ${GAP_TOLERANCE} px)?`,
-      task: {
-        kind: 'point',
-        figure: 'curve',
-        answer,
-        tolerance: GAP_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, GAP_TOLERANCE, hint(guess)),
-      },
+      task: pointTask('curve', answer, GAP_TOLERANCE, hint),
       // One segment: the two computed points P(0), P(1), the segment, the curve, its largest gap.
       working: { ...state, uniformSegments: 1 },
     };

@@ -9,7 +9,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { pointWords, sub, words } from '../../kit/format';
@@ -106,13 +106,7 @@ const hermiteMidpoint: ExerciseSpec<RoadState> = {
     return {
       state,
       prompt: `The villages are ${listed(villages)}. On the Hermite road, with gradients Dᵢ = (Pᵢ₊₁ − Pᵢ₋₁)/2, where is the point at p̄ = ${words(pBar)} (within ${MIDPOINT_TOLERANCE} km)?`,
-      task: {
-        kind: 'point',
-        figure: 'map',
-        answer,
-        tolerance: MIDPOINT_TOLERANCE,
-        check: (guess) => checkPoint(guess, answer, MIDPOINT_TOLERANCE, hint(guess)),
-      },
+      task: pointTask('map', answer, MIDPOINT_TOLERANCE, hint),
       // The gradients, the road segment by segment, then the marker at p̄.
       working: state,
     };

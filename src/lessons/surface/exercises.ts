@@ -3,7 +3,7 @@ import {
   type Random,
   type Verdict,
   checkNumbers,
-  checkPoint,
+  pointTask,
   random,
 } from '../../kit/exercise';
 import { sub, words } from '../../kit/format';
@@ -42,19 +42,12 @@ const patchPoint: ExerciseSpec<SurfaceState> = {
       // The 16 points alone, the panel's point at the corner (0, 0): P(u, v) not yet drawn.
       state: { ...base, mode: 'patch', u: 0, v: 0 },
       prompt: `This net lies flat in the plane z = 0. Where is the point P${pair(u, v)} of its patch (its x and y, within ${tolerance})?`,
-      task: {
-        kind: 'point',
-        figure: 'patch',
+      task: pointTask(
+        'patch',
         answer,
         tolerance,
-        check: (guess) =>
-          checkPoint(
-            guess,
-            answer,
-            tolerance,
-            `Choose v, then u: at v = ${words(v)} each row m gives a point rₘ = Σₙ fₙ(${words(v)}) Pₘ,ₙ, and P${pair(u, v)} is the point at u = ${words(u)} of the curve with control points r₀ … r₃.`,
-          ),
-      },
+        `Choose v, then u: at v = ${words(v)} each row m gives a point rₘ = Σₙ fₙ(${words(v)}) Pₘ,ₙ, and P${pair(u, v)} is the point at u = ${words(u)} of the curve with control points r₀ … r₃.`,
+      ),
       working: base,
     };
   },

@@ -2,7 +2,7 @@ import {
   type ExerciseSpec,
   type Random,
   type Verdict,
-  checkPoint,
+  pointTask,
   random,
 } from '../../../kit/exercise';
 import { pointWords, sub, words } from '../../../kit/format';
@@ -58,13 +58,7 @@ export const closedPoint: ExerciseSpec<PropertiesState> = {
     return {
       state: opened(defaults, 'closed', { points, t }, (s) => SCRIPTS.closed.stepOf(s, 'polygon')),
       prompt: `P₀ is listed again at the end, P${sub(n)} = P₀, to close the curve: where is P(${words(t)})? Tap your guess; within ${words(tolerance)} of the point counts.`,
-      task: {
-        kind: 'point',
-        figure: 'experiment',
-        answer,
-        tolerance,
-        check: (guess) => checkPoint(guess, answer, tolerance, hint),
-      },
+      task: pointTask('experiment', answer, tolerance, hint),
       working: opened(defaults, 'closed', { points, t }, 'last'),
     };
   },
