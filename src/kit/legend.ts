@@ -1,5 +1,5 @@
 import { clearestPlace, edgePlaces } from '../render/boxPlaces';
-import { labelWidth } from '../render/labelWidth';
+import { labelLines, labelWidth } from '../render/labelWidth';
 import { drawPanelBox } from '../render/note';
 import type { Painter, StrokeStyle } from '../render/painter';
 
@@ -37,17 +37,31 @@ export function drawLegend(
   const left = size * 0.4;
   const sample = entries.some((e) => e.line) ? size * 2.4 : 0;
   const nameAt = left + pad + (sample ? sample + size * 0.5 : 0);
+  // A name too long for the figure (a laptop's projector) takes lines of its own.
+  const room = view.width - 2 * left - (nameAt - left) - pad;
+  const lines = entries.map((e) =>
+    labelWidth(painter, e.text, { size }) > room
+      ? labelLines(painter, e.text, { size }, room)
+      : [e.text],
+  );
   const width =
-    nameAt - left + Math.max(...entries.map((e) => labelWidth(painter, e.text, { size }))) + pad;
-  const height = entries.length * lineHeight + pad;
+    nameAt -
+    left +
+    Math.max(...lines.flat().map((line) => labelWidth(painter, line, { size }))) +
+    pad;
+  const height = lines.flat().length * lineHeight + pad;
+  // Set on lines, a key that would cover a third of a small figure (a knot
+  // strip on a laptop's projector) is left out rather than hide what it names.
+  if (lines.flat().length > entries.length && height > view.height / 3) return top;
   painter.placing(() => {
     const corners = edgePlaces(view, width, height, left, top);
     const { x, y } = corners[clearestPlace(painter, corners)];
     painter.labels.push({ text: 'legend', x, y, width, height, boxed: true });
     drawPanelBox(painter, { x, y, width, height }, theme.axis, Math.max(1, theme.sizes.thin * 0.5));
     const shift = x - left;
+    let row = 0;
     entries.forEach((entry, i) => {
-      const lineY = y + pad / 2 + (i + 0.5) * lineHeight;
+      const lineY = y + pad / 2 + (row + 0.5) * lineHeight;
       if (entry.line)
         painter.polyline(
           [
@@ -56,11 +70,12 @@ export function drawLegend(
           ],
           entry.line,
         );
-      painter.screenLabel(entry.text, shift + nameAt, lineY, {
-        size,
-        color: entry.color ?? theme.ink,
-        inBox: true,
-      });
+      for (const line of lines[i])
+        painter.screenLabel(line, shift + nameAt, y + pad / 2 + (row++ + 0.5) * lineHeight, {
+          size,
+          color: entry.color ?? theme.ink,
+          inBox: true,
+        });
     });
   });
   return top + height + size * 0.4;

@@ -7,7 +7,7 @@
 import { minusSigns, say } from './notation';
 import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import { type LabelStyle, glyphBox, labelFrame } from './labels';
-import { measureLabel } from './labelWidth';
+import { labelLines, measureLabel } from './labelWidth';
 import { farSpots, nearestIsOwn, nearestOnBox, spotsAround } from './labelSpots';
 import type { Painter } from './painter';
 
@@ -46,6 +46,19 @@ export function drawScreenLabel(
   const theme = painter.theme;
   const view = painter.view;
   const { size, runs, mainFont, subFont, widths, total } = measureLabel(painter, text, style);
+  // Wider than the figure (a sentence on a laptop's projector): set on lines
+  // broken between words, each kept inside, stacked away from the nearer edge.
+  const room = view.width - 2 * size * 0.6;
+  const lines = total > room && !style.around ? labelLines(painter, text, style, room) : null;
+  if (lines && lines.length > 1) {
+    const step = size * 1.45 * (y > view.height / 2 ? -1 : 1);
+    const order = step < 0 ? [...lines].reverse() : lines;
+    let widest = 0;
+    order.forEach((line, i) => {
+      widest = Math.max(widest, drawScreenLabel(painter, line, x, y + i * step, style).width);
+    });
+    return { width: widest };
+  }
   text = minusSigns(say(text));
   const align = style.align ?? 'left';
   const baseline = style.baseline ?? 'middle';

@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { labelWidth } from './labelWidth';
+import { labelLines, labelWidth } from './labelWidth';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
@@ -51,5 +51,31 @@ describe('label widths on screen canvases', () => {
     labelWidth(painter, 'P_{1,0}');
     labelWidth(painter, 'P_{1,0}');
     expect(svg.measured).toBe(4);
+  });
+});
+
+describe('a label too wide for its figure, on lines', () => {
+  // Every character 0.5 of the size wide (ScreenContext): at 20 px, 10 px a character.
+  const painter = () => new Painter(new ScreenContext(), new Viewport(), makeTheme(false, false));
+  const style = { size: 20 };
+  it('breaks after a phrase when each phrase fits, not inside an equation', () => {
+    // "A plane curve:" is 14 characters (140 px), "B = T × N = −e_z, τ = 0" 21 (e_z: e with a
+    // 16 px subscript z: 8 px): 200 + 8 = 208 px. Together 358 px: too wide for 300.
+    expect(labelLines(painter(), 'A plane curve: B = T × N = −e_z, τ = 0', style, 300)).toEqual([
+      'A plane curve:',
+      'B = T × N = −e_z, τ = 0',
+    ]);
+  });
+  it('otherwise breaks between words into lines as even as their number allows', () => {
+    // 19 characters, 190 px, in 150: greedily "aaaa bbbb cccc" (140) over "dddd" (40);
+    // as even as two lines allow, 90 over 90.
+    expect(labelLines(painter(), 'aaaa bbbb cccc dddd', style, 150)).toEqual([
+      'aaaa bbbb',
+      'cccc dddd',
+    ]);
+    // One word wider than the room stands alone.
+    expect(labelLines(painter(), 'abcdefghijklmnopqrstuvwxyz', style, 100)).toEqual([
+      'abcdefghijklmnopqrstuvwxyz',
+    ]);
   });
 });

@@ -55,3 +55,64 @@ export function textWidth(c: DrawingSurface, font: string, text: string): number
 export function labelWidth(painter: Painter, text: string, style: LabelStyle = {}): number {
   return measureLabel(painter, text, style).total;
 }
+
+/**
+ * A label's words on as few lines as fit `room` pixels, broken between
+ * words (a word wider than the room stands on a line of its own), and the
+ * lines as even as that many allow: "B = T × N" over "= −e_z, τ = 0", not a
+ * full line over "= 0".
+ */
+export function labelLines(
+  painter: Painter,
+  text: string,
+  style: LabelStyle,
+  room: number,
+): string[] {
+  // Broken after a phrase (": ", ", ", "; ") where each phrase fits: not inside "B = T × N".
+  const phrases = text.split(/(?<=[:,;]) /);
+  if (phrases.length > 1) {
+    const lines = even(painter, phrases, style, room);
+    if (lines.every((line) => measureLabel(painter, line, style).total <= room)) return lines;
+  }
+  return even(painter, text.split(' '), style, room);
+}
+
+/** The pieces on as few lines as `room` allows, the longest line as short as that many allow. */
+function even(
+  painter: Painter,
+  pieces: readonly string[],
+  style: LabelStyle,
+  room: number,
+): string[] {
+  const fewest = pack(painter, pieces, style, room);
+  let [low, high] = [0, room];
+  let best = fewest;
+  for (let i = 0; i < 10; i++) {
+    const mid = (low + high) / 2;
+    const lines = pack(painter, pieces, style, mid);
+    if (lines.length <= fewest.length) [high, best] = [mid, lines];
+    else low = mid;
+  }
+  return best;
+}
+
+/** Pieces joined by spaces on a line until the next would pass `room`. */
+function pack(
+  painter: Painter,
+  words: readonly string[],
+  style: LabelStyle,
+  room: number,
+): string[] {
+  const lines: string[] = [];
+  let line = words[0];
+  for (const word of words.slice(1)) {
+    const longer = `${line} ${word}`;
+    if (measureLabel(painter, longer, style).total <= room) line = longer;
+    else {
+      lines.push(line);
+      line = word;
+    }
+  }
+  lines.push(line);
+  return lines;
+}
