@@ -255,6 +255,21 @@ function namesOnPhone(lesson: AnyLesson, state: unknown): string[] {
   });
 }
 
+/**
+ * Each scene of the lesson as it opens (step 0), with its last step and its
+ * figures' arrangement in `area`: presenter view arranges them once, as the
+ * scene opens (tallLayout.ts).
+ */
+function* openedScenes(lesson: AnyLesson, area: { width: number; height: number }) {
+  const steps = lesson.steps!;
+  const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
+  for (const scene of lesson.scenes ?? []) {
+    const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
+    const layout = layoutFor(lesson, figuresOf(lesson, opened), lesson.derive(opened), area, theme);
+    yield { scene, opened, count: steps.count(opened), layout };
+  }
+}
+
 describe('presenter sizes', () => {
   it('a point’s label is 36 px and its subscript 28 px on the projector', () => {
     expect(theme.sizes.label).toBeGreaterThanOrEqual(MIN_POINT_LABEL);
@@ -267,19 +282,8 @@ describe('every step of every scene, as the room sees it', () => {
     it(`${meta.slug}: legible, clear of strokes, handles inside, points named as drawn, and every press shows something new`, async () => {
       const lesson = await meta.load();
       const steps = lesson.steps!;
-      const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
       const found: string[] = [];
-      for (const scene of lesson.scenes ?? []) {
-        const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
-        const count = steps.count(opened);
-        // Presenter view arranges a scene's figures once, as it opens (tallLayout.ts).
-        const layout = layoutFor(
-          lesson,
-          figuresOf(lesson, opened),
-          lesson.derive(opened),
-          AREA,
-          theme,
-        );
+      for (const { scene, opened, count, layout } of openedScenes(lesson, AREA)) {
         let before: string | null = null;
         for (let k = 0; k <= count; k++) {
           const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
@@ -347,18 +351,9 @@ describe('every step of every scene, projected from a laptop', () => {
     it(`${meta.slug}: every label whole on its figure and every handle on it`, async () => {
       const lesson = await meta.load();
       const steps = lesson.steps!;
-      const defaults = normalizeState(lesson, defaultsOf(lesson.schema)).state;
       const found: string[] = [];
-      for (const scene of lesson.scenes ?? []) {
-        const opened = normalizeState(lesson, { ...scene.apply(defaults), [steps.key]: 0 }).state;
-        const layout = layoutFor(
-          lesson,
-          figuresOf(lesson, opened),
-          lesson.derive(opened),
-          LAPTOP,
-          theme,
-        );
-        for (let k = 0; k <= steps.count(opened); k++) {
+      for (const { scene, opened, count, layout } of openedScenes(lesson, LAPTOP)) {
+        for (let k = 0; k <= count; k++) {
           const state = normalizeState(lesson, { ...opened, [steps.key]: k }).state;
           for (const problem of drawStep(lesson, state, layout, LAPTOP).problems)
             if (/runs off the figure|outside, at/.test(problem))
