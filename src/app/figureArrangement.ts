@@ -56,11 +56,6 @@ export class FigureArrangement<S, M> {
     this.observer.disconnect();
   }
 
-  /** The layout in use now (the tests read it through the page's hooks). */
-  get current(): Layout {
-    return this.layout;
-  }
-
   /**
    * Shows the figures the scene declares (`ids`, null for all), arranged for
    * `scene` in this view. `model` is read only when the arrangement is chosen.
