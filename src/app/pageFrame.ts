@@ -5,6 +5,7 @@
  * zoom or resize redraws only its own figure; an idle page does nothing.
  */
 import { fitToWidth } from '../render/fit';
+import { fixBoxes } from '../render/liveBoxes';
 import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
 import type { FigureView } from './figureView';
 
@@ -127,6 +128,8 @@ export class PageFrame<S, M> {
     if (this.fitPending) {
       this.fitPending = false;
       for (const box of work.fitted()) fitToWidth(box);
+      // Then the live numbers whose size changed: one layout for all of them.
+      for (const box of work.fitted()) fixBoxes(box);
     }
     const typesetting = performance.now();
     // Formulas that waited for this frame, then this frame's own (see formula.ts).

@@ -13,6 +13,8 @@
  * element.
  */
 
+import { freeAllBoxes } from './liveBoxes';
+
 /** Smallest size content is shrunk to before it scrolls instead. */
 const SMALLEST = 0.5;
 /** Nor is any text shrunk below this many CSS pixels (a laptop's panel, a phone): it scrolls. */
@@ -136,7 +138,8 @@ function smallestFont(el: HTMLElement): number {
   return cell ? Math.min(own, parseFloat(getComputedStyle(cell).fontSize) || own) : own;
 }
 
-/** Marks everything under `root` that was ever fitted (the panel or the type size changed). */
+/** Marks everything under `root` that was ever fitted, and every live number's box (the panel, the fonts or the type size changed). */
 export function refitAll(root: ParentNode): void {
   for (const el of root.querySelectorAll<HTMLElement>('[data-fit]')) el.dataset.fit = 'pending';
+  freeAllBoxes(root);
 }

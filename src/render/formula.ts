@@ -1,6 +1,7 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
+import { freeBox, sameWidth } from './liveBoxes';
 import { sayTex } from './notation';
 import { pointerHeld, waitUnseen, watchSeen, whenReleased } from './unseen';
 import { setClass, setText } from '../app/dom';
@@ -125,7 +126,7 @@ export class LiveFormula {
   private shape: string | null = null;
   private wanted: string | null = null;
   private latest: { shape: string; values: readonly string[] } = { shape: '', values: [] };
-  private slots: { html: Element; mathml: Element | null; text: string; copied: string }[] = [];
+  private slots: { html: HTMLElement; mathml: Element | null; text: string; copied: string }[] = [];
   private annotation: Element | null = null;
   /** The shape and numbers written last, whose TeX the MathML's annotation holds. */
   private written: { shape: string; values: readonly string[] } = { shape: '', values: [] };
@@ -180,7 +181,11 @@ export class LiveFormula {
       const text = value.replace(/^-/, '−');
       if (text === slot.text) return;
       changed = true;
-      reshaped ||= sameWidth(text) !== sameWidth(slot.text);
+      // Wider or narrower: its box takes the new size (see liveBoxes.ts).
+      if (!sameWidth(text, slot.text)) {
+        reshaped = true;
+        freeBox(slot.html);
+      }
       slot.text = text;
       setText(slot.html, text);
     });
@@ -231,14 +236,13 @@ export class LiveFormula {
           (e) => e.childElementCount === 0 && e.textContent === marker,
         ) ?? enclosing;
       const mathml = mtexts.find((m) => m.textContent === marker) ?? null;
-      if (inner) this.slots.push({ html: inner, mathml, text: '', copied: '' });
+      if (!(inner instanceof HTMLElement)) continue;
+      freeBox(inner);
+      this.slots.push({ html: inner, mathml, text: '', copied: '' });
     }
     if (this.display) markForFit(this.element);
   }
 }
-
-/** A number's text with every digit the same: two numbers alike in it are set equally wide (KaTeX's digits are 0.5em each). */
-const sameWidth = (text: string): string => text.replace(/\d/g, '0');
 
 /** A number as TeX: fixed digits, no "-0". */
 export function texNumber(value: number, digits = 2): string {

@@ -54,13 +54,13 @@ function viewWatcher(): IntersectionObserver | null {
   return viewWatch;
 }
 
-function catchUp(arrived: readonly Unseen[]): void {
+function catchUp(arrived: readonly Unseen[], tell = true): void {
   if (arrived.length === 0) return;
   for (const owner of arrived) {
     waiting.delete(owner);
     owner.catchUp();
   }
-  for (const listener of caughtUpListeners) listener();
+  if (tell) for (const listener of caughtUpListeners) listener();
 }
 
 /** Watches `element` (what shows `owner`'s values) in and out of view. */
@@ -97,10 +97,13 @@ function setPressed(on: boolean): void {
   if (pressed === on) return;
   pressed = on;
   if (on) return;
-  catchUp([...waiting.keys()]);
+  catchUp([...waiting.keys()], false);
   const jobs = [...onRelease];
   onRelease.clear();
   for (const job of jobs) job();
+  // What caught up is fitted in the next frame, and so are the live numbers'
+  // boxes that waited for the release to be measured (liveBoxes.ts).
+  for (const listener of caughtUpListeners) listener();
 }
 
 /**

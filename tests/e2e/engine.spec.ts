@@ -154,6 +154,61 @@ test('while a point is held, the panel writes the numbers in view; the rest foll
   expect((await texts()).map((f) => f.text)).toEqual(after);
 });
 
+test('a live number is a box of its text’s size, measured again when its text changes width', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await page.goto('./#/hermite');
+  await settled(page);
+  // Each live number in view against its own text, measured as a range of
+  // characters (which the box's width and height do not change).
+  const boxes = () =>
+    page.locator('aside.panel .formula.live [data-box]').evaluateAll((all) =>
+      all.flatMap((el) => {
+        const box = el.getBoundingClientRect();
+        if (box.bottom < 0 || box.top > innerHeight) return [];
+        const range = document.createRange();
+        range.selectNodeContents(el);
+        const text = range.getBoundingClientRect();
+        return [
+          {
+            text: el.textContent ?? '',
+            state: (el as HTMLElement).dataset.box,
+            contained: getComputedStyle(el).contain,
+            width: [box.width, text.width],
+            top: [box.top, text.top],
+            bottom: [box.bottom, text.bottom],
+          },
+        ];
+      }),
+    );
+  const fits = (all: Awaited<ReturnType<typeof boxes>>) => {
+    for (const b of all) {
+      expect(b.state, `“${b.text}”`).toBe('fixed');
+      expect(b.contained, `“${b.text}”`).toContain('size');
+      for (const [own, text] of [b.width, b.top, b.bottom])
+        expect(Math.abs(own - text), `“${b.text}” ${own} vs ${text}`).toBeLessThan(0.6);
+    }
+  };
+  const before = await boxes();
+  expect(before.length, 'live numbers in view').toBeGreaterThan(4);
+  expect(before.map((b) => b.text)).toContain('0.000');
+  fits(before);
+  // P₀ from (0, 0) down and to the left: its coordinates take a minus sign, a wider text.
+  const p0 = (await page.getByRole('button', { name: /^P0 at/ }).boundingBox())!;
+  await page.mouse.move(p0.x + p0.width / 2, p0.y + p0.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(p0.x - 150, p0.y + 90, { steps: 5 });
+  await page.mouse.up();
+  await settled(page);
+  const after = await boxes();
+  expect(
+    after.some((b) => b.text.startsWith('−')),
+    'a coordinate now negative',
+  ).toBe(true);
+  fits(after);
+});
+
 test('a drag redraws the figure, not its grid; a zoom redraws the grid too', async ({ page }) => {
   await page.goto('./#/de-casteljau?step=5');
   await settled(page);
