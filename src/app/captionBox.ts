@@ -5,7 +5,8 @@
  */
 import katex from 'katex';
 import { markForFit, fitToWidth, contentWidth } from '../render/fit';
-import { LiveFormula, filled, typesetSoon } from '../render/formula';
+import { LiveFormula, filled } from '../render/formula';
+import { typesetSoon } from '../render/typesetBudget';
 import { sayTex } from '../render/notation';
 import { type FormulaParts, slotNumbers } from '../render/formulaParts';
 import { h, setHidden, setIndexedText, setText } from './dom';

@@ -6,7 +6,7 @@
  */
 import { fitToWidth } from '../render/fit';
 import { fixBoxes } from '../render/liveBoxes';
-import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/formula';
+import { closeTypesetBudget, openTypesetBudget, typesetWaiting } from '../render/typesetBudget';
 import type { FigureView } from './figureView';
 
 /** The name of each frame's measure in the Performance timeline. */
