@@ -132,7 +132,7 @@ export class PageFrame<S, M> {
       for (const box of work.fitted()) fixBoxes(box);
     }
     const typesetting = performance.now();
-    // Formulas that waited for this frame, then this frame's own (see formula.ts).
+    // Formulas that waited for this frame, then this frame's own (see typesetBudget.ts).
     if (openTypesetBudget(TYPESET_BUDGET_MS) > 0) this.fitSoon();
     const state = work.state();
     const deriving = performance.now();

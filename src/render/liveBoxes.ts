@@ -9,8 +9,8 @@
  * A number whose text changes shape (a digit more, a minus sign) frees its
  * box; freed boxes are measured at the start of the next frame, on a clean
  * layout, all at once (one layout, then one pass of writes), or, while a
- * pointer is held, once it is let go. Sizes are set in
- * ems, so a formula shrunk to fit its panel keeps its numbers' boxes right.
+ * pointer is held, once it is let go. Sizes are set in ems, so a formula
+ * shrunk to fit its panel keeps its numbers' boxes right.
  */
 
 import { pointerHeld } from './unseen';
