@@ -1,15 +1,23 @@
+/**
+ * The app's entry, loaded by index.html: the device's settings, the page's
+ * frame (top bar, notices, main, announcer, help), and the route from the
+ * link's hash to the gallery, a lesson or a lesson's handout. A lesson's code
+ * and the lesson page's are loaded only when a lesson is opened.
+ */
 import '../styles.css';
 import { h, setChildren } from './dom';
-import { buildGallery } from './gallery';
+import { showGallery } from './galleryView';
 import type { LessonPage } from './lessonPage';
 import type { LessonMeta } from './meta';
 import { loadState } from './lessonState';
-import { findLesson, lessons } from './registry';
+import { liveAnnouncer, noticeList } from './notices';
+import { HANDOUT, type HandoutContext, openHandout } from './openHandout';
+import { findLesson } from './registry';
 import { parseHash } from './router';
 import { applySettings, loadSettings, saveSettings } from './settings';
 import { helpDialog, openHelp } from './help';
 import { watchNotation } from './notationDom';
-import { takeLetter, withLetter } from './urlState';
+import { takeLetter } from './urlState';
 import { type Letter, setNotation } from '../render/notation';
 import { listenForKeys } from './appKeys';
 import { TopBar } from './topBar';
@@ -25,12 +33,9 @@ let routeToken = 0;
 let routing: Promise<void> = Promise.resolve();
 
 const main = h('main', { id: 'main', tabindex: '-1' });
-const notices = h('div', { class: 'notices', role: 'status', 'aria-live': 'polite' });
-const announcer = h('div', {
-  class: 'visually-hidden',
-  'aria-live': 'polite',
-  'data-announcer': '',
-});
+const notices = noticeList();
+const { notice } = notices;
+const { element: announcer, announce } = liveAnnouncer();
 const help = helpDialog();
 
 const topBar = new TopBar(settings, {
@@ -54,36 +59,18 @@ document.body.append(
     'Skip to content',
   ),
   topBar.element,
-  notices,
+  notices.element,
   main,
   announcer,
   help,
 );
-
-export function notice(message: string): void {
-  const close = h(
-    'button',
-    { type: 'button', class: 'notice-close', 'aria-label': 'Dismiss notice' },
-    '×',
-  );
-  const item = h('div', { class: 'notice' }, h('span', {}, message), close);
-  close.addEventListener('click', () => item.remove());
-  notices.append(item);
-  while (notices.childElementCount > 4) notices.firstElementChild?.remove();
-}
-
-function announce(message: string): void {
-  // Written even when the words are the same: a live region then says them again.
-  // eslint-disable-next-line no-restricted-syntax
-  announcer.textContent = message;
-}
 
 function rerender(): void {
   theme = applySettings(settings);
   saveSettings(settings);
   topBar.pressed(settings.projector, settings.dark);
   if (page) page.refresh();
-  else if (parseHash(location.hash).slug === null) showGallery();
+  else if (parseHash(location.hash).slug === null) showGallery(main, settings.dark);
 }
 
 /** The reader's letter for the curve parameter: kept on the device, in the link, and the page says it. */
@@ -116,11 +103,6 @@ function toggleFullscreen(): void {
       .catch(() => notice('This browser did not allow full screen here.'));
 }
 
-function showGallery(): void {
-  document.title = 'Spline Lab';
-  setChildren(main, buildGallery(lessons, settings.dark));
-}
-
 /**
  * A lesson's code and the chunks its page needs, or null when they could not
  * be loaded (said in a notice, the gallery shown) or another navigation came first.
@@ -136,7 +118,7 @@ async function loadFor<T>(
   } catch {
     if (token !== routeToken) return null;
     notice(`${meta.title} could not be loaded. Check the connection and open it again.`);
-    showGallery();
+    showGallery(main, settings.dark);
     return null;
   }
 }
@@ -158,7 +140,7 @@ async function route(): Promise<void> {
     if (routedHandout === location.hash) return;
     page?.destroy();
     page = null;
-    await openHandout(token, slug, query);
+    await openHandout(handoutContext, token, slug, query);
     return;
   }
   routedHandout = null;
@@ -174,7 +156,7 @@ async function route(): Promise<void> {
   }
   page?.destroy();
   page = null;
-  notices.replaceChildren();
+  notices.clear();
   if (taken.issue) notice(taken.issue);
   setNotation(null, settings.letter);
   const meta = slug === null ? undefined : findLesson(slug);
@@ -182,7 +164,7 @@ async function route(): Promise<void> {
     notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
   }
   if (!meta) {
-    showGallery();
+    showGallery(main, settings.dark);
     return;
   }
   document.title = `${meta.title} · Spline Lab`;
@@ -210,49 +192,18 @@ async function route(): Promise<void> {
   setChildren(main, page.element);
 }
 
-const HANDOUT = '/handout';
 /** The handout's own link as last written by it (an option changed): no need to build it again. */
 let routedHandout: string | null = null;
-
-/** A lesson's handout: its pages as they print, from the lesson's link and the handout's options. */
-async function openHandout(token: number, slug: string, query: string): Promise<void> {
-  notices.replaceChildren();
-  const meta = findLesson(slug);
-  if (!meta) {
-    notice(`There is no lesson called “${slug.slice(0, 60)}”. Here are all the lessons.`);
-    showGallery();
-    return;
-  }
-  document.title = `Handout: ${meta.title} · Spline Lab`;
-  setChildren(
-    main,
-    h('p', { class: 'loading', role: 'status' }, `Preparing the handout of ${meta.title}…`),
-  );
-  const loaded = await loadFor(token, meta, () =>
-    Promise.all([meta.load(), import('./handout/handoutPage'), import('./handout/plan')]),
-  );
-  if (!loaded) return;
-  const [lesson, { HandoutPage }, { readOptions }] = loaded;
-  setNotation(lesson.letter ?? null, settings.letter);
-  const read = readOptions(
-    query,
-    (lesson.scenes ?? []).map((scene) => scene.id),
-  );
-  const state = loadState(lesson, read.lessonQuery, null);
-  for (const issue of [...read.issues, ...state.issues]) notice(issue);
-  document.body.classList.add('handout-mode');
-  // The handout's links (its title block, its QR code, back to the lesson) keep the reader's letter.
-  const lessonQuery = withLetter(settings.letter, read.lessonQuery);
-  const handoutPage = new HandoutPage(meta, lesson, state, lessonQuery, read.options, {
-    notice,
-    replaceLink: (hash) => {
-      routedHandout = hash;
-      history.replaceState(null, '', hash);
-    },
-  });
-  routedHandout = location.hash;
-  setChildren(main, handoutPage.element);
-}
+const handoutContext: HandoutContext = {
+  main,
+  settings,
+  notices,
+  showGallery: () => showGallery(main, settings.dark),
+  loadFor,
+  routed: (hash) => {
+    routedHandout = hash;
+  },
+};
 
 watchNotation(main);
 
