@@ -10,6 +10,7 @@ import { SvgContext } from '../render/svgContext';
 import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { drawHandles } from '../render/handles';
+import { keyBand } from '../kit/legend';
 import type { FigureSpec, Handle } from './lesson';
 
 export interface HeadlessOptions {
@@ -57,8 +58,8 @@ export const headlineBand = (theme: Theme): number => theme.sizes.label * 1.9;
 
 /**
  * Fits a figure's view to its subject with `padding` round it, and for a
- * figure with a heading (`headline`) a band above for it: the page, handouts
- * and tests fit it the same way.
+ * figure with a heading (`headline`) or a key at its top (`keyLines`) a band
+ * above for them: the page, handouts and tests fit it the same way.
  */
 export function fitFigure<S, M>(
   view: Projection,
@@ -67,7 +68,11 @@ export function fitFigure<S, M>(
   theme: Theme,
   padding: number | readonly [number, number],
 ): void {
-  const band = figure.headline?.(model) && view instanceof Viewport ? headlineBand(theme) : 0;
+  const band =
+    view instanceof Viewport
+      ? (figure.headline?.(model) ? headlineBand(theme) : 0) +
+        keyBand(theme, figure.keyLines?.(model) ?? 0)
+      : 0;
   const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
   // Half the band at each end, then the subject down by half: all of it on top.
   view.fit(figure.bounds(model), band ? [padX, padY + band / 2] : padding, fitShape(figure));

@@ -101,6 +101,15 @@ export interface FigureSpec<S, M = S> {
    * its steps.
    */
   headline?(model: M): boolean;
+  /**
+   * How many lines of a key (kit/legend.ts) the figure writes at its top,
+   * where no corner of its subject is clear for one: the fit keeps a band
+   * that tall above the subject, as for a heading (b-splines' two meanings of
+   * knots, whose key hid P₂ on a laptop's projector). Answer per scene, the
+   * lines of its fullest step's key, so the figure keeps one scale through
+   * its steps.
+   */
+  keyLines?(model: M): number;
   /** Relative size in its row or column (default 1). */
   weight?: number;
   /** A fixed height in CSS pixels (a thin strip under another figure). */

@@ -2,6 +2,7 @@ import { clearestPlace, edgePlaces } from '../render/boxPlaces';
 import { labelLines, labelWidth } from '../render/labelWidth';
 import { drawPanelBox } from '../render/note';
 import type { Painter, StrokeStyle } from '../render/painter';
+import type { Theme } from '../render/theme';
 
 // A figure's key: which line is which, in a box in a corner of the figure.
 
@@ -28,13 +29,11 @@ export function drawLegend(
   options: { top?: number; size?: number } = {},
 ): number {
   const { theme, view } = painter;
-  const size = options.size ?? theme.sizes.small * 1.05;
+  const size = options.size ?? keySize(theme);
   const top = options.top ?? size * 0.4;
   // With the labels hidden (predict, then show) a key without its names says nothing.
   if (!entries.length || !painter.show.labels) return top;
-  const lineHeight = size * 1.45;
-  const pad = size * 0.45;
-  const left = size * 0.4;
+  const { lineHeight, pad, left } = keyMetrics(size);
   const sample = entries.some((e) => e.line) ? size * 2.4 : 0;
   const nameAt = left + pad + (sample ? sample + size * 0.5 : 0);
   // A name too long for the figure (a laptop's projector) takes lines of its own.
@@ -79,4 +78,28 @@ export function drawLegend(
     });
   });
   return top + height + size * 0.4;
+}
+
+/** A key's type size in `theme`, unless its figure asks for another. */
+const keySize = (theme: Theme): number => theme.sizes.small * 1.05;
+
+/** A key's line height, its box's padding and its margin from the figure's edge, at type `size`. */
+const keyMetrics = (size: number) => ({
+  lineHeight: size * 1.45,
+  pad: size * 0.45,
+  left: size * 0.4,
+});
+
+/**
+ * The band at a figure's top that a key of `lines` lines takes (see
+ * FigureSpec.keyLines), with the margins above and below it: what the fit
+ * keeps clear of the subject.
+ */
+export function keyBand(theme: Theme, lines: number): number {
+  if (lines <= 0) return 0;
+  const size = keySize(theme);
+  const { lineHeight, pad } = keyMetrics(size);
+  // drawLegend's margin above the key, the key, and as much again below it.
+  const margin = size * 0.4;
+  return margin + lines * lineHeight + pad + margin;
 }

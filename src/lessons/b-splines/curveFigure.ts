@@ -54,6 +54,9 @@ export const curveFigure: KitFigure<BSplineState, BSplineModel> = {
     if (m.kind === 'projective') extra.push(...m.projective.points);
     return boundsOf(extra);
   },
+  // The key to the two kinds of ring, two lines, has no clear corner among
+  // seven control points and their rings: it takes a band above them.
+  keyLines: (m) => (m.kind === 'meanings' ? 2 : 0),
   draw(painter, m, info) {
     painter.grid();
     drawScene(painter, m, info);

@@ -56,7 +56,7 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
       ...(shown.has('lecture')
         ? [
             {
-              text: 'P(u) at the knots, where the pieces join: the lecture notes’ knots',
+              text: 'P(u) at the joins: the lecture notes’ knots',
               color: theme.ink,
             },
           ]

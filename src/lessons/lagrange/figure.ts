@@ -12,6 +12,9 @@ export const curveFigure: KitFigure<LagrangeState, LagrangeModel> = {
   kind: 'geometry',
   weight: 1.6,
   bounds: (m) => m.curveBounds,
+  // Beside the spline the key has three lines, and Runge's spike (P₅, which
+  // the lecturer drags) rises into the top corners: the key takes a band above it.
+  keyLines: (m) => (m.comparison ? 3 : 0),
   draw(painter, m, info) {
     const theme = painter.theme;
     const { state, at, shown } = m;
