@@ -1,3 +1,4 @@
+import type { LabelBox } from '../../src/render/labels';
 import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
 
 /**
@@ -128,17 +129,7 @@ for (const slug of Object.keys(sceneLinks)) {
     await expect(page.locator('html.projector')).toHaveCount(1);
     const faults = await eachSceneEnd(page, slug, (where) =>
       page.evaluate((where) => {
-        type Placed = {
-          figure: string;
-          labels: {
-            text: string;
-            x: number;
-            y: number;
-            width: number;
-            height: number;
-            boxed?: boolean;
-          }[];
-        };
+        type Placed = { figure: string; labels: LabelBox[] };
         const lab = (window as unknown as { splineLab: { labels(): Placed[] } }).splineLab;
         const found: string[] = [];
         for (const { figure, labels } of lab.labels()) {
