@@ -3,6 +3,7 @@
  * so nothing from a URL can become HTML.
  */
 import { subscriptNames } from '../kit/subscripts';
+import { reshapeBox, sameWidth } from '../render/liveBoxes';
 import { minusSigns } from '../render/notation';
 import { shownAttribute, shownText } from './notationDom';
 
@@ -169,6 +170,8 @@ export function setIndexedText(element: HTMLElement, text: string): void {
   if (text.includes('-') && !asWritten(element)) text = minusSigns(text);
   const now = element.textContent;
   if (now === text || now === shownText(element, text)) return;
+  // A live value in a box of its own (render/liveBoxes.ts): a new shape may need a new box.
+  if (element.dataset.box && !sameWidth(text, now)) reshapeBox(element, text);
   const only = element.firstChild;
   if (INDEX_RUN.test(text)) element.replaceChildren(...indexedRuns(text));
   // A live cell or value written every frame: its one text node takes the new

@@ -5,6 +5,7 @@
  */
 import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
+import { freeBox } from '../render/liveBoxes';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -80,7 +81,9 @@ export class LiveRows implements Unseen {
         spec.heading && c === 0 ? 'th' : 'td',
         spec.heading && c === 0 ? { scope: 'row' } : {},
       );
-      const text = h('span', {});
+      // The cell's words in a box of their own size: a number a drag changes
+      // lays out that box, not the table and the page round it (liveBoxes.ts).
+      const text = freeBox(h('span', {}));
       element.append(text);
       return { element, text, swatch: null, swatchColor: '' };
     });

@@ -1,7 +1,7 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { markForFit } from './fit';
-import { freeBox, sameWidth } from './liveBoxes';
+import { freeBox, reshapeBox, sameWidth } from './liveBoxes';
 import { sayTex } from './notation';
 import { typesetSoon } from './typesetBudget';
 import { pointerHeld, waitUnseen, watchSeen, whenReleased } from './unseen';
@@ -117,7 +117,7 @@ export class LiveFormula {
       // Wider or narrower: its box takes the new size (see liveBoxes.ts).
       if (!sameWidth(text, slot.text)) {
         reshaped = true;
-        freeBox(slot.html);
+        reshapeBox(slot.html, text);
       }
       slot.text = text;
       setText(slot.html, text);

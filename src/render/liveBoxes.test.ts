@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { sameWidth } from './liveBoxes';
+import { fitsBox, sameWidth } from './liveBoxes';
 
 describe('when a live number keeps its box', () => {
   it('keeps it when only digits change, frees it for a digit more or a sign', () => {
@@ -9,5 +9,22 @@ describe('when a live number keeps its box', () => {
     expect(sameWidth('0.500', '−0.500')).toBe(false);
     expect(sameWidth('0', '0.002')).toBe(false);
     expect(sameWidth('', '0.000')).toBe(false);
+  });
+});
+
+describe('when a number mid-drag still fits the box it was measured at', () => {
+  it('fits a number no wider, in KaTeX glyphs and in characters', () => {
+    // Widths by hand: digits 0.5 em, a point 0.278, a minus sign 0.778.
+    expect(fitsBox('0', '−0.014')).toBe(true); // 0.5 ≤ 3.056 em, 1 ≤ 6 characters
+    expect(fitsBox('1.02', '−0.014')).toBe(true); // 1.778 ≤ 3.056
+    expect(fitsBox('9.99', '1.25')).toBe(true); // only digits differ
+    expect(fitsBox('10.0', '−1.5')).toBe(true); // 1.778 ≤ 2.056 em, 4 ≤ 4 characters
+  });
+  it('does not fit a wider number, a longer one, or words', () => {
+    expect(fitsBox('−0.014', '0')).toBe(false);
+    expect(fitsBox('12.5', '1.5')).toBe(false); // a digit more
+    expect(fitsBox('1.25', '−10')).toBe(false); // as wide in KaTeX (1.778), a character longer in a table
+    expect(fitsBox('P1 is an end point', '0.5000')).toBe(false);
+    expect(fitsBox('0.5', 'none')).toBe(false);
   });
 });

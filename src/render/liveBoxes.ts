@@ -8,12 +8,15 @@
  *
  * A number whose text changes shape (a digit more, a minus sign) frees its
  * box; freed boxes are measured at the start of the next frame, on a clean
- * layout, all at once (one layout, then one pass of writes), or, while a
- * pointer is held, once it is let go. Sizes are set in ems, so a formula
- * shrunk to fit its panel keeps its numbers' boxes right.
+ * layout, all at once (one layout, then one pass of writes). While a pointer
+ * is held, a number that becomes no wider than the text its box was measured
+ * at keeps the box (`−0.014` → `0` → `1.02`), and is measured again once the
+ * pointer is let go: in quadratic's matrices six numbers flipping sign had the
+ * whole document laid out and painted on every drag frame. Sizes are set in
+ * ems, so a formula shrunk to fit its panel keeps its numbers' boxes right.
  */
 
-import { pointerHeld } from './unseen';
+import { pointerHeld, whenReleased } from './unseen';
 
 /** The state of a live number's box: `free` (its own size, to be measured), `fixed`, `loose` (left as it is). */
 const BOX = 'box';
@@ -28,11 +31,75 @@ const FIXED_STYLE = ['display', 'width', 'height', 'vertical-align', 'contain', 
 export const sameWidth = (a: string, b: string): boolean =>
   a.length === b.length && a.replace(/\d/g, '0') === b.replace(/\d/g, '0');
 
+/** The text each fixed box was measured at. */
+const measuredAt = new WeakMap<HTMLElement, string>();
+/** Boxes kept through a drag at a size their text no longer has: measured when it is let go. */
+const kept = new Set<HTMLElement>();
+
+/** Ems a glyph of a number takes in KaTeX's main font; other glyphs are not estimated. */
+const NUMBER_GLYPH_EM: Readonly<Record<string, number>> = {
+  '.': 0.278,
+  ',': 0.278,
+  '−': 0.778,
+  '-': 0.778,
+  '+': 0.778,
+  ' ': 0.25,
+};
+
+/** A number's width in ems, or NaN when it holds anything but digits, signs and points. */
+function numberWidth(text: string): number {
+  let em = 0;
+  for (const glyph of text) em += /\d/.test(glyph) ? 0.5 : (NUMBER_GLYPH_EM[glyph] ?? NaN);
+  return em;
+}
+
+/**
+ * Does `text` fit a box measured at `measured`? When it is a number no wider,
+ * both in KaTeX's glyphs and in characters (a table's figures are all one
+ * width), or differs from it only in digits.
+ */
+export function fitsBox(text: string, measured: string): boolean {
+  if (sameWidth(text, measured)) return true;
+  return text.length <= measured.length && numberWidth(text) <= numberWidth(measured);
+}
+
+/**
+ * `el`'s text is about to become `text`, a different shape: its box is freed
+ * to take the new size, unless a pointer is held and the text still fits the
+ * box (then it is measured again on release).
+ */
+export function reshapeBox(el: HTMLElement, text: string): void {
+  const measured = measuredAt.get(el);
+  if (
+    el.dataset[BOX] === 'fixed' &&
+    pointerHeld() &&
+    measured !== undefined &&
+    fitsBox(text, measured)
+  ) {
+    if (kept.size === 0) whenReleased(freeKept);
+    kept.add(el);
+    return;
+  }
+  kept.delete(el);
+  freeBox(el);
+}
+
+/** After a drag: the boxes kept at their old size take their text's own size, unless it is the same. */
+function freeKept(): void {
+  for (const el of kept) {
+    const measured = measuredAt.get(el);
+    if (el.isConnected && (measured === undefined || !sameWidth(el.textContent ?? '', measured)))
+      freeBox(el);
+  }
+  kept.clear();
+}
+
 /** Lets `el` take its text's own size again; it is measured and fixed at the next `fixBoxes`. */
-export function freeBox(el: HTMLElement): void {
-  if (el.dataset[BOX] === 'free') return;
+export function freeBox<E extends HTMLElement>(el: E): E {
+  if (el.dataset[BOX] === 'free') return el;
   if (el.dataset[BOX] === 'fixed') for (const name of FIXED_STYLE) el.style.removeProperty(name);
   el.dataset[BOX] = 'free';
+  return el;
 }
 
 /** Every box under `root` measured again (the fonts or the type size changed). */
@@ -46,9 +113,6 @@ export function freeAllBoxes(root: ParentNode): void {
  * a box of one size would cut it or break it differently.
  */
 export function fixBoxes(root: ParentNode): void {
-  // Mid-drag, a number that changed shape stays loose (it may change again
-  // next frame: a matrix entry 0 → 0.002 → 0.0025): measured when let go.
-  if (pointerHeld()) return;
   const free = [...root.querySelectorAll<HTMLElement>(`[data-${BOX}="free"]`)];
   if (free.length === 0) return;
   // A zero-size inline block sits on the number's baseline: where its bottom is says where the baseline is.
@@ -82,6 +146,7 @@ export function fixBoxes(root: ParentNode): void {
     el.style.display = 'inline-block';
     el.style.contain = 'size layout style';
     el.dataset[BOX] = 'fixed';
+    measuredAt.set(el, el.textContent ?? '');
   });
 }
 

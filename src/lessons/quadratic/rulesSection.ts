@@ -1,6 +1,7 @@
 import { dataTable, fmt, h, setClass, setDisabled, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveFormula, SLOT, texNumber } from '../../render/formula';
+import { freeBox } from '../../render/liveBoxes';
 import type { QuadraticModel } from './model';
 import { seriesColour } from '../../kit/seriesColours';
 import { type QuadraticState, clampMu } from './state';
@@ -13,13 +14,14 @@ export function rulesSection(api: LessonApi<QuadraticState, QuadraticModel>) {
   // Rows and buttons are built once, so a button keeps focus when clicked.
   const rows = (['Uniform', 'Chord length', 'Centripetal'] as const).map((name, k) => {
     const swatch = h('span', { class: 'swatch' });
-    const value = h('td', {});
+    // Its own box (render/liveBoxes.ts): a drag lays out the number, not the table.
+    const value = freeBox(h('span', {}));
     const use = h('button', { type: 'button' }, `Use ${name.toLowerCase()}`);
     use.addEventListener('click', () => {
       const rule = api.model().parametric.rules[k];
       if (rule.usable) api.set({ ...api.get(), mu: clampMu(rule.mu) });
     });
-    const row = h('tr', {}, h('td', {}, swatch, name), value, h('td', {}, use));
+    const row = h('tr', {}, h('td', {}, swatch, name), h('td', {}, value), h('td', {}, use));
     return { row, swatch, value, use };
   });
   return {
