@@ -86,8 +86,11 @@ export class ParameterControl<S> {
       'div',
       { class: 'param' },
       h('span', { class: 'param-name', 'aria-hidden': 'true' }, spec.label),
-      this.slider,
-      this.number,
+      // Each field in a slot of its own (see .param-slot in styles.css): a
+      // drag that moves the thumb and writes the number lays out the two
+      // fields, not the page round them.
+      h('span', { class: 'param-slot param-slot-slider' }, this.slider),
+      h('span', { class: 'param-slot' }, this.number),
       this.play,
       this.speedButton,
     );
