@@ -5,7 +5,6 @@
  */
 import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
-import { freeBox } from '../render/liveBoxes';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -81,9 +80,7 @@ export class LiveRows implements Unseen {
         spec.heading && c === 0 ? 'th' : 'td',
         spec.heading && c === 0 ? { scope: 'row' } : {},
       );
-      // The cell's words in a box of their own size: a number a drag changes
-      // lays out that box, not the table and the page round it (liveBoxes.ts).
-      const text = freeBox(h('span', {}));
+      const text = h('span', {});
       element.append(text);
       return { element, text, swatch: null, swatchColor: '' };
     });
