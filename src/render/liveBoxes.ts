@@ -11,8 +11,9 @@
  * layout, all at once (one layout, then one pass of writes). While a pointer
  * is held, a number that becomes no wider than the text its box was measured
  * at keeps the box (`−0.014` → `0` → `1.02`), and is measured again once the
- * pointer is let go: in quadratic's matrices six numbers flipping sign had the
- * whole document laid out and painted on every drag frame. Sizes are set in
+ * pointer is let go; one that grows is freed, and measured on release: in
+ * quadratic's matrices six numbers flipping sign had the whole document laid
+ * out and painted on every drag frame. Sizes are set in
  * ems, so a formula shrunk to fit its panel keeps its numbers' boxes right.
  */
 
@@ -113,6 +114,11 @@ export function freeAllBoxes(root: ParentNode): void {
  * a box of one size would cut it or break it differently.
  */
 export function fixBoxes(root: ParentNode): void {
+  // Mid-drag, a number that grew stays loose (it may grow again next frame: a
+  // matrix entry 0 → 0.002 → 0.0025), measured when let go: measuring mid-drag
+  // forced a layout of the page at the start of a frame (a 54 ms frame in the
+  // blending monkey test, 44 of it here).
+  if (pointerHeld()) return;
   const free = [...root.querySelectorAll<HTMLElement>(`[data-${BOX}="free"]`)];
   if (free.length === 0) return;
   // A zero-size inline block sits on the number's baseline: where its bottom is says where the baseline is.
