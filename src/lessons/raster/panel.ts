@@ -1,6 +1,7 @@
 import { dataTable, fmt, h, setDisabled, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
+import { rangeField } from '../../app/panelControls';
 import { notesKey, notesSlip } from '../../kit/notes';
 import { formula } from '../../render/formula';
 import { type RasterModel, SAME_ERROR_MAX } from './model';
@@ -44,20 +45,17 @@ export function rasterPanel(
     api.set({ ...s, ...f(s) });
   };
 
-  const tolerance = h('input', {
-    type: 'range',
+  const tolerance = rangeField(api, {
+    label: 'Tolerance τ in pixels',
+    name: 'τ',
     min: 0.05,
     max: 2,
     step: 0.05,
-    'aria-label': 'Tolerance τ in pixels',
+    get: (s) => s.tolerance,
+    set: (s, value) => ({ ...s, tolerance: value }),
+    coalesce: 'raster-tol',
+    readout: true,
   });
-  tolerance.addEventListener('input', () =>
-    api.set(
-      { ...api.get(), tolerance: Number(tolerance.value) },
-      { coalesce: 'raster-tol', windowMs: 1500 },
-    ),
-  );
-  const toleranceText = h('span', {});
   const zoomText = h('span', {});
   const zoomOut = button('Zoom out ÷2', () =>
     change((s) => ({ zoom: Math.max(ZOOM_MIN, s.zoom / 2) })),
@@ -110,7 +108,7 @@ export function rasterPanel(
       'Adaptive flattening splits the curve at t = ½ (de Casteljau, as in the de Casteljau lesson) until each piece’s control polygon is flat enough: a piece of degree n lies within n(n−1)/8 · max‖Δ²P‖ of its chord.',
     ),
     formula('\\tfrac{n(n-1)}{8}\\,\\max_i \\|P_{i+2} - 2P_{i+1} + P_i\\| \\le \\tau', true),
-    h('label', { class: 'toggle' }, 'τ', tolerance, toleranceText),
+    tolerance.element,
     dataTable(
       'Uniform against adaptive',
       ['Polyline', 'Segments', 'Largest gap (px)', 'at t'],
@@ -135,8 +133,7 @@ export function rasterPanel(
     element,
     update(m, state) {
       pointCount.update(state);
-      if (Number(tolerance.value) !== state.tolerance) tolerance.value = String(state.tolerance);
-      setText(toleranceText, `= ${fmt(state.tolerance, 2)} px`);
+      tolerance.update(state, `= ${fmt(state.tolerance, 2)} px`);
       setText(zoomText, `zoom ×${state.zoom} (${m.size.width} × ${m.size.height} pixels)`);
       setDisabled(zoomOut, state.zoom <= ZOOM_MIN);
       setDisabled(zoomIn, state.zoom >= ZOOM_MAX);

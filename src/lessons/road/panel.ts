@@ -1,9 +1,8 @@
 import { notesKey } from '../../kit/notes';
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { checkbox } from '../../app/panelControls';
+import { checkbox, rangeField } from '../../app/panelControls';
 import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
-import { setText } from '../../app/dom';
 import { derivationSection } from './derivationPanel';
 import { globalSection } from './globalPanel';
 import { methodSection } from './methodPanel';
@@ -22,16 +21,18 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
   const global = globalSection();
   const segment = segmentSection();
 
-  const slider = h('input', {
-    type: 'range',
+  const marker = rangeField(api, {
+    label: 'p̄ along the road',
+    name: 'p̄',
     min: 0,
+    max: 1,
     step: 0.01,
-    'aria-label': 'p̄ along the road',
+    maxOf: (s) => segmentCount(s),
+    get: (s) => s.pBar,
+    set: (s, pBar) => ({ ...s, pBar }),
+    coalesce: 'road-s',
+    readout: true,
   });
-  slider.addEventListener('input', () =>
-    api.set({ ...api.get(), pBar: Number(slider.value) }, { coalesce: 'road-s', windowMs: 1500 }),
-  );
-  const sliderValue = h('span', {});
 
   const comb = checkbox(api, {
     id: 'road-comb',
@@ -68,13 +69,7 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       { class: 'note' },
       'The road is a parametric curve (x(p̄), y(p̄)). The global parameter p̄ runs from 0 at P0 to m at Pm; segment i is p̄ from i to i + 1, with local parameter p = p̄ − i from 0 to 1. Ticks mark every quarter of p̄: they crowd together on short segments.',
     ),
-    h(
-      'div',
-      { class: 'road-marker' },
-      h('span', { 'aria-hidden': 'true' }, 'p̄'),
-      slider,
-      sliderValue,
-    ),
+    marker.element,
     segment.element,
     notesKey([
       [
@@ -103,11 +98,8 @@ export function roadPanel(api: LessonApi<RoadState, RoadModel>): LessonPanel<Roa
       comb.update(state);
       pointCount.update(state);
       curvature.update(roadCurve(m, state));
-      const max = String(segmentCount(state));
-      if (slider.max !== max) slider.max = max;
-      if (Number(slider.value) !== state.pBar) slider.value = String(state.pBar);
       const { piece, p } = m.along;
-      setText(sliderValue, `p̄ = ${fmt(state.pBar, 2)}: segment ${piece}, p = ${fmt(p, 2)}`);
+      marker.update(state, `p̄ = ${fmt(state.pBar, 2)}: segment ${piece}, p = ${fmt(p, 2)}`);
       segment.update(m, hover);
       // The list of notes changes only when the villages' oddities do.
       if (m.notes.join('\n') !== shownNotes.join('\n')) {

@@ -1,7 +1,7 @@
 import { fmt, h, setAttr, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { radioGroup } from '../../app/panelControls';
+import { radioGroup, rangeField } from '../../app/panelControls';
 import { LiveFormula, SLOT, formula, slotPoint } from '../../render/formula';
 import type { SurfaceModel } from './model';
 import { netTable } from './netTable';
@@ -24,24 +24,17 @@ const square = `\\begin{bmatrix}${[0, 1, 2, 3].map(() => slots(4).join(' & ')).j
 export function surfacePanel(
   api: LessonApi<SurfaceState, SurfaceModel>,
 ): LessonPanel<SurfaceState, SurfaceModel> {
-  const vSlider = h('input', { type: 'range', min: 0, max: 1, step: 0.01, 'aria-label': 'v' });
-  const vField = h('input', {
-    type: 'number',
+  const v = rangeField(api, {
+    label: 'v',
+    name: 'v',
     min: 0,
     max: 1,
     step: 0.01,
-    'aria-label': 'v value',
-    class: 'surface-v-field',
+    get: (s) => s.v,
+    set: (s, value) => ({ ...s, v: value }),
+    coalesce: 'surface-v',
+    numberField: true,
   });
-  const setV = (value: number) => {
-    if (Number.isFinite(value))
-      api.set(
-        { ...api.get(), v: Math.min(1, Math.max(0, value)) },
-        { coalesce: 'surface-v', windowMs: 1500 },
-      );
-  };
-  vSlider.addEventListener('input', () => setV(Number(vSlider.value)));
-  vField.addEventListener('change', () => setV(Number(vField.value)));
 
   const look = radioGroup<SurfaceState, SurfaceLook>(api, {
     name: 'surface-look',
@@ -104,7 +97,7 @@ export function surfacePanel(
       { class: 'note' },
       `u is the lesson’s parameter (the slider with Play above); v is the slider below. To turn the patch, ${gestures().orbit}; to zoom, ${gestures().zoom}. A control point moves in the plane facing you: ${gestures().move}${gestures().move.includes('Tab') ? ' (Shift: along one axis; Ctrl+↑/↓: along z)' : ''}.`,
     ),
-    h('div', { class: 'lesson-tools surface-v' }, h('label', {}, 'v ', vSlider), vField),
+    v.element,
     h('div', { class: 'lesson-tools' }, ...look.labels),
     h('h2', {}, 'The point P(u, v), three ways'),
     h('p', {}, 'By the double sum, and by de Casteljau in u then v and in v then u:'),
@@ -162,9 +155,7 @@ export function surfacePanel(
       setHidden(slip, state.mode !== 'rows');
       look.update(state);
       coordinate.update(state);
-      if (vSlider.value !== String(state.v)) vSlider.value = String(state.v);
-      if (document.activeElement !== vField && Number(vField.value) !== state.v)
-        vField.value = String(state.v);
+      v.update(state);
       const three = (name: string, p: readonly number[]) => ({
         cells: [name, ...p.map((value) => fmt(value, DIGITS))],
         data: { exact: p.map(String).join(',') },
