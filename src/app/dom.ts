@@ -3,7 +3,7 @@
  * so nothing from a URL can become HTML.
  */
 import { subscriptNames } from '../kit/subscripts';
-import { reshapeBox, sameWidth } from '../render/liveBoxes';
+import { freeBox, reshapeBox, sameWidth } from '../render/liveBoxes';
 import { minusSigns } from '../render/notation';
 import { shownAttribute, shownText } from './notationDom';
 
@@ -170,6 +170,7 @@ export function setIndexedText(element: HTMLElement, text: string): void {
   if (text.includes('-') && !asWritten(element)) text = minusSigns(text);
   const now = element.textContent;
   if (now === text || now === shownText(element, text)) return;
+  if (element.dataset.live !== undefined) return setLiveNumbers(element, text);
   // A live value in a box of its own (render/liveBoxes.ts): a new shape may need a new box.
   if (element.dataset.box && !sameWidth(text, now)) reshapeBox(element, text);
   const only = element.firstChild;
@@ -207,4 +208,53 @@ export function setAttr(element: Element, name: string, value: string): void {
   const now = element.getAttribute(name);
   if (now !== value && now !== shownAttribute(element, name, value))
     element.setAttribute(name, value);
+}
+
+/**
+ * A number in running text: not part of a name (the 0 of P0, of x₀), with its
+ * sign and its decimals.
+ */
+const LIVE_NUMBER = /((?<![\p{L}\p{N}.,′₀-₉])[−+-]?\d+(?:[.,]\d+)*)/u;
+
+/** The words of a live text (its numbers left out), and the boxes its numbers are in. */
+const liveParts = new WeakMap<HTMLElement, { words: string; numbers: HTMLElement[] }>();
+
+/**
+ * Marks `element` as live text: `setText` then puts each number of it in a
+ * box of its own (render/liveBoxes.ts) and leaves the words as they are, so a
+ * drag that changes the numbers of a heading or a sentence lays out the
+ * numbers' boxes, not the page round them, and the words can still wrap. Not
+ * for text that names something from its content (a button, a table cell): a
+ * box reads with a space either side of it; a heading is named by `text`.
+ */
+export function liveText<E extends HTMLElement>(element: E): E {
+  element.dataset.live = '';
+  return element;
+}
+
+/** A live text's words (one more than its numbers: the text before, between and after them) and numbers. */
+export function splitNumbers(text: string): { words: string[]; numbers: string[] } {
+  const parts = text.split(LIVE_NUMBER);
+  return {
+    words: parts.filter((_, i) => i % 2 === 0),
+    numbers: parts.filter((_, i) => i % 2 === 1),
+  };
+}
+
+/** `text` into a live element: only its numbers, while its words stay the same. */
+function setLiveNumbers(element: HTMLElement, text: string): void {
+  const { words, numbers } = splitNumbers(text);
+  const key = words.join('\u0000');
+  // A box inside words is read with a space either side ("(N = 2 )"): a heading is named by its text.
+  if (/^H[1-6]$/.test(element.nodeName)) setAttr(element, 'aria-label', text);
+  const shown = liveParts.get(element);
+  if (shown && shown.words === key) {
+    numbers.forEach((number, i) => setIndexedText(shown.numbers[i], number));
+    return;
+  }
+  const boxes = numbers.map((number) => freeBox(h('span', {}, number)));
+  element.replaceChildren(
+    ...words.flatMap((word, i) => [...indexedRuns(word), ...(i < boxes.length ? [boxes[i]] : [])]),
+  );
+  liveParts.set(element, { words: key, numbers: boxes });
 }

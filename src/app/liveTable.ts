@@ -5,6 +5,7 @@
  */
 import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
+import { boxIfNumber } from '../render/liveBoxes';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -91,7 +92,10 @@ export class LiveRows implements Unseen {
   private fill(live: LiveCell, cell: string | Cell): void {
     const { text, swatch } = typeof cell === 'string' ? { text: cell, swatch: undefined } : cell;
     // A cell names points as the figure does (P₀, not P0): see dom.ts' PROSE.
-    setIndexedText(live.text, subscriptNames(text));
+    const shown = subscriptNames(text);
+    // A lone number in a box of its own: a drag that changes it lays out the box (liveBoxes.ts).
+    boxIfNumber(live.text, shown);
+    setIndexedText(live.text, shown);
     if (swatch && !live.swatch) {
       live.swatch = h('span', { class: 'swatch' });
       live.element.prepend(live.swatch);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitsBox, sameWidth } from './liveBoxes';
+import { boxesNumber, fitsBox, grownWidth, sameWidth } from './liveBoxes';
 
 describe('when a live number keeps its box', () => {
   it('keeps it when only digits change, frees it for a digit more or a sign', () => {
@@ -26,5 +26,27 @@ describe('when a number mid-drag still fits the box it was measured at', () => {
     expect(fitsBox('1.25', '−10')).toBe(false); // as wide in KaTeX (1.778), a character longer in a table
     expect(fitsBox('P1 is an end point', '0.5000')).toBe(false);
     expect(fitsBox('0.5', 'none')).toBe(false);
+  });
+});
+
+describe('the box of a number that grows mid-drag', () => {
+  it('is scaled by glyphs or by characters, whichever grew more', () => {
+    // '0' → '0.25': glyphs 0.5 → 1.778 em (×3.556), characters 1 → 4 (×4).
+    expect(grownWidth(0.55, '0.25', '0')).toBeCloseTo(2.2, 10);
+    // '1.5' → '−1.5': glyphs 1.278 → 2.056 (×1.609), characters 3 → 4 (×1.333).
+    expect(grownWidth(1, '−1.5', '1.5')).toBeCloseTo(2.056 / 1.278, 10);
+  });
+  it('is not estimated for words', () => {
+    expect(grownWidth(1, 'none', '0')).toBeUndefined();
+    expect(grownWidth(1, '0.5', '')).toBeUndefined();
+  });
+});
+
+describe('which table cells get a box of their own', () => {
+  it('boxes a lone number, not words that may wrap', () => {
+    for (const text of ['0', '−0.125', '-3', '1,5', '12.000001'])
+      expect(boxesNumber(text)).toBe(true);
+    for (const text of ['Σ fₘ fₙ Pₘ,ₙ', '(1, 2)', 'P₀', '', 'x 1', '0.5 1'])
+      expect(boxesNumber(text)).toBe(false);
   });
 });

@@ -9,12 +9,14 @@
  * A number whose text changes shape (a digit more, a minus sign) frees its
  * box; freed boxes are measured at the start of the next frame, on a clean
  * layout, all at once (one layout, then one pass of writes). While a pointer
- * is held, a number that becomes no wider than the text its box was measured
- * at keeps the box (`−0.014` → `0` → `1.02`), and is measured again once the
- * pointer is let go; one that grows is freed, and measured on release: in
- * quadratic's matrices six numbers flipping sign had the whole document laid
- * out and painted on every drag frame. Sizes are set in
- * ems, so a formula shrunk to fit its panel keeps its numbers' boxes right.
+ * is held nothing is measured (that lays the page out at the start of a
+ * frame): a number that becomes no wider than the text its box was measured
+ * at keeps the box (`−0.014` → `0` → `1.02`), and one that grows takes the
+ * width its glyphs are estimated to need (`0` → `0.25`) and keeps it till the
+ * drag ends; both are measured again once the pointer is let go. Left loose, such a number had the whole
+ * document laid out and painted on every drag frame (quadratic's matrices,
+ * surface's patch formulas). Sizes are set in ems, so a formula shrunk to fit
+ * its panel keeps its numbers' boxes right.
  */
 
 import { pointerHeld, whenReleased } from './unseen';
@@ -34,6 +36,8 @@ export const sameWidth = (a: string, b: string): boolean =>
 
 /** The text each fixed box was measured at. */
 const measuredAt = new WeakMap<HTMLElement, string>();
+/** The width in ems each fixed box was measured at. */
+const measuredEm = new WeakMap<HTMLElement, number>();
 /** Boxes kept through a drag at a size their text no longer has: measured when it is let go. */
 const kept = new Set<HTMLElement>();
 
@@ -66,31 +70,57 @@ export function fitsBox(text: string, measured: string): boolean {
 
 /**
  * `el`'s text is about to become `text`, a different shape: its box is freed
- * to take the new size, unless a pointer is held and the text still fits the
- * box (then it is measured again on release).
+ * to take the new size, unless a pointer is held and the text is a number.
+ * Then the box keeps its measured width if the text fits it, or takes the
+ * width the text is estimated to need if it grew, and it is measured again on
+ * release.
  */
 export function reshapeBox(el: HTMLElement, text: string): void {
   const measured = measuredAt.get(el);
-  if (
-    el.dataset[BOX] === 'fixed' &&
-    pointerHeld() &&
-    measured !== undefined &&
-    fitsBox(text, measured)
-  ) {
-    if (kept.size === 0) whenReleased(freeKept);
-    kept.add(el);
-    return;
+  if (el.dataset[BOX] === 'fixed' && pointerHeld() && measured !== undefined) {
+    const em = measuredEm.get(el);
+    const width = em === undefined || fitsBox(text, measured) ? em : grownWidth(em, text, measured);
+    if (width !== undefined) {
+      // A box only grows through a drag: a number flickering between 0 and
+      // −0.014 would resize it, and lay the page out, on every other frame.
+      setWidth(el, Math.max(width, parseFloat(el.style.width) || 0));
+      if (kept.size === 0) whenReleased(freeKept);
+      kept.add(el);
+      return;
+    }
   }
   kept.delete(el);
   freeBox(el);
+}
+
+const setWidth = (el: HTMLElement, em: number) => {
+  const width = `${em.toFixed(4)}em`;
+  if (el.style.width !== width) el.style.width = width;
+};
+
+/**
+ * Mid-drag, the width in ems of a box for a number that outgrew the text
+ * `measured` its box was `em` wide at (0 → 0.25): that width scaled by the
+ * glyphs' widths or by the count of characters, whichever grew more (KaTeX's
+ * glyphs, a table's figures), so that the number is never cut; undefined when
+ * either text is not a number. Measuring it would lay the page out at the
+ * start of a frame; left loose, it would have the page laid out on every frame.
+ */
+export function grownWidth(em: number, text: string, measured: string): number | undefined {
+  const [now, then] = [numberWidth(text), numberWidth(measured)];
+  if (!(now > 0) || !(then > 0)) return undefined;
+  return em * Math.max(now / then, text.length / measured.length);
 }
 
 /** After a drag: the boxes kept at their old size take their text's own size, unless it is the same. */
 function freeKept(): void {
   for (const el of kept) {
     const measured = measuredAt.get(el);
-    if (el.isConnected && (measured === undefined || !sameWidth(el.textContent ?? '', measured)))
+    const em = measuredEm.get(el);
+    if (!el.isConnected) continue;
+    if (measured === undefined || em === undefined || !sameWidth(el.textContent ?? '', measured))
       freeBox(el);
+    else setWidth(el, em);
   }
   kept.clear();
 }
@@ -101,6 +131,33 @@ export function freeBox<E extends HTMLElement>(el: E): E {
   if (el.dataset[BOX] === 'fixed') for (const name of FIXED_STYLE) el.style.removeProperty(name);
   el.dataset[BOX] = 'free';
   return el;
+}
+
+/** `el` is left to the page's layout again, with no box of its own. */
+export function dropBox(el: HTMLElement): void {
+  if (!el.dataset[BOX]) return;
+  for (const name of FIXED_STYLE) el.style.removeProperty(name);
+  delete el.dataset[BOX];
+  kept.delete(el);
+  measuredAt.delete(el);
+  measuredEm.delete(el);
+}
+
+/** One number, with no space in it: text that cannot wrap, so a box of its own size never cuts it. */
+export const boxesNumber = (text: string): boolean => /^[−+-]?[\d.,]+$/.test(text);
+
+/**
+ * A table cell's text is about to be `text`: a lone number gets a box of its
+ * own (a drag that changes it lays out the box, not the table and the page
+ * round it), and words do not, so that a cell can still wrap when its column
+ * narrows (on a phone, “Σ fₘ fₙ Pₘ,ₙ” fixed on one line ran surface's table
+ * 343 px in 336). Only a whole cell: a box inside words would read with a
+ * space either side of it, as Chromium names a row from its cells (“P( 0.3 )”).
+ */
+export function boxIfNumber(el: HTMLElement, text: string): void {
+  const number = boxesNumber(text);
+  if (number && !el.dataset[BOX]) freeBox(el);
+  else if (!number && el.dataset[BOX]) dropBox(el);
 }
 
 /** Every box under `root` measured again (the fonts or the type size changed). */
@@ -144,7 +201,8 @@ export function fixBoxes(root: ParentNode): void {
     }
     const em = (px: number) => `${(px / font).toFixed(4)}em`;
     // A hair wider than measured, so rounding never breaks its line.
-    el.style.width = em(box.width + 0.05);
+    const width = (box.width + 0.05) / font;
+    el.style.width = `${width.toFixed(4)}em`;
     el.style.height = em(box.bottom - box.top);
     // A contained inline block sits on its bottom edge: lower it by the number's depth.
     el.style.verticalAlign = em(baseline - box.bottom);
@@ -153,6 +211,7 @@ export function fixBoxes(root: ParentNode): void {
     el.style.contain = 'size layout style';
     el.dataset[BOX] = 'fixed';
     measuredAt.set(el, el.textContent ?? '');
+    measuredEm.set(el, Number(width.toFixed(4)));
   });
 }
 

@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setAttr, setChildren, setText } from '../../app/dom';
+import { dataTable, fmt, h, liveText, setAttr, setChildren, setText } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { texT, words } from '../../kit/format';
@@ -13,14 +13,14 @@ import { pointFormula, weightText } from './tex';
  * the bar they fill together, their sum, and the point they make.
  */
 export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
-  const title = h('h2', {});
+  const title = liveText(h('h2', {}));
   const body = h('tbody', {});
   const rows = new LiveRows(body);
   const bar = h('div', {
     class: 'partition-bar',
     role: 'img',
     style:
-      'display:flex;height:1.6em;border:1px solid var(--line);border-radius:4px;overflow:hidden;margin:0.5em 0',
+      'display:flex;height:1.6em;border:1px solid var(--line);border-radius:4px;overflow:hidden;margin:0.5em 0;contain:strict',
   });
   let pieces: HTMLElement[] = [];
   const sum = h('p', {});
@@ -62,6 +62,8 @@ export function weightsSection(api: LessonApi<BlendingState, BlendingModel>) {
         weights.map((w, i) => ({
           cells: [{ text: `P${i}`, swatch: color(i) }, weightText(n, i, mu), fmt(w, 6)],
           data: { value: String(w) },
+          // The hovered point's row stays lit: setting its class anew would restyle the table each frame.
+          className: i === lit ? 'current' : undefined,
         })),
       );
 

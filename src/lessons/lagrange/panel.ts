@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setHidden, setText } from '../../app/dom';
+import { dataTable, fmt, h, liveText, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { checkbox, radioGroup } from '../../app/panelControls';
@@ -37,7 +37,7 @@ export function lagrangePanel(
     set: (s, on) => keepShownToEnd(s, { ...s, spline: on }),
   });
   const pointCount = interpolatedPoints.buttons(api);
-  const heading = h('h2', {});
+  const heading = liveText(h('h2', {}));
   const warning = h('p', { class: 'warning', role: 'note' });
   const pointFormula = new LiveFormula(true);
   const tableBody = h('tbody', {});

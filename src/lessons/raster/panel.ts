@@ -1,4 +1,4 @@
-import { dataTable, fmt, h, setDisabled, setHidden, setText } from '../../app/dom';
+import { dataTable, fmt, h, liveText, setDisabled, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
 import { rangeField } from '../../app/panelControls';
@@ -70,7 +70,7 @@ export function rasterPanel(
   const next = button('Next segment ▶', () =>
     change((s) => ({ steppedSegment: s.steppedSegment + 1, step: 0 })),
   );
-  const segmentText = h('span', {});
+  const segmentText = liveText(h('span', {}));
   const segmentBox = h('div', { class: 'lesson-tools' }, previous, segmentText, next);
   const pointCount = controlPoints.buttons(api);
   const reset = button('The hairpin again', () =>

@@ -1,4 +1,4 @@
-import { h, setText } from '../../../app/dom';
+import { h, liveText, setText } from '../../../app/dom';
 import { LiveFormula, SLOT } from '../../../render/formula';
 import { texT } from '../../../kit/format';
 import { type ExperimentPanel, arrangements, coords, slotPoint } from '../experimentPanel';
@@ -14,7 +14,7 @@ export const endsPanel: ExperimentPanel<ModelOf<'ends'>> = {
     'The curve starts at P0 and ends at PN, leaving along the first leg of the polygon and arriving along the last, with speed N times the leg: P′(0) = N(P1 − P0), P′(1) = N(PN − PN−1).',
   build() {
     const values = new LiveFormula(true);
-    const speeds = h('p', {});
+    const speeds = liveText(h('p', {}));
     const note = h(
       'p',
       { class: 'note' },
