@@ -120,6 +120,8 @@ export interface RangeFieldOptions<S> {
   readout?: boolean;
   /** A class for the row, for a lesson's own layout. */
   class?: string;
+  /** The readout's least width in ems, so that rows of sliders one under another are as long. */
+  readoutEm?: number;
 }
 
 /** A range control of the panel: its slider, and its number field when it has one. */
@@ -153,6 +155,7 @@ export function rangeField<S>(api: StateApi<S>, options: RangeFieldOptions<S>): 
       })
     : null;
   const readout = options.readout ? freeBox(h('span', { class: 'range-readout' })) : null;
+  if (readout && options.readoutEm) readout.style.minWidth = `${options.readoutEm}em`;
   const setValue = (value: number) => {
     if (!Number.isFinite(value)) return;
     const s = api.get();

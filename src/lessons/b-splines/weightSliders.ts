@@ -26,6 +26,7 @@ export function weightSliders(api: LessonApi<BSplineState, BSplineModel>) {
             set: (s, w) => ({ ...s, weights: s.weights.map((v, k) => (k === i ? w : v)) }),
             coalesce: `weight-${i}`,
             readout: true,
+            readoutEm: 2.5,
           }),
         );
         setChildren(
