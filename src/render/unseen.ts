@@ -88,6 +88,14 @@ export function pointerHeld(): boolean {
   return pressed;
 }
 
+/** Told each time a pointer is pressed on the page, before the press's own handlers. */
+const pressListeners = new Set<() => void>();
+
+/** Runs `job` each time a pointer is pressed on the page (before the page handles the press). */
+export function onEveryPress(job: () => void): void {
+  pressListeners.add(job);
+}
+
 /** Runs `job` once the pointer is let go (once, however often asked). */
 export function whenReleased(job: () => void): void {
   onRelease.add(job);
@@ -96,7 +104,10 @@ export function whenReleased(job: () => void): void {
 function setPressed(on: boolean): void {
   if (pressed === on) return;
   pressed = on;
-  if (on) return;
+  if (on) {
+    for (const job of pressListeners) job();
+    return;
+  }
   catchUp([...waiting.keys()], false);
   const jobs = [...onRelease];
   onRelease.clear();
@@ -116,8 +127,18 @@ export function holdUnseenWhilePressed(target: EventTarget, caughtUp: () => void
   const stop = new AbortController();
   const options = { capture: true, signal: stop.signal };
   target.addEventListener('pointerdown', () => setPressed(true), options);
-  for (const type of ['pointerup', 'pointercancel', 'blur'])
+  for (const type of ['pointerup', 'pointercancel'])
     target.addEventListener(type, () => setPressed(false), options);
+  // The window losing focus ends a press; an element's blur, caught here on its
+  // way down, does not: pressing a slider blurs the field focused before it,
+  // and that ended every drag that began by moving the focus.
+  target.addEventListener(
+    'blur',
+    (e) => {
+      if (e.target === target) setPressed(false);
+    },
+    options,
+  );
   // A release outside the window is never heard: the next move without buttons is.
   target.addEventListener(
     'pointermove',
