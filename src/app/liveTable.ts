@@ -5,7 +5,7 @@
  */
 import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
-import { boxIfNumber } from '../render/liveBoxes';
+import { HELD_CELL, boxIfNumber } from '../render/liveBoxes';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {
@@ -81,7 +81,8 @@ export class LiveRows implements Unseen {
         spec.heading && c === 0 ? 'th' : 'td',
         spec.heading && c === 0 ? { scope: 'row' } : {},
       );
-      const text = h('span', {});
+      // Its words are held in a box of their own through a drag (liveBoxes.ts' holdCells).
+      const text = h('span', { [`data-${HELD_CELL}`]: '' });
       element.append(text);
       return { element, text, swatch: null, swatchColor: '' };
     });

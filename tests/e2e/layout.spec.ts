@@ -8,12 +8,7 @@ import { expect, lessonFolders, settled, test } from './fixtures';
  * slider's slot, a net cell's field). Chromium then lays out the whole
  * document to draw the frame. A write inside a boundary lays out that box.
  * Handles' keyboard stand-ins are positioned out of flow, and hidden
- * elements are laid out by nobody: neither counts. Nor, for now, does a table
- * cell that holds words as well as numbers (a point, a weight worked out):
- * a box round its numbers would be read with a space either side of each,
- * and the whole cell cannot be fixed on one line, as it must wrap on a
- * phone. They lay out the page on every frame of a drag; the closing note
- * of stop 51 says so.
+ * elements are laid out by nobody: neither counts.
  */
 async function watchLooseWrites(page: Page): Promise<void> {
   await page.evaluate(() => {
@@ -62,7 +57,6 @@ async function watchLooseWrites(page: Page): Promise<void> {
         const e = (r.target.nodeType === 1 ? r.target : r.target.parentElement) as Element | null;
         if (!e || !e.isConnected || e.closest('.handle-layer') || e.getClientRects().length === 0)
           continue;
-        if (e.closest('td, th') && !/^[−+-]?[\d.,]+$/.test(e.textContent ?? '')) continue;
         if (bounded(e)) continue;
         const key = `${where(e)} ${r.type === 'attributes' ? `[${r.attributeName}]` : 'text'}`;
         if (!w.loose.has(key)) w.loose.set(key, new Set());
