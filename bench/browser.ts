@@ -11,13 +11,14 @@ import { tmpdir } from 'node:os';
 import { join, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
-import { checkMethod } from './browser/check';
+import { checkMethod, referenceDrag } from './browser/check';
 import type { DragLimits } from './browser/drag';
 import { dragLesson, dragPreset, type DragRow, type PresetDrag } from './browser/lessonDrags';
 import { lessonScripts, loadTimes, openGallery, type ScriptFile } from './browser/load';
 import { launchBrowser } from './browser/page';
 import { type LessonLoad, printReport } from './browser/report';
 import { serveStatic } from './browser/server';
+import { quantile } from './browser/trace';
 import { type HandoutRow, handoutTimes, printHandouts } from './browser/handout';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
@@ -88,14 +89,17 @@ async function orNote(lesson: string, control: string, run: () => Promise<DragRo
 async function measureDrags(browser: Browser, base: string, slugs: readonly string[]) {
   const rows: DragRow[] = [];
   for (const slug of slugs) {
-    progress(`dragging in ${slug}`);
-    rows.push(...(await orNote(slug, 'point', () => dragLesson(browser, base, slug, LIMITS))));
+    progress(`the reference page, then dragging in ${slug}`);
+    const reference = await referenceDrag(browser, base, CHECK_LIMITS);
+    const referenceP95 = quantile(reference.perFrame, 0.95);
+    const lessonRows = await orNote(slug, 'point', () => dragLesson(browser, base, slug, LIMITS));
     for (const preset of PRESETS.filter((p) => p.lesson === slug)) {
       progress(`${slug}: preset ${preset.button}`);
-      rows.push(
+      lessonRows.push(
         ...(await orNote(slug, preset.button, () => dragPreset(browser, base, preset, LIMITS))),
       );
     }
+    rows.push(...lessonRows.map((row) => ({ ...row, referenceP95 })));
   }
   for (const preset of PRESETS.filter((p) => !slugs.includes(p.lesson)))
     rows.push({ lesson: preset.lesson, control: preset.button, note: 'lesson not in the gallery' });
@@ -144,6 +148,7 @@ async function measure(browser: Browser, base: string, outDir: string): Promise<
   printReport({
     browserVersion: browser.version(),
     limits: LIMITS,
+    checkFrames: CHECK_LIMITS.frames,
     checks,
     drags,
     gallery: gallery.scripts,

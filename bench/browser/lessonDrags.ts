@@ -16,6 +16,8 @@ export interface DragRow {
   readonly control: string;
   readonly result?: DragResult;
   readonly note?: string;
+  /** The reference page's p95 (ms), measured just before this lesson's drags. */
+  readonly referenceP95?: number;
 }
 
 /** A preset to set up before dragging, and which of its points to take. */

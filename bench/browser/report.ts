@@ -61,13 +61,17 @@ export function printChecks(checks: readonly MethodCheck[]): void {
   );
 }
 
-/** The drags, each with its p95 as a multiple of the reference page's p95 (target ≤ 1.0×). */
+/**
+ * The drags, each with its p95 as a multiple of the reference page's p95
+ * measured just before its lesson's drags (else `referenceP95`): target ≤ 1.0×.
+ */
 export function printDrags(rows: readonly DragRow[], referenceP95: number): void {
   printTable(
     [
       'lesson',
       'preset / control',
       ...frameColumns(`p95 (ms), budget ≤ ${BUDGET.frameP95Ms}`),
+      'reference p95 beside it (ms)',
       'p95 ÷ reference, target ≤ 1.0×',
       'state changed (moves)',
     ],
@@ -77,10 +81,11 @@ export function printDrags(rows: readonly DragRow[], referenceP95: number): void
             row.lesson,
             row.control,
             ...frameFigures(row.result),
-            `${(quantile(row.result.perFrame, 0.95) / referenceP95).toFixed(2)}×`,
+            ms(row.referenceP95 ?? referenceP95),
+            `${(quantile(row.result.perFrame, 0.95) / (row.referenceP95 ?? referenceP95)).toFixed(2)}×`,
             `${row.result.changed}/${row.result.moves}`,
           ]
-        : [row.lesson, row.control, '—', '—', '—', '0', '—', row.note ?? ''],
+        : [row.lesson, row.control, '—', '—', '—', '0', '—', '—', row.note ?? ''],
     ),
   );
 }
@@ -139,6 +144,8 @@ function method(load: LoadTimes): string {
 export interface Report {
   readonly browserVersion: string;
   readonly limits: DragLimits;
+  /** Frames of each check page's drag, and of the reference drag beside each lesson. */
+  readonly checkFrames: number;
   readonly checks: readonly MethodCheck[];
   readonly drags: readonly DragRow[];
   readonly gallery: readonly ScriptFile[];
@@ -174,8 +181,10 @@ export function printReport(report: Report): void {
       `drew (derive + draw + panel, its "${FRAME_MEASURE}" measures), without the harness.`,
   );
   console.log(
-    `\nDrag: main-thread time per frame; the ratio is to the reference page's p95 (${ms(reference)} ms), ` +
-      `a canvas of the same size stroking one ${REFERENCE_SEGMENTS}-segment path per move`,
+    `\nDrag: main-thread time per frame; the ratio is to the reference page's p95, a canvas of the ` +
+      `same size stroking one ${REFERENCE_SEGMENTS}-segment path per move, measured again ` +
+      `(${report.checkFrames} frames) just before each lesson's drags, so that a machine slowing or ` +
+      `speeding up through the run moves both figures of a ratio (${ms(reference)} ms in the check above)`,
   );
   printDrags(report.drags, reference);
   console.log('');
