@@ -5,7 +5,7 @@
  */
 import { subscriptNames } from '../kit/subscripts';
 import { h, setClass, setIndexedText } from './dom';
-import { HELD_CELL, boxIfNumber } from '../render/liveBoxes';
+import { HELD_CELL, boxIfNumber } from '../render/cellBoxes';
 import { type Unseen, waitUnseen, watchSeen } from '../render/unseen';
 
 export interface Cell {

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { boxesNumber, fitsBox, grownWidth, sameWidth } from './liveBoxes';
+import { boxesNumber } from './cellBoxes';
+import { fitsBox, grownWidth, sameWidth } from './liveBoxes';
 
 describe('when a live number keeps its box', () => {
   it('keeps it when only digits change, frees it for a digit more or a sign', () => {

@@ -19,16 +19,8 @@
  * its panel keeps its numbers' boxes right.
  */
 
-import { onEveryPress, pointerHeld, whenReleased } from './unseen';
-
-/**
- * The state of a live number's box: `free` (its own size, to be measured),
- * `fixed`, `loose` (left as it is), or `held` (a cell's words, through a drag: holdCells).
- */
-const BOX = 'box';
-
-/** What a fixed box sets; freeing it clears all of them. */
-const FIXED_STYLE = ['display', 'width', 'height', 'vertical-align', 'contain', 'white-space'];
+import { BOX, FIXED_STYLE, fix, measure } from './boxFix';
+import { pointerHeld, whenReleased } from './unseen';
 
 /**
  * Are two texts of a number set equally wide? They are when they differ only
@@ -148,24 +140,6 @@ export function dropBox(el: HTMLElement): void {
   measuredEm.delete(el);
 }
 
-/** One number, with no space in it: text that cannot wrap, so a box of its own size never cuts it. */
-export const boxesNumber = (text: string): boolean => /^[−+-]?[\d.,]+$/.test(text);
-
-/**
- * A table cell's text is about to be `text`: a lone number gets a box of its
- * own (a drag that changes it lays out the box, not the table and the page
- * round it), and words do not, so that a cell can still wrap when its column
- * narrows (on a phone, “Σ fₘ fₙ Pₘ,ₙ” fixed on one line ran surface's table
- * 343 px in 336). Only a whole cell: a box inside words would read with a
- * space either side of it, as Chromium names a row from its cells (“P( 0.3 )”).
- */
-export function boxIfNumber(el: HTMLElement, text: string): void {
-  if (el.dataset[BOX] === 'held') return;
-  const number = boxesNumber(text);
-  if (number && !el.dataset[BOX]) freeBox(el);
-  else if (!number && el.dataset[BOX]) dropBox(el);
-}
-
 /** Every box under `root` measured again (the fonts or the type size changed). */
 export function freeAllBoxes(root: ParentNode): void {
   for (const el of root.querySelectorAll<HTMLElement>(`[data-${BOX}]:not([data-${BOX}="held"])`))
@@ -199,96 +173,3 @@ export function fixBoxes(root: ParentNode): void {
     measuredEm.set(el, width);
   });
 }
-
-interface Measure {
-  lines: number;
-  box: { width: number; top: number; bottom: number };
-  baseline: number;
-  font: number;
-}
-
-/** Where each element's text sits now, all read at once (one layout). */
-function measure(els: readonly HTMLElement[]): Measure[] {
-  if (els.length === 0) return [];
-  // A zero-size inline block sits on the number's baseline: where its bottom is says where the baseline is.
-  const probes = els.map((el) => {
-    const probe = document.createElement('span');
-    probe.style.cssText = 'display:inline-block;width:0;height:0';
-    el.append(probe);
-    return probe;
-  });
-  const measured = els.map((el, i) => ({
-    lines: el.getClientRects().length,
-    box: extent(el),
-    baseline: probes[i].getBoundingClientRect().bottom,
-    font: parseFloat(getComputedStyle(el).fontSize),
-  }));
-  for (const probe of probes) probe.remove();
-  return measured;
-}
-
-/**
- * Fixes `el`'s box at the size `m` measured, as `state`; returns its width in
- * ems, or null (and leaves it as it is) when it is not on one line and not held.
- */
-function fix(el: HTMLElement, m: Measure, state: 'fixed' | 'held'): number | null {
-  const { lines, box, baseline, font } = m;
-  // Words held through a drag may be on two lines: their box is as wide as they are, and they break as before.
-  const wraps = state === 'held' && lines > 1;
-  if ((lines !== 1 && !wraps) || !(font > 0) || box.width <= 0) return null;
-  const em = (px: number) => `${(px / font).toFixed(4)}em`;
-  // A hair wider than measured, so rounding never breaks its line.
-  const width = Number(((box.width + 0.05) / font).toFixed(4));
-  el.style.width = `${width}em`;
-  el.style.height = em(box.bottom - box.top);
-  // A contained inline block sits on its bottom edge: lower it by the number's depth.
-  el.style.verticalAlign = em(baseline - box.bottom);
-  if (!wraps) el.style.whiteSpace = 'nowrap';
-  el.style.display = 'inline-block';
-  el.style.contain = 'size layout style';
-  el.dataset[BOX] = state;
-  return width;
-}
-
-/** The words of a live table cell (a point, a weight worked out): held in a box while a pointer is. */
-export const HELD_CELL = 'cell';
-
-/**
- * A pointer was pressed: each live table cell of words on screen is held in a
- * box of the size it has now, till the pointer is let go. A drag that changes
- * a point's coordinates then lays out those boxes, not the table and the page
- * round them; between drags the cells are free, to wrap as their column
- * narrows (a phone), and they are not named with a space either side of a
- * box (“P( 0.3 )”), as a box inside words would be. Read on a clean layout
- * (the frame before the press was drawn): one read, then one pass of writes.
- */
-export function holdCells(root: ParentNode): void {
-  if (typeof innerHeight !== 'number') return;
-  const cells = [...root.querySelectorAll<HTMLElement>(`[data-${HELD_CELL}]:not([data-${BOX}])`)];
-  // Every cell of a table in view: a table is written whole once any of it shows (unseen.ts).
-  const onScreen = cells.filter((el) => {
-    const box = (el.closest('table') ?? el).getBoundingClientRect();
-    return box.width > 0 && box.bottom > 0 && box.top < innerHeight;
-  });
-  const measured = measure(onScreen);
-  const held = onScreen.filter((el, i) => fix(el, measured[i], 'held') !== null);
-  if (held.length > 0)
-    whenReleased(() => {
-      for (const el of held) if (el.dataset[BOX] === 'held') dropBox(el);
-    });
-}
-
-/** The element's box with everything in it (a subscript set lower than its text). */
-function extent(el: HTMLElement): { width: number; top: number; bottom: number } {
-  const own = el.getBoundingClientRect();
-  let [top, bottom] = [own.top, own.bottom];
-  for (const child of el.querySelectorAll('*')) {
-    const box = child.getBoundingClientRect();
-    if (box.height === 0) continue;
-    top = Math.min(top, box.top);
-    bottom = Math.max(bottom, box.bottom);
-  }
-  return { width: own.width, top, bottom };
-}
-
-onEveryPress(() => holdCells(document));
