@@ -7,7 +7,7 @@
  */
 import { BOX, fix, measure } from './boxFix';
 import { dropBox, freeBox } from './liveBoxes';
-import { onEveryPress, whenReleased } from './unseen';
+import { whenReleased } from './unseen';
 
 /** One number, with no space in it: text that cannot wrap, so a box of its own size never cuts it. */
 export const boxesNumber = (text: string): boolean => /^[−+-]?[\d.,]+$/.test(text);
@@ -38,6 +38,10 @@ export const HELD_CELL = 'cell';
  * narrows (a phone), and they are not named with a space either side of a
  * box (“P( 0.3 )”), as a box inside words would be. Read on a clean layout
  * (the frame before the press was drawn): one read, then one pass of writes.
+ *
+ * Not called for now: held through a click on "Add a control point", cells
+ * of de Casteljau's split table grew over the button and took the click
+ * (de-casteljau.spec, 3 of 3 runs). See the closing note of stop 51.
  */
 export function holdCells(root: ParentNode): void {
   if (typeof innerHeight !== 'number') return;
@@ -54,5 +58,3 @@ export function holdCells(root: ParentNode): void {
       for (const el of held) if (el.dataset[BOX] === 'held') dropBox(el);
     });
 }
-
-onEveryPress(() => holdCells(document));
