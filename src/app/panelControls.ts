@@ -1,9 +1,8 @@
-import { h, setDisabled, setText } from './dom';
-import { freeBox } from '../render/liveBoxes';
+import { h, setDisabled } from './dom';
 import type { LessonApi } from './lesson';
 
 /** What a control needs of the lesson: the state, and a way to change it. */
-type StateApi<S> = Pick<LessonApi<S, unknown>, 'get' | 'set'>;
+export type StateApi<S> = Pick<LessonApi<S, unknown>, 'get' | 'set'>;
 
 /**
  * Controls that side panels share: each is bound to the lesson state through
@@ -130,68 +129,4 @@ export interface RangeField<S> extends Control<S> {
   update(state: S, readout?: string): void;
   readonly slider: HTMLInputElement;
   readonly number: HTMLInputElement | null;
-}
-
-/**
- * A slider bound to a number of the state, as the parameter's own row is
- * built: each field sits in a slot of its own and the readout in a box of its
- * own (see .param-slot in styles.css, render/liveBoxes.ts), so a drag lays
- * out the fields and the readout, not the panel round them.
- */
-export function rangeField<S>(api: StateApi<S>, options: RangeFieldOptions<S>): RangeField<S> {
-  const range = { min: options.min, max: options.max, step: options.step };
-  const slider = h('input', {
-    type: 'range',
-    ...range,
-    'aria-label': options.label,
-    class: 'param-slider',
-  });
-  const number = options.numberField
-    ? h('input', {
-        type: 'number',
-        ...range,
-        'aria-label': `${options.label} value`,
-        class: 'param-number',
-      })
-    : null;
-  const readout = options.readout ? freeBox(h('span', { class: 'range-readout' })) : null;
-  if (readout && options.readoutEm) readout.style.minWidth = `${options.readoutEm}em`;
-  const setValue = (value: number) => {
-    if (!Number.isFinite(value)) return;
-    const s = api.get();
-    const top = options.maxOf?.(s) ?? options.max;
-    api.set(options.set(s, Math.min(top, Math.max(options.min, value))), {
-      coalesce: options.coalesce,
-      windowMs: 1500,
-    });
-  };
-  slider.addEventListener('input', () => setValue(Number(slider.value)));
-  number?.addEventListener('change', () => setValue(Number(number.value)));
-  const element = h(
-    'div',
-    { class: options.class ? `range-field ${options.class}` : 'range-field' },
-    options.name ? h('span', { class: 'param-name', 'aria-hidden': 'true' }, options.name) : null,
-    h('span', { class: 'param-slot param-slot-slider' }, slider),
-    number ? h('span', { class: 'param-slot' }, number) : null,
-    readout,
-  );
-  let shownTop = options.max;
-  return {
-    element,
-    slider,
-    number,
-    update(state, text) {
-      const top = options.maxOf?.(state) ?? options.max;
-      if (top !== shownTop) {
-        shownTop = top;
-        slider.max = String(top);
-        if (number) number.max = String(top);
-      }
-      const value = options.get(state);
-      if (Number(slider.value) !== value) slider.value = String(value);
-      if (number && document.activeElement !== number && Number(number.value) !== value)
-        number.value = String(value);
-      if (readout && text !== undefined) setText(readout, text);
-    },
-  };
 }

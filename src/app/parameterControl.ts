@@ -3,7 +3,8 @@
  * and play speed. They show the state through `update`, writing to the DOM
  * only what changed. The steps' controls are in stepControl.ts.
  */
-import { fmt, h, setText } from './dom';
+import { h, setText } from './dom';
+import { rangeInputs, type RangeInputs } from './rangeControls';
 import type { ParameterSpec } from './lesson';
 import { nextPlayedValue } from './play';
 import { prefersReducedMotion } from './settings';
@@ -20,21 +21,12 @@ export interface ControlHost<S> {
   settle(): void;
 }
 
-/**
- * Decimals a parameter's value is shown with: none for a count that moves in
- * whole steps (n = 6, not 6.000: its lesson draws the nearest whole number),
- * three for a parameter on [0, 1] (t = 0.450).
- */
-export const decimalsFor = (step: number): number => (Number.isInteger(step) ? 0 : 3);
-
 /** The parameter slider with its number field and Play. */
 export class ParameterControl<S> {
   readonly element: HTMLElement;
-  readonly slider: HTMLInputElement;
-  readonly number: HTMLInputElement;
   readonly play: HTMLButtonElement;
   private playing: { last: number; timer: number } | null = null;
-  private shown = NaN;
+  private readonly inputs: RangeInputs;
   /** Play speed, as an index into SPEEDS. */
   private speed = SPEEDS.indexOf(1);
   readonly speedButton: HTMLButtonElement;
@@ -43,23 +35,10 @@ export class ParameterControl<S> {
     private readonly spec: ParameterSpec<S>,
     private readonly host: ControlHost<S>,
   ) {
-    const common = { min: spec.min, max: spec.max, step: spec.step };
-    this.slider = h('input', {
-      type: 'range',
-      ...common,
-      'aria-label': spec.label,
-      class: 'param-slider',
-    });
-    this.number = h('input', {
-      type: 'number',
-      ...common,
-      'aria-label': `${spec.label} value`,
-      class: 'param-number',
-    });
-    this.slider.addEventListener('input', () => this.setValue(Number(this.slider.value), 'slider'));
-    this.number.addEventListener('change', () =>
-      this.setValue(Number(this.number.value), 'number'),
+    const inputs = rangeInputs({ ...spec, name: spec.label, numberField: true }, (value, typed) =>
+      this.setValue(value, typed ? 'number' : 'slider'),
     );
+    this.inputs = inputs;
     this.play = h(
       'button',
       {
@@ -82,18 +61,7 @@ export class ParameterControl<S> {
       '1×',
     );
     this.speedButton.setAttribute('aria-label', 'Speed 1×');
-    this.element = h(
-      'div',
-      { class: 'param' },
-      h('span', { class: 'param-name', 'aria-hidden': 'true' }, spec.label),
-      // Each field in a slot of its own (see .param-slot in styles.css): a
-      // drag that moves the thumb and writes the number lays out the two
-      // fields, not the page round them.
-      h('span', { class: 'param-slot param-slot-slider' }, this.slider),
-      h('span', { class: 'param-slot' }, this.number),
-      this.play,
-      this.speedButton,
-    );
+    this.element = h('div', { class: 'param' }, ...inputs.parts, this.play, this.speedButton);
   }
 
   private value(state: S): number {
@@ -101,7 +69,6 @@ export class ParameterControl<S> {
   }
 
   private setValue(value: number, coalesce: string): void {
-    if (!Number.isFinite(value)) return;
     const clamped = Math.min(this.spec.max, Math.max(this.spec.min, value));
     this.host.set({ ...this.host.get(), [this.spec.key]: clamped }, { coalesce, windowMs: 1500 });
   }
@@ -118,13 +85,7 @@ export class ParameterControl<S> {
   }
 
   update(state: S): void {
-    const value = this.value(state);
-    if (value === this.shown) return;
-    this.shown = value;
-    if (Number(this.slider.value) !== value) this.slider.value = String(value);
-    const shown = fmt(value, decimalsFor(this.spec.step));
-    this.slider.setAttribute('aria-valuetext', `${this.spec.label} = ${shown}`);
-    if (document.activeElement !== this.number) this.number.value = shown;
+    this.inputs.show(this.value(state));
   }
 
   toggle(): void {

@@ -63,6 +63,16 @@ test('u, v and the camera: the point read from the page is P(u, v), three ways, 
   await page.getByRole('slider', { name: 'v' }).fill('0.5');
   await expectHash(page, 'v', (value) => value === '0.5');
   await expectPointMatches(page);
+  // The panel's v is written as the parameter's u is: three decimals, in the field and to a screen reader.
+  await expect(page.getByRole('spinbutton', { name: 'v value' })).toHaveValue('0.500');
+  await expect(page.getByRole('slider', { name: 'v' })).toHaveAttribute(
+    'aria-valuetext',
+    'v = 0.500',
+  );
+  await expect(page.getByRole('slider', { name: 'u' })).toHaveAttribute(
+    'aria-valuetext',
+    'u = 0.730',
+  );
   const sum = page.getByRole('status', { name: 'Sum of the 16 weights' });
   await expect(sum).toHaveText('1');
   expect(Math.abs(Number(await sum.getAttribute('data-exact')) - 1)).toBeLessThanOrEqual(1e-12);

@@ -1,6 +1,6 @@
 import { h, setChildren } from '../../app/dom';
 import type { LessonApi } from '../../app/lesson';
-import { type RangeField, rangeField } from '../../app/panelControls';
+import { type RangeField, rangeField } from '../../app/rangeControls';
 import { sub, trimmed } from '../../kit/format';
 import { WEIGHT_MAX, WEIGHT_MIN } from './halo';
 import type { BSplineModel } from './model';

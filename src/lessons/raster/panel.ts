@@ -1,7 +1,7 @@
 import { dataTable, fmt, h, liveText, setDisabled, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { rangeField } from '../../app/panelControls';
+import { rangeField } from '../../app/rangeControls';
 import { notesKey, notesSlip } from '../../kit/notes';
 import { formula } from '../../render/formula';
 import { type RasterModel, SAME_ERROR_MAX } from './model';

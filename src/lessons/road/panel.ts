@@ -1,7 +1,8 @@
 import { notesKey } from '../../kit/notes';
 import { fmt, h, setChildren } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
-import { checkbox, rangeField } from '../../app/panelControls';
+import { checkbox } from '../../app/panelControls';
+import { rangeField } from '../../app/rangeControls';
 import { type CurvatureOf, curvatureLink } from '../../kit/lessonLinks';
 import { derivationSection } from './derivationPanel';
 import { globalSection } from './globalPanel';

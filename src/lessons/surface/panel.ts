@@ -1,7 +1,8 @@
 import { fmt, h, setAttr, setHidden, setText } from '../../app/dom';
 import type { LessonApi, LessonPanel } from '../../app/lesson';
 import { LiveRows } from '../../app/liveTable';
-import { radioGroup, rangeField } from '../../app/panelControls';
+import { radioGroup } from '../../app/panelControls';
+import { rangeField } from '../../app/rangeControls';
 import { LiveFormula, SLOT, formula, slotPoint } from '../../render/formula';
 import type { SurfaceModel } from './model';
 import { netTable } from './netTable';
