@@ -4,6 +4,7 @@
  * step is `pageFrame.ts`; the caption is `stepCaption.ts`; the page's own
  * buttons are `lessonTools.ts`.
  */
+import { presenting } from './settings';
 import { refitAll } from '../render/fit';
 import { holdUnseenWhilePressed } from '../render/unseen';
 import type { Theme } from '../render/theme';
@@ -84,7 +85,7 @@ export class LessonPage<S, M> {
       redrawAll: () => this.frame.redrawAll(),
       hoverMoved: () => this.frame.hoverMoved(),
       shown: () => this.presenter.shown(),
-      presenting: () => document.documentElement.classList.contains('projector'),
+      presenting,
       practice: () => this.practice,
     });
     // First of the page's parts: any part may ask for a frame as it is made.
@@ -123,7 +124,7 @@ export class LessonPage<S, M> {
     this.walker = new ScriptWalker<S>(lesson, this.store, {
       fit: () => this.fit(),
       announce: (text) => shell.announce(text),
-      pauseAtSceneEnd: () => !document.documentElement.classList.contains('projector'),
+      pauseAtSceneEnd: () => !presenting(),
     });
     this.practice = PracticeHost.of<S>(
       {

@@ -2,6 +2,7 @@
  * What the keys and the clicker do on a lesson page: each action is one of
  * the page's parts' own. The key table that calls them is keymap.ts.
  */
+import { presenting } from './settings';
 import type { PageKeys } from './keyTarget';
 import type { LessonStore } from './lessonState';
 import type { PageFigures } from './pageFigures';
@@ -39,8 +40,7 @@ export function pageKeys<S, M>(page: KeyedParts<S, M>): PageKeys {
     orbit: (yaw, pitch) => figures.views.find((f) => f.spec.kind === 'space')?.orbit(yaw, pitch),
     sidePanel: () => {
       // Folded by default in presenter view, shown by default elsewhere.
-      const presenting = document.documentElement.classList.contains('projector');
-      page.element.classList.toggle(presenting ? 'panel-shown' : 'panel-folded');
+      page.element.classList.toggle(presenting() ? 'panel-shown' : 'panel-folded');
       page.refresh();
     },
     lecturerControls: () => page.lecturerControls(),

@@ -39,6 +39,9 @@ export function saveSettings(settings: Settings): void {
   }
 }
 
+/** Whether the page is in presenter view now (the hook applySettings sets). */
+export const presenting = (): boolean => document.documentElement.classList.contains('projector');
+
 /** Sets the page's CSS hooks and returns the canvas theme. */
 export function applySettings(settings: Settings): Theme {
   const root = document.documentElement;

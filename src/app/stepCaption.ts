@@ -4,6 +4,7 @@
  * question put to the room before the next press. The lecturer's ink is
  * wiped when the step changes.
  */
+import { presenting } from './settings';
 import type { AnyLesson } from './lesson';
 import type { LessonStore } from './lessonState';
 import type { Presenter } from './presenter';
@@ -62,7 +63,7 @@ export class StepCaption<S, M> {
       if (this.shownStep !== '') presenter.clearInk();
       this.shownStep = key;
     }
-    if (!document.documentElement.classList.contains('projector')) return;
+    if (!presenting()) return;
     const scene = scenes[store.scene];
     const sceneAt = (k: number) =>
       scene
