@@ -26,6 +26,39 @@ afterEach(() => {
   delete (globalThis as { IntersectionObserver?: unknown }).IntersectionObserver;
 });
 
+/** A pointer event as the page sees it: a type, the buttons held, and where it was aimed. */
+function pointer(type: string, buttons: number, on: EventTarget): Event {
+  const event = new Event(type);
+  Object.defineProperty(event, 'buttons', { value: buttons });
+  Object.defineProperty(event, 'target', { value: on });
+  return event;
+}
+
+describe('a drag begins on its first move', () => {
+  it('is told once a drag, with what was pressed; a click and a hover are no drag', async () => {
+    const { holdUnseenWhilePressed, onDragStart } = await fresh();
+    const page = new EventTarget();
+    const release = holdUnseenWhilePressed(page, () => {});
+    const began: EventTarget[] = [];
+    onDragStart((pressed) => began.push(pressed));
+    const [button, handle] = [new EventTarget(), new EventTarget()];
+
+    page.dispatchEvent(pointer('pointermove', 0, page));
+    page.dispatchEvent(pointer('pointerdown', 1, button));
+    page.dispatchEvent(pointer('pointerup', 0, button));
+    expect(began).toEqual([]);
+
+    page.dispatchEvent(pointer('pointerdown', 1, handle));
+    page.dispatchEvent(pointer('pointermove', 1, page));
+    page.dispatchEvent(pointer('pointermove', 1, page));
+    expect(began).toEqual([handle]);
+    page.dispatchEvent(pointer('pointerup', 0, handle));
+    page.dispatchEvent(pointer('pointermove', 1, page));
+    expect(began).toEqual([handle]);
+    release();
+  });
+});
+
 describe('what waits while a pointer is held', () => {
   it('writes in view at once, out of view on release or when it comes into view', async () => {
     const { holdUnseenWhilePressed, waitUnseen, watchSeen } = await fresh();

@@ -96,12 +96,27 @@ export function onEveryPress(job: () => void): void {
   pressListeners.add(job);
 }
 
+/** Told on a press's first move with a button held: what was pressed, on its way to be dragged. */
+const dragListeners = new Set<(pressed: EventTarget) => void>();
+/** What the press being held began on, until its first move (then null). */
+let pressTarget: EventTarget | null = null;
+
+/**
+ * Runs `job` on the first move of each drag, before the page handles the
+ * move, with the element the press began on. A click, however it ends, is no
+ * drag: a press let go before it moves never gets here.
+ */
+export function onDragStart(job: (pressed: EventTarget) => void): void {
+  dragListeners.add(job);
+}
+
 /** Runs `job` once the pointer is let go (once, however often asked). */
 export function whenReleased(job: () => void): void {
   onRelease.add(job);
 }
 
 function setPressed(on: boolean): void {
+  if (!on) pressTarget = null;
   if (pressed === on) return;
   pressed = on;
   if (on) {
@@ -126,7 +141,14 @@ export function holdUnseenWhilePressed(target: EventTarget, caughtUp: () => void
   caughtUpListeners.add(caughtUp);
   const stop = new AbortController();
   const options = { capture: true, signal: stop.signal };
-  target.addEventListener('pointerdown', () => setPressed(true), options);
+  target.addEventListener(
+    'pointerdown',
+    (e) => {
+      setPressed(true);
+      pressTarget = e.target;
+    },
+    options,
+  );
   for (const type of ['pointerup', 'pointercancel'])
     target.addEventListener(type, () => setPressed(false), options);
   // The window losing focus ends a press; an element's blur, caught here on its
@@ -144,6 +166,11 @@ export function holdUnseenWhilePressed(target: EventTarget, caughtUp: () => void
     'pointermove',
     (e) => {
       if ((e as PointerEvent).buttons === 0) setPressed(false);
+      else if (pressed && pressTarget) {
+        const began = pressTarget;
+        pressTarget = null;
+        for (const job of dragListeners) job(began);
+      }
     },
     options,
   );

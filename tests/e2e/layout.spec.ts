@@ -57,8 +57,6 @@ async function watchLooseWrites(page: Page): Promise<void> {
         const e = (r.target.nodeType === 1 ? r.target : r.target.parentElement) as Element | null;
         if (!e || !e.isConnected || e.closest('.handle-layer') || e.getClientRects().length === 0)
           continue;
-        // A table cell of words (a point, a weight worked out) is not held in a box yet (cellBoxes.ts).
-        if (e.closest('td, th') && !/^[−+-]?[\d.,]+$/.test(e.textContent ?? '')) continue;
         if (bounded(e)) continue;
         const key = `${where(e)} ${r.type === 'attributes' ? `[${r.attributeName}]` : 'text'}`;
         if (!w.loose.has(key)) w.loose.set(key, new Set());
