@@ -1,7 +1,7 @@
 import type { Point } from '../../math';
 import { memoOn } from '../../kit/memoOn';
 import type { Revealed } from '../../kit/script';
-import { type Bounds, boundsOf } from '../../render/projection';
+import { type Bounds, boundsOf, unionBounds } from '../../render/projection';
 import { type Explicit, deriveExplicit } from './explicit';
 import {
   type Parametric,
@@ -55,9 +55,10 @@ export function derive(state: QuadraticState, shown: Revealed<Reveal>): Quadrati
  * included), so that stepping through the construction never needs a new view.
  */
 function fitBounds(points: readonly Point[], explicit: Explicit, curves: ParametricCurves): Bounds {
-  const shown: Point[] = [...points, ...curves.all];
-  if (explicit.apex) shown.push(explicit.apex);
-  const bounds = boundsOf(shown);
+  // Box by box: the curves' thousand points are not copied into one list on every drag frame.
+  const bounds = [...curves.all, ...(explicit.apex ? [[explicit.apex]] : [])]
+    .map(boundsOf)
+    .reduce(unionBounds, boundsOf(points));
   if (explicit.parabola.kind === 'ok') return bounds;
   // Room above the points for the note that says why there is no parabola.
   const height = Math.max(bounds.maxY - bounds.minY, (bounds.maxX - bounds.minX) * 0.3, 1);

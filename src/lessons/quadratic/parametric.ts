@@ -48,7 +48,7 @@ export interface Member {
    * Where its label may go, best first: points of the curve by how far they
    * stray from the polygon P0 P1 P2 (where the members differ most).
    */
-  labelSpots: Point[];
+  readonly labelSpots: Point[];
 }
 
 /** The three rules of the notes for choosing μ1 from the points. */
@@ -67,15 +67,31 @@ function member(p: readonly Point[], mu: number, colour: number | null, text: st
   const curve = Array.from({ length: SEGMENTS + 1 }, (_, k) =>
     parametricQuadraticPoint(p[0], p[1], p[2], mu, k / SEGMENTS),
   );
+  const ticks = Array.from({ length: 11 }, (_, k) => curve[(k * SEGMENTS) / 10]);
+  // Ranked when a label is first placed: most members are unlabelled at most
+  // steps, and ranking all ten on every drag frame was a third of its garbage.
+  let spots: Point[] | undefined;
+  return {
+    mu,
+    colour,
+    text,
+    curve,
+    ticks,
+    get labelSpots() {
+      return (spots ??= rankedSpots(p, curve));
+    },
+  };
+}
+
+/** The curve's points by how far they stray from the polygon P0 P1 P2, furthest first. */
+function rankedSpots(p: readonly Point[], curve: readonly Point[]): Point[] {
   const away = (q: Point) =>
     Math.min(distanceToSegment(q, p[0], p[1]), distanceToSegment(q, p[1], p[2]));
-  const labelSpots = curve
+  return curve
     .slice(4, -4)
     .map((point) => ({ point, away: away(point) }))
     .sort((a, b) => b.away - a.away)
     .map((spot) => spot.point);
-  const ticks = Array.from({ length: 11 }, (_, k) => curve[(k * SEGMENTS) / 10]);
-  return { mu, colour, text, curve, ticks, labelSpots };
 }
 
 /** Figure 2's family, without the slider's own curve (drawn on top anyway). */
@@ -107,7 +123,7 @@ export interface ParametricCurves {
   family: Member[];
   chosen: Member[];
   /** Every curve some step of the construction draws: the view is fitted to them all at once. */
-  all: Point[];
+  all: Point[][];
 }
 
 export function parametricCurves(p: readonly Point[], mu: number): ParametricCurves {
@@ -124,7 +140,7 @@ export function parametricCurves(p: readonly Point[], mu: number): ParametricCur
     slider,
     family: families,
     chosen,
-    all: [slider, ...families, ...chosen].flatMap((m) => m.curve),
+    all: [slider, ...families, ...chosen].map((m) => m.curve),
   };
 }
 
