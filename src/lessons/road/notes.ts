@@ -41,9 +41,10 @@ export function villageNotes(v: readonly Point[]): string[] {
   const dx = v[far][0] - v[0][0];
   const dy = v[far][1] - v[0][1];
   const length = Math.hypot(dx, dy);
-  const offLine = Math.max(
-    ...v.map((p) => Math.abs((p[0] - v[0][0]) * dy - (p[1] - v[0][1]) * dx) / length),
-  );
+  // A loop, not Math.max(...v.map(…)): 500 villages on every drag frame.
+  let offLine = 0;
+  for (const p of v)
+    offLine = Math.max(offLine, Math.abs((p[0] - v[0][0]) * dy - (p[1] - v[0][1]) * dx) / length);
   if (v.length > 2 && offLine <= 1e-9 * extent) {
     notes.push(
       'All villages lie on one line: every road through them runs along it, back and forth if need be, unless a chosen end gradient (or the quadratic’s first) points off it.',
