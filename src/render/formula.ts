@@ -114,11 +114,9 @@ export class LiveFormula {
       const text = value.replace(/^-/, '−');
       if (text === slot.text) return;
       changed = true;
-      // Wider or narrower: its box takes the new size (see liveBoxes.ts).
-      if (!sameWidth(text, slot.text)) {
-        reshaped = true;
-        reshapeBox(slot.html, text);
-      }
+      // Wider or narrower: its box takes the new size (see liveBoxes.ts), or
+      // keeps its width through a drag, and then the formula is as wide as it was.
+      if (!sameWidth(text, slot.text) && reshapeBox(slot.html, text)) reshaped = true;
       slot.text = text;
       setText(slot.html, text);
     });

@@ -68,11 +68,12 @@ export function fitsBox(text: string, measured: string): boolean {
  * to take the new size, unless a pointer is held and the text is a number.
  * Then the box keeps its measured width if the text fits it, or takes the
  * width the text is estimated to need if it grew, and it is measured again on
- * release.
+ * release. Returns whether the box's width may have changed (what holds it
+ * is to be fitted again); false when it kept the width it had.
  */
-export function reshapeBox(el: HTMLElement, text: string): void {
+export function reshapeBox(el: HTMLElement, text: string): boolean {
   // A cell's words held through a drag keep their box, whatever they become (holdCells).
-  if (el.dataset[BOX] === 'held') return;
+  if (el.dataset[BOX] === 'held') return false;
   const measured = measuredAt.get(el);
   if (el.dataset[BOX] === 'fixed' && pointerHeld() && measured !== undefined) {
     const em = measuredEm.get(el);
@@ -80,19 +81,23 @@ export function reshapeBox(el: HTMLElement, text: string): void {
     if (width !== undefined) {
       // A box only grows through a drag: a number flickering between 0 and
       // −0.014 would resize it, and lay the page out, on every other frame.
-      setWidth(el, Math.max(width, parseFloat(el.style.width) || 0));
+      const grew = setWidth(el, Math.max(width, parseFloat(el.style.width) || 0));
       if (kept.size === 0) whenReleased(freeKept);
       kept.add(el);
-      return;
+      return grew;
     }
   }
   kept.delete(el);
   freeBox(el);
+  return true;
 }
 
-const setWidth = (el: HTMLElement, em: number) => {
+/** Sets a box's width in ems; whether that changed it. */
+const setWidth = (el: HTMLElement, em: number): boolean => {
   const width = `${em.toFixed(4)}em`;
-  if (el.style.width !== width) el.style.width = width;
+  if (el.style.width === width) return false;
+  el.style.width = width;
+  return true;
 };
 
 /**
