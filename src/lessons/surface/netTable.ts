@@ -1,5 +1,6 @@
 import { h, setText } from '../../app/dom';
-import { formatNumber, parseNumber } from '../../app/fields';
+import { parseNumber } from '../../app/fields';
+import { trimmed } from '../../kit/format';
 import type { LessonApi, Point } from '../../app/lesson';
 import type { SurfaceModel } from './model';
 import type { SurfaceState } from './state';
@@ -16,7 +17,21 @@ export function parseTriple(text: string): Point | null {
   return values as number[];
 }
 
-const tripleText = (p: readonly number[]) => p.map(formatNumber).join(', ');
+/** A coordinate as the table shows it: to three decimals, as the figure's labels are. */
+const shown = (value: number) => trimmed(value, 3);
+
+/** A point as its cell shows it, "x, y, z" (a dragged point has 17 digits; the cell, three decimals). */
+const tripleText = (p: readonly number[]) => p.map(shown).join(', ');
+
+/**
+ * What a cell typed as `typed` means for the point `was`: a coordinate left
+ * as the cell showed it keeps its exact value, so typing a new z does not
+ * round x and y to the cell's three decimals.
+ */
+export function keepShown(typed: Point, text: string, was: readonly number[]): Point {
+  const words = text.split(/[,;\s]+/).filter((part) => part !== '');
+  return typed.map((value, d) => (words[d] === shown(was[d]) ? was[d] : value));
+}
 
 /**
  * The control net as an editable 4 × 4 table: one cell per point, "x, y, z",
@@ -58,7 +73,7 @@ export function netTable(
         }
         setText(message, '');
         const net = state[field].map((points, i) =>
-          points.map((q, j) => (i === m && j === n ? p : q)),
+          points.map((q, j) => (i === m && j === n ? keepShown(p, input.value, q) : q)),
         );
         api.set({ ...state, [field]: net });
       });
