@@ -44,3 +44,26 @@ describe('a figure fitted with a heading', () => {
     expect(foot).toBeCloseTo(200 - 20, 6);
   });
 });
+
+describe('a figure whose marks reach beyond its subject', () => {
+  it('keeps at least that much room round the subject, and the padding where that is more', () => {
+    const theme = makeTheme(false, false);
+    const ringed = (reach: number): FigureSpec<null, null> => ({
+      ...figure(false),
+      marksReach: () => reach,
+    });
+    for (const [reach, expected] of [
+      [0, 20],
+      [35, 35],
+    ]) {
+      const view = new Viewport(400, 300);
+      view.resize(400, 300);
+      fitFigure(view, ringed(reach), null, theme, 20);
+      // The box is wide: its width sets the scale, so its ends are `expected` px from the sides.
+      const [left] = view.toScreen([bounds.minX, 0]);
+      const [right] = view.toScreen([bounds.maxX, 0]);
+      expect(left).toBeCloseTo(expected, 6);
+      expect(400 - right).toBeCloseTo(expected, 6);
+    }
+  });
+});

@@ -73,9 +73,12 @@ export function fitFigure<S, M>(
       ? (figure.headline?.(model) ? headlineBand(theme) : 0) +
         keyBand(theme, figure.keyLines?.(model) ?? 0)
       : 0;
-  const [padX, padY] = typeof padding === 'number' ? [padding, padding] : padding;
+  const reach = figure.marksReach?.(model, theme) ?? 0;
+  const [padX, padY] = (typeof padding === 'number' ? [padding, padding] : padding).map((pad) =>
+    Math.max(pad, reach),
+  );
   // Half the band at each end, then the subject down by half: all of it on top.
-  view.fit(figure.bounds(model), band ? [padX, padY + band / 2] : padding, fitShape(figure));
+  view.fit(figure.bounds(model), [padX, padY + band / 2], fitShape(figure));
   if (band) (view as Viewport).panBy(0, band / 2);
 }
 

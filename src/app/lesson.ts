@@ -110,6 +110,15 @@ export interface FigureSpec<S, M = S> {
    * its steps.
    */
   keyLines?(model: M): number;
+  /**
+   * How far, in CSS pixels, the figure's marks reach round a point of its
+   * subject: the fit keeps at least that much room round the subject, so a
+   * mark at its edge is drawn whole (b-splines' two meanings ring a control
+   * point at nearly four handles' radius, and on a phone P₀'s and P₆'s rings
+   * were cut). Answer per scene, the widest mark of its fullest step, so the
+   * figure keeps one scale through its steps.
+   */
+  marksReach?(model: M, theme: Theme): number;
   /** Relative size in its row or column (default 1). */
   weight?: number;
   /** A fixed height in CSS pixels (a thin strip under another figure). */

@@ -7,7 +7,7 @@ import { segmentAt } from './drawParts';
 import { dragHalo, haloAt, showsHalos } from './halo';
 import { haloIds } from './ids';
 import { drawContinuity } from './continuityDrawing';
-import { drawMeanings } from './meaningsDrawing';
+import { drawMeanings, meaningsReach } from './meaningsDrawing';
 import { drawCircle, drawKnots, drawNurbs, drawProjective } from './knotDrawing';
 import type { BSplineModel } from './model';
 import { controlPoints, linePoints } from './points';
@@ -57,6 +57,8 @@ export const curveFigure: KitFigure<BSplineState, BSplineModel> = {
   // The key to the two kinds of ring, two lines, has no clear corner among
   // seven control points and their rings: it takes a band above them.
   keyLines: (m) => (m.kind === 'meanings' ? 2 : 0),
+  // Their rings reach nearly four handles round P₀ and P₆, at the subject's edge.
+  marksReach: (m, theme) => (m.kind === 'meanings' ? meaningsReach(theme) : 0),
   draw(painter, m, info) {
     painter.grid();
     drawScene(painter, m, info);

@@ -3,6 +3,7 @@ import { words } from '../../kit/format';
 import { drawLegend } from '../../kit/legend';
 import { pointBetween } from '../../math';
 import type { Painter } from '../../render/painter';
+import type { Theme } from '../../render/theme';
 import { drawCursor, drawPolygon, drawSegments, ringHovered } from './drawParts';
 import { nearestControl } from './meaningsGeometry';
 import type { MeaningsModel } from './model';
@@ -45,7 +46,7 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
     for (const k of m.knotPoints)
       painter.ring(k.at, joinRing, { color: theme.ink, width: theme.sizes.line * 1.5 });
   }
-  const controlRing = theme.sizes.handle * 2.8;
+  const controlRing = controlRingRadius(theme);
   if (shown.has('controls')) {
     for (const x of points)
       painter.ring(x, controlRing, { color: theme.polygon, width: theme.sizes.line * 1.5 });
@@ -68,7 +69,7 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
   if (shown.has('meet')) {
     const meet = m.knotPoints.filter((k) => k.on !== null);
     for (const k of meet)
-      painter.ring(k.at, controlRing * 1.35, { color: theme.accent, width: theme.sizes.line * 2 });
+      painter.ring(k.at, meetRingRadius(theme), { color: theme.accent, width: RING_WIDTH * theme.sizes.line });
     if (meet.length === 0) {
       // None is one spot: how near the nearest pair comes.
       const { knot, point, distance } = nearestControl(m.knotPoints, points);
@@ -89,3 +90,13 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
   if (shown.has('values')) drawCursor(painter, m, 'P(u)', info);
   ringHovered(painter, m, info);
 }
+
+/** The ring round a control point, a knot in the slides' sense. */
+const controlRingRadius = (theme: Theme) => theme.sizes.handle * 2.8;
+/** The ring where both meanings meet on one spot, round the other two, and its width in lines. */
+const meetRingRadius = (theme: Theme) => controlRingRadius(theme) * 1.35;
+const RING_WIDTH = 2;
+
+/** How far the scene's widest mark, the ring where the meanings meet, reaches round a point. */
+export const meaningsReach = (theme: Theme): number =>
+  meetRingRadius(theme) + (RING_WIDTH / 2) * theme.sizes.line;
