@@ -98,35 +98,3 @@ export function radioGroup<S, V extends string>(
     },
   };
 }
-
-export interface RangeFieldOptions<S> {
-  /** The slider's accessible name; a number field's is `<label> value`. */
-  label: string;
-  /** The name written before the slider (screen readers hear `label` instead), or none. */
-  name?: string;
-  min: number;
-  max: number;
-  step: number;
-  /** The top of the range when the state sets it (p̄ runs to the road's last village). */
-  maxOf?(state: S): number;
-  get(state: S): number;
-  set(state: S, value: number): S;
-  /** Moves of one drag are one edit in the history under this name. */
-  coalesce: string;
-  /** A number field beside the slider, to type a value. */
-  numberField?: boolean;
-  /** Words after the slider, given to `update` (the value and what it means): a live value in a box of its own. */
-  readout?: boolean;
-  /** A class for the row, for a lesson's own layout. */
-  class?: string;
-  /** The readout's least width in ems, so that rows of sliders one under another are as long. */
-  readoutEm?: number;
-}
-
-/** A range control of the panel: its slider, and its number field when it has one. */
-export interface RangeField<S> extends Control<S> {
-  /** Shows the state, and `readout` after the slider. */
-  update(state: S, readout?: string): void;
-  readonly slider: HTMLInputElement;
-  readonly number: HTMLInputElement | null;
-}
