@@ -79,13 +79,17 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
       { color: painter.color(0), width: theme.sizes.line },
     );
     if (shares && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 1.9) {
+      // Each share in its own pixel, boxed over the strip's edge where that
+      // crosses it: moved clear of the edge, a share was read as its
+      // neighbour's (0.70 on a white pixel above the dark one it belongs to).
       for (const { i, j, value } of pixels.filter((pixel) => pixel.value >= 0.005))
         painter.label(value.toFixed(2), [i, j], {
           size: theme.sizes.small * 0.8,
           align: 'center',
           baseline: 'middle',
-          halo: true,
+          box: true,
           color: theme.ink,
+          stays: true,
         });
     }
     return;
