@@ -2,7 +2,7 @@ import type { Point } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
 import { seriesDash } from '../../kit/seriesColours';
 import type { Painter } from '../../render/painter';
-import { words } from '../../kit/format';
+import { fixed, words } from '../../kit/format';
 import { highlightedIndex } from './hover';
 import { halfway } from './comparison';
 import type { BlendingModel, Compared } from './model';
@@ -29,7 +29,7 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
   ],
   draw(painter, m, info) {
     const theme = painter.theme;
-    const { state, n, weights, point, compared, drawn } = m;
+    const { state, n, pointWeights, point, compared, drawn } = m;
     const highlighted = highlightedIndex(info.hover);
 
     if (compared && drawn.hull)
@@ -54,11 +54,15 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
     const largest = theme.sizes.handle * 5;
     // Weights written so far: a point too close to one of them goes without (its row in the table has it).
     const placed: Point[] = [];
+    // At a comparison's values at μ, the lines go to the point those weights make.
+    const weighted = (drawn.atMu && compared?.point?.at) || point;
     state.p.forEach((control, i) => {
-      if (i >= drawn.weights) return;
+      const weight = pointWeights[i];
+      if (i >= drawn.weights || weight === null) return;
       const color = painter.color(i);
       const dash = seriesDash(painter, i);
-      const radius = theme.sizes.handle * 1.3 + largest * weights[i];
+      // A negative weight pulls away: its halo is as large as its size, and its number says the sign.
+      const radius = theme.sizes.handle * 1.3 + largest * Math.min(1, Math.abs(weight));
       const lit = highlighted === i;
       painter.ring(
         control,
@@ -68,16 +72,16 @@ export const curveFigure: KitFigure<BlendingState, BlendingModel> = {
         lit ? 0.4 : 0.22,
       );
       if (drawn.point) {
-        painter.segment(control, point, {
+        painter.segment(control, weighted, {
           color,
-          width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * weights[i]),
+          width: Math.max(theme.sizes.thin, theme.sizes.line * 3 * Math.min(1, Math.abs(weight))),
           alpha: lit ? 0.9 : 0.45,
           dash,
         });
       }
       if (!info.thumbnail && n <= LABEL_WEIGHTS_UP_TO && !crowded(painter, placed, control)) {
         placed.push(control);
-        underPoint(painter, weights[i].toFixed(3), control, color);
+        underPoint(painter, fixed(weight, 3), control, color);
       }
     });
     // The weights are written under the points: P(μ), its label and the

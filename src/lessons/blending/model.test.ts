@@ -203,3 +203,47 @@ describe('hover ids', () => {
     expect(curveNear(m, [0.5, 0.9], 0.05)).toBeNull();
   });
 });
+
+describe('the weights the control points wear', () => {
+  const last = (s: BlendingState) => ({ ...s, step: stepCount(s) });
+
+  it('are Bernstein’s until a comparison’s values at μ, then the compared functions’ at the points they weight', () => {
+    // The lecture's cubic at μ = ½: 1/8, 3/8, 3/8, 1/8 before the last step of each comparison.
+    for (const comparison of ['hermite', 'bspline', 'lagrange'] as const) {
+      const s = { ...cubic, comparison };
+      expect(derive({ ...last(s), step: stepCount(s) - 1 }).pointWeights).toEqual([
+        0.125, 0.375, 0.375, 0.125,
+      ]);
+    }
+    // Hermite at ½: H₀ = 2μ³ − 3μ² + 1 = ½ at P₀, H₁ = −2μ³ + 3μ² = ½ at P₃; P₁ and P₂ are not its data.
+    expect(derive(last({ ...cubic, comparison: 'hermite' })).pointWeights).toEqual([
+      0.5,
+      null,
+      null,
+      0.5,
+    ]);
+    // The uniform cubic B-spline at ½: (1 − μ)³/6, (3μ³ − 6μ² + 4)/6, (−3μ³ + 3μ² + 3μ + 1)/6, μ³/6.
+    close(derive(last({ ...cubic, comparison: 'bspline' })).pointWeights as number[], [
+      1 / 48,
+      23 / 48,
+      23 / 48,
+      1 / 48,
+    ]);
+  });
+
+  it('at Lagrange’s values at μ = 0.1 for degree 6, are Lᵢ(0.1), negative ones among them', () => {
+    const p: BlendingState['p'] = [0, 1, 2, 3, 4, 5, 6].map((i) => [i, i % 2]);
+    const s = { ...cubic, p, mu: 0.1, comparison: 'lagrange' as const };
+    // Lᵢ(μ) = Π_{j ≠ i} (μ − j/6) / (i/6 − j/6), worked here from the definition.
+    const lagrange = (i: number, mu: number) =>
+      [0, 1, 2, 3, 4, 5, 6]
+        .filter((j) => j !== i)
+        .reduce((product, j) => (product * (mu - j / 6)) / (i / 6 - j / 6), 1);
+    const weights = derive(last(s)).pointWeights as number[];
+    close(
+      weights,
+      [0, 1, 2, 3, 4, 5, 6].map((i) => lagrange(i, 0.1)),
+    );
+    expect(weights.some((w) => w < 0)).toBe(true);
+  });
+});

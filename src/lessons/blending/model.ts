@@ -87,6 +87,14 @@ export interface BlendingModel {
   bernstein: Family;
   /** W(N, i, μ) for every i, and their sum (1 up to rounding). */
   weights: number[];
+  /**
+   * What each control point's halo and number show: W(N, i, μ), or at a
+   * comparison's values-at-μ step the compared functions' values at the
+   * points they weight (Hermite's H₀ at P₀ and H₁ at P₃; null at P₁ and P₂,
+   * which Hermite's data leaves out). The figure once wrote Bernstein's
+   * weights there beside a caption on Lagrange's negative ones.
+   */
+  pointWeights: (number | null)[];
   sum: number;
   /** P(μ), and the curve sampled (interleaved x, y). */
   point: Point;
@@ -178,9 +186,11 @@ export function derive(state: BlendingState, shown: Revealed<Reveal>): BlendingM
   const { curveBounds, plotBounds, handleY } = comparison(state);
   const common = shape(state);
   const drawn = drawnAt(shown, common.n);
+  const values = atMu(state);
   return {
     ...common,
-    ...atMu(state),
+    ...values,
+    pointWeights: pointWeightsOf(values, drawn, common.n),
     ...passesOf(state),
     curveBounds,
     plotBounds,
@@ -189,6 +199,18 @@ export function derive(state: BlendingState, shown: Revealed<Reveal>): BlendingM
     shown,
     drawn,
   };
+}
+
+/** The weights the control points wear at this step (BlendingModel.pointWeights). */
+function pointWeightsOf(
+  { weights, compared }: Pick<BlendingModel, 'weights' | 'compared'>,
+  drawn: Drawn,
+  n: number,
+): (number | null)[] {
+  if (!drawn.atMu || !compared) return weights;
+  if (compared.kind !== 'hermite') return compared.atMu;
+  // H₀ weights the start point, H₁ the end point; H₂ and H₃ weight gradients.
+  return weights.map((_, i) => (i === 0 ? compared.atMu[0] : i === n ? compared.atMu[1] : null));
 }
 
 /** Coincident or collinear control points, in words: what the curve does then. */
