@@ -73,3 +73,33 @@ describe('a name the figure’s edge would carry away from its point', () => {
     expect(name.leader || gap <= painter.theme.sizes.label).toBe(true);
   });
 });
+
+// Surface's P(u,v), put 12 px right of and 18 px below its dot and moved off
+// the net: its leader went back to where the label was first put, 75 px to
+// the right of the dot and onto another point. A leader ends at the point.
+describe('a point’s name sent out on a leader', () => {
+  it('is tied to the point it names, not to the place it was first put beside it', () => {
+    const view = new Viewport(800, 400);
+    view.resize(800, 400);
+    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
+    const svg = new SvgContext();
+    const painter = new Painter(svg, view, makeTheme(false, true));
+    painter.holdLabels();
+    const point = [0.75, 0.5];
+    const [x, y] = view.toScreen(point);
+    for (let ly = 60; ly <= 340; ly += 8)
+      painter.polyline([view.toWorld([0, ly]), view.toWorld([440, ly])], { width: 2 });
+    // Where the placer starts lines while it places the labels: a leader starts at its point.
+    const starts: [number, number][] = [];
+    const moveTo = svg.moveTo.bind(svg);
+    svg.moveTo = (mx: number, my: number) => {
+      starts.push([mx, my]);
+      moveTo(mx, my);
+    };
+    painter.label('inflection: κ = 0', point, { dx: 12, dy: 18, bold: true });
+    painter.placeLabels();
+    const [name] = painter.labels;
+    expect(name.leader).toBe(true);
+    expect(starts.some(([sx, sy]) => Math.hypot(sx - x, sy - y) < 0.5)).toBe(true);
+  });
+});

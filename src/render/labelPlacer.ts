@@ -153,7 +153,14 @@ export function drawScreenLabel(
     });
     // None near: farther out, tied to its place by a leader line; failing
     // that, its own place if no label is there, else the nearest free one.
-    const [ax, ay] = around ? [x, y] : [left + total / 2, middleY];
+    // A leader goes back to the point the label names (Painter.label's `of`),
+    // not to where the label was first put beside it: from there, dx and dy
+    // away, surface's leader to P(u,v) ended 75 px from its dot, on another.
+    const [ax, ay] = around
+      ? [x, y]
+      : style.names && style.of
+        ? style.of
+        : [left + total / 2, middleY];
     let leader: [number, number] | null = null;
     let spot = spots.find(([l, m]) => clear(l, m));
     // The leader may cross lines, but no label: its stroke's width kept clear too.
