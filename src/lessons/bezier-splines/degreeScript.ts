@@ -61,7 +61,7 @@ export const degree = script<State, Model, DegreeReveal>(
     'notCd',
     ({ state }) =>
       pieces(state) > 1
-        ? `Not C³: a cubic that matches the first piece’s value and three derivatives at p${sub(1)} is that piece continued, and misses p${sub(2)}`
+        ? `Not C³: a cubic that matches the first piece’s value and three derivatives at p${sub(1)} is that piece continued: it ends at P${sub(0)}(2), not at p${sub(2)}`
         : `Not C³: a cubic that matches the piece’s value and three derivatives at p${sub(1)} is that piece continued`,
     ({ state, model }) => {
       const end = model.degree.continued[3];

@@ -92,5 +92,11 @@ export const degree: Draw = (painter, m, info) => {
   });
   const p = m.state.points;
   if (p.length > 2) painter.ring(p[2], theme.sizes.handle * 2.2, { color: theme.accent });
-  if (!info.thumbnail) labelAt(painter, 'P_0(1 + t)', continued[3], theme.accent);
+  // Its end, P₀(2), is the point the step is about: it is not p₂ (the dashed
+  // piece passes near p₂ on its way, at another t).
+  painter.dot(continued[3], theme.accent, theme.sizes.point * 1.3);
+  if (!info.thumbnail) {
+    labelAt(painter, 'P_0(1 + t)', bezierPoint(continued, 0.8), theme.accent);
+    labelAt(painter, 'P_0(2)', continued[3], theme.accent);
+  }
 };

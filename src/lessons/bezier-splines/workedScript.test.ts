@@ -231,6 +231,8 @@ describe('degree d, continuity up to Cᵈ⁻¹', () => {
     expect(at(4)).toEqual(expect.arrayContaining(['d = 1', 'd = 2', 'd = 3']));
     expect(at(4).join(' ')).not.toMatch(/1 \+ t/);
     expect(at(5).join(' ')).toMatch(/P.*0.*\(1 \+ t\)/);
+    // Its end is named: P₀(2), the point the formula says is not p₂.
+    expect(at(5).join(' ')).toMatch(/P.*0.*\(2\)/);
   });
 });
 
