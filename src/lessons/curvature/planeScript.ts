@@ -32,7 +32,7 @@ const argument = (plane: PlaneModel) => (pieced(plane) ? '\\bar p' : parameter(p
 /** κ = (x′y″ − y′x″)/|P′|³ with its numbers, or why it is undefined. */
 function kappa(at: PlaneAt): string {
   if (at.curvature === null)
-    return `\\kappa = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{\\cdot}{0}\\ \\text{is undefined}`;
+    return `\\kappa = \\frac{x'y'' - y'x''}{|P'|^3}\\ \\text{is undefined: } P' = 0`;
   const [v, a] = [at.velocity, at.acceleration];
   // At an inflection the model counts κ as 0 (a numerator of rounding size): it is written 0.
   const numerator = at.curvature === 0 ? '0' : value(v[0] * a[1] - v[1] * a[0]);
