@@ -56,11 +56,7 @@ export function derive(state: QuadraticState, shown: Revealed<Reveal>): Quadrati
  */
 function fitBounds(points: readonly Point[], explicit: Explicit, curves: ParametricCurves): Bounds {
   // Box by box: the curves' thousand points are not copied into one list on every drag frame.
-  const bounds = [...curves.all, ...(explicit.apex ? [[explicit.apex]] : [])]
+  return [...curves.all, ...(explicit.apex ? [[explicit.apex]] : [])]
     .map(boundsOf)
     .reduce(unionBounds, boundsOf(points));
-  if (explicit.parabola.kind === 'ok') return bounds;
-  // Room above the points for the note that says why there is no parabola.
-  const height = Math.max(bounds.maxY - bounds.minY, (bounds.maxX - bounds.minX) * 0.3, 1);
-  return { ...bounds, maxY: bounds.maxY + 0.6 * height };
 }
