@@ -58,10 +58,14 @@ export function placeLabel(
     if (cost === 0) break;
   }
   if (!best) return;
+  // It names the point at (x, y): moved on from the spot chosen here, it is
+  // tried round that point and a leader goes back to it (de Casteljau's P₂,₀
+  // hung from a leader to the spot, beside a sample dot, not to its point).
   painter.screenLabel(text, best.left, best.top + height / 2, {
     ...style,
     align: 'left',
     names: true,
+    of: [x, y],
   });
 }
 
