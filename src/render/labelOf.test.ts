@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { glyphBox } from './labels';
+import { labelWidth } from './labelWidth';
 import { Painter } from './painter';
 import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
@@ -101,5 +102,39 @@ describe('a point’s name sent out on a leader', () => {
     const [name] = painter.labels;
     expect(name.leader).toBe(true);
     expect(starts.some(([sx, sy]) => Math.hypot(sx - x, sy - y) < 0.5)).toBe(true);
+  });
+});
+
+// bezier-properties' "inflection, u = 0.50": every place round its dot is
+// crossed by the curve or the polygon, and the first clear one is a whole
+// label's width to the right, 300 px from the dot, with nothing to say whose.
+describe('a point’s name shifted a label’s width away', () => {
+  it('is tied to its point by a leader', () => {
+    const view = new Viewport(1200, 600);
+    view.resize(1200, 600);
+    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
+    painter.holdLabels();
+    const point = [0.6, 0.5];
+    const [x, y] = view.toScreen(point);
+    const text = 'inflection, u = 0.50';
+    // Ink over every place round the point, out to the right end of where the
+    // label is first put: the first place clear is that place shifted right.
+    const width = labelWidth(painter, text, { bold: true });
+    for (let ly = y - 120; ly <= y + 120; ly += 6)
+      painter.polyline([view.toWorld([x - width, ly]), view.toWorld([x + 10 + width + 4, ly])], {
+        width: 2,
+      });
+    painter.label(text, point, { dx: 10, dy: 20, bold: true });
+    painter.placeLabels();
+    const [name] = painter.labels;
+    expect(name.text).toBe(text);
+    const box = glyphBox(name);
+    const gap = Math.hypot(
+      Math.max(box.x - x, 0, x - box.x - box.width),
+      Math.max(box.y - y, 0, y - box.y - box.height),
+    );
+    expect(gap).toBeGreaterThan(painter.theme.sizes.label * 1.5);
+    expect(name.leader).toBe(true);
   });
 });

@@ -200,6 +200,20 @@ export function drawScreenLabel(
       places.find(([l, m]) => free(l, m));
     if (!spot) return { width: 0 };
     [left, middleY] = boxed ? inside(...spot) : spot;
+    // Shifted a whole label's width from where it was put, a name can stand
+    // far from its point with nothing to say whose it is (bezier-properties'
+    // "inflection, u = 0.50", 300 px from its dot): a leader goes back to it.
+    if (!leader && leads && style.of) {
+      const [px, py] = style.of;
+      const [ex, ey] = nearestOnBox(px, py, {
+        x: left,
+        y: middleY - size * 0.65,
+        width: total,
+        height,
+      });
+      if (Math.hypot(ex - px, ey - py) > size * 1.5 && leaderClear(left, middleY))
+        leader = [px, py];
+    }
     leaderDrawn = leader !== null;
     if (leader)
       drawLeader(
