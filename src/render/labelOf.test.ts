@@ -6,17 +6,34 @@ import { SvgContext } from './svgContext';
 import { makeTheme } from './theme';
 import { Viewport } from './viewport';
 
+/** A figure `width` × `height` showing `maxX` × 1 units, its labels held to be placed together. */
+function figure(width: number, height: number, maxX: number, svg = new SvgContext()) {
+  const view = new Viewport(width, height);
+  view.resize(width, height);
+  view.fit({ minX: 0, minY: 0, maxX, maxY: 1 }, 0);
+  const painter = new Painter(svg, view, makeTheme(false, true));
+  painter.holdLabels();
+  return { view, painter };
+}
+
+/** How far a label's glyphs are from the point (x, y) on screen: 0 if they cover it. */
+const gapFrom = (
+  box: { x: number; y: number; width: number; height: number },
+  x: number,
+  y: number,
+) =>
+  Math.hypot(
+    Math.max(box.x - x, 0, x - box.x - box.width),
+    Math.max(box.y - y, 0, y - box.y - box.height),
+  );
+
 // A point's name whose first place (up and to the right) is crossed by a line
 // must stay beside its point: the placer used to shift it a label's width at a
 // time, and it stood 109 px from P(u) at the last step of Repeated knots.
 describe('a point’s name moved from its first place', () => {
   for (const how of ['label', 'labelClear'] as const)
     it(`goes beside its point, not a label’s width away (${how})`, () => {
-      const view = new Viewport(600, 400);
-      view.resize(600, 400);
-      view.fit({ minX: 0, minY: 0, maxX: 1, maxY: 1 }, 0);
-      const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
-      painter.holdLabels();
+      const { view, painter } = figure(600, 400, 1);
       const point = [0.5, 0.5];
       const [x, y] = view.toScreen(point);
       const size = painter.theme.sizes.label;
@@ -37,10 +54,7 @@ describe('a point’s name moved from its first place', () => {
       expect(name.text).toBe('B');
       const box = glyphBox(name);
       expect(painter.ink.crossing(box)).toBeNull();
-      const gap = Math.hypot(
-        Math.max(box.x - x, 0, x - box.x - box.width),
-        Math.max(box.y - y, 0, y - box.y - box.height),
-      );
+      const gap = gapFrom(box, x, y);
       expect(gap).toBeLessThanOrEqual(size);
     });
 });
@@ -51,11 +65,7 @@ describe('a point’s name moved from its first place', () => {
 // whose it was. A spot the edge moves far is no spot beside the point.
 describe('a name the figure’s edge would carry away from its point', () => {
   it('stays beside it, or is tied to it by a leader', () => {
-    const view = new Viewport(800, 400);
-    view.resize(800, 400);
-    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
-    painter.holdLabels();
+    const { view, painter } = figure(800, 400, 2);
     const point = [0.75, 0.5];
     const [x, y] = view.toScreen(point);
     // Ink everywhere a label beside the point would stand, and no farther
@@ -67,10 +77,7 @@ describe('a name the figure’s edge would carry away from its point', () => {
     const [name] = painter.labels;
     expect(name.text).toBe('inflection: κ = 0');
     const box = glyphBox(name);
-    const gap = Math.hypot(
-      Math.max(box.x - x, 0, x - box.x - box.width),
-      Math.max(box.y - y, 0, y - box.y - box.height),
-    );
+    const gap = gapFrom(box, x, y);
     expect(name.leader || gap <= painter.theme.sizes.label).toBe(true);
   });
 });
@@ -80,12 +87,8 @@ describe('a name the figure’s edge would carry away from its point', () => {
 // the right of the dot and onto another point. A leader ends at the point.
 describe('a point’s name sent out on a leader', () => {
   it('is tied to the point it names, not to the place it was first put beside it', () => {
-    const view = new Viewport(800, 400);
-    view.resize(800, 400);
-    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
     const svg = new SvgContext();
-    const painter = new Painter(svg, view, makeTheme(false, true));
-    painter.holdLabels();
+    const { view, painter } = figure(800, 400, 2, svg);
     const point = [0.75, 0.5];
     const [x, y] = view.toScreen(point);
     for (let ly = 60; ly <= 340; ly += 8)
@@ -110,11 +113,7 @@ describe('a point’s name sent out on a leader', () => {
 // label's width to the right, 300 px from the dot, with nothing to say whose.
 describe('a point’s name shifted a label’s width away', () => {
   it('is tied to its point by a leader', () => {
-    const view = new Viewport(1200, 600);
-    view.resize(1200, 600);
-    view.fit({ minX: 0, minY: 0, maxX: 2, maxY: 1 }, 0);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
-    painter.holdLabels();
+    const { view, painter } = figure(1200, 600, 2);
     const point = [0.6, 0.5];
     const [x, y] = view.toScreen(point);
     const text = 'inflection, u = 0.50';
@@ -130,10 +129,7 @@ describe('a point’s name shifted a label’s width away', () => {
     const [name] = painter.labels;
     expect(name.text).toBe(text);
     const box = glyphBox(name);
-    const gap = Math.hypot(
-      Math.max(box.x - x, 0, x - box.x - box.width),
-      Math.max(box.y - y, 0, y - box.y - box.height),
-    );
+    const gap = gapFrom(box, x, y);
     expect(gap).toBeGreaterThan(painter.theme.sizes.label * 1.5);
     expect(name.leader).toBe(true);
   });
