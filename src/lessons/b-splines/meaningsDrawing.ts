@@ -69,7 +69,10 @@ export function drawMeanings(painter: Painter, m: MeaningsModel, info: DrawInfo)
   if (shown.has('meet')) {
     const meet = m.knotPoints.filter((k) => k.on !== null);
     for (const k of meet)
-      painter.ring(k.at, meetRingRadius(theme), { color: theme.accent, width: RING_WIDTH * theme.sizes.line });
+      painter.ring(k.at, meetRingRadius(theme), {
+        color: theme.accent,
+        width: RING_WIDTH * theme.sizes.line,
+      });
     if (meet.length === 0) {
       // None is one spot: how near the nearest pair comes.
       const { knot, point, distance } = nearestControl(m.knotPoints, points);
