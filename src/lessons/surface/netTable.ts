@@ -8,9 +8,12 @@ import type { SurfaceState } from './state';
 /** Largest coordinate typed into the table (the link accepts up to 1e6). */
 const LIMIT = 1e6;
 
+/** A cell's numbers as typed, split at commas, semicolons or spaces. */
+const tokens = (text: string): string[] => text.split(/[,;\s]+/).filter((part) => part !== '');
+
 /** "x, y, z" typed by hand → a point, or null if it is not three numbers. */
 export function parseTriple(text: string): Point | null {
-  const parts = text.split(/[,;\s]+/).filter((part) => part !== '');
+  const parts = tokens(text);
   if (parts.length !== 3) return null;
   const values = parts.map((part) => parseNumber(part.replace('−', '-')));
   if (values.some((value) => value === null || Math.abs(value) > LIMIT)) return null;
@@ -29,7 +32,7 @@ const tripleText = (p: readonly number[]) => p.map(shown).join(', ');
  * round x and y to the cell's three decimals.
  */
 export function keepShown(typed: Point, text: string, was: readonly number[]): Point {
-  const words = text.split(/[,;\s]+/).filter((part) => part !== '');
+  const words = tokens(text);
   return typed.map((value, d) => (words[d] === shown(was[d]) ? was[d] : value));
 }
 
