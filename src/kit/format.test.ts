@@ -10,6 +10,9 @@ import {
   texResidue,
   texPoint,
   texT,
+  texTogether,
+  together,
+  pointWords,
   trimmed,
   words,
 } from './format';
@@ -42,6 +45,22 @@ describe('format', () => {
     expect(filled({ shape: 'x = \\val + \\val', values: ['1.00', '2.50'] })).toBe(
       'x = 1.00 + 2.50',
     );
+  });
+});
+
+describe('together', () => {
+  it('writes exact coordinates as worked by hand, and rounded ones all to the same digits', () => {
+    // Exact: P(0.1) of the arch is (0.243 + 0.081 + 0.004, 0.486 + 0.054) = (0.328, 0.54).
+    expect(texTogether([0.243 + 0.081 + 0.004, 0.486 + 0.054], 4)).toBe('(0.328,\\ 0.54)');
+    expect(pointWords([42, 21.5])).toBe('(42, 21.5)');
+    // One coordinate rounded: the others say their precision (#19: "(−1.962, 2.569, 9)").
+    expect(pointWords([-1.96204, 2.5691, 9])).toBe('(−1.962, 2.569, 9.000)');
+    expect(pointWords([1 / 3, 1])).toBe('(0.333, 1.000)');
+    expect(together([0.75, 0.75, 1.125], 4)).toEqual(['0.75', '0.75', '1.125']);
+    expect(together([0.7313, 1 / 7], 4)).toEqual(['0.7313', '0.1429']);
+    // No negative zero, either way.
+    expect(pointWords([-0.00001, 2])).toBe('(0.000, 2.000)');
+    expect(pointWords([-0, 2])).toBe('(0, 2)');
   });
 });
 

@@ -21,8 +21,26 @@ export const trimmed = (value: number, digits: number) => String(Number(value.to
 /** A number in a caption: up to three decimals, trailing zeros dropped, a true minus sign. */
 export const words = (v: number) => trimmed(v, 3).replace('-', '−');
 
-/** A point in words: (2, −1.5). */
-export const pointWords = (p: readonly number[]) => `(${p.map(words).join(', ')})`;
+/**
+ * Numbers that are read together, as a point's coordinates are. Exact at
+ * `digits` decimals, each is written as a hand computation writes it: (0.5, 1),
+ * (42, 21.5). Once one of them is rounded, all are written to `digits`, so the
+ * zeros say how precise each is: (−1.962, 2.569, 9.000), not (−1.962, 2.569, 9).
+ */
+export function together(values: readonly number[], digits: number): string[] {
+  const rounded = values.some((v) => Math.abs(Number(v.toFixed(digits)) - v) > RESIDUE);
+  return values.map((v) => (rounded ? texNumber(v, digits) : trimmed(v, digits)));
+}
+
+/** A point in words, its coordinates written together: (2, −1.5), (0.333, 1.000). */
+export const pointWords = (p: readonly number[]) =>
+  `(${together(p, 3)
+    .map((text) => text.replace('-', '−'))
+    .join(', ')})`;
+
+/** A point in TeX to at most `digits` decimals, its coordinates written together. */
+export const texTogether = (p: readonly number[], digits: number) =>
+  `(${together(p, digits).join(',\\ ')})`;
 
 /** A number in a table cell of plain text: fixed `digits` decimals, a true minus sign, never "−0.0000". */
 export const fixed = (v: number, digits: number) => texNumber(v, digits).replace('-', '−');

@@ -1,4 +1,4 @@
-import { sub, texT, words } from '../../kit/format';
+import { sub, texT, texTogether, words } from '../../kit/format';
 import { repeat, script, step } from '../../kit/script';
 import type { Point } from '../../math';
 import type { DeCasteljauModel } from './model';
@@ -58,8 +58,8 @@ export function computedBy(n: number, index: number): [number, number][] {
 const name = (r: number, i: number) => `P_{${r},${i}}`;
 const nameWords = (r: number, i: number) => `P${sub(r)},${sub(i)}`;
 
-/** A point as a hand computation writes it: (0.5, 1), up to four decimals. */
-export const exactPoint = (p: readonly number[]) => `(${p.map(texT).join(',\\ ')})`;
+/** A point as a hand computation writes it: (0.5, 1), up to four decimals, written together. */
+export const exactPoint = (p: readonly number[]) => texTogether(p, 4);
 
 /** Line 4 for one point, with the numbers: P_{1,0} = 0.4·(0, 0) + 0.6·(1, 2) = (0.6, 1.2). */
 export function cutTex(levels: readonly Point[][], t: number, r: number, i: number): string {

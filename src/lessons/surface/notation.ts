@@ -1,4 +1,4 @@
-import { trimmed } from '../../kit/format';
+import { texTogether, trimmed } from '../../kit/format';
 import type { Continuity } from '../../math';
 import { texNumber } from '../../render/formula';
 import type { JoinReport } from './model';
@@ -7,9 +7,8 @@ import type { JoinReport } from './model';
 
 /** A parameter value with up to two decimals: 0.3, 0.65. */
 export const num = (value: number) => trimmed(value, 2);
-/** A point with up to three decimals, trailing zeros dropped: (0.9, 1.8, 0.895). */
-export const point = (p: readonly number[]) =>
-  `(${p.map((value) => trimmed(value, 3)).join(',\\ ')})`;
+/** A point with up to three decimals, one count of them: (0.900, 1.800, 0.895). */
+export const point = (p: readonly number[]) => texTogether(p, 3);
 /** Numbers as one row of a TeX matrix. */
 export const list = (values: readonly number[], digits = 4) =>
   values.map((value) => texNumber(value, digits)).join(' & ');

@@ -1,3 +1,4 @@
+import { together } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import { cross, dot } from '../../math';
 import { texNumber } from '../../render/formula';
@@ -14,8 +15,10 @@ type At = { state: SurfaceState; model: SurfaceModel };
 
 /** A height in a formula: three decimals. */
 const three = (value: number) => texNumber(value, 3);
-/** A number in a caption: three decimals, with a true minus sign. */
-const words = (value: number) => value.toFixed(3).replace('-', '−');
+/** Numbers of one formula, to four decimals, written together (kit/format). */
+const four = (...values: number[]) => together(values, 4);
+/** A height in a caption, as the step's formula writes it. */
+const words = (value: number) => four(value)[0].replace('-', '−');
 
 const pointFormula = ({ state, model }: At) => `${pointAt(state)} = ${point(model.point)}`;
 
@@ -91,7 +94,7 @@ export const saddleScript = script<SurfaceState, SurfaceModel, SaddleReveal>(
     ({ state, model }) =>
       `At P(${num(state.u)}, ${num(state.v)}) the height is ${words(model.point[2])}: up one way, down the other`,
     ({ state, model }) =>
-      `z = \\tfrac92\\,(${num(state.u)} - \\tfrac12)(${num(state.v)} - \\tfrac12) = ${texNumber(model.point[2], 4)}`,
+      `z = \\tfrac92\\,(${num(state.u)} - \\tfrac12)(${num(state.v)} - \\tfrac12) = ${four(model.point[2])[0]}`,
   ),
 );
 
@@ -122,7 +125,8 @@ export const bumpScript = script<SurfaceState, SurfaceModel, BumpReveal>(
       `At P(${num(state.u)}, ${num(state.v)}) it is ${words(model.point[2])} high, not 2`,
     ({ model }) => {
       const { a, b } = innerShares(model);
-      return `z = 2\\,\\bigl(f_1(u) + f_2(u)\\bigr)\\bigl(f_1(v) + f_2(v)\\bigr) = 2 \\cdot ${texNumber(a, 4)} \\cdot ${texNumber(b, 4)} = ${texNumber(model.point[2], 4)}`;
+      const [sa, sb, z] = four(a, b, model.point[2]);
+      return `z = 2\\,\\bigl(f_1(u) + f_2(u)\\bigr)\\bigl(f_1(v) + f_2(v)\\bigr) = 2 \\cdot ${sa} \\cdot ${sb} = ${z}`;
     },
   ),
   step(
@@ -130,7 +134,8 @@ export const bumpScript = script<SurfaceState, SurfaceModel, BumpReveal>(
     'Why: the four inner points share only part of the weight; the rest sits on the ground',
     ({ model }) => {
       const { a, b } = innerShares(model);
-      return `\\sum_{m,n\\in\\{1,2\\}} f_m(u)\\,f_n(v) = ${texNumber(a, 4)} \\cdot ${texNumber(b, 4)} = ${texNumber(a * b, 4)} < 1`;
+      const [sa, sb, product] = four(a, b, a * b);
+      return `\\sum_{m,n\\in\\{1,2\\}} f_m(u)\\,f_n(v) = ${sa} \\cdot ${sb} = ${product} < 1`;
     },
   ),
   step(

@@ -363,7 +363,7 @@ describe('each net worth seeing is a scene of its own idea', () => {
     const saddle = sceneState('saddle', { step: 5 });
     expect(derive(saddle).point[2]).toBeCloseTo(-0.09, 14);
     expect(lesson.steps!.describe(saddle, 5)).toBe(
-      'At P(0.3, 0.6) the height is −0.090: up one way, down the other',
+      'At P(0.3, 0.6) the height is −0.09: up one way, down the other',
     );
     const [c0, c1, , c3] = derive(saddle).columnPoints;
     const along = (p: readonly number[]) => p.map((v, d) => v - c0[d]);
@@ -373,7 +373,7 @@ describe('each net worth seeing is a scene of its own idea', () => {
     const bump = sceneState('bump', { step: 3 });
     expect(lesson.steps!.describe(bump, 3)).toBe('At P(0.5, 0.5) it is 1.125 high, not 2');
     expect(lesson.steps!.formula!(derive(bump), bump)).toMatch(
-      /= 2 \\cdot 0\.7500 \\cdot 0\.7500 = 1\.1250$/,
+      /= 2 \\cdot 0\.75 \\cdot 0\.75 = 1\.125$/,
     );
     // Wave: z = 4.5 u(1 − u)(1 − 2u) g(v), g = ½f0 + f1 + f2 + ½f3.
     const wave = derive(sceneState('wave', { step: 5 }));

@@ -1,4 +1,4 @@
-import { sub, texPoint, texT, words } from '../../../kit/format';
+import { pointWords, sub, texPoint, texT, words } from '../../../kit/format';
 import { script, step } from '../../../kit/script';
 import type { Point } from '../../../math';
 import { pointsCaption } from '../captions';
@@ -60,7 +60,7 @@ export const hodographScript = script<PropertiesState, Model, HodographReveal>(
   step(
     'derivative',
     ({ state, model }) =>
-      `At t = ${words(state.t)} the derivative curve gives P′(t) = (${model.derivative.map(words).join(', ')})`,
+      `At t = ${words(state.t)} the derivative curve gives P′(t) = ${pointWords(model.derivative)}`,
     ({ model }) => derivativeTex(model),
   ),
   step(
