@@ -169,6 +169,59 @@ describe('the values at a plot’s cursor, in a column', () => {
   });
 });
 
+describe('the values at a plot’s cursor, above the plot', () => {
+  /** A 1900 × 330 strip (presenter view's) whose fit keeps 110 px above the plot, with four peaks up to 3. */
+  function banded(width = 1900) {
+    const view = new Viewport(width, 330);
+    view.resize(width, 330);
+    const bounds = { minX: 0, minY: -1, maxX: 4, maxY: 3 };
+    view.fit(bounds, [60, 30 + 55], false);
+    view.panBy(0, 55);
+    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
+    painter.holdLabels();
+    for (const at of [0.5, 1.5, 2.5, 3.5]) painter.polyline(peak(at), { width: 3 });
+    return { view, bounds, painter };
+  }
+  const entries = ['L₀(t) = 0.12', 'L₁(t) = −0.36', 'L₂(t) = 0.81', 'L₃(t) = 0.43'].map((text) => ({
+    text,
+    color: '#000',
+  }));
+
+  it('stand in a row over the plot’s top, in order, over no curve', () => {
+    const { view, bounds, painter } = banded();
+    const plotTop = view.toScreen([0, bounds.maxY])[1];
+    valueColumn(painter, 2, bounds, plotTop, entries, true);
+    painter.placeLabels();
+    const boxes = entries.map(({ text }) => painter.labels.find((l) => l.text === text)!);
+    for (const box of boxes) {
+      const edge = box.frame ?? box;
+      expect(edge.y + edge.height, box.text).toBeLessThan(plotTop);
+      expect(edge.y, box.text).toBeGreaterThanOrEqual(0);
+      expect(painter.ink.crosses(edge), box.text).toBe(false);
+    }
+    // One row, left to right as given.
+    expect(new Set(boxes.map((b) => Math.round(b.y))).size).toBe(1);
+    expect(boxes.map((b) => b.x)).toEqual([...boxes.map((b) => b.x)].sort((a, b) => a - b));
+  });
+
+  it('wrap to rows where the plot is narrow, still above it; with no room, go in the plot', () => {
+    const narrow = banded(700);
+    const plotTop = narrow.view.toScreen([0, narrow.bounds.maxY])[1];
+    valueColumn(narrow.painter, 2, narrow.bounds, plotTop, entries, true);
+    narrow.painter.placeLabels();
+    const rows = new Set(narrow.painter.labels.map((b) => Math.round(b.y)));
+    expect(rows.size).toBe(2);
+    for (const box of narrow.painter.labels) expect(box.y + box.height).toBeLessThan(plotTop);
+    // No band: the plot's top is 30 px from the figure's, too little for a row.
+    const { view, bounds, painter } = strip(1900, 330);
+    const top = view.toScreen([0, bounds.maxY])[1];
+    valueColumn(painter, 2, bounds, top, entries, true);
+    painter.placeLabels();
+    expect(painter.labels).toHaveLength(4);
+    for (const box of painter.labels) expect(box.y + box.height / 2).toBeGreaterThan(top);
+  });
+});
+
 describe('the name of a line across a plot', () => {
   const lines = (painter: Painter, bounds: { minY: number; maxY: number }, xs: number[]) => {
     for (const x of xs)

@@ -47,20 +47,30 @@ export function plotYName(
   return top + small * 2.2;
 }
 
+/**
+ * The band (in key lines, FigureSpec.keyLines) a plot keeps above itself for
+ * its values at the cursor, written there by `valueColumn(…, above)`.
+ */
+export const VALUE_BAND = 1;
+
 /** Places tried for a plot's y-axis name along its top, from the axis to the far side. */
 const NAME_SPOTS = 9;
 
 /**
- * The values at a plot's cursor, as a boxed column in the top corner away
- * from the cursor: never written over their own curves.
+ * The values at a plot's cursor: `above` the plot in one row, where the
+ * figure keeps a band for them (FigureSpec.keyLines: `valueBand`) and the row
+ * fits; else as a boxed column in the top corner away from the cursor, never
+ * written over their own curves.
  */
 export function valueColumn(
   painter: Painter,
   cursor: number,
-  range: { minX: number; maxX: number },
+  range: { minX: number; maxX: number; maxY?: number },
   top: number,
   entries: readonly { text: string; color: string }[],
+  above = false,
 ): void {
+  if (above && valuesAbove(painter, range, entries)) return;
   const { view, theme } = painter;
   const size = theme.sizes.small;
   const [left] = view.toScreen([range.minX, 0]);
@@ -144,6 +154,54 @@ export function valueColumn(
       });
     });
   });
+}
+
+/**
+ * The values in rows above the plot, left to right from its left edge,
+ * where there is room for them whole between the figure's top and the
+ * plot's (the band a figure keeps with `keyLines`, or a tall figure's own
+ * margin): there no curve, peak or cursor line runs under them. In a presenter's short strip the values stood
+ * in a row inside the plot, boxed over the very peaks of L₁ and H₁ (#19).
+ * False, drawing nothing, where they do not fit.
+ */
+function valuesAbove(
+  painter: Painter,
+  range: { minX: number; maxX: number; maxY?: number },
+  entries: readonly { text: string; color: string }[],
+): boolean {
+  if (range.maxY === undefined) return false;
+  const { view, theme } = painter;
+  const size = theme.sizes.small;
+  const style = { size, bold: true, box: true, fixed: true } as const;
+  const pad = size * 0.35;
+  const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
+  const [far] = view.toScreen([range.maxX, range.maxY]);
+  const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
+  const gap = size * 1.2;
+  const start = Math.max(left, 0) + size * 0.4;
+  const end = Math.min(far, view.width) - size * 0.4;
+  // Left to right, wrapped to rows as a paragraph is, in the order given.
+  const spots: { x: number; row: number }[] = [];
+  let x = start;
+  let row = 0;
+  for (const entry of shown) {
+    const width = labelWidth(painter, entry.text, style);
+    if (x > start && x + width > end) [x, row] = [start, row + 1];
+    if (x + width > end) return false;
+    spots.push({ x, row });
+    x += width + gap;
+  }
+  // The last row's foot clear of the top tick's number, which stands half above the plot.
+  const line = size * 1.95;
+  const last = plotTop - size * 0.7 - pad - size * 0.65;
+  if (last - row * line - size * 0.65 - pad < 2) return false;
+  painter.placing(() => {
+    shown.forEach((entry, i) => {
+      const y = last - (row - spots[i].row) * line;
+      drawScreenLabel(painter, entry.text, spots[i].x, y, { ...style, color: entry.color });
+    });
+  });
+  return true;
 }
 
 /**

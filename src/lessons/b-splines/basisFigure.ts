@@ -121,7 +121,12 @@ function drawSegmentBases(painter: Painter, m: BSplineModel, i: number, info: Dr
   if (!info.thumbnail) valuesAt(painter, m.u, basisBounds(m), entries);
 }
 
-/** The values at the cursor, boxed in the plot's top corner away from it (off the curves they name). */
+/**
+ * The values at the cursor: above the plot where its margin has room for
+ * them (presenter view's tall plot), else boxed in the plot's top corner away
+ * from it (off the curves they name). No band is kept for them: on a phone it
+ * left the strip too short for its curves.
+ */
 function valuesAt(
   painter: Painter,
   at: number,
@@ -130,7 +135,7 @@ function valuesAt(
 ): void {
   const top = painter.view.toScreen([bounds.minX, bounds.maxY])[1];
   const sorted = [...entries].sort((a, b) => b.y - a.y);
-  valueColumn(painter, at, bounds, Math.max(top, 0), sorted);
+  valueColumn(painter, at, bounds, Math.max(top, 0), sorted, true);
 }
 
 function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {

@@ -2,7 +2,7 @@ import type { KitFigure } from '../../kit/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import { niceStep } from '../../render/projection';
-import { plotYName, valueColumn } from '../../kit/plotMarks';
+import { VALUE_BAND, plotYName, valueColumn } from '../../kit/plotMarks';
 import { seriesDash } from '../../kit/seriesColours';
 import { CLIP, type LagrangeModel, basisId } from './model';
 import type { LagrangeState } from './state';
@@ -15,6 +15,8 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
   title: 'The Lagrange basis polynomials L_k(t), with the cursor at t',
   kind: 'plot',
   bounds: (m) => m.plotBounds,
+  // The weights at t in a row above the plot, off the peaks of the L_k.
+  keyLines: (m) => (m.ts.length <= LABEL_UP_TO ? VALUE_BAND : 0),
   // L_k(t) depend on the parameter values t_k alone (by value: chord length
   // moves them with the points, equal spacing does not), and on t and the step.
   drawnFrom: (m) => [m.state.t, m.comparison !== null, m.shown.key, ...m.ts],
@@ -64,6 +66,7 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
           text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
           color: painter.color(k),
         })),
+        true,
       );
     if (!info.thumbnail && m.basisCut && count > 0) {
       const [x, y] = painter.view.toScreen([1, bounds.minY]);
