@@ -125,6 +125,9 @@ describe('quadratic model: the parametric quadratic', () => {
     expect(derive(state(LECTURE, 4, 0.5)).parametric.members.map((m) => m.mu)).toEqual([
       0.2, 0.35, 0.8,
     ]);
+    // Among them, the chosen μ1's curve says so, in words the projected picture
+    // can show (presenter view hides the slider).
+    expect(derive(state(LECTURE, 4, 0.5)).parametric.current?.text).toBe('chosen: μ_1 = 0.5');
     // P1 on P0: chord length and centripetal both give μ1 = 0, where there is no curve.
     const onP0 = derive(
       state(

@@ -155,9 +155,10 @@ export interface Parametric extends Omit<ParametricCurves, 'slider' | 'family' |
 export function shownCurves(curves: ParametricCurves, shown: Revealed<Reveal>): Parametric {
   const { slider, family: families, chosen, ...rest } = curves;
   const members = shown.is('family') ? families : shown.is('rules') ? chosen : [];
-  // Among other curves, the slider's says whose it is.
+  // Among other curves, the slider's says whose it is: the μ1 we chose, as
+  // the notes put it ("slider" named a control presenter view hides).
   const current = members.length
-    ? { ...slider, text: `slider: μ_1 = ${fmtMu(slider.mu)}` }
+    ? { ...slider, text: `chosen: μ_1 = ${fmtMu(slider.mu)}` }
     : slider;
   return { ...rest, current: shown.has('parametric') ? current : null, members };
 }
