@@ -134,3 +134,27 @@ describe('a point’s name shifted a label’s width away', () => {
     expect(name.leader).toBe(true);
   });
 });
+
+// joins on the projector: the plot's x-axis name "p̄ = i + p", pushed below
+// the zero line, stood with p̄'s bar on it: its glyph box was clear of the
+// line's stroke by less than a pixel, and the bar stands above the capitals.
+describe('a label pushed against a line', () => {
+  it('keeps a hair of room above its capitals, for the mark over one', () => {
+    const { view, painter } = figure(600, 400, 1);
+    const size = painter.theme.sizes.label;
+    const [x, y] = view.toScreen([0.5, 0.5]);
+    // A line 3 px wide whose lower edge is 0.4 px above the glyph box a label
+    // at (x, y) would have: the glyph box alone calls that clear.
+    const top = y - size * 0.65 + size * 1.3 * 0.18;
+    painter.polyline([view.toWorld([x - 200, top - 1.9]), view.toWorld([x + 400, top - 1.9])], {
+      width: 3,
+    });
+    painter.screenLabel('p̄ = i + p', x, y, { size });
+    painter.placeLabels();
+    const [name] = painter.labels;
+    // Moved: its letters clear of the line's stroke, by more than the hair below it.
+    const g = glyphBox(name);
+    const [lineTop, lineFoot] = [top - 1.9 - 1.5, top - 1.9 + 1.5];
+    expect(g.y + g.height < lineTop || g.y - lineFoot > size * 0.06).toBe(true);
+  });
+});

@@ -35,6 +35,17 @@ function drawLeader(painter: Painter, [ax, ay]: [number, number], box: Box, colo
   painter.ink.segment(ax, ay, bx, by, c.lineWidth / 2);
 }
 
+/**
+ * A label's letters with a hair of room above them, for a mark over a
+ * capital: a stroke that passed just clear of the glyph box still touched
+ * p̄'s bar, which stood on the κ plot's zero line (#19).
+ */
+const markRoom = (box: Box, size: number): Box => ({
+  ...box,
+  y: box.y - size * 0.06,
+  height: box.height + size * 0.06,
+});
+
 /** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
 export function drawScreenLabel(
   painter: Painter,
@@ -110,7 +121,7 @@ export function drawScreenLabel(
   const unmarked = (l: number, m: number) =>
     free(l, m) &&
     !painter.ink.crosses(
-      glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }),
+      markRoom(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }), size),
       boxed,
     ) &&
     (!boxed || open(l, m));
