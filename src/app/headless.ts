@@ -11,6 +11,7 @@ import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { drawHandles } from '../render/handles';
 import { keyBand } from '../kit/legend';
+import { valueBand } from '../kit/plotMarks';
 import type { FigureSpec, Handle } from './lesson';
 
 export interface HeadlessOptions {
@@ -77,9 +78,11 @@ export function fitFigure<S, M>(
   const [padX, padY] = (typeof padding === 'number' ? [padding, padding] : padding).map((pad) =>
     Math.max(pad, reach),
   );
+  const top =
+    band + (view instanceof Viewport ? valueBand(theme, figure.valueRows?.(model) ?? 0, padY) : 0);
   // Half the band at each end, then the subject down by half: all of it on top.
-  view.fit(figure.bounds(model), [padX, padY + band / 2], fitShape(figure));
-  if (band) (view as Viewport).panBy(0, band / 2);
+  view.fit(figure.bounds(model), [padX, padY + top / 2], fitShape(figure));
+  if (top) (view as Viewport).panBy(0, top / 2);
 }
 
 /** Draws one figure of the model, fitted to its bounds as the page fits it, with its handles. */

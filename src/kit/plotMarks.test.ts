@@ -4,7 +4,7 @@ import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { lineName, plotYName, valueColumn } from './plotMarks';
+import { lineName, plotYName, valueBand, valueColumn } from './plotMarks';
 
 /**
  * A 900 × 300 plot of [0, 1] × [0, 1.2] with its y name; `starts` draws a
@@ -112,11 +112,11 @@ describe('the values at a plot’s cursor', () => {
 });
 
 /** A 900 × 300 plot of [0, 4] × [−1, 3], its labels held as the page holds them. */
-function strip(width = 900, height = 300) {
+function strip(width = 900, height = 300, top = 30) {
   const view = new Viewport(width, height);
   view.resize(width, height);
   const bounds = { minX: 0, minY: -1, maxX: 4, maxY: 3 };
-  view.fit(bounds, [60, 30], false);
+  view.fit(bounds, [60, top], false);
   const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
   painter.holdLabels();
   return { view, bounds, painter };
@@ -170,14 +170,16 @@ describe('the values at a plot’s cursor, in a column', () => {
 });
 
 describe('the values at a plot’s cursor, above the plot', () => {
-  /** A 1900 × 330 strip (presenter view's) whose fit keeps 110 px above the plot, with four peaks up to 3. */
-  function banded(width = 1900) {
+  /** A 1900 × 330 strip (presenter view's) fitted as the page fits one with a row of values, four peaks up to 3. */
+  function banded(width = 1900, rows = 1) {
     const view = new Viewport(width, 330);
     view.resize(width, 330);
     const bounds = { minX: 0, minY: -1, maxX: 4, maxY: 3 };
-    view.fit(bounds, [60, 30 + 55], false);
-    view.panBy(0, 55);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, true));
+    const theme = makeTheme(false, true);
+    const band = valueBand(theme, rows, 30);
+    view.fit(bounds, [60, 30 + band / 2], false);
+    view.panBy(0, band / 2);
+    const painter = new Painter(new SvgContext(), view, theme);
     painter.holdLabels();
     for (const at of [0.5, 1.5, 2.5, 3.5]) painter.polyline(peak(at), { width: 3 });
     return { view, bounds, painter };
@@ -205,15 +207,15 @@ describe('the values at a plot’s cursor, above the plot', () => {
   });
 
   it('wrap to rows where the plot is narrow, still above it; with no room, go in the plot', () => {
-    const narrow = banded(700);
+    const narrow = banded(700, 2);
     const plotTop = narrow.view.toScreen([0, narrow.bounds.maxY])[1];
     valueColumn(narrow.painter, 2, narrow.bounds, plotTop, entries, true);
     narrow.painter.placeLabels();
     const rows = new Set(narrow.painter.labels.map((b) => Math.round(b.y)));
     expect(rows.size).toBe(2);
     for (const box of narrow.painter.labels) expect(box.y + box.height).toBeLessThan(plotTop);
-    // No band: the plot's top is 30 px from the figure's, too little for a row.
-    const { view, bounds, painter } = strip(1900, 330);
+    // No band: the plot's top 20 px from the figure's, too little for a row.
+    const { view, bounds, painter } = strip(1900, 330, 20);
     const top = view.toScreen([0, bounds.maxY])[1];
     valueColumn(painter, 2, bounds, top, entries, true);
     painter.placeLabels();

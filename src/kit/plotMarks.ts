@@ -4,6 +4,7 @@ import type { LabelStyle } from '../render/labels';
 import { drawScreenLabel } from '../render/labelPlacer';
 import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
+import type { Theme } from '../render/theme';
 
 // Marks a function plot writes beside its curves: the y-axis name, the
 // values at the cursor, boxed and kept off the curves they name, and the
@@ -47,19 +48,29 @@ export function plotYName(
   return top + small * 2.2;
 }
 
+/** A row of values above a plot: its pitch, and its foot's gap above the plot, at type `size`. */
+const ROW = { pitch: 1.95, foot: 0.25 } as const;
+
 /**
- * The band (in key lines, FigureSpec.keyLines) a plot keeps above itself for
- * its values at the cursor, written there by `valueColumn(…, above)`.
+ * The room above a plot that `rows` rows of values at its cursor take
+ * (FigureSpec.valueRows), beyond the `padding` the fit keeps there anyway:
+ * what `valueColumn(…, above)` needs to write them there.
  */
-export const VALUE_BAND = 1;
+export function valueBand(theme: Theme, rows: number, padding: number): number {
+  if (rows <= 0) return 0;
+  const size = theme.sizes.small;
+  // The foot's gap, a box (its letters and padding), the rows above it, 2 px from the edge.
+  const room = size * (ROW.foot + 1.3 + 0.7) + (rows - 1) * size * ROW.pitch + 2;
+  return Math.max(0, Math.ceil(room - padding));
+}
 
 /** Places tried for a plot's y-axis name along its top, from the axis to the far side. */
 const NAME_SPOTS = 9;
 
 /**
- * The values at a plot's cursor: `above` the plot in one row, where the
- * figure keeps a band for them (FigureSpec.keyLines: `valueBand`) and the row
- * fits; else as a boxed column in the top corner away from the cursor, never
+ * The values at a plot's cursor: `above` the plot in rows, where the
+ * figure keeps a band for them (FigureSpec.valueRows) or its margin is tall
+ * enough, and they fit; else as a boxed column in the top corner away from the cursor, never
  * written over their own curves.
  */
 export function valueColumn(
@@ -159,7 +170,7 @@ export function valueColumn(
 /**
  * The values in rows above the plot, left to right from its left edge,
  * where there is room for them whole between the figure's top and the
- * plot's (the band a figure keeps with `keyLines`, or a tall figure's own
+ * plot's (the band a figure keeps with `valueRows`, or a tall figure's own
  * margin): there no curve, peak or cursor line runs under them. In a presenter's short strip the values stood
  * in a row inside the plot, boxed over the very peaks of L₁ and H₁ (#19).
  * False, drawing nothing, where they do not fit.
@@ -191,9 +202,10 @@ function valuesAbove(
     spots.push({ x, row });
     x += width + gap;
   }
-  // The last row's foot clear of the top tick's number, which stands half above the plot.
-  const line = size * 1.95;
-  const last = plotTop - size * 0.7 - pad - size * 0.65;
+  // The last row's foot just above the plot (the top tick's number, half
+  // above it, stands left of the axis, where the rows do not reach).
+  const line = size * ROW.pitch;
+  const last = plotTop - size * ROW.foot - pad - size * 0.65;
   if (last - row * line - size * 0.65 - pad < 2) return false;
   painter.placing(() => {
     shown.forEach((entry, i) => {

@@ -4,7 +4,7 @@ import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { KitFigure } from '../../kit/lesson';
 import type { Revealed } from '../../kit/script';
-import { VALUE_BAND, plotYName, valueColumn } from '../../kit/plotMarks';
+import { plotYName, valueColumn } from '../../kit/plotMarks';
 import type { HermiteModel } from './model';
 import type { Reveal } from './script';
 import type { HermiteState } from './state';
@@ -36,7 +36,7 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
   bounds: () => BOUNDS,
   // H0 … H3 at μ in a row above the plot, off the curves' peaks; kept in
   // every step, so the plot keeps its size as they appear.
-  keyLines: () => VALUE_BAND,
+  valueRows: () => 1,
   // H0 … H3 and their values at μ: the points and gradients do not change them.
   drawnFrom: (m) => [m.state.mu, m.shown.key],
   draw(painter, m, info) {

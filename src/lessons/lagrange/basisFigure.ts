@@ -2,7 +2,7 @@ import type { KitFigure } from '../../kit/lesson';
 import { basisValuesAt } from '../../math';
 import { texNumber } from '../../render/formula';
 import { niceStep } from '../../render/projection';
-import { VALUE_BAND, plotYName, valueColumn } from '../../kit/plotMarks';
+import { plotYName, valueColumn } from '../../kit/plotMarks';
 import { seriesDash } from '../../kit/seriesColours';
 import { CLIP, type LagrangeModel, basisId } from './model';
 import type { LagrangeState } from './state';
@@ -16,7 +16,7 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
   kind: 'plot',
   bounds: (m) => m.plotBounds,
   // The weights at t in a row above the plot, off the peaks of the L_k.
-  keyLines: (m) => (m.ts.length <= LABEL_UP_TO ? VALUE_BAND : 0),
+  valueRows: (m) => (m.ts.length <= LABEL_UP_TO ? 1 : 0),
   // L_k(t) depend on the parameter values t_k alone (by value: chord length
   // moves them with the points, equal spacing does not), and on t and the step.
   drawnFrom: (m) => [m.state.t, m.comparison !== null, m.shown.key, ...m.ts],
