@@ -67,3 +67,36 @@ describe('a figure whose marks reach beyond its subject', () => {
     }
   });
 });
+
+describe('a plot fitted with rows of values above it', () => {
+  const plot = (rows: number): FigureSpec<null, null> => ({
+    id: 'p',
+    title: 'p',
+    kind: 'plot',
+    bounds: () => bounds,
+    draw: () => {},
+    valueRows: () => rows,
+  });
+  const fitted = (height: number, rows: number) => {
+    const view = new Viewport(900, height);
+    view.resize(900, height);
+    fitFigure(view, plot(rows), null, makeTheme(false, true), 30);
+    const [, top] = view.toScreen([0, bounds.maxY]);
+    const [, foot] = view.toScreen([0, bounds.minY]);
+    return { top, foot };
+  };
+
+  it('keeps their room over the plot: two rows of 28 px type, by hand', () => {
+    // Two rows: the foot's gap 0.25, a box 1.3 + 0.7 and a row's pitch 1.95,
+    // at 28 px, and 2 px: 119.6 px, of which the padding gives 30.
+    const { top, foot } = fitted(500, 2);
+    expect(top).toBeGreaterThanOrEqual(Math.ceil(119.6 - 30) + 30 - 1e-9);
+    expect(foot).toBeCloseTo(500 - 30, 6);
+  });
+
+  it('keeps none on a strip it would take more than a quarter of (a phone’s)', () => {
+    const { top, foot } = fitted(120, 2);
+    expect(top).toBeCloseTo(30, 6);
+    expect(foot).toBeCloseTo(120 - 30, 6);
+  });
+});

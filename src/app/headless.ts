@@ -54,6 +54,9 @@ export function fitPadding(
   return [Math.min(room, 0.12 * width), Math.min(room, 0.12 * Math.min(width, height))];
 }
 
+/** At most this share of a plot's height is kept above it for its values (FigureSpec.valueRows). */
+const VALUES_SHARE = 0.25;
+
 /** The band a figure's heading takes at its top: one line of label type and its margin above. */
 export const headlineBand = (theme: Theme): number => theme.sizes.label * 1.9;
 
@@ -78,8 +81,11 @@ export function fitFigure<S, M>(
   const [padX, padY] = (typeof padding === 'number' ? [padding, padding] : padding).map((pad) =>
     Math.max(pad, reach),
   );
-  const top =
-    band + (view instanceof Viewport ? valueBand(theme, figure.valueRows?.(model) ?? 0, padY) : 0);
+  // The values' room above a plot, where it leaves the plot most of its
+  // height (a phone's 50 px strip keeps all of it for its curves).
+  const values =
+    view instanceof Viewport ? valueBand(theme, figure.valueRows?.(model) ?? 0, padY) : 0;
+  const top = band + (values <= view.height * VALUES_SHARE ? values : 0);
   // Half the band at each end, then the subject down by half: all of it on top.
   view.fit(figure.bounds(model), [padX, padY + top / 2], fitShape(figure));
   if (top) (view as Viewport).panBy(0, top / 2);

@@ -122,10 +122,9 @@ function drawSegmentBases(painter: Painter, m: BSplineModel, i: number, info: Dr
 }
 
 /**
- * The values at the cursor: above the plot where its margin has room for
- * them (presenter view's tall plot), else boxed in the plot's top corner away
- * from it (off the curves they name). No band is kept for them: on a phone it
- * left the strip too short for its curves.
+ * The values at the cursor: above the plot, in the room the fit keeps there
+ * (valueRows), else boxed in the plot's top corner away from it (off the
+ * curves they name).
  */
 function valuesAt(
   painter: Painter,
@@ -207,6 +206,8 @@ export const basisFigure: KitFigure<BSplineState, BSplineModel> = {
   kind: 'plot',
   weight: 1,
   bounds: basisBounds,
+  // The four values at the cursor above the plot, two by two, off the basis' peaks.
+  valueRows: () => 2,
   draw: drawBasis,
   drawnFrom: drawnFromAllButPoints,
   handles: (m) => [
