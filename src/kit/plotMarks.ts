@@ -68,10 +68,10 @@ export function valueBand(theme: Theme, rows: number, padding: number): number {
 const NAME_SPOTS = 9;
 
 /**
- * The values at a plot's cursor: `above` the plot in rows, where the
- * figure keeps a band for them (FigureSpec.valueRows) or its margin is tall
- * enough, and they fit; else as a boxed column in the top corner away from the cursor, never
- * written over their own curves.
+ * The values at a plot's cursor: `above` the plot in rows, where the figure
+ * keeps room for them (FigureSpec.valueRows) or its margin is tall enough,
+ * and they fit; else as a boxed column in the top corner away from the
+ * cursor, never written over their own curves.
  */
 export function valueColumn(
   painter: Painter,
@@ -170,10 +170,10 @@ export function valueColumn(
 /**
  * The values in rows above the plot, left to right from its left edge,
  * where there is room for them whole between the figure's top and the
- * plot's (the band a figure keeps with `valueRows`, or a tall figure's own
- * margin): there no curve, peak or cursor line runs under them. In a presenter's short strip the values stood
- * in a row inside the plot, boxed over the very peaks of L₁ and H₁ (#19).
- * False, drawing nothing, where they do not fit.
+ * plot's (the room a figure keeps with `valueRows`, or a tall figure's own
+ * margin): there no curve, peak or cursor line runs under them. In presenter
+ * view's short strips they stood in a row inside the plot, boxed over the
+ * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not fit.
  */
 function valuesAbove(
   painter: Painter,
