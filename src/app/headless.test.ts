@@ -70,11 +70,8 @@ describe('a figure whose marks reach beyond its subject', () => {
 
 describe('a plot fitted with rows of values above it', () => {
   const plot = (rows: number): FigureSpec<null, null> => ({
-    id: 'p',
-    title: 'p',
+    ...figure(false),
     kind: 'plot',
-    bounds: () => bounds,
-    draw: () => {},
     valueRows: () => rows,
   });
   const fitted = (height: number, rows: number) => {
