@@ -7,7 +7,7 @@ import type { JoinReport } from './model';
 
 /** A parameter value with up to two decimals: 0.3, 0.65. */
 export const num = (value: number) => trimmed(value, 2);
-/** A point with up to three decimals, one count of them: (0.900, 1.800, 0.895). */
+/** A point to three decimals, written together (kit/format): (0.9, 1.8, 0.895), (1.962, 2.569, 9.000). */
 export const point = (p: readonly number[]) => texTogether(p, 3);
 /** Numbers as one row of a TeX matrix. */
 export const list = (values: readonly number[], digits = 4) =>
