@@ -4,7 +4,7 @@
  * step so the figure keeps one size as the clicker steps (#19).
  */
 import katex from 'katex';
-import { markForFit, fitToWidth, contentWidth } from '../render/fit';
+import { markForFit, fitToWidth, contentWidth, refitAll } from '../render/fit';
 import { LiveFormula, filled } from '../render/formula';
 import { typesetSoon } from '../render/typesetBudget';
 import { sayTex } from '../render/notation';
@@ -118,10 +118,8 @@ export class CaptionBox {
     if (step.formula) {
       const tex = typeof step.formula === 'string' ? step.formula : filled(step.formula);
       katex.render(sayTex(tex), math, { throwOnError: false, displayMode: true, strict: false });
-      markForFit(math);
-      fitToWidth(twin);
     }
-    arrange(twin, box);
+    arrange(twin, box, math);
     const height = twin.getBoundingClientRect().height;
     // Out of the page between measurements: no stale copy of a step's words
     // for a reader, a search or a test to find beside the caption.
@@ -151,11 +149,16 @@ export class CaptionBox {
   }
 
   private arrange(): void {
-    // At the new formula's own size: a wide formula before it may have left
-    // it shrunk to fit, until the next frame's fit.
-    markForFit(this.formula.element);
-    fitToWidth(this.element);
-    arrange(this.element, this.formulaBox);
+    arrange(this.element, this.formulaBox, this.formula.element);
+  }
+
+  /**
+   * Fitted and arranged again (the formula's fonts arrived: its widths, and
+   * the column a formula beside the words was given, were measured before them).
+   */
+  refit(): void {
+    refitAll(this.element);
+    this.arrange();
   }
 
   destroy(): void {
@@ -173,9 +176,16 @@ export class CaptionBox {
  * caption and its measuring twin, whose formulas can differ by a pixel or two,
  * choose alike.)
  */
-function arrange(caption: HTMLElement, formulaBox: HTMLElement): void {
+function arrange(caption: HTMLElement, formulaBox: HTMLElement, formula: HTMLElement): void {
   caption.classList.remove('beside');
   formulaBox.style.minWidth = '';
+  // Fitted under the words, at the caption's whole width: at its own size,
+  // not at what a narrower column before it (a formula beside the words, a
+  // wide formula before it) left it shrunk to.
+  if (!formulaBox.hidden) {
+    markForFit(formula);
+    fitToWidth(caption);
+  }
   if (formulaBox.hidden || !caption.getClientRects().length) return;
   const words = caption.querySelector<HTMLElement>('.caption-text')!;
   const line = parseFloat(getComputedStyle(words).lineHeight) || 40;

@@ -5,7 +5,6 @@
  * buttons are `lessonTools.ts`.
  */
 import { presenting } from './settings';
-import { refitAll } from '../render/fit';
 import { holdUnseenWhilePressed } from '../render/unseen';
 import type { Theme } from '../render/theme';
 import { ParameterControl } from './parameterControl';
@@ -217,7 +216,7 @@ export class LessonPage<S, M> {
 
   private readonly fontsLoaded = (): void => {
     this.panel.refit();
-    refitAll(this.presenter.caption);
+    this.presenter.captionBox.refit();
     this.frame.fitSoon();
   };
 

@@ -1,12 +1,14 @@
 /**
  * Fitting wide content to a narrow panel: a matrix, a long expansion or a
- * table is shrunk (down to half size, and never under 12 px) so it is seen
- * whole in the side panel, and on a projector, where everything is larger,
+ * table is shrunk (down to half size, and never with any of its text, a
+ * formula's subscripts included, under the view's floor: 12 px, or 28 px in
+ * presenter view) so it is seen whole in the side panel, and on a projector,
  * instead of being cut at the panel's edge. A formula still too wide at its
  * smallest is set on several lines, broken after an = or a + as TeX breaks a
  * formula in running text, at full size or as large as its widest piece
- * allows (never under 12 px); only a piece wider than the box at 12 px (a
- * matrix) scrolls. (Each marked formula's pieces are read twice, for its
+ * allows. Only when neither fits does a projector's formula go under its
+ * floor (seen whole, down to 12 px: no one scrolls a projected caption);
+ * wider still, it scrolls (chooseFit). (Each marked formula's pieces are read twice, for its
  * width and for its lines: one loop would do.) Elements are marked when their content
  * changes, and only marked ones are measured: all are read, then all are
  * written, so the browser lays the page out once per pass, not once per
@@ -17,7 +19,12 @@ import { freeAllBoxes } from './liveBoxes';
 
 /** Smallest size content is shrunk to before it scrolls instead. */
 const SMALLEST = 0.5;
-/** Nor is any text shrunk below this many CSS pixels (a laptop's panel, a phone): it scrolls. */
+/**
+ * Nor is any of its text, a formula's subscripts included, shrunk below this
+ * many CSS pixels (a laptop's panel, a phone), or below the view's own floor,
+ * `--fit-floor` (presenter view's is 28 px, the back row's smallest): it
+ * takes lines or scrolls instead.
+ */
 const SMALLEST_PX = 12;
 
 /** Marks `el` to be fitted at the next fitToWidth. */
@@ -44,25 +51,28 @@ export function fitToWidth(root: ParentNode): void {
       width: el.classList.contains(WRAPS) ? pieces.sum : contentWidth(el),
       widest: pieces.widest,
       font: smallestFont(el),
+      floor: fitFloor(el),
       indent: hangingIndent(el),
     };
   });
   pending.forEach((el, i) => {
-    const { box, scroll, width, widest, font, indent } = sizes[i];
+    const { box, scroll, width, widest, font, floor, indent } = sizes[i];
     // Not laid out yet (hidden, or not in the page): try again next time.
     if (box <= 0) return;
     el.dataset.fit = 'done';
     const scale = Number(el.dataset.scale ?? '1');
     const wrapped = el.classList.contains(WRAPS);
     const natural = Math.max(width, scroll > box + 1 && !wrapped ? scroll : 0) / scale;
-    const smallest = Math.min(1, Math.max(SMALLEST, SMALLEST_PX / (font / scale)));
-    let fitted = natural > box + 1 ? Math.max(smallest, (box / natural) * 0.98) : 1;
-    // Too wide at the smallest size: a formula that can break takes lines, at
-    // full size if its widest piece and the further lines' indent fit the box.
+    // The scales at which its smallest text is at the view's floor, and at 12 px.
+    const at = (px: number) => Math.min(1, Math.max(SMALLEST, px / (font / scale)));
     const line = (widest + indent) / scale;
-    const wrappedScale = line > 0 ? Math.min(1, (box / line) * 0.98) : 0;
-    const wraps = natural * fitted > box + 1 && widest > 0 && wrappedScale >= smallest;
-    if (wraps) fitted = wrappedScale > 0.995 ? 1 : wrappedScale;
+    const { scale: fitted, wraps } = chooseFit({
+      box,
+      natural,
+      line: widest > 0 ? line : 0,
+      readable: at(floor),
+      least: at(SMALLEST_PX),
+    });
     if (wraps !== wrapped) el.classList.toggle(WRAPS, wraps);
     // Still too wide: it scrolls, so the keyboard must reach it.
     const scrolls = wraps ? line * fitted > box + 1 : natural * fitted > box + 1;
@@ -74,6 +84,38 @@ export function fitToWidth(root: ParentNode): void {
     el.dataset.scale = fitted.toFixed(3);
     el.style.fontSize = fitted === 1 ? '' : `${fitted.toFixed(3)}em`;
   });
+}
+
+/** What fitToWidth measured of one element, in CSS pixels at its natural size, and its floors as scales. */
+export interface FitMeasure {
+  /** The box's width. */
+  box: number;
+  /** The content's width on one line. */
+  natural: number;
+  /** Its widest line when set on lines (widest piece and indent), 0 when it cannot break. */
+  line: number;
+  /** The scale that sets its smallest text at the view's floor (28 px in presenter view). */
+  readable: number;
+  /** The scale that sets its smallest text at 12 px: under it, it scrolls. */
+  least: number;
+}
+
+/**
+ * The scale and the lines for a measured element: its natural size when it
+ * fits; else shrunk to fit, down to the view's floor; else on lines at the
+ * floor or larger; else, rather than scrolled out of sight (a formula that
+ * cannot break, on a narrow projector), shrunk under the view's floor or set
+ * on lines, whichever is larger, down to 12 px; only then does it scroll.
+ */
+export function chooseFit(m: FitMeasure): { scale: number; wraps: boolean } {
+  const oneLine = m.natural > m.box + 1 ? (m.box / m.natural) * 0.98 : 1;
+  const onLines = m.line > 0 ? Math.min(1, (m.box / m.line) * 0.98) : 0;
+  // At full size when lines are as good as (a hair's breadth from it).
+  const lines = { scale: onLines > 0.995 ? 1 : onLines, wraps: true };
+  if (oneLine >= m.readable) return { scale: oneLine, wraps: false };
+  if (onLines >= m.readable) return lines;
+  if (onLines >= m.least && onLines >= oneLine) return lines;
+  return { scale: Math.max(m.least, oneLine), wraps: false };
 }
 
 /**
@@ -129,13 +171,23 @@ function hangingIndent(el: HTMLElement): number {
 }
 
 /**
- * The element's type size, or its table cells' where they are set smaller
- * (a data table is 0.85 of its box's size): the size the 12 px floor is for.
+ * The smallest type in the element: its own size, its table cells' where they
+ * are set smaller (a data table is 0.85 of its box's size), or a formula's
+ * smallest script (a subscript is 0.7 of its formula's size, and KaTeX sets
+ * every change of size with its class `sizing`): the size the floor is for.
  */
 function smallestFont(el: HTMLElement): number {
-  const own = parseFloat(getComputedStyle(el).fontSize) || 16;
+  let smallest = parseFloat(getComputedStyle(el).fontSize) || 16;
   const cell = el.querySelector('td, th');
-  return cell ? Math.min(own, parseFloat(getComputedStyle(cell).fontSize) || own) : own;
+  if (cell) smallest = Math.min(smallest, parseFloat(getComputedStyle(cell).fontSize) || smallest);
+  for (const script of el.querySelectorAll('.katex-html .sizing'))
+    smallest = Math.min(smallest, parseFloat(getComputedStyle(script).fontSize) || smallest);
+  return smallest;
+}
+
+/** The view's floor for shrunk text, in CSS pixels: its `--fit-floor`, or 12 px. */
+function fitFloor(el: HTMLElement): number {
+  return parseFloat(getComputedStyle(el).getPropertyValue('--fit-floor')) || SMALLEST_PX;
 }
 
 /** Marks everything under `root` that was ever fitted, and every live number's box (the panel, the fonts or the type size changed). */

@@ -117,6 +117,30 @@ export async function clickerStepsWhateverHasFocus(page: Page, slug: string): Pr
 }
 
 /**
+ * The texts on screen set under `px` CSS pixels, with their sizes: every text
+ * node a reader sees (a formula's subscripts included; not KaTeX's MathML
+ * copy, nor zero-width struts, nor hidden text), read from its computed size.
+ */
+export function textsUnder(page: Page, px: number): Promise<string[]> {
+  return page.evaluate((px) => {
+    const found: string[] = [];
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+      const el = node.parentElement;
+      // Zero-width characters (KaTeX's struts) are not text anyone reads.
+      if (!el || !/[^\s\u200b-\u200f\u2060\ufeff]/.test(node.textContent ?? '')) continue;
+      if (el.closest('.katex-mathml, .visually-hidden, [hidden], dialog:not([open])')) continue;
+      const box = el.getBoundingClientRect();
+      if (box.width === 0 || box.height === 0 || el.checkVisibility?.() === false) continue;
+      const size = parseFloat(getComputedStyle(el).fontSize);
+      if (size < px)
+        found.push(`${size.toFixed(1)}px “${(node.textContent ?? '').trim().slice(0, 30)}”`);
+    }
+    return found;
+  }, px);
+}
+
+/**
  * Presenter view at 1920×1080 (already on) is legible from the back row: the
  * caption on screen, no text under 28 px; B blanks the screen and a clicker
  * key brings it back without stepping.
@@ -140,22 +164,7 @@ export async function legibleFromTheBackRow(page: Page, slug: string): Promise<v
   const caption = page.locator('[data-caption]');
   await expect(caption).toBeInViewport({ ratio: 1 });
   await expect(caption).not.toHaveText('');
-  const small = await page.evaluate(() => {
-    const found: string[] = [];
-    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
-    for (let node = walker.nextNode(); node; node = walker.nextNode()) {
-      const el = node.parentElement;
-      // Zero-width characters (KaTeX's struts) are not text anyone reads.
-      if (!el || !/[^\s\u200b-\u200f\u2060\ufeff]/.test(node.textContent ?? '')) continue;
-      if (el.closest('.katex-mathml, .visually-hidden, [hidden], dialog:not([open])')) continue;
-      const box = el.getBoundingClientRect();
-      if (box.width === 0 || box.height === 0 || el.checkVisibility?.() === false) continue;
-      const size = parseFloat(getComputedStyle(el).fontSize);
-      if (size < 28)
-        found.push(`${size.toFixed(1)}px “${(node.textContent ?? '').trim().slice(0, 30)}”`);
-    }
-    return found;
-  });
+  const small = await textsUnder(page, 28);
   expect(small, 'texts under 28 px').toEqual([]);
   await snapshot(page, `presenter-${slug}`);
 

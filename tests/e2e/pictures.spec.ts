@@ -22,7 +22,7 @@
  */
 import type { Page } from '@playwright/test';
 import { exportedDrawing, tickProblems } from './axes';
-import { legibleFromTheBackRow } from './clicker';
+import { legibleFromTheBackRow, textsUnder } from './clicker';
 import {
   expect,
   figureSizes,
@@ -126,6 +126,10 @@ for (const slug of slugs) {
               await settled(page);
             }
             sizes.push(await figureSizes(page));
+            // No text on the room's screen under 28 px at any step: a
+            // formula's subscripts, or a formula shrunk to fit the caption.
+            for (const small of await textsUnder(page, 28))
+              problems.push(`${id}: step ${k} sets ${small}`);
             if (await captionOverReserve(page))
               problems.push(`${id}: step ${k}'s caption is taller than its reserve`);
           }

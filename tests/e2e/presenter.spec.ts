@@ -7,6 +7,7 @@
  * the pages they open anyway.
  */
 import type { Page } from '@playwright/test';
+import { textsUnder } from './clicker';
 import { expect, hashState, settled, test, linkState } from './fixtures';
 
 test('undo is for edits: it restores the point and keeps the step', async ({ page }) => {
@@ -230,4 +231,22 @@ test.describe('at 1920 × 1080', () => {
     b = await boxes(page);
     expect(b.basis.y).toBeGreaterThanOrEqual(b.patches.y + b.patches.h - 1);
   });
+});
+
+test('on a 1024×768 projector a caption formula too wide for the screen takes lines, none of it under 28 px', async ({
+  page,
+}) => {
+  // The four Hermite terms and their sum at μ = 0.3: shrunk to fit 992 px,
+  // its indices came out at 17 px.
+  await page.setViewportSize({ width: 1024, height: 768 });
+  await page.goto('./#/blending?scene=hermite&p=0,0;1,2;3,2;4,0&mu=0.3&b=hermite&step=7');
+  await settled(page);
+  await page.keyboard.press('p');
+  await settled(page);
+  const formula = page.locator('[data-caption] .caption-formula [data-fit]');
+  await expect(formula).toHaveClass(/wraps/);
+  expect(await textsUnder(page, 28)).toEqual([]);
+  // Seen whole: set on lines, not scrolled in its box.
+  const scrolled = await formula.evaluate((el) => el.scrollWidth - el.clientWidth);
+  expect(scrolled).toBeLessThanOrEqual(1);
 });
