@@ -60,8 +60,8 @@ function rowCaption(m: BSplineModel, r: number): string {
   if (r === 0) return 'Row 0 of Cox–de Boor: N(i,0) = 1 on [u(i), u(i+1)), else 0';
   if (r === p && piecesTex(m, r) !== null)
     return p === 3
-      ? 'Row 3 on equally spaced knots: its four pieces are the uniform cubic bases B0(t) … B3(t)'
-      : `Row ${p} on equally spaced knots: its ${p + 1} pieces are the uniform bases of degree ${p}`;
+      ? 'Row 3 on equal knots: its pieces are the cubic bases B0(t) … B3(t)'
+      : `Row ${p} on equal knots: its ${p + 1} pieces are the uniform bases of degree ${p}`;
   return `Row ${r}: each N(i,${r}) blends N(i,${r - 1}) and N(i+1,${r - 1})`;
 }
 

@@ -70,7 +70,7 @@ export const projectiveScript = script<BSplineState, ProjectiveModel, Projective
     ({ model: { projective: pr } }) =>
       pr.error
         ? null
-        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert P_{HP,\\,w'}(u) - H(P(u)) \\rvert = ${texResidue(pr.deviation)}`,
+        : `w'_i = w_i\\,(h_{20}x_i + h_{21}y_i + h_{22}):\\ \\max_u \\lvert P_{HP}(u) - H(P(u)) \\rvert = ${texResidue(pr.deviation)}`,
   ),
   step(
     'oldWeights',
@@ -78,6 +78,6 @@ export const projectiveScript = script<BSplineState, ProjectiveModel, Projective
     ({ model: { projective: pr } }) =>
       pr.error
         ? null
-        : `\\text{old weights: } \\max_u \\lvert P_{HP,\\,w}(u) - H(P(u)) \\rvert = ${n3(pr.plainDeviation)}`,
+        : `\\text{old weights } w_i:\\ \\max_u \\lvert P_{HP}(u) - H(P(u)) \\rvert = ${n3(pr.plainDeviation)}`,
   ),
 );

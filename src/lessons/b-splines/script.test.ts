@@ -453,7 +453,7 @@ describe('the uniform cubic bases, written out and derived', () => {
     }
     const last = { ...s, step: 5 };
     expect(lesson.steps!.describe(last, 5)).toBe(
-      'Row 3 on equally spaced knots: its four pieces are the uniform cubic bases B₀(t) … B₃(t)',
+      'Row 3 on equal knots: its pieces are the cubic bases B₀(t) … B₃(t)',
     );
     const tex = lesson.steps!.formula!(derive(last), last)!;
     expect(tex).toContain('N_{1,3} &= \\tfrac{1}{6}(1 - t)^{3} = 0.011');

@@ -208,7 +208,7 @@ describe('the scripts of the six parts', () => {
     expect(steps[3]).toMatchObject({
       caption: 'At each joint, the two tangent vectors: their angle decides G¹, their lengths C¹',
       formula:
-        "P_0'(1) = (3.00,\\ -1.50),\\ P_1'(0) = (3.00,\\ -1.50),\\ \\angle = 0.0^\\circ,\\ \\tfrac{|P_1'|}{|P_0'|} = 1.000",
+        "P_0'(1) = (3.00,\\ -1.50),\\ P_1'(0) = (3.00,\\ -1.50),\\ \\angle = 0.0^\\circ,\\ |P_1'|/|P_0'| = 1.000",
     });
     expect(steps[4].formula).toBe(
       "P_0''(1) = (0.00,\\ -6.00),\\ P_1''(0) = (0.00,\\ -6.00),\\ \\kappa = -0.477 \\mid -0.477",

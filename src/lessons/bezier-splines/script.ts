@@ -132,9 +132,8 @@ export const inspector = script<State, Model, InspectorReveal>(
       const j = model.joints[0];
       if (!j) return null;
       const velocities = `P_0'(1) = ${pt(j.leftVelocity)},\\ P_1'(0) = ${pt(j.rightVelocity)}`;
-      if (j.degenerate)
-        return `${velocities}:\\ \\angle,\\ \\tfrac{|P_1'|}{|P_0'|}\\ ${undefinedHere}`;
-      return `${velocities},\\ \\angle = ${num(j.angle, 1)}^\\circ,\\ \\tfrac{|P_1'|}{|P_0'|} = ${num(j.lengthRatio, 3)}`;
+      if (j.degenerate) return `${velocities}:\\ \\angle,\\ |P_1'|/|P_0'|\\ ${undefinedHere}`;
+      return `${velocities},\\ \\angle = ${num(j.angle, 1)}^\\circ,\\ |P_1'|/|P_0'| = ${num(j.lengthRatio, 3)}`;
     },
   ),
   step(

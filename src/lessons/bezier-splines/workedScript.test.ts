@@ -79,7 +79,7 @@ describe('the worked example: computeSplineC1 and computeSplineC2 by hand', () =
   it('shows the C² walk worked by hand: each control point in terms of B, then B', () => {
     // 3n + 1 = 10 = 4 points + 2 C¹ + 2 C² + 2 natural ends.
     expect(steps[6].formula).toBe(
-      '3n + 1 = 10 = \\underbrace{4}_{\\text{points}} + \\underbrace{2}_{\\text{C}^1} + \\underbrace{2}_{\\text{C}^2} + \\underbrace{2}_{\\text{natural ends}}',
+      '3n + 1 = 10 = \\underbrace{4}_{\\text{points}} + \\underbrace{2}_{\\text{C¹}} + \\underbrace{2}_{\\text{C²}} + \\underbrace{2}_{\\text{natural ends}}',
     );
     expect(steps[7]).toMatchObject({
       caption: 'Keep B unknown: the natural start A − 2B + C = 0 gives C = 2B − A',

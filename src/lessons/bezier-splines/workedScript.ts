@@ -151,7 +151,7 @@ export const worked = script<State, Model, WorkedReveal>(
     },
     ({ state }) => {
       const n = pieces(state);
-      return `3n + 1 = ${3 * n + 1} = \\underbrace{${n + 1}}_{\\text{points}} + \\underbrace{${n - 1}}_{\\text{C}^1} + \\underbrace{${n - 1}}_{\\text{C}^2} + \\underbrace{2}_{\\text{natural ends}}`;
+      return `3n + 1 = ${3 * n + 1} = \\underbrace{${n + 1}}_{\\text{points}} + \\underbrace{${n - 1}}_{\\text{C¹}} + \\underbrace{${n - 1}}_{\\text{C²}} + \\underbrace{2}_{\\text{natural ends}}`;
     },
   ),
   step(

@@ -98,7 +98,7 @@ export const planeScript = script<CurvatureState, CurvatureModel, PlaneReveal>(
     const { tangent } = at(model);
     return tangent
       ? `T = \\frac{P'}{|P'|} = ${unit(tangent)}`
-      : `|P'(${argument(plane(model))})| = 0:\\ T = \\tfrac{P'}{|P'|} = \\tfrac{0}{0}\\ \\text{is undefined}`;
+      : `|P'(${argument(plane(model))})| = 0:\\ T = P'/|P'| = 0/0\\ \\text{is undefined}`;
   }),
   step(
     'normal',

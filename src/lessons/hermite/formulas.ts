@@ -147,8 +147,10 @@ const BEZIER_DATA = nameColumn(['B_0', '3(B_1 - B_0)', 'B_3', '3(B_3 - B_2)']);
 /**
  * "Bézier is a Hermite patch": equation 7 times (B0, 3(B1 − B0), B3,
  * 3(B3 − B2)), with the numbers, gives a0 … a3. Three lines in the panel
- * (two ran 409 px in a laptop's 404 with the long scene's gradients of 15),
- * one for the presenter's caption (less tall, so the figure keeps its room).
+ * (two ran 409 px in a laptop's 404 with the long scene's gradients of 15).
+ * In the presenter's caption one line, the product in numbers only (the
+ * step's words name the column): with the product by name too, the line was
+ * wider than the screen at 28 px, and set on two lines it took the figure's room.
  */
 export const bezierProduct = (
   data: LectureData,
@@ -156,7 +158,7 @@ export const bezierProduct = (
   oneLine = false,
 ): FormulaParts =>
   oneLine
-    ? tex`${UNKNOWNS} = ${LECTURE_INVERSE}${BEZIER_DATA} = ${LECTURE_INVERSE}${column(data)} = ${column(coefficients)}`
+    ? tex`${UNKNOWNS} = ${LECTURE_INVERSE}${column(data)} = ${column(coefficients)}`
     : tex`\begin{aligned}${UNKNOWNS} &= ${LECTURE_INVERSE}${BEZIER_DATA}\\ &= ${LECTURE_INVERSE}${column(data)}\\ &= ${column(coefficients)}\end{aligned}`;
 
 /** The Bézier curve multiplied out (the lecture's a0 … a3 from its control points), with numbers. */

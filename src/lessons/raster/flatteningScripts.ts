@@ -87,7 +87,7 @@ export const compareScript = script<RasterState, RasterModel, Reveal>(
     ({ model: m }) =>
       `Without measuring, uniform sampling must plan for the sharpest bend: ${count(m.bound.points.length - 1, 'segment')} to be sure of τ; they stray ${num(px(m, m.bound.deviation.distance))} px.`,
     ({ state, model: m }) =>
-      `N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\tfrac{${num(px(m, m.tree[0].flatness))}}{${num(state.tolerance)}}} \\right\\rceil = ${m.bound.points.length - 1}`,
+      `N = \\left\\lceil \\sqrt{\\frac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\frac{${num(px(m, m.tree[0].flatness))}}{${num(state.tolerance)}}} \\right\\rceil = ${m.bound.points.length - 1}`,
   ),
 );
 

@@ -146,7 +146,7 @@ describe('the script of the raster lesson', () => {
       'Without measuring, uniform sampling must plan for the sharpest bend: 14 segments to be sure of τ; they stray 0.31 px.',
     );
     expect(formula(at(4))).toBe(
-      'N = \\left\\lceil \\sqrt{\\tfrac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\tfrac{85.51}{0.50}} \\right\\rceil = 14',
+      'N = \\left\\lceil \\sqrt{\\frac{n(n-1)\\,\\max\\|\\Delta^2 P\\|}{8\\,\\tau}} \\right\\rceil = \\left\\lceil \\sqrt{\\frac{85.51}{0.50}} \\right\\rceil = 14',
     );
     expect([0, 1].map((step) => formula(at(step)))).toEqual([null, null]);
   });

@@ -131,15 +131,19 @@ function pieceFormula(c: CoordinateWork, v: string, i: number): FormulaParts {
   return tex`\begin{aligned}${joined(lines, '\\\\ ')}\end{aligned}`;
 }
 
-/** 2c(j−1) + 6d(j−1) = 2cj with c and d written in y and D, in symbols, then in numbers. */
+/**
+ * 2c(j−1) + 6d(j−1) = 2cj with c and d written in y and D, in symbols; then
+ * each side in numbers, on a line of its own with its value (the two sides
+ * in numbers on one line were too wide for the room's screen at 28 px).
+ */
 function substituted(c: CoordinateWork, v: string, j: number): FormulaParts {
   const i = j - 1;
   const y = (n: number) => place(c.values[n]);
   const D = c.gradients;
   const symbols = tex`&2[3(${v}_{${j}} - ${v}_{${i}}) - 2D_{${i}} - D_{${j}}] + 6[-2(${v}_{${j}} - ${v}_{${i}}) + D_{${i}} + D_{${j}}] = 2[3(${v}_{${j + 1}} - ${v}_{${j}}) - 2D_{${j}} - D_{${j + 1}}]`;
-  const numbers = tex`&2[3(${y(j)} - ${y(i)}) - 2${bracket(D[i])} - ${term(D[j])}] + 6[-2(${y(j)} - ${y(i)}) + ${term(D[i])} + ${term(D[j])}] = 2[3(${y(j + 1)} - ${y(j)}) - 2${bracket(D[j])} - ${term(D[j + 1])}]`;
-  const both = tex`&${number(c.curvature[i][1])} = ${number(c.curvature[j][0])}`;
-  return tex`\begin{aligned}${symbols}\\ ${numbers}\\ ${both}\end{aligned}`;
+  const left = tex`&2[3(${y(j)} - ${y(i)}) - 2${bracket(D[i])} - ${term(D[j])}] + 6[-2(${y(j)} - ${y(i)}) + ${term(D[i])} + ${term(D[j])}] = ${number(c.curvature[i][1])}`;
+  const right = tex`&2[3(${y(j + 1)} - ${y(j)}) - 2${bracket(D[j])} - ${term(D[j + 1])}] = ${number(c.curvature[j][0])}`;
+  return tex`\begin{aligned}${symbols}\\ ${left}\\ ${right}\end{aligned}`;
 }
 
 /**
