@@ -21,6 +21,19 @@ export interface HandleLook {
 type Stamp = HTMLCanvasElement | ImageBitmap;
 const stamps = new Map<string, Stamp>();
 const MAX_STAMPS = 256;
+/** How many times the stamps were let go: a stamper's last stamp is of this generation or stale. */
+let generation = 0;
+
+/**
+ * Lets every stamp go (the cache is full: a figure's looks changed many
+ * times, as a theme or a scale did): a bitmap's pixels are freed now, not
+ * whenever the collector comes, and no stamper copies one after it is closed.
+ */
+function releaseStamps(): void {
+  for (const stamp of stamps.values()) if ('close' in stamp) stamp.close();
+  stamps.clear();
+  generation++;
+}
 
 /**
  * On a screen canvas, a handle is a stamp: its disc and ring drawn once into a
@@ -34,6 +47,7 @@ export class HandleStamper {
   /** The look last stamped, and its stamp: most handles of a figure share one. */
   private lastLook: HandleLook | null = null;
   private last: Stamp | null = null;
+  private lastGeneration = generation;
 
   private constructor(
     private readonly c: CanvasRenderingContext2D,
@@ -55,10 +69,16 @@ export class HandleStamper {
   /** Copies the stamp of `look` centred at (x, y) (CSS pixels), snapped to a device pixel. */
   stamp(x: number, y: number, look: HandleLook): void {
     let stamp = this.last;
-    if (!stamp || !this.lastLook || !sameLook(look, this.lastLook)) {
+    if (
+      !stamp ||
+      !this.lastLook ||
+      this.lastGeneration !== generation ||
+      !sameLook(look, this.lastLook)
+    ) {
       const key = `${look.fill}|${look.stroke}|${look.width}|${look.r}|${look.shape}|${this.scale}`;
       stamp = this.last = stamps.get(key) ?? this.draw(key, look);
       this.lastLook = look;
+      this.lastGeneration = generation;
     }
     const { scale, e, f } = this;
     const half = stamp.width / 2;
@@ -69,7 +89,7 @@ export class HandleStamper {
   }
 
   private draw(key: string, look: HandleLook): Stamp {
-    if (stamps.size >= MAX_STAMPS) stamps.clear();
+    if (stamps.size >= MAX_STAMPS) releaseStamps();
     const reach = look.r * (look.shape === 'diamond' ? 1.3 : look.shape === 'square' ? 1.42 : 1);
     const half = Math.ceil((reach + look.width) * this.scale) + 1;
     const stamp = paintStamp(2 * half, (s) => {
