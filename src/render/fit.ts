@@ -1,8 +1,8 @@
 /**
  * Fitting wide content to a narrow panel: a matrix, a long expansion or a
- * table is shrunk (down to half size, and never with any of its text, a
- * formula's subscripts included, under the view's floor: 12 px, or 28 px in
- * presenter view) so it is seen whole in the side panel, and on a projector,
+ * table is shrunk (down to half size, never with its type under 12 px, and
+ * in presenter view with none of its glyphs, subscripts included, under
+ * 28 px) so it is seen whole in the side panel, and on a projector,
  * instead of being cut at the panel's edge. A formula still too wide at its
  * smallest is set on several lines, broken after an = or a + as TeX breaks a
  * formula in running text, at full size or as large as its widest piece
@@ -20,10 +20,11 @@ import { freeAllBoxes } from './liveBoxes';
 /** Smallest size content is shrunk to before it scrolls instead. */
 const SMALLEST = 0.5;
 /**
- * Nor is any of its text, a formula's subscripts included, shrunk below this
- * many CSS pixels (a laptop's panel, a phone), or below the view's own floor,
- * `--fit-floor` (presenter view's is 28 px, the back row's smallest): it
- * takes lines or scrolls instead.
+ * Nor is its type shrunk below this many CSS pixels (a laptop's panel, a
+ * phone): it takes lines or scrolls instead. A view may also set a floor for
+ * every glyph, a formula's subscripts included, `--fit-floor` (presenter
+ * view's is 28 px, the back row's smallest): under it only when lines at it
+ * would not fit either (chooseFit).
  */
 const SMALLEST_PX = 12;
 
@@ -50,28 +51,29 @@ export function fitToWidth(root: ParentNode): void {
       // Set on lines, its width as one line is the sum of its pieces.
       width: el.classList.contains(WRAPS) ? pieces.sum : contentWidth(el),
       widest: pieces.widest,
-      font: smallestFont(el),
+      ...typeSizes(el),
       floor: fitFloor(el),
       indent: hangingIndent(el),
     };
   });
   pending.forEach((el, i) => {
-    const { box, scroll, width, widest, font, floor, indent } = sizes[i];
+    const { box, scroll, width, widest, type, glyph, floor, indent } = sizes[i];
     // Not laid out yet (hidden, or not in the page): try again next time.
     if (box <= 0) return;
     el.dataset.fit = 'done';
     const scale = Number(el.dataset.scale ?? '1');
     const wrapped = el.classList.contains(WRAPS);
     const natural = Math.max(width, scroll > box + 1 && !wrapped ? scroll : 0) / scale;
-    // The scales at which its smallest text is at the view's floor, and at 12 px.
-    const at = (px: number) => Math.min(1, Math.max(SMALLEST, px / (font / scale)));
+    // The scale at which text now of `size` would be `px` (never under half size).
+    const at = (px: number, size: number) => Math.min(1, Math.max(SMALLEST, px / (size / scale)));
+    const least = at(SMALLEST_PX, type);
     const line = (widest + indent) / scale;
     const { scale: fitted, wraps } = chooseFit({
       box,
       natural,
       line: widest > 0 ? line : 0,
-      readable: at(floor),
-      least: at(SMALLEST_PX),
+      readable: Math.max(least, at(floor, glyph)),
+      least,
     });
     if (wraps !== wrapped) el.classList.toggle(WRAPS, wraps);
     // Still too wide: it scrolls, so the keyboard must reach it.
@@ -171,23 +173,28 @@ function hangingIndent(el: HTMLElement): number {
 }
 
 /**
- * The smallest type in the element: its own size, its table cells' where they
- * are set smaller (a data table is 0.85 of its box's size), or a formula's
- * smallest script (a subscript is 0.7 of its formula's size, and KaTeX sets
- * every change of size with its class `sizing`): the size the floor is for.
+ * The element's type size, or its table cells' where they are set smaller (a
+ * data table is 0.85 of its box's size): what the 12 px floor is for. And its
+ * smallest glyphs: a formula's smallest script (a subscript is 0.7 of its
+ * formula's size; KaTeX sets every change of size with its class `sizing`),
+ * what the view's own floor is for.
  */
-function smallestFont(el: HTMLElement): number {
-  let smallest = parseFloat(getComputedStyle(el).fontSize) || 16;
+function typeSizes(el: HTMLElement): { type: number; glyph: number } {
+  let type = parseFloat(getComputedStyle(el).fontSize) || 16;
   const cell = el.querySelector('td, th');
-  if (cell) smallest = Math.min(smallest, parseFloat(getComputedStyle(cell).fontSize) || smallest);
+  if (cell) type = Math.min(type, parseFloat(getComputedStyle(cell).fontSize) || type);
+  let glyph = type;
   for (const script of el.querySelectorAll('.katex-html .sizing'))
-    smallest = Math.min(smallest, parseFloat(getComputedStyle(script).fontSize) || smallest);
-  return smallest;
+    glyph = Math.min(glyph, parseFloat(getComputedStyle(script).fontSize) || glyph);
+  return { type, glyph };
 }
 
-/** The view's floor for shrunk text, in CSS pixels: its `--fit-floor`, or 12 px. */
+/**
+ * The view's floor for a shrunk element's every glyph, subscripts included,
+ * in CSS pixels: its `--fit-floor` (presenter view's 28 px), or none.
+ */
 function fitFloor(el: HTMLElement): number {
-  return parseFloat(getComputedStyle(el).getPropertyValue('--fit-floor')) || SMALLEST_PX;
+  return parseFloat(getComputedStyle(el).getPropertyValue('--fit-floor')) || 0;
 }
 
 /** Marks everything under `root` that was ever fitted, and every live number's box (the panel, the fonts or the type size changed). */
