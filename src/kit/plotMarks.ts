@@ -88,28 +88,47 @@ export function valueColumn(
   const [far] = view.toScreen([range.maxX, 0]);
   const right = cursor < (range.minX + range.maxX) / 2;
   const edge = right ? Math.min(far, view.width) - size * 0.8 : Math.max(left, 0) + size * 0.8;
-  // A plot too short for the column: the values go in a row along its top
-  // instead, wrapped to a second row a box's height below where it is too
-  // wide, and never across the cursor's line (its dots stay in sight).
+  // A plot too short for the column (a phone's strip): the values go in a
+  // row along its top, wrapped to a second row a box's height below where it
+  // is too wide, never across the cursor's line, and each only where no
+  // curve, point, handle or label lies under it: a value that would hide the
+  // curves it reads is left out (the dots at the cursor still show it, and
+  // the lesson's panel says it in numbers).
   if (top + entries.length * size * 1.75 > view.height * 0.8) {
-    const style = { size, bold: true, box: true };
+    const style = { size, bold: true, box: true } as const;
     const [cursorX] = view.toScreen([cursor, 0]);
     const start = Math.max(left, 0) + size * 0.8;
     const end = Math.min(far, view.width) - size * 0.4;
+    const pad = size * 0.35;
     const clearOfCursor = (x: number, width: number) =>
       x + width + size * 0.5 < cursorX || x - size * 0.5 > cursorX ? x : cursorX + size * 0.6;
-    let x = start;
-    let y = top + size * 0.6;
-    for (const entry of entries) {
-      const width = labelWidth(painter, entry.text, style);
-      x = clearOfCursor(x, width);
-      if (x > start && x + width > end) {
-        y += size * 1.75;
-        x = clearOfCursor(start, width);
+    painter.placing(() => {
+      let x = start;
+      let y = Math.max(top + size * 0.6, size * 0.65 + pad + 2);
+      for (const entry of entries) {
+        if (painter.labelHidden(entry.text)) continue;
+        const width = labelWidth(painter, entry.text, style);
+        x = clearOfCursor(x, width);
+        if (x > start && x + width > end) {
+          y += size * 1.75;
+          x = clearOfCursor(start, width);
+        }
+        const box = {
+          x: x - pad,
+          y: y - size * 0.65 - pad,
+          width: width + 2 * pad,
+          height: size * 1.3 + 2 * pad,
+        };
+        const inside =
+          box.x >= 2 &&
+          box.y >= 2 &&
+          box.x + box.width <= view.width - 2 &&
+          box.y + box.height <= view.height - 2;
+        if (inside && firstClear(painter, [box]) === 0)
+          drawScreenLabel(painter, entry.text, x, y, { ...style, color: entry.color, stays: true });
+        x += width + size * 1.2;
       }
-      painter.screenLabel(entry.text, x, y, { ...style, color: entry.color });
-      x += width + size * 1.2;
-    }
+    });
     return;
   }
   // Hidden with the labels (presenter key A), or with the numbers.
