@@ -7,8 +7,9 @@ import { COLOURS, vectorArrow } from './marks';
 import type { CurvatureModel } from './model';
 import type { Series } from './plotFigure';
 
-/** The Catmull-Rom spline's κ: dashed, in a colour of its own. */
-const CATMULL_COLOUR = 4;
+/** The Catmull-Rom spline's κ: dashed, in a colour of its own, and its name. */
+export const CATMULL_COLOUR = 4;
+export const CATMULL_KAPPA = 'κ of Catmull-Rom';
 /** How far (in p̄) each side's tangent of κ is drawn either side of a join. */
 const REACH = 0.3;
 
@@ -19,7 +20,7 @@ export function joinSeries(m: CurvatureModel): Series[] {
     out.push({ name: 'κ', runs: m.plane!.kappa, colour: COLOURS.curvature });
   if (m.shown.has('catmull'))
     out.push({
-      name: 'κ of Catmull-Rom',
+      name: CATMULL_KAPPA,
       runs: m.joins!.catmull.kappa,
       colour: CATMULL_COLOUR,
       dash: [8, 5],

@@ -197,6 +197,26 @@ describe('G², G³ and C^(n−1) at the joins of the scene’s splines', () => {
     expect(lesson.figuresShown!(opened())).toEqual(['curve', 'plot']);
   });
 
+  it('writes the Catmull-Rom spline’s κ at the cursor beside the natural spline’s, once it is drawn', () => {
+    const state = opened(4);
+    // The cursor at t is p̄ = pieces · t: piece i = ⌊p̄⌋ at u = p̄ − i, κ from src/math.
+    const pieces = catmullRomSegments(state.points, 0);
+    const at = state.t * pieces.length;
+    const i = Math.min(Math.floor(at), pieces.length - 1);
+    const kappa = bezierCurvature(pieces[i], at - i);
+    const texts = drawState(lesson, state).texts;
+    const shown = texts.find((x) => x.startsWith('κ of Catmull-Rom = '));
+    expect(shown, texts.join(' | ')).toBeDefined();
+    expect(Number(shown!.slice('κ of Catmull-Rom = '.length).replace('−', '-'))).toBeCloseTo(
+      kappa,
+      2,
+    );
+    // Before its step, neither the curve nor its value.
+    expect(drawState(lesson, opened(3)).texts.some((x) => x.startsWith('κ of Catmull-Rom ='))).toBe(
+      false,
+    );
+  });
+
   it('works on the natural spline whatever the link says', () => {
     const { state, issues } = normalizeState(lesson, { ...opened(), source: 'bezier' });
     expect((state as CurvatureState).source).toBe('natural');

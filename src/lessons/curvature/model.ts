@@ -28,6 +28,8 @@ export interface CurvatureModel {
   arc: ArcModel | null;
   /** Both sides of the natural spline's joins, and the Catmull-Rom spline of the same points (part joins). */
   joins: JoinsModel | null;
+  /** The Catmull-Rom spline's κ at the cursor (part joins; null where P′ = 0). */
+  catmullKappa: number | null;
 }
 
 type Fields<K extends keyof CurvatureState> = Pick<CurvatureState, K>;
@@ -74,17 +76,25 @@ const joinsOf = memoOn<
   JoinsModel
 >(['points', 'pieces'], ({ points, pieces }) => deriveJoins(points, pieces.segments));
 
+/** The Catmull-Rom spline's κ at t: its curve kept, only the point at t computed. */
+const catmullAt = memoOn<{ joins: JoinsModel; t: number }, 'joins' | 't', number | null>(
+  ['joins', 't'],
+  ({ joins, t }) => derivePlane(joins.catmull, t).at.curvature,
+);
+
 export function derive(state: CurvatureState, shown: Revealed<Reveal>): CurvatureModel {
   const plane = state.part === 'space' ? null : planeAt(state);
+  const joins =
+    state.part === 'joins' && plane
+      ? joinsOf({ points: state.points, pieces: plane.pieces })
+      : null;
   return {
     state,
     shown,
     plane,
     space: plane ? lifted({ plane }) : spaceAt(state),
     arc: state.part === 'arc' ? arcAt(state) : null,
-    joins:
-      state.part === 'joins' && plane
-        ? joinsOf({ points: state.points, pieces: plane.pieces })
-        : null,
+    joins,
+    catmullKappa: joins ? catmullAt({ joins, t: state.t }) : null,
   };
 }

@@ -5,7 +5,7 @@ import { words } from '../../kit/format';
 import { lineName, valueColumn } from '../../kit/plotMarks';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
-import { drawJoinMarks, joinSeries } from './joinsMarks';
+import { CATMULL_COLOUR, CATMULL_KAPPA, drawJoinMarks, joinSeries } from './joinsMarks';
 import type { Join } from './sources';
 import type { CurvatureState } from './state';
 
@@ -150,6 +150,9 @@ function cursorValues(m: CurvatureModel): { name: string; y: number; colour: num
     const at = m.plane!.at;
     const out = [{ name: '|P′|', y: at.speed, colour: 4 }];
     if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
+    // The dashed curve's value too, in its colour: with κ's, the plot's key.
+    if (m.catmullKappa !== null)
+      out.push({ name: CATMULL_KAPPA, y: m.catmullKappa, colour: CATMULL_COLOUR });
     return out;
   }
   if (part === 'space') {
