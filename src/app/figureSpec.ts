@@ -105,7 +105,7 @@ export interface FigureSpec<S, M = S> {
   keyLines?(model: M): number;
   /**
    * How many rows of values at its cursor a plot writes above itself
-   * (kit/plotMarks valueColumn with `above`): the fit keeps room for them
+   * (kit/cursorValues valueColumn with `above`): the fit keeps room for them
    * over the plot, so they stand over no curve (in presenter view's short
    * strips they were boxed over the very peaks of L₁ and H₁). Answer per
    * scene, so the plot keeps one size through its steps.

@@ -11,7 +11,7 @@ import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { drawHandles } from '../render/handles';
 import { keyBand } from '../kit/legend';
-import { valueBand } from '../kit/plotMarks';
+import { valueBand } from '../kit/cursorValues';
 import type { FigureSpec, Handle } from './lesson';
 
 export interface HeadlessOptions {

@@ -4,7 +4,8 @@ import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { lineName, plotYName, valueBand, valueColumn } from './plotMarks';
+import { valueBand, valueColumn } from './cursorValues';
+import { lineName, plotYName } from './plotMarks';
 
 /**
  * A 900 × 300 plot of [0, 1] × [0, 1.2] with its y name; `starts` draws a

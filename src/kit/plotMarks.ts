@@ -1,14 +1,13 @@
 import { type Box, boxesMeet } from '../render/ink';
-import { clearestPlace, firstClear, leastHidden } from '../render/boxPlaces';
+import { clearestPlace } from '../render/boxPlaces';
 import type { LabelStyle } from '../render/labels';
 import { drawScreenLabel } from '../render/labelPlacer';
 import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
-import type { Theme } from '../render/theme';
 
-// Marks a function plot writes beside its curves: the y-axis name, the
-// values at the cursor, boxed and kept off the curves they name, and the
-// names of the lines drawn across it.
+// Names a function plot writes beside its curves: the y-axis name and the
+// names of the lines drawn across it, each where no curve runs under it.
+// (The values at its cursor: cursorValues.ts.)
 
 /**
  * A plot's y-axis name, boxed along the top of the plot, placed when the
@@ -48,192 +47,8 @@ export function plotYName(
   return top + small * 2.2;
 }
 
-/** A row of values above a plot: its pitch, and its foot's gap above the plot, at type `size`. */
-const ROW = { pitch: 1.95, foot: 0.25 } as const;
-
-/**
- * The room above a plot that `rows` rows of values at its cursor take
- * (FigureSpec.valueRows), beyond the `padding` the fit keeps there anyway:
- * what `valueColumn(…, above)` needs to write them there.
- */
-export function valueBand(theme: Theme, rows: number, padding: number): number {
-  if (rows <= 0) return 0;
-  const size = theme.sizes.small;
-  // The foot's gap, a box (its letters and padding), the rows above it, 2 px from the edge.
-  const room = size * (ROW.foot + 1.3 + 0.7) + (rows - 1) * size * ROW.pitch + 2;
-  return Math.max(0, Math.ceil(room - padding));
-}
-
 /** Places tried for a plot's y-axis name along its top, from the axis to the far side. */
 const NAME_SPOTS = 9;
-
-/**
- * The values at a plot's cursor: `above` the plot in rows, where the figure
- * keeps room for them (FigureSpec.valueRows) or its margin is tall enough,
- * and they fit; else as a boxed column in the top corner away from the
- * cursor, never written over their own curves.
- */
-export function valueColumn(
-  painter: Painter,
-  cursor: number,
-  range: { minX: number; maxX: number; maxY?: number },
-  top: number,
-  entries: readonly { text: string; color: string }[],
-  above = false,
-): void {
-  if (above && valuesAbove(painter, range, entries)) return;
-  const { view, theme } = painter;
-  const size = theme.sizes.small;
-  const [left] = view.toScreen([range.minX, 0]);
-  const [far] = view.toScreen([range.maxX, 0]);
-  const right = cursor < (range.minX + range.maxX) / 2;
-  const edge = right ? Math.min(far, view.width) - size * 0.8 : Math.max(left, 0) + size * 0.8;
-  // A plot too short for the column (a phone's strip): the values go in a
-  // row along its top, wrapped to a second row a box's height below where it
-  // is too wide, never across the cursor's line, and each only where no
-  // curve, point, handle or label lies under it: a value that would hide the
-  // curves it reads is left out (the dots at the cursor still show it, and
-  // the lesson's panel says it in numbers).
-  if (top + entries.length * size * 1.75 > view.height * 0.8) {
-    const style = { size, bold: true, box: true } as const;
-    const [cursorX] = view.toScreen([cursor, 0]);
-    const start = Math.max(left, 0) + size * 0.8;
-    const end = Math.min(far, view.width) - size * 0.4;
-    const pad = size * 0.35;
-    const clearOfCursor = (x: number, width: number) =>
-      x + width + size * 0.5 < cursorX || x - size * 0.5 > cursorX ? x : cursorX + size * 0.6;
-    painter.placing(() => {
-      let x = start;
-      let y = Math.max(top + size * 0.6, size * 0.65 + pad + 2);
-      for (const entry of entries) {
-        if (painter.labelHidden(entry.text)) continue;
-        const width = labelWidth(painter, entry.text, style);
-        x = clearOfCursor(x, width);
-        if (x > start && x + width > end) {
-          y += size * 1.75;
-          x = clearOfCursor(start, width);
-        }
-        const box = {
-          x: x - pad,
-          y: y - size * 0.65 - pad,
-          width: width + 2 * pad,
-          height: size * 1.3 + 2 * pad,
-        };
-        const inside =
-          box.x >= 2 &&
-          box.y >= 2 &&
-          box.x + box.width <= view.width - 2 &&
-          box.y + box.height <= view.height - 2;
-        if (inside && firstClear(painter, [box]) === 0)
-          drawScreenLabel(painter, entry.text, x, y, { ...style, color: entry.color, stays: true });
-        x += width + size * 1.2;
-      }
-    });
-    return;
-  }
-  // Hidden with the labels (presenter key A), or with the numbers.
-  const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  if (shown.length === 0) return;
-  const style = { size, bold: true, box: true, align: right ? 'right' : 'left' } as const;
-  // In the corner away from the cursor; where a curve runs under it there (a
-  // peak of κ under the box), the first place towards the cursor where none
-  // does, short of the cursor's line.
-  painter.placing(() => {
-    const width = Math.max(...shown.map((e) => labelWidth(painter, e.text, style)));
-    const pad = size * 0.35;
-    const [cursorX] = view.toScreen([cursor, 0]);
-    const column = (at: number): Box => ({
-      x: (right ? at - width : at) - pad,
-      y: top + size * 0.6 - size * 0.65 - pad,
-      width: width + 2 * pad,
-      height: (shown.length - 1) * size * 1.75 + size * 1.3 + 2 * pad,
-    });
-    const towards = right ? -1 : 1;
-    const spots = Array.from({ length: NAME_SPOTS }, (_, i) => edge + towards * i * width * 0.5);
-    // Whole inside the figure (else a value pushed in from the edge lands on
-    // the one above it), and on one side of the cursor's line.
-    const clearOfCursor = spots.filter((at) => {
-      const box = column(at);
-      const within = box.x >= 2 && box.y >= 2 && box.x + box.width <= view.width - 2;
-      return (
-        within &&
-        box.y + box.height <= view.height - 2 &&
-        (box.x > cursorX + size * 0.5 || box.x + box.width < cursorX - size * 0.5)
-      );
-    });
-    // None clear (a phone's strip, its lines closer than a box is wide): of
-    // those over no label, point or handle, the one over fewest strokes (a
-    // dashed line rather than the curve), and there it stays (moved by the
-    // placer, it went across the cursor's line). Else the placer finds room.
-    const boxes = clearOfCursor.map(column);
-    const clear = firstClear(painter, boxes);
-    const bare = boxes.filter(
-      (box) =>
-        painter.ink.hits(box).discs === 0 &&
-        painter.ink.handlesUnder(box) === 0 &&
-        !painter.labels.some((b) => boxesMeet(b.frame ?? b, box)),
-    );
-    const least = bare[leastHidden(painter, bare)];
-    const pick = clear >= 0 ? clear : least ? boxes.indexOf(least) : -1;
-    const at = pick >= 0 ? clearOfCursor[pick] : edge;
-    shown.forEach((entry, i) => {
-      drawScreenLabel(painter, entry.text, at, top + size * 0.6 + i * size * 1.75, {
-        ...style,
-        color: entry.color,
-        stays: pick >= 0,
-      });
-    });
-  });
-}
-
-/**
- * The values in rows above the plot, left to right from its left edge,
- * where there is room for them whole between the figure's top and the
- * plot's (the room a figure keeps with `valueRows`, or a tall figure's own
- * margin): there no curve, peak or cursor line runs under them. In presenter
- * view's short strips they stood in a row inside the plot, boxed over the
- * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not fit.
- */
-function valuesAbove(
-  painter: Painter,
-  range: { minX: number; maxX: number; maxY?: number },
-  entries: readonly { text: string; color: string }[],
-): boolean {
-  if (range.maxY === undefined) return false;
-  const { view, theme } = painter;
-  const size = theme.sizes.small;
-  const style = { size, bold: true, box: true, fixed: true } as const;
-  const pad = size * 0.35;
-  const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
-  const [far] = view.toScreen([range.maxX, range.maxY]);
-  const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  const gap = size * 1.2;
-  const start = Math.max(left, 0) + size * 0.4;
-  const end = Math.min(far, view.width) - size * 0.4;
-  // Left to right, wrapped to rows as a paragraph is, in the order given.
-  const spots: { x: number; row: number }[] = [];
-  let x = start;
-  let row = 0;
-  for (const entry of shown) {
-    const width = labelWidth(painter, entry.text, style);
-    if (x > start && x + width > end) [x, row] = [start, row + 1];
-    if (x + width > end) return false;
-    spots.push({ x, row });
-    x += width + gap;
-  }
-  // The last row's foot just above the plot (the top tick's number, half
-  // above it, stands left of the axis, where the rows do not reach).
-  const line = size * ROW.pitch;
-  const last = plotTop - size * ROW.foot - pad - size * 0.65;
-  if (last - row * line - size * 0.65 - pad < 2) return false;
-  painter.placing(() => {
-    shown.forEach((entry, i) => {
-      const y = last - (row - spots[i].row) * line;
-      drawScreenLabel(painter, entry.text, spots[i].x, y, { ...style, color: entry.color });
-    });
-  });
-  return true;
-}
 
 /**
  * Names a line drawn across a plot at x = `at` (an inflection, a join, a

@@ -1,6 +1,6 @@
 import type { DrawInfo } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
-import { valueColumn } from '../../kit/plotMarks';
+import { valueColumn } from '../../kit/cursorValues';
 import type { Bounds } from '../../render/projection';
 import type { Painter } from '../../render/painter';
 import { hoveredPoint } from './drawParts';
