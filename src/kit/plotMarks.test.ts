@@ -70,6 +70,27 @@ describe('a plot’s y-axis name, values and line names with the labels hidden (
   });
 });
 
+/** A phone's short basis strip of [0, 1] × [0, 1.05], `width` × `height`, in screen or projector type. */
+function phoneStrip(width: number, height: number, projector: boolean) {
+  const view = new Viewport(width, height);
+  view.resize(width, height);
+  const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.05 };
+  view.fit(bounds, [30, 20], false);
+  return {
+    view,
+    bounds,
+    painter: new Painter(new SvgContext(), view, makeTheme(false, projector)),
+  };
+}
+
+/** b-splines' four values at the cursor on its NURBS basis. */
+const FOUR_VALUES = [
+  'N_{2,3} = 0.588',
+  'N_{1,3} = 0.128',
+  'N_{3,3} = 0.283',
+  'N_{4,3} = 0.001',
+].map((text) => ({ text, color: '#000' }));
+
 describe('the values at a plot’s cursor', () => {
   it('on a phone’s short strip, no two of their boxes overlap, none crosses the cursor’s line, all stand inside', () => {
     // b-splines' NURBS basis on a phone (344 × 90): four values, a row too
@@ -81,18 +102,8 @@ describe('the values at a plot’s cursor', () => {
         [344, 120],
         [600, 90],
       ]) {
-        const view = new Viewport(width, height);
-        view.resize(width, height);
-        const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.05 };
-        view.fit(bounds, [30, 20], false);
-        const painter = new Painter(new SvgContext(), view, makeTheme(false, projector));
-        const entries = [
-          'N_{2,3} = 0.588',
-          'N_{1,3} = 0.128',
-          'N_{3,3} = 0.283',
-          'N_{4,3} = 0.001',
-        ].map((text) => ({ text, color: '#000' }));
-        valueColumn(painter, 0.3, bounds, 0, entries);
+        const { view, bounds, painter } = phoneStrip(width, height, projector);
+        valueColumn(painter, 0.3, bounds, 0, FOUR_VALUES);
         const boxes = painter.labels.map((b) => ({ text: b.text, edge: b.frame ?? b }));
         // A phone's type finds room for some (projector type on a phone-sized
         // strip may find none: then none is drawn over the plot).
@@ -123,26 +134,16 @@ describe('the values at a plot’s cursor', () => {
   it('on a phone’s short strip, leaves out a value whose box a curve would run under', () => {
     // A 344 × 90 strip with a curve across its top, at y = 1 from x = 0.5 on:
     // the values left of it stand, those over it are left out, not laid over it.
-    const view = new Viewport(344, 90);
-    view.resize(344, 90);
-    const bounds = { minX: 0, minY: 0, maxX: 1, maxY: 1.05 };
-    view.fit(bounds, [30, 20], false);
-    const painter = new Painter(new SvgContext(), view, makeTheme(false, false));
+    const { view, bounds, painter } = phoneStrip(344, 90, false);
     painter.holdLabels();
     const across = Array.from({ length: 41 }, (_, i) => [0.5 + i / 80, 1]).flat();
     painter.polylineFlat(across, { color: '#000', width: 2 });
-    const entries = [
-      'N_{2,3} = 0.588',
-      'N_{1,3} = 0.128',
-      'N_{3,3} = 0.283',
-      'N_{4,3} = 0.001',
-    ].map((text) => ({ text, color: '#000' }));
-    valueColumn(painter, 0.05, bounds, 0, entries);
+    valueColumn(painter, 0.05, bounds, 0, FOUR_VALUES);
     painter.placeLabels();
     const [curveX] = view.toScreen([0.5, 0]);
     const placed = painter.labels.map((b) => b.frame ?? b);
     expect(placed.length).toBeGreaterThan(0);
-    expect(placed.length).toBeLessThan(entries.length);
+    expect(placed.length).toBeLessThan(FOUR_VALUES.length);
     for (const box of placed) expect(box.x + box.width).toBeLessThan(curveX);
   });
 });
