@@ -52,7 +52,6 @@ export function fitToWidth(root: ParentNode): void {
       width: el.classList.contains(WRAPS) ? pieces.sum : contentWidth(el),
       widest: pieces.widest,
       ...typeSizes(el),
-      floor: fitFloor(el),
       indent: hangingIndent(el),
     };
   });
@@ -174,27 +173,25 @@ function hangingIndent(el: HTMLElement): number {
 
 /**
  * The element's type size, or its table cells' where they are set smaller (a
- * data table is 0.85 of its box's size): what the 12 px floor is for. And its
- * smallest glyphs: a formula's smallest script (a subscript is 0.7 of its
+ * data table is 0.85 of its box's size): what the 12 px floor is for. Its
+ * smallest glyphs, a formula's smallest script (a subscript is 0.7 of its
  * formula's size; KaTeX sets every change of size with its class `sizing`),
- * what the view's own floor is for.
+ * and the view's floor for them, `--fit-floor` (presenter view's 28 px), or
+ * none. One read of the element's style for both of its own.
  */
-function typeSizes(el: HTMLElement): { type: number; glyph: number } {
-  let type = parseFloat(getComputedStyle(el).fontSize) || 16;
+function typeSizes(el: HTMLElement): { type: number; glyph: number; floor: number } {
+  const style = getComputedStyle(el);
+  let type = parseFloat(style.fontSize) || 16;
+  const floor = parseFloat(style.getPropertyValue('--fit-floor')) || 0;
   const cell = el.querySelector('td, th');
   if (cell) type = Math.min(type, parseFloat(getComputedStyle(cell).fontSize) || type);
+  // Read only where a view sets a floor for them (the normal view's drag
+  // frames, which refit formulas, are spared the reads).
   let glyph = type;
-  for (const script of el.querySelectorAll('.katex-html .sizing'))
-    glyph = Math.min(glyph, parseFloat(getComputedStyle(script).fontSize) || glyph);
-  return { type, glyph };
-}
-
-/**
- * The view's floor for a shrunk element's every glyph, subscripts included,
- * in CSS pixels: its `--fit-floor` (presenter view's 28 px), or none.
- */
-function fitFloor(el: HTMLElement): number {
-  return parseFloat(getComputedStyle(el).getPropertyValue('--fit-floor')) || 0;
+  if (floor > 0)
+    for (const script of el.querySelectorAll('.katex-html .sizing'))
+      glyph = Math.min(glyph, parseFloat(getComputedStyle(script).fontSize) || glyph);
+  return { type, glyph, floor };
 }
 
 /** Marks everything under `root` that was ever fitted, and every live number's box (the panel, the fonts or the type size changed). */
