@@ -1,3 +1,5 @@
+import { drawLegend } from '../../kit/legend';
+import { labelWidth } from '../../render/labelWidth';
 import type { Painter } from '../../render/painter';
 import type { Member } from './model';
 
@@ -5,7 +7,10 @@ import type { Member } from './model';
  * Each member's μ1 in a box, at the first of its label spots (ranked in the
  * model: where its curve strays furthest from the polygon P0 P1 P2) that is
  * on screen and does not cover a label already placed; if every spot on
- * screen does, at the best of them. Only the screen is looked at here.
+ * screen does, at the best of them. Only the screen is looked at here. Where
+ * the boxes together are wider than the figure (a phone), they cannot stand
+ * apart beside their curves: they covered the very curves they named, and
+ * the members are named in a key in a clear corner instead.
  */
 export function placeMemberLabels(
   painter: Painter,
@@ -16,6 +21,19 @@ export function placeMemberLabels(
   const view = painter.view;
   const size = theme.sizes.label * 0.9;
   const height = size * 1.6;
+  const style = { size, bold: true, box: true } as const;
+  const total = members.reduce((sum, m) => sum + labelWidth(painter, m.text, style), 0);
+  if (total > view.width * 0.9) {
+    drawLegend(
+      painter,
+      members.map((member) => ({
+        text: member.text,
+        color: colour(member),
+        line: { color: colour(member), width: theme.sizes.line * 1.3 },
+      })),
+    );
+    return;
+  }
   const placed: { x: number; y: number; w: number }[] = [];
   for (const member of members) {
     const spots = member.labelSpots;

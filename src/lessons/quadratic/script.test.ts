@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { decodeState, defaultsOf, encodeState } from '../../app/urlState';
+import { drawHeadless } from '../../app/headless';
 import { checkScript, drawState } from '../../kit/scriptChecks';
+import { makeTheme } from '../../render/theme';
 import lesson from './lesson';
 import { construction } from './script';
 import { LAST_STEP, type QuadraticState, schema } from './state';
@@ -191,5 +193,32 @@ describe('the script of the quadratic lesson', () => {
     expect(figure.addPoint).toBeUndefined();
     // Three points, no more and no fewer: no delete, no add (as before the kit).
     expect(figure.removeHandle).toBeUndefined();
+  });
+});
+
+describe('the members of the family, named on screen', () => {
+  /** The curve figure of the last step drawn headless at `width` × `height`: its members' tags, and every text drawn. */
+  const drawnAt = (width: number, height: number) => {
+    const s = state({ step: LAST_STEP });
+    const { painter, svg } = drawHeadless(lesson.figures[0], lesson.derive(s), {
+      width,
+      height,
+      theme: makeTheme(false, false),
+    });
+    painter.placeLabels();
+    const member = (text: string) => /^(Uniform|Chord length|Centripetal|chosen): /.test(text);
+    return { tags: painter.labels.filter((l) => member(l.text)), named: svg.texts.filter(member) };
+  };
+
+  it('beside their curves where the figure has room, in a key where it has not (a phone)', () => {
+    // A laptop's figure: four tags, at their curves' own spots, not in a column.
+    const wide = drawnAt(900, 560).tags;
+    expect(wide).toHaveLength(4);
+    expect(new Set(wide.map((l) => Math.round(l.x))).size).toBeGreaterThan(1);
+    // A phone's 340 px: the tags together are wider than the figure; on it they
+    // covered the very curves they named. No tags: the four names in a key.
+    const phone = drawnAt(340, 420);
+    expect(phone.tags).toEqual([]);
+    expect(phone.named).toHaveLength(4);
   });
 });
