@@ -6,7 +6,8 @@
  * instead of being cut at the panel's edge. A formula still too wide at its
  * smallest is set on several lines, broken after an = or a + as TeX breaks a
  * formula in running text, at full size or as large as its widest piece
- * allows. Only when neither fits does a projector's formula go under its
+ * allows; a block of aligned rows, which cannot break, has its rows set
+ * apart first (rowsApart.ts). Only when neither fits does a projector's formula go under its
  * floor (seen whole, down to 12 px: no one scrolls a projected caption);
  * wider still, it scrolls (chooseFit). (Each marked formula's pieces are read twice, for its
  * width and for its lines: one loop would do.) Elements are marked when their content
@@ -41,6 +42,8 @@ export function markForFit(el: HTMLElement): HTMLElement {
  * natural width is its width now over the scale it has now.
  */
 export function fitToWidth(root: ParentNode): void {
+  // Formulas whose rows were set apart in this pass: measured again (one more layout, once per shape).
+  let apart = false;
   const pending = [...root.querySelectorAll<HTMLElement>('[data-fit="pending"]')];
   if (!pending.length) return;
   const sizes = pending.map((el) => {
@@ -77,6 +80,16 @@ export function fitToWidth(root: ParentNode): void {
     if (wraps !== wrapped) el.classList.toggle(WRAPS, wraps);
     // Still too wide: it scrolls, so the keyboard must reach it.
     const scrolls = wraps ? line * fitted > box + 1 : natural * fitted > box + 1;
+    // Aligned rows too wide even at 12 px: set apart, each free to take lines (rowsApart.ts).
+    const setRows = rowsSetter.get(el);
+    if (scrolls && setRows && !rowsAreApart(el)) {
+      el.dataset.rows = 'apart';
+      if (setRows()) {
+        apart = true;
+        return;
+      }
+      delete el.dataset.rows;
+    }
     if (scrolls !== el.hasAttribute('tabindex')) {
       if (scrolls) el.setAttribute('tabindex', '0');
       else el.removeAttribute('tabindex');
@@ -85,7 +98,23 @@ export function fitToWidth(root: ParentNode): void {
     el.dataset.scale = fitted.toFixed(3);
     el.style.fontSize = fitted === 1 ? '' : `${fitted.toFixed(3)}em`;
   });
+  if (apart) fitToWidth(root);
 }
+
+/**
+ * How a formula of aligned rows is typeset again, its rows apart or aligned
+ * as `rowsAreApart` says; it says whether it had rows to set apart, and
+ * marks itself for fitting. Given by the formula (formula.ts), used by the fit.
+ */
+const rowsSetter = new WeakMap<HTMLElement, () => boolean>();
+
+/** Lets the fit set `el`'s aligned rows apart when it is too wide for its box even at 12 px. */
+export function canSetRowsApart(el: HTMLElement, setRows: () => boolean): void {
+  rowsSetter.set(el, setRows);
+}
+
+/** Whether `el`'s rows are to be typeset apart (the fit found them too wide aligned). */
+export const rowsAreApart = (el: HTMLElement): boolean => el.dataset.rows === 'apart';
 
 /** What fitToWidth measured of one element, in CSS pixels at its natural size, and its floors as scales. */
 export interface FitMeasure {
@@ -196,6 +225,11 @@ function typeSizes(el: HTMLElement): { type: number; glyph: number; floor: numbe
 
 /** Marks everything under `root` that was ever fitted, and every live number's box (the panel, the fonts or the type size changed). */
 export function refitAll(root: ParentNode): void {
+  // Its box may now hold its rows aligned: tried again (and set apart again in the same pass if not).
+  for (const el of root.querySelectorAll<HTMLElement>('[data-rows="apart"]')) {
+    delete el.dataset.rows;
+    rowsSetter.get(el)?.();
+  }
   for (const el of root.querySelectorAll<HTMLElement>('[data-fit]')) el.dataset.fit = 'pending';
   freeAllBoxes(root);
 }

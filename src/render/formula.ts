@@ -1,8 +1,9 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
-import { markForFit } from './fit';
+import { canSetRowsApart, markForFit, rowsAreApart } from './fit';
 import { freeBox, reshapeBox, sameWidth } from './liveBoxes';
 import { sayTex } from './notation';
+import { rowsApart } from './rowsApart';
 import { typesetSoon } from './typesetBudget';
 import { pointerHeld, waitUnseen, watchSeen, whenReleased } from './unseen';
 import { setClass, setText } from '../app/dom';
@@ -24,10 +25,25 @@ export function renderFormula(el: HTMLElement, tex: string, display = false): vo
   if (el.dataset.tex === tex) return;
   el.dataset.tex = tex;
   typesetSoon(el, () => {
-    katex.render(sayTex(tex), el, { ...OPTIONS, displayMode: display });
+    katex.render(sayTex(asFitted(el, tex, display)), el, { ...OPTIONS, displayMode: display });
     if (display) markForFit(el);
   });
+  if (display)
+    canSetRowsApart(el, () => {
+      const now = el.dataset.tex ?? '';
+      if (rowsApart(now) === null) return false;
+      katex.render(sayTex(asFitted(el, now, display)), el, { ...OPTIONS, displayMode: true });
+      markForFit(el);
+      return true;
+    });
 }
+
+/**
+ * The TeX a display formula is typeset from: its own, or with its aligned
+ * rows apart where the fit found them too wide for its box (see fit.ts).
+ */
+const asFitted = (el: HTMLElement, tex: string, display: boolean): string =>
+  (display && rowsAreApart(el) && rowsApart(tex)) || tex;
 
 /** A new element holding a typeset formula (for formulas that never change). */
 export function formula(tex: string, display = false): HTMLElement {
@@ -72,6 +88,13 @@ export class LiveFormula {
     this.element = document.createElement(display ? 'div' : 'span');
     setClass(this.element, display ? 'formula display live' : 'formula live');
     watchSeen(this.element, this);
+    if (display)
+      canSetRowsApart(this.element, () => {
+        if (this.shape === null || rowsApart(this.shape) === null) return false;
+        this.typeset(this.shape);
+        this.fill(this.latest);
+        return true;
+      });
   }
 
   /** The shape typeset now (null before the first). */
@@ -154,7 +177,10 @@ export class LiveFormula {
       k++;
       return acc + slot + part;
     });
-    katex.render(sayTex(tex), this.element, { ...OPTIONS, displayMode: this.display });
+    katex.render(sayTex(asFitted(this.element, tex, this.display)), this.element, {
+      ...OPTIONS,
+      displayMode: this.display,
+    });
     this.annotation = this.element.querySelector('annotation');
     const mtexts = [...this.element.querySelectorAll('mtext')];
     this.slots = [];

@@ -214,6 +214,42 @@ export async function eachSceneEnd(
   return faults;
 }
 
+/**
+ * Walks every step of every scene of a lesson, as a clicker does: each scene
+ * opened at its step 0 (from its links in tests/scene-links.json), then one
+ * PageDown at a time to its last step, settled at each, and `look` measures
+ * it. A fault in a middle step is found too (the road's derivation formulas
+ * were cut at 1366 px on steps 3, 4 and 7, while both ends were whole).
+ */
+export async function eachStep(
+  page: Page,
+  slug: string,
+  look: (where: string) => Promise<string[]>,
+): Promise<string[]> {
+  // Each scene's links, by scene (the lesson's first link may name none: its first scene).
+  const last = new Map<string, { query: string; step: number }>();
+  for (const query of sceneLinks[slug]) {
+    const params = new URLSearchParams(query);
+    const scene = params.get('scene') ?? '';
+    const step = Number(params.get('step') ?? 0);
+    if (!last.has(scene) || step > last.get(scene)!.step) last.set(scene, { query, step });
+  }
+  if (last.has('') && last.size > 1) last.delete('');
+  const faults: string[] = [];
+  await page.goto(`./#/${slug}?${sceneLinks[slug][0]}`);
+  for (const [scene, { query, step: steps }] of last) {
+    await openHash(page, `#/${slug}?${query.replace(/step=\d+/, 'step=0')}`);
+    for (let k = 0; k <= steps; k++) {
+      if (k > 0) {
+        await page.keyboard.press('PageDown');
+        await settled(page);
+      }
+      faults.push(...(await look(`${slug} ${scene || 'first scene'} step ${k}`)));
+    }
+  }
+  return faults;
+}
+
 /** The sizes of the figures on screen, in CSS pixels, e.g. "main 1280×700, basis 620×700". */
 export const figureSizes = (page: Page) =>
   page.locator('canvas[data-figure]').evaluateAll((canvases) =>
