@@ -23,6 +23,11 @@ export function rowsApart(tex: string): string | null {
   let inBlock = false;
   let inner = 0;
   let column = 0;
+  // Into (1) or out of (-1) a group: the block's own depth inside it, else the formula's.
+  const nest = (step: 1 | -1): void => {
+    if (inBlock) inner += step;
+    else depth += step;
+  };
   let i = 0;
   while (i < tex.length) {
     const rest = tex.slice(i);
@@ -38,8 +43,7 @@ export function rowsApart(tex: string): string | null {
         column = 0;
       } else {
         out += begin[0];
-        if (inBlock) inner++;
-        else depth++;
+        nest(1);
       }
       i += begin[0].length;
       continue;
@@ -50,8 +54,7 @@ export function rowsApart(tex: string): string | null {
         out += ' ';
       } else {
         out += end[0];
-        if (inBlock) inner--;
-        else depth--;
+        nest(-1);
       }
       i += end[0].length;
       continue;
@@ -60,15 +63,15 @@ export function rowsApart(tex: string): string | null {
     if (command) {
       const name = command[0];
       if (name === '\\\\' && inBlock && inner === 0) column = 0;
-      if (name === '\\left') inBlock ? inner++ : depth++;
-      if (name === '\\right') inBlock ? inner-- : depth--;
+      if (name === '\\left') nest(1);
+      if (name === '\\right') nest(-1);
       out += name;
       i += name.length;
       continue;
     }
     const char = tex[i];
-    if (char === '{') inBlock ? inner++ : depth++;
-    if (char === '}') inBlock ? inner-- : depth--;
+    if (char === '{') nest(1);
+    if (char === '}') nest(-1);
     if (char === '&' && inBlock && inner === 0) {
       column++;
       // The odd & of a row marks where it aligns; the even one parts two equations.
