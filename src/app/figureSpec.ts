@@ -8,6 +8,7 @@ import type { CameraSettings } from '../render/orbitCamera';
 import type { Painter } from '../render/painter';
 import type { Bounds } from '../render/projection';
 import type { Theme } from '../render/theme';
+import type { CursorValues } from '../kit/cursorValues';
 
 /** A point the user can move: drawn by the shell on top of the figure. */
 export interface Handle {
@@ -104,13 +105,14 @@ export interface FigureSpec<S, M = S> {
    */
   keyLines?(model: M): number;
   /**
-   * How many rows of values at its cursor a plot writes above itself
-   * (kit/cursorValues valueColumn with `above`): the fit keeps room for them
-   * over the plot, so they stand over no curve (in presenter view's short
-   * strips they were boxed over the very peaks of L₁ and H₁). Answer per
-   * scene, so the plot keeps one size through its steps.
+   * The values a plot writes at its cursor (kit/cursorValues valueColumn):
+   * how many and the widest. The fit keeps room above the plot for the rows
+   * they take at its width, so they stand over no curve (in presenter view's
+   * short strips they were boxed over the very peaks of L₁ and H₁, and in
+   * its tall strip beside the curve, four to a row's one, over H₁). Answer
+   * per scene, its fullest step, so the plot keeps one size through its steps.
    */
-  valueRows?(model: M): number;
+  cursorValues?(model: M): CursorValues;
   /**
    * How far, in CSS pixels, the figure's marks reach round a point of its
    * subject: the fit keeps at least that much room round the subject, so a

@@ -69,31 +69,47 @@ describe('a figure whose marks reach beyond its subject', () => {
 });
 
 describe('a plot fitted with rows of values above it', () => {
-  const plot = (rows: number): FigureSpec<null, null> => ({
+  // Values of 28 px bold type, measured as a recording measures (0.56 em a
+  // character, a subscript 0.78 of the size): "L(t) = 0.00" 11 × 15.68 and
+  // its "0" 21.84 × 0.56, 184.7 px; 33.6 px apart; from 11.2 px inside the
+  // padding to as far from its other end. A 900 px plot with 30 px padding
+  // has 817.6 px for them: three to a row.
+  const plot = (count: number): FigureSpec<null, null> => ({
     ...figure(false),
     kind: 'plot',
-    valueRows: () => rows,
+    cursorValues: () => ({ count, widest: 'L_0(t) = 0.00' }),
   });
-  const fitted = (height: number, rows: number) => {
-    const view = new Viewport(900, height);
-    view.resize(900, height);
-    fitFigure(view, plot(rows), null, makeTheme(false, true), 30);
+  const fitted = (width: number, height: number, count: number) => {
+    const view = new Viewport(width, height);
+    view.resize(width, height);
+    fitFigure(view, plot(count), null, makeTheme(false, true), 30);
     const [, top] = view.toScreen([0, bounds.maxY]);
     const [, foot] = view.toScreen([0, bounds.minY]);
-    return { top, foot };
+    return { top, foot, kept: view.valueRoom };
   };
+  /** The room `rows` rows take, by hand: the foot's gap 0.25, a box 1.3 + 0.7, a row's pitch 1.95, 2 px; less the padding's 30. */
+  const room = (rows: number) => Math.ceil(28 * (0.25 + 2) + (rows - 1) * 28 * 1.95 + 2 - 30);
 
-  it('keeps their room over the plot: two rows of 28 px type, by hand', () => {
-    // Two rows: the foot's gap 0.25, a box 1.3 + 0.7 and a row's pitch 1.95,
-    // at 28 px, and 2 px: 119.6 px, of which the padding gives 30.
-    const { top, foot } = fitted(500, 2);
-    expect(top).toBeGreaterThanOrEqual(Math.ceil(119.6 - 30) + 30 - 1e-9);
-    expect(foot).toBeCloseTo(500 - 30, 6);
+  it('keeps the rows they take at the plot’s width: three values one row, four two', () => {
+    expect(fitted(900, 500, 3).kept).toBe(room(1));
+    const two = fitted(900, 500, 4);
+    expect(two.kept).toBe(room(2));
+    expect(two.top).toBeCloseTo(30 + room(2), 6);
+    expect(two.foot).toBeCloseTo(500 - 30, 6);
   });
 
-  it('keeps none on a strip it would take more than a quarter of (a phone’s)', () => {
-    const { top, foot } = fitted(120, 2);
+  it('keeps none on a wide strip they would take more than a quarter of (a phone’s)', () => {
+    const { top, foot, kept } = fitted(900, 120, 4);
+    expect(kept).toBe(0);
     expect(top).toBeCloseTo(30, 6);
     expect(foot).toBeCloseTo(120 - 30, 6);
+  });
+
+  it('keeps a row for each on a plot taller than wide, as long as it stays 0.6 of its width tall', () => {
+    // 300 px wide: 217.6 px for them, one to a row; four rows take 199 px of
+    // 400, more than a quarter, and leave the plot 201 px ≥ 180 tall.
+    expect(fitted(300, 400, 4).kept).toBe(room(4));
+    // 340 px tall would leave it 141 px < 180, and a quarter is 85 px: none.
+    expect(fitted(300, 340, 4).kept).toBe(0);
   });
 });

@@ -11,7 +11,7 @@ import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { drawHandles } from '../render/handles';
 import { keyBand } from '../kit/legend';
-import { valueBand } from '../kit/cursorValues';
+import { valueBand, valueRowsOver } from '../kit/cursorValues';
 import type { FigureSpec, Handle } from './lesson';
 
 export interface HeadlessOptions {
@@ -54,8 +54,13 @@ export function fitPadding(
   return [Math.min(room, 0.12 * width), Math.min(room, 0.12 * Math.min(width, height))];
 }
 
-/** At most this share of a plot's height is kept above it for its values (FigureSpec.valueRows). */
-const VALUES_SHARE = 0.25;
+/**
+ * The most a plot of this size gives up above it for its values
+ * (FigureSpec.cursorValues): a quarter of its height (a phone's 50 px strip
+ * keeps all of it for its curves), or on a plot taller than wide (presenter
+ * view's strip beside its curve) what leaves it 0.6 of its width tall.
+ */
+const valuesRoom = (width: number, height: number) => Math.max(0.25 * height, height - 0.6 * width);
 
 /** The band a figure's heading takes at its top: one line of label type and its margin above. */
 export const headlineBand = (theme: Theme): number => theme.sizes.label * 1.9;
@@ -81,11 +86,15 @@ export function fitFigure<S, M>(
   const [padX, padY] = (typeof padding === 'number' ? [padding, padding] : padding).map((pad) =>
     Math.max(pad, reach),
   );
-  // The values' room above a plot, where it leaves the plot most of its
-  // height (a phone's 50 px strip keeps all of it for its curves).
-  const values =
-    view instanceof Viewport ? valueBand(theme, figure.valueRows?.(model) ?? 0, padY) : 0;
-  const top = band + (values <= view.height * VALUES_SHARE ? values : 0);
+  // The values' room above a plot, in the rows they take at its width, where
+  // it leaves the plot most of its height.
+  const values = figure.cursorValues?.(model);
+  const rows =
+    view instanceof Viewport && values ? valueRowsOver(theme, values, view.width, padX) : 0;
+  const wanted = valueBand(theme, rows, padY);
+  const kept = wanted <= valuesRoom(view.width, view.height) ? wanted : 0;
+  if (view instanceof Viewport) view.valueRoom = kept;
+  const top = band + kept;
   // Half the band at each end, then the subject down by half: all of it on top.
   view.fit(figure.bounds(model), [padX, padY + top / 2], fitShape(figure));
   if (top) (view as Viewport).panBy(0, top / 2);

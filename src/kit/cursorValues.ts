@@ -1,9 +1,10 @@
 import { type Box, boxesMeet } from '../render/ink';
 import { firstClear, leastHidden } from '../render/boxPlaces';
 import { drawScreenLabel } from '../render/labelPlacer';
-import { labelWidth } from '../render/labelWidth';
+import { labelWidth, measureLabelOn, measuringSurface } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
 import type { Theme } from '../render/theme';
+import { Viewport } from '../render/viewport';
 
 // The values a function plot writes at its cursor (L₀(t) = 0.36, H₁ = 0.216):
 // in rows above the plot, where the figure keeps room for them; else boxed
@@ -18,10 +19,70 @@ const SPOTS = 9;
 /** A row of values above a plot: its pitch, and its foot's gap above the plot, at type `size`. */
 const ROW = { pitch: 1.95, foot: 0.25 } as const;
 
+/** The values at a plot's cursor, as the fit keeps room for them (FigureSpec.cursorValues). */
+export interface CursorValues {
+  /** How many, at most, in the scene's fullest step. */
+  count: number;
+  /** The widest of them at its number format, e.g. `H_3 = −0.000 (× D_{i+1})`. */
+  widest: string;
+}
+
+/** The gap between two values in a row, at type `size`. */
+const gapAt = (size: number) => size * 1.2;
+
+/**
+ * Boxes of these widths in rows from `start`, left to right and wrapped
+ * before `end` as a paragraph is: each one's x and row; null where one is
+ * wider than the room. The fit's reserve and the drawing share it.
+ */
+export function valueSpots(
+  widths: readonly number[],
+  start: number,
+  end: number,
+  size: number,
+): { x: number; row: number }[] | null {
+  const spots: { x: number; row: number }[] = [];
+  let x = start;
+  let row = 0;
+  for (const width of widths) {
+    if (x > start && x + width > end) [x, row] = [start, row + 1];
+    if (x + width > end) return null;
+    spots.push({ x, row });
+    x += width + gapAt(size);
+  }
+  return spots;
+}
+
+/** Where a row of values starts and ends over a plot whose ends are at `left` and `far` (px). */
+const rowEnds = (left: number, far: number, width: number, size: number) => ({
+  start: Math.max(left, 0) + size * 0.4,
+  end: Math.min(far, width) - size * 0.4,
+});
+
+/**
+ * How many rows `values` take over a plot fitted `padX` in from each side of
+ * a view `width` wide (a plot spans its view's width): 0 where one is wider
+ * than the plot (they go in a column then).
+ */
+export function valueRowsOver(
+  theme: Theme,
+  values: CursorValues,
+  width: number,
+  padX: number,
+): number {
+  if (values.count <= 0) return 0;
+  const size = theme.sizes.small;
+  const style = { size, bold: true, box: true, fixed: true } as const;
+  const one = measureLabelOn(measuringSurface(), theme, values.widest, style).total;
+  const { start, end } = rowEnds(padX, width - padX, width, size);
+  const spots = valueSpots(Array(values.count).fill(one), start, end, size);
+  return spots ? spots[spots.length - 1].row + 1 : 0;
+}
+
 /**
  * The room above a plot that `rows` rows of values at its cursor take
- * (FigureSpec.valueRows), beyond the `padding` the fit keeps there anyway:
- * what `valueColumn(…, above)` needs to write them there.
+ * (FigureSpec.cursorValues), beyond the `padding` the fit keeps there anyway:
+ * what `valueColumn` needs to write them there.
  */
 export function valueBand(theme: Theme, rows: number, padding: number): number {
   if (rows <= 0) return 0;
@@ -32,10 +93,10 @@ export function valueBand(theme: Theme, rows: number, padding: number): number {
 }
 
 /**
- * The values at a plot's cursor: `above` the plot in rows, where the figure
- * keeps room for them (FigureSpec.valueRows) or its margin is tall enough,
- * and they fit; else as a boxed column in the top corner away from the
- * cursor, never written over their own curves.
+ * The values at a plot's cursor: above the plot in rows, where the fit kept
+ * room for them (FigureSpec.cursorValues: the view's `valueRoom`) and they
+ * fit; else as a boxed column in the top corner away from the cursor, never
+ * written over their own curves.
  */
 export function valueColumn(
   painter: Painter,
@@ -43,9 +104,9 @@ export function valueColumn(
   range: { minX: number; maxX: number; maxY?: number },
   top: number,
   entries: readonly { text: string; color: string }[],
-  above = false,
 ): void {
-  if (above && valuesAbove(painter, range, entries)) return;
+  const kept = painter.view instanceof Viewport && painter.view.valueRoom > 0;
+  if (kept && valuesAbove(painter, range, entries)) return;
   const { view, theme } = painter;
   const size = theme.sizes.small;
   const [left] = view.toScreen([range.minX, 0]);
@@ -153,8 +214,7 @@ export function valueColumn(
 /**
  * The values in rows above the plot, left to right from its left edge,
  * where there is room for them whole between the figure's top and the
- * plot's (the room a figure keeps with `valueRows`, or a tall figure's own
- * margin): there no curve, peak or cursor line runs under them. In presenter
+ * plot's (the room the fit keeps for them, FigureSpec.cursorValues): there no curve, peak or cursor line runs under them. In presenter
  * view's short strips they stood in a row inside the plot, boxed over the
  * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not fit.
  */
@@ -171,20 +231,12 @@ function valuesAbove(
   const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
   const [far] = view.toScreen([range.maxX, range.maxY]);
   const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  const gap = size * 1.2;
-  const start = Math.max(left, 0) + size * 0.4;
-  const end = Math.min(far, view.width) - size * 0.4;
+  const { start, end } = rowEnds(left, far, view.width, size);
   // Left to right, wrapped to rows as a paragraph is, in the order given.
-  const spots: { x: number; row: number }[] = [];
-  let x = start;
-  let row = 0;
-  for (const entry of shown) {
-    const width = labelWidth(painter, entry.text, style);
-    if (x > start && x + width > end) [x, row] = [start, row + 1];
-    if (x + width > end) return false;
-    spots.push({ x, row });
-    x += width + gap;
-  }
+  const widths = shown.map((entry) => labelWidth(painter, entry.text, style));
+  const spots = valueSpots(widths, start, end, size);
+  if (!spots || !spots.length) return false;
+  const row = spots[spots.length - 1].row;
   // The last row's foot just above the plot (the top tick's number, half
   // above it, stands left of the axis, where the rows do not reach).
   const line = size * ROW.pitch;

@@ -216,6 +216,7 @@ describe('the values at a plot’s cursor, above the plot', () => {
     const band = valueBand(theme, rows, 30);
     view.fit(bounds, [60, 30 + band / 2], false);
     view.panBy(0, band / 2);
+    view.valueRoom = band;
     const painter = new Painter(new SvgContext(), view, theme);
     painter.holdLabels();
     for (const at of [0.5, 1.5, 2.5, 3.5]) painter.polyline(peak(at), { width: 3 });
@@ -229,7 +230,7 @@ describe('the values at a plot’s cursor, above the plot', () => {
   it('stand in a row over the plot’s top, in order, over no curve', () => {
     const { view, bounds, painter } = banded();
     const plotTop = view.toScreen([0, bounds.maxY])[1];
-    valueColumn(painter, 2, bounds, plotTop, entries, true);
+    valueColumn(painter, 2, bounds, plotTop, entries);
     painter.placeLabels();
     const boxes = entries.map(({ text }) => painter.labels.find((l) => l.text === text)!);
     for (const box of boxes) {
@@ -246,7 +247,7 @@ describe('the values at a plot’s cursor, above the plot', () => {
   it('wrap to rows where the plot is narrow, still above it; with no room, go in the plot', () => {
     const narrow = banded(700, 2);
     const plotTop = narrow.view.toScreen([0, narrow.bounds.maxY])[1];
-    valueColumn(narrow.painter, 2, narrow.bounds, plotTop, entries, true);
+    valueColumn(narrow.painter, 2, narrow.bounds, plotTop, entries);
     narrow.painter.placeLabels();
     const rows = new Set(narrow.painter.labels.map((b) => Math.round(b.y)));
     expect(rows.size).toBe(2);
@@ -254,7 +255,7 @@ describe('the values at a plot’s cursor, above the plot', () => {
     // No band: the plot's top 20 px from the figure's, too little for a row.
     const { view, bounds, painter } = strip(1900, 330, 20);
     const top = view.toScreen([0, bounds.maxY])[1];
-    valueColumn(painter, 2, bounds, top, entries, true);
+    valueColumn(painter, 2, bounds, top, entries);
     painter.placeLabels();
     expect(painter.labels).toHaveLength(4);
     for (const box of painter.labels) expect(box.y + box.height / 2).toBeGreaterThan(top);

@@ -6,12 +6,17 @@
 import { minusSigns, say } from './notation';
 import { type LabelStyle, splitSubscripts } from './labels';
 import type { Painter } from './painter';
+import { SvgContext } from './svgContext';
 import type { DrawingSurface } from './surface';
+import type { Theme } from './theme';
 
 /** The fonts and runs of a label, and its width in pixels. */
 export function measureLabel(painter: Painter, text: string, style: LabelStyle) {
-  const theme = painter.theme;
-  const c = painter.ctx;
+  return measureLabelOn(painter.ctx, painter.theme, text, style);
+}
+
+/** measureLabel on a surface of its own, before any painter draws (a figure's fit). */
+export function measureLabelOn(c: DrawingSurface, theme: Theme, text: string, style: LabelStyle) {
   // No text under the theme's least size, subscripts included.
   const least = theme.sizes.minText ?? 0;
   const size = Math.max(style.size ?? theme.sizes.label, least);
@@ -49,6 +54,20 @@ export function textWidth(c: DrawingSurface, font: string, text: string): number
     screenWidths.set(key, width);
   }
   return width;
+}
+
+let measuring: DrawingSurface | null = null;
+
+/**
+ * A surface to measure text on before a figure is drawn: a canvas of its
+ * own in a page (its widths cached as every screen canvas's), else (a test,
+ * a handout made headless) a recording, which measures its own way.
+ */
+export function measuringSurface(): DrawingSurface {
+  measuring ??=
+    (typeof document !== 'undefined' && document.createElement('canvas').getContext('2d')) ||
+    new SvgContext();
+  return measuring;
 }
 
 /** How wide a label will be (px), before it is placed. */

@@ -21,6 +21,11 @@ export class Viewport implements Projection {
   /** Pixels per world unit, horizontally and vertically. */
   scaleX = 100;
   scaleY = 100;
+  /**
+   * Pixels the fit kept above a plot for the values at its cursor (see
+   * kit/cursorValues.ts), 0 where it kept none.
+   */
+  valueRoom = 0;
 
   constructor(
     public width = 300,

@@ -123,7 +123,7 @@ function drawSegmentBases(painter: Painter, m: BSplineModel, i: number, info: Dr
 
 /**
  * The values at the cursor: above the plot, in the room the fit keeps there
- * (valueRows), else boxed in the plot's top corner away from it (off the
+ * (cursorValues), else boxed in the plot's top corner away from it (off the
  * curves they name).
  */
 function valuesAt(
@@ -134,8 +134,11 @@ function valuesAt(
 ): void {
   const top = painter.view.toScreen([bounds.minX, bounds.maxY])[1];
   const sorted = [...entries].sort((a, b) => b.y - a.y);
-  valueColumn(painter, at, bounds, Math.max(top, 0), sorted, true);
+  valueColumn(painter, at, bounds, Math.max(top, 0), sorted);
 }
+
+/** N_{i,r}'s value at the cursor as the plot writes it. */
+const valueText = (i: number, r: number, v: number) => `N_{${i},${r}} = ${v.toFixed(3)}`;
 
 function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   const theme = painter.theme;
@@ -178,9 +181,7 @@ function drawBasis(painter: Painter, m: BSplineModel, info: DrawInfo): void {
   });
   const row = m.table[r];
   const entries = row.flatMap((v, i) =>
-    v > 0
-      ? [{ y: v, text: `N_{${i},${r}} = ${v.toFixed(3)}`, color: painter.color(owner(i)) }]
-      : [],
+    v > 0 ? [{ y: v, text: valueText(i, r, v), color: painter.color(owner(i)) }] : [],
   );
   for (const e of entries) painter.dot([u, e.y], e.color, theme.sizes.point);
   if (!info.thumbnail) valuesAt(painter, u, bounds, entries);
@@ -206,8 +207,12 @@ export const basisFigure: KitFigure<BSplineState, BSplineModel> = {
   kind: 'plot',
   weight: 1,
   bounds: basisBounds,
-  // The four values at the cursor above the plot, two by two, off the basis' peaks.
-  valueRows: () => 2,
+  // The values at the cursor above the plot, off the basis' peaks: one for
+  // each basis function not 0 there, degree + 1 (the widest: the last's).
+  cursorValues: (m) => ({
+    count: m.degree + 1,
+    widest: valueText(m.rows[m.degree].length - 1, m.degree, 0.5),
+  }),
   draw: drawBasis,
   drawnFrom: drawnFromAllButPoints,
   handles: (m) => [

@@ -14,6 +14,10 @@ const BOUNDS: Bounds = { minX: 0, maxX: 1, minY: -0.25, maxY: 1.1 };
 /** What each basis function weighs: H0 P_i, H1 P_i+1, H2 D_i, H3 D_i+1. */
 const WEIGHS = ['P_i', 'P_{i+1}', 'D_i', 'D_{i+1}'];
 
+/** H_k's value at the cursor as the plot writes it, with what it weighs. */
+const valueText = (k: number, w: number) =>
+  `H_${k} = ${texNumber(w, 3).replace('-', '−')} (× ${WEIGHS[k]})`;
+
 /**
  * The step between the value axis' ticks: 0.25, or coarser where the plot is
  * too short for its numbers to stand one above another (presenter view under
@@ -35,9 +39,10 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
   title: 'The Hermite basis functions H0 to H3, with the cursor at μ',
   kind: 'plot',
   bounds: () => BOUNDS,
-  // H0 … H3 at μ in a row above the plot, off the curves' peaks; kept in
+  // H0 … H3 at μ in rows above the plot, off the curves' peaks; kept in
   // every step, so the plot keeps its size as they appear.
-  valueRows: () => 1,
+  // (The widest: a negative value, with the longest name it weighs.)
+  cursorValues: () => ({ count: 4, widest: valueText(3, -0.5) }),
   // H0 … H3 and their values at μ: the points and gradients do not change them.
   drawnFrom: (m) => [m.state.mu, m.shown.key],
   draw(painter, m, info) {
@@ -68,10 +73,9 @@ export const basisFigure: KitFigure<HermiteState, HermiteModel> = {
       BOUNDS,
       top,
       weights.map((w, k) => ({
-        text: `H_${k} = ${texNumber(w, 3).replace('-', '−')} (× ${WEIGHS[k]})`,
+        text: valueText(k, w),
         color: painter.color(k),
       })),
-      true,
     );
   },
   handles: (m) => [

@@ -11,13 +11,20 @@ import type { LagrangeState } from './state';
 /** Label each weight on the plot up to this many points (then only the table). */
 const LABEL_UP_TO = 6;
 
+/** L_k's value at the cursor as the plot writes it. */
+const valueText = (k: number, w: number) => `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`;
+
 export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
   id: 'basis',
   title: 'The Lagrange basis polynomials L_k(t), with the cursor at t',
   kind: 'plot',
   bounds: (m) => m.plotBounds,
-  // The weights at t in a row above the plot, off the peaks of the L_k.
-  valueRows: (m) => (m.ts.length <= LABEL_UP_TO ? 1 : 0),
+  // The weights at t in rows above the plot, off the peaks of the L_k (the
+  // widest: a negative one of the last).
+  cursorValues: (m) =>
+    m.ts.length <= LABEL_UP_TO
+      ? { count: m.ts.length, widest: valueText(m.ts.length - 1, -0.5) }
+      : { count: 0, widest: '' },
   // L_k(t) depend on the parameter values t_k alone (by value: chord length
   // moves them with the points, equal spacing does not), and on t and the step.
   drawnFrom: (m) => [m.state.t, m.comparison !== null, m.shown.key, ...m.ts],
@@ -64,10 +71,9 @@ export const basisFigure: KitFigure<LagrangeState, LagrangeModel> = {
         bounds,
         top,
         weights.slice(0, count).map((w, k) => ({
-          text: `L_{${k}}(t) = ${texNumber(w, 2).replace('-', '−')}`,
+          text: valueText(k, w),
           color: painter.color(k),
         })),
-        true,
       );
     if (!info.thumbnail && m.basisCut && count > 0) {
       const [x, y] = painter.view.toScreen([1, bounds.minY]);
