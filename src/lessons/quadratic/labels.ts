@@ -22,7 +22,8 @@ export function placeMemberLabels(
   const size = theme.sizes.label * 0.9;
   const height = size * 1.6;
   const style = { size, bold: true, box: true } as const;
-  const total = members.reduce((sum, m) => sum + labelWidth(painter, m.text, style), 0);
+  const widths = members.map((m) => labelWidth(painter, m.text, style));
+  const total = widths.reduce((sum, w) => sum + w, 0);
   if (total > view.width * 0.9) {
     drawLegend(
       painter,
@@ -35,9 +36,10 @@ export function placeMemberLabels(
     return;
   }
   const placed: { x: number; y: number; w: number }[] = [];
-  for (const member of members) {
+  members.forEach((member, k) => {
     const spots = member.labelSpots;
-    const width = member.text.length * size * 0.52 + size;
+    // Its box: the text as measured and the box's padding either side.
+    const width = widths[k] + size * 0.7;
     let first = -1;
     let free = -1;
     for (let i = 0; i < spots.length; i++) {
@@ -58,7 +60,7 @@ export function placeMemberLabels(
       }
     }
     const chosen = free >= 0 ? free : first;
-    if (chosen < 0) continue;
+    if (chosen < 0) return;
     const [x, y] = view.toScreen(spots[chosen]);
     placed.push({ x, y, w: width });
     painter.dot(spots[chosen], colour(member), theme.sizes.point * 0.6);
@@ -69,5 +71,5 @@ export function placeMemberLabels(
       size,
       bold: true,
     });
-  }
+  });
 }
