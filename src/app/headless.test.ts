@@ -85,22 +85,23 @@ describe('a plot fitted with rows of values above it', () => {
     fitFigure(view, plot(count), null, makeTheme(false, true), 30);
     const [, top] = view.toScreen([0, bounds.maxY]);
     const [, foot] = view.toScreen([0, bounds.minY]);
-    return { top, foot, kept: view.valueRoom };
+    // The room kept beyond the padding, and the rows the view says it kept.
+    return { top, foot, kept: Math.round((top - 30) * 1e6) / 1e6, rows: view.valueRows };
   };
   /** The room `rows` rows take, by hand: the foot's gap 0.25, a box 1.3 + 0.7, a row's pitch 1.95, 2 px; less the padding's 30. */
   const room = (rows: number) => Math.ceil(28 * (0.25 + 2) + (rows - 1) * 28 * 1.95 + 2 - 30);
 
   it('keeps the rows they take at the plot’s width: three values one row, four two', () => {
-    expect(fitted(900, 500, 3).kept).toBe(room(1));
+    expect(fitted(900, 500, 3)).toMatchObject({ kept: room(1), rows: 1 });
     const two = fitted(900, 500, 4);
-    expect(two.kept).toBe(room(2));
+    expect(two).toMatchObject({ kept: room(2), rows: 2 });
     expect(two.top).toBeCloseTo(30 + room(2), 6);
     expect(two.foot).toBeCloseTo(500 - 30, 6);
   });
 
   it('keeps none on a wide strip they would take more than a quarter of (a phone’s)', () => {
-    const { top, foot, kept } = fitted(900, 120, 4);
-    expect(kept).toBe(0);
+    const { top, foot, kept, rows } = fitted(900, 120, 4);
+    expect([kept, rows]).toEqual([0, 0]);
     expect(top).toBeCloseTo(30, 6);
     expect(foot).toBeCloseTo(120 - 30, 6);
   });
@@ -108,8 +109,8 @@ describe('a plot fitted with rows of values above it', () => {
   it('keeps a row for each on a plot taller than wide, as long as it stays 0.6 of its width tall', () => {
     // 300 px wide: 217.6 px for them, one to a row; four rows take 199 px of
     // 400, more than a quarter, and leave the plot 201 px ≥ 180 tall.
-    expect(fitted(300, 400, 4).kept).toBe(room(4));
+    expect(fitted(300, 400, 4)).toMatchObject({ kept: room(4), rows: 4 });
     // 340 px tall would leave it 141 px < 180, and a quarter is 85 px: none.
-    expect(fitted(300, 340, 4).kept).toBe(0);
+    expect(fitted(300, 340, 4)).toMatchObject({ kept: 0, rows: 0 });
   });
 });

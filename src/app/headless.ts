@@ -92,8 +92,9 @@ export function fitFigure<S, M>(
   const rows =
     view instanceof Viewport && values ? valueRowsOver(theme, values, view.width, padX) : 0;
   const wanted = valueBand(theme, rows, padY);
-  const kept = wanted <= valuesRoom(view.width, view.height) ? wanted : 0;
-  if (view instanceof Viewport) view.valueRoom = kept;
+  const room = valuesRoom(view.width, view.height);
+  const kept = wanted <= room ? wanted : 0;
+  if (view instanceof Viewport) view.valueRows = wanted <= room ? rows : 0;
   const top = band + kept;
   // Half the band at each end, then the subject down by half: all of it on top.
   view.fit(figure.bounds(model), [padX, padY + top / 2], fitShape(figure));

@@ -94,7 +94,7 @@ export function valueBand(theme: Theme, rows: number, padding: number): number {
 
 /**
  * The values at a plot's cursor: above the plot in rows, where the fit kept
- * room for them (FigureSpec.cursorValues: the view's `valueRoom`) and they
+ * room for them (FigureSpec.cursorValues: the view's `valueRows`) and they
  * fit; else as a boxed column in the top corner away from the cursor, never
  * written over their own curves.
  */
@@ -105,8 +105,23 @@ export function valueColumn(
   top: number,
   entries: readonly { text: string; color: string }[],
 ): void {
-  const kept = painter.view instanceof Viewport && painter.view.valueRoom > 0;
-  if (kept && valuesAbove(painter, range, entries)) return;
+  // Decided when the labels are placed, seeing those placed before (the
+  // plot's own y name, where the rows would start).
+  painter.placing(() => {
+    const kept = painter.view instanceof Viewport && painter.view.valueRows > 0;
+    if (!kept || !valuesAbove(painter, range, entries))
+      valuesInPlot(painter, cursor, range, top, entries);
+  });
+}
+
+/** The values inside the plot: a boxed column in its top corner, or on a short strip a row along its top. */
+function valuesInPlot(
+  painter: Painter,
+  cursor: number,
+  range: { minX: number; maxX: number },
+  top: number,
+  entries: readonly { text: string; color: string }[],
+): void {
   const { view, theme } = painter;
   const size = theme.sizes.small;
   const [left] = view.toScreen([range.minX, 0]);
@@ -214,9 +229,12 @@ export function valueColumn(
 /**
  * The values in rows above the plot, left to right from its left edge,
  * where there is room for them whole between the figure's top and the
- * plot's (the room the fit keeps for them, FigureSpec.cursorValues): there no curve, peak or cursor line runs under them. In presenter
+ * plot's (the room the fit keeps for them, FigureSpec.cursorValues), and
+ * right of a label already there (the plot's y name): there no curve,
+ * peak or cursor line runs under them. In presenter
  * view's short strips they stood in a row inside the plot, boxed over the
- * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not fit.
+ * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not
+ * fit. Called as the labels are placed.
  */
 function valuesAbove(
   painter: Painter,
@@ -231,10 +249,13 @@ function valuesAbove(
   const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
   const [far] = view.toScreen([range.maxX, range.maxY]);
   const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  const { start, end } = rowEnds(left, far, view.width, size);
+  const ends = rowEnds(left, far, view.width, size);
+  // Right of any label already up there at its start (its y name at the axis' top).
+  const names = painter.labels.filter((b) => b.y < plotTop && b.x < ends.start + size);
+  const start = Math.max(ends.start, ...names.map((b) => b.x + b.width + size * 0.6));
   // Left to right, wrapped to rows as a paragraph is, in the order given.
   const widths = shown.map((entry) => labelWidth(painter, entry.text, style));
-  const spots = valueSpots(widths, start, end, size);
+  const spots = valueSpots(widths, start, ends.end, size);
   if (!spots || !spots.length) return false;
   const row = spots[spots.length - 1].row;
   // The last row's foot just above the plot (the top tick's number, half
@@ -242,11 +263,17 @@ function valuesAbove(
   const line = size * ROW.pitch;
   const last = plotTop - size * ROW.foot - pad - size * 0.65;
   if (last - row * line - size * 0.65 - pad < 2) return false;
-  painter.placing(() => {
-    shown.forEach((entry, i) => {
-      const y = last - (row - spots[i].row) * line;
-      drawScreenLabel(painter, entry.text, spots[i].x, y, { ...style, color: entry.color });
-    });
+  const boxes = shown.map((_, i) => ({
+    x: spots[i].x - pad,
+    y: last - (row - spots[i].row) * line - size * 0.65 - pad,
+    width: widths[i] + 2 * pad,
+    height: size * 1.3 + 2 * pad,
+  }));
+  // On another label (one the figure put up there): in the plot instead.
+  if (boxes.some((box) => painter.labels.some((b) => boxesMeet(b.frame ?? b, box)))) return false;
+  shown.forEach((entry, i) => {
+    const y = last - (row - spots[i].row) * line;
+    drawScreenLabel(painter, entry.text, spots[i].x, y, { ...style, color: entry.color });
   });
   return true;
 }

@@ -216,7 +216,7 @@ describe('the values at a plot’s cursor, above the plot', () => {
     const band = valueBand(theme, rows, 30);
     view.fit(bounds, [60, 30 + band / 2], false);
     view.panBy(0, band / 2);
-    view.valueRoom = band;
+    view.valueRows = rows;
     const painter = new Painter(new SvgContext(), view, theme);
     painter.holdLabels();
     for (const at of [0.5, 1.5, 2.5, 3.5]) painter.polyline(peak(at), { width: 3 });
@@ -242,6 +242,22 @@ describe('the values at a plot’s cursor, above the plot', () => {
     // One row, left to right as given.
     expect(new Set(boxes.map((b) => Math.round(b.y))).size).toBe(1);
     expect(boxes.map((b) => b.x)).toEqual([...boxes.map((b) => b.x)].sort((a, b) => a - b));
+  });
+
+  it('start right of a label already at the rows’ start (the plot’s y name), and stay in one row', () => {
+    const { view, bounds, painter } = banded();
+    const plotTop = view.toScreen([0, bounds.maxY])[1];
+    // A y name at the axis' top, across the plot's top edge as plotAxes
+    // sets it, placed before the values.
+    painter.screenLabel('κ(t)', 80, plotTop - 4, { size: 28, fixed: true });
+    valueColumn(painter, 2, bounds, plotTop, entries);
+    painter.placeLabels();
+    const name = painter.labels.find((l) => l.text === 'κ(t)')!;
+    const values = entries.map(({ text }) => painter.labels.find((l) => l.text === text)!);
+    for (const box of values) {
+      expect(box.x, box.text).toBeGreaterThan(name.x + name.width);
+      expect(box.y + box.height, box.text).toBeLessThan(plotTop);
+    }
   });
 
   it('wrap to rows where the plot is narrow, still above it; with no room, go in the plot', () => {

@@ -22,10 +22,10 @@ export class Viewport implements Projection {
   scaleX = 100;
   scaleY = 100;
   /**
-   * Pixels the fit kept above a plot for the values at its cursor (see
-   * kit/cursorValues.ts), 0 where it kept none.
+   * Rows of values at its cursor the fit kept room for above a plot (see
+   * kit/cursorValues.ts; its padding may hold them already), 0 where none.
    */
-  valueRoom = 0;
+  valueRows = 0;
 
   constructor(
     public width = 300,

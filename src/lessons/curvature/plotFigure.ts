@@ -40,6 +40,14 @@ function series(m: CurvatureModel): Series[] {
   return shown.has('arcLength') ? [{ name: 's', runs: [m.arc!.plot], colour: 3 }] : [];
 }
 
+/** The names each part plots at once at most (series), for the room their values take. */
+const PLOTTED: Record<CurvatureState['part'], readonly string[]> = {
+  plane: ['|P′|'],
+  joins: ['κ', CATMULL_KAPPA],
+  space: ['κ', 'τ'],
+  arc: ['s'],
+};
+
 function plotBounds(m: CurvatureModel): Bounds {
   let [low, high] = [0, 0];
   const { part } = m.state;
@@ -87,6 +95,14 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
   title: 'κ(t), τ(t) or s(t) plotted against t (or the global p̄ across pieces), with a cursor at t',
   kind: 'plot',
   bounds: plotBounds,
+  // The values at the cursor in a row above the plot, off the curves they
+  // read (boxed in its corner they stood on κ's peak): as many as the part
+  // plots at once, the widest its longest name with a two-digit negative.
+  cursorValues: (m) => {
+    const names = PLOTTED[m.state.part];
+    const longest = names.reduce((a, b) => (b.length > a.length ? b : a));
+    return { count: names.length, widest: `${longest} = −00.000` };
+  },
   draw(painter, m, info) {
     const theme = painter.theme;
     const bounds = plotBounds(m);
@@ -98,7 +114,8 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
         pieces(m) > 1 ? niceStep(pieces(m) / 8) : 0.1,
         yStep(painter, bounds),
         axisName(m),
-        shown.map((s) => s.name).join(', '),
+        // Both of the joins' curves are κ (their values above say whose is whose).
+        m.state.part === 'joins' ? 'κ' : shown.map((s) => s.name).join(', '),
       );
     const entries = cursorValues(m).filter((e) => shown.some((s) => s.name === e.name));
     // The values at the cursor, boxed in the top corner away from it, off the
