@@ -8,7 +8,7 @@ import type { CameraSettings } from '../render/orbitCamera';
 import type { Painter } from '../render/painter';
 import type { Bounds } from '../render/projection';
 import type { Theme } from '../render/theme';
-import type { CursorValues } from '../kit/cursorValues';
+import type { CursorValues } from '../kit/valueRows';
 
 /** A point the user can move: drawn by the shell on top of the figure. */
 export interface Handle {

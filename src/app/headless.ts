@@ -11,7 +11,7 @@ import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
 import { drawHandles } from '../render/handles';
 import { keyBand } from '../kit/legend';
-import { valueBand, valueRowsOver } from '../kit/cursorValues';
+import { valueBand, valueRowsOver } from '../kit/valueRows';
 import type { FigureSpec, Handle } from './lesson';
 
 export interface HeadlessOptions {

@@ -1,96 +1,20 @@
 import { type Box, boxesMeet } from '../render/ink';
 import { firstClear, leastHidden } from '../render/boxPlaces';
 import { drawScreenLabel } from '../render/labelPlacer';
-import { labelWidth, measureLabelOn, measuringSurface } from '../render/labelWidth';
+import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
-import type { Theme } from '../render/theme';
 import { Viewport } from '../render/viewport';
+import { valuesAbove } from './valueRows';
 
 // The values a function plot writes at its cursor (L₀(t) = 0.36, H₁ = 0.216):
 // in rows above the plot, where the figure keeps room for them; else boxed
 // in a column in the top corner away from the cursor; on a strip too short
 // for either (a phone's), in a row along its top wherever no curve runs
-// under them. Never over the curves they read. (The plot's names:
-// plotMarks.ts.)
+// under them. Never over the curves they read. (The rows and the room the
+// fit keeps for them: valueRows.ts. The plot's names: plotMarks.ts.)
 
 /** Places tried for the column along the plot's top, from its corner towards the cursor. */
 const SPOTS = 9;
-
-/** A row of values above a plot: its pitch, and its foot's gap above the plot, at type `size`. */
-const ROW = { pitch: 1.95, foot: 0.25 } as const;
-
-/** The values at a plot's cursor, as the fit keeps room for them (FigureSpec.cursorValues). */
-export interface CursorValues {
-  /** How many, at most, in the scene's fullest step. */
-  count: number;
-  /** The widest of them at its number format, e.g. `H_3 = −0.000 (× D_{i+1})`. */
-  widest: string;
-}
-
-/** The gap between two values in a row, at type `size`. */
-const gapAt = (size: number) => size * 1.2;
-
-/**
- * Boxes of these widths in rows from `start`, left to right and wrapped
- * before `end` as a paragraph is: each one's x and row; null where one is
- * wider than the room. The fit's reserve and the drawing share it.
- */
-export function valueSpots(
-  widths: readonly number[],
-  start: number,
-  end: number,
-  size: number,
-): { x: number; row: number }[] | null {
-  const spots: { x: number; row: number }[] = [];
-  let x = start;
-  let row = 0;
-  for (const width of widths) {
-    if (x > start && x + width > end) [x, row] = [start, row + 1];
-    if (x + width > end) return null;
-    spots.push({ x, row });
-    x += width + gapAt(size);
-  }
-  return spots;
-}
-
-/** Where a row of values starts and ends over a plot whose ends are at `left` and `far` (px). */
-const rowEnds = (left: number, far: number, width: number, size: number) => ({
-  start: Math.max(left, 0) + size * 0.4,
-  end: Math.min(far, width) - size * 0.4,
-});
-
-/**
- * How many rows `values` take over a plot fitted `padX` in from each side of
- * a view `width` wide (a plot spans its view's width): 0 where one is wider
- * than the plot (they go in a column then).
- */
-export function valueRowsOver(
-  theme: Theme,
-  values: CursorValues,
-  width: number,
-  padX: number,
-): number {
-  if (values.count <= 0) return 0;
-  const size = theme.sizes.small;
-  const style = { size, bold: true, box: true, fixed: true } as const;
-  const one = measureLabelOn(measuringSurface(), theme, values.widest, style).total;
-  const { start, end } = rowEnds(padX, width - padX, width, size);
-  const spots = valueSpots(Array(values.count).fill(one), start, end, size);
-  return spots ? spots[spots.length - 1].row + 1 : 0;
-}
-
-/**
- * The room above a plot that `rows` rows of values at its cursor take
- * (FigureSpec.cursorValues), beyond the `padding` the fit keeps there anyway:
- * what `valueColumn` needs to write them there.
- */
-export function valueBand(theme: Theme, rows: number, padding: number): number {
-  if (rows <= 0) return 0;
-  const size = theme.sizes.small;
-  // The foot's gap, a box (its letters and padding), the rows above it, 2 px from the edge.
-  const room = size * (ROW.foot + 1.3 + 0.7) + (rows - 1) * size * ROW.pitch + 2;
-  return Math.max(0, Math.ceil(room - padding));
-}
 
 /**
  * The values at a plot's cursor: above the plot in rows, where the fit kept
@@ -224,56 +148,4 @@ function valuesInPlot(
       });
     });
   });
-}
-
-/**
- * The values in rows above the plot, left to right from its left edge,
- * where there is room for them whole between the figure's top and the
- * plot's (the room the fit keeps for them, FigureSpec.cursorValues), and
- * right of a label already there (the plot's y name): there no curve,
- * peak or cursor line runs under them. In presenter
- * view's short strips they stood in a row inside the plot, boxed over the
- * very peaks of L₁ and H₁ (#19). False, drawing nothing, where they do not
- * fit. Called as the labels are placed.
- */
-function valuesAbove(
-  painter: Painter,
-  range: { minX: number; maxX: number; maxY?: number },
-  entries: readonly { text: string; color: string }[],
-): boolean {
-  if (range.maxY === undefined) return false;
-  const { view, theme } = painter;
-  const size = theme.sizes.small;
-  const style = { size, bold: true, box: true, fixed: true } as const;
-  const pad = size * 0.35;
-  const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
-  const [far] = view.toScreen([range.maxX, range.maxY]);
-  const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  const ends = rowEnds(left, far, view.width, size);
-  // Right of any label already up there at its start (its y name at the axis' top).
-  const names = painter.labels.filter((b) => b.y < plotTop && b.x < ends.start + size);
-  const start = Math.max(ends.start, ...names.map((b) => b.x + b.width + size * 0.6));
-  // Left to right, wrapped to rows as a paragraph is, in the order given.
-  const widths = shown.map((entry) => labelWidth(painter, entry.text, style));
-  const spots = valueSpots(widths, start, ends.end, size);
-  if (!spots || !spots.length) return false;
-  const row = spots[spots.length - 1].row;
-  // The last row's foot just above the plot (the top tick's number, half
-  // above it, stands left of the axis, where the rows do not reach).
-  const line = size * ROW.pitch;
-  const last = plotTop - size * ROW.foot - pad - size * 0.65;
-  if (last - row * line - size * 0.65 - pad < 2) return false;
-  const boxes = shown.map((_, i) => ({
-    x: spots[i].x - pad,
-    y: last - (row - spots[i].row) * line - size * 0.65 - pad,
-    width: widths[i] + 2 * pad,
-    height: size * 1.3 + 2 * pad,
-  }));
-  // On another label (one the figure put up there): in the plot instead.
-  if (boxes.some((box) => painter.labels.some((b) => boxesMeet(b.frame ?? b, box)))) return false;
-  shown.forEach((entry, i) => {
-    const y = last - (row - spots[i].row) * line;
-    drawScreenLabel(painter, entry.text, spots[i].x, y, { ...style, color: entry.color });
-  });
-  return true;
 }

@@ -4,7 +4,8 @@ import { Painter } from '../render/painter';
 import { SvgContext } from '../render/svgContext';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { valueBand, valueColumn } from './cursorValues';
+import { valueColumn } from './cursorValues';
+import { valueBand } from './valueRows';
 import { lineName, plotYName } from './plotMarks';
 
 /**
