@@ -6,7 +6,8 @@ import { valueColumn } from '../../kit/cursorValues';
 import { lineName } from '../../kit/plotMarks';
 import { COLOURS } from './marks';
 import type { CurvatureModel } from './model';
-import { CATMULL_COLOUR, CATMULL_KAPPA, drawJoinMarks, joinSeries } from './joinsMarks';
+import { drawJoinMarks, joinSeries } from './joinsMarks';
+import { cursorValues, valuesRoom } from './plotValues';
 import type { Join } from './sources';
 import type { CurvatureState } from './state';
 
@@ -39,14 +40,6 @@ function series(m: CurvatureModel): Series[] {
   }
   return shown.has('arcLength') ? [{ name: 's', runs: [m.arc!.plot], colour: 3 }] : [];
 }
-
-/** The names each part plots at once at most (series), for the room their values take. */
-const PLOTTED: Record<CurvatureState['part'], readonly string[]> = {
-  plane: ['|P′|'],
-  joins: ['κ', CATMULL_KAPPA],
-  space: ['κ', 'τ'],
-  arc: ['s'],
-};
 
 function plotBounds(m: CurvatureModel): Bounds {
   let [low, high] = [0, 0];
@@ -98,11 +91,7 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
   // The values at the cursor in a row above the plot, off the curves they
   // read (boxed in its corner they stood on κ's peak): as many as the part
   // plots at once, the widest its longest name with a two-digit negative.
-  cursorValues: (m) => {
-    const names = PLOTTED[m.state.part];
-    const longest = names.reduce((a, b) => (b.length > a.length ? b : a));
-    return { count: names.length, widest: `${longest} = −00.000` };
-  },
+  cursorValues: (m) => valuesRoom(m.state.part),
   draw(painter, m, info) {
     const theme = painter.theme;
     const bounds = plotBounds(m);
@@ -161,27 +150,6 @@ export const plotFigure: KitFigure<CurvatureState, CurvatureModel> = {
     Math.abs(at[0] - m.state.t * pieces(m)) <= tolerance ? 'cursor' : null,
   weight: 2,
 };
-
-function cursorValues(m: CurvatureModel): { name: string; y: number; colour: number }[] {
-  const { part } = m.state;
-  if (part === 'plane' || part === 'joins') {
-    const at = m.plane!.at;
-    const out = [{ name: '|P′|', y: at.speed, colour: 4 }];
-    if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
-    // The dashed curve's value too, in its colour: with κ's, the plot's key.
-    if (m.catmullKappa !== null)
-      out.push({ name: CATMULL_KAPPA, y: m.catmullKappa, colour: CATMULL_COLOUR });
-    return out;
-  }
-  if (part === 'space') {
-    const at = m.space.at;
-    const out = [];
-    if (at.curvature !== null) out.push({ name: 'κ', y: at.curvature, colour: COLOURS.curvature });
-    if (at.torsion !== null) out.push({ name: 'τ', y: at.torsion, colour: COLOURS.torsion });
-    return out;
-  }
-  return [{ name: 's', y: m.arc!.sAtT, colour: 3 }];
-}
 
 /** Inflections and cusps (plane), frame flips (space), the table and its inverse (arc length). */
 function drawMarks(painter: Painter, m: CurvatureModel, bounds: Bounds, thumbnail: boolean): void {
