@@ -81,14 +81,12 @@ export function fitToWidth(root: ParentNode): void {
     // Still too wide: it scrolls, so the keyboard must reach it.
     const scrolls = wraps ? line * fitted > box + 1 : natural * fitted > box + 1;
     // Aligned rows too wide even at 12 px: set apart, each free to take lines (rowsApart.ts).
-    const setRows = rowsSetter.get(el);
-    if (scrolls && setRows && !rowsAreApart(el)) {
+    const rows = rowsSetter.get(el);
+    if (scrolls && rows && !rowsAreApart(el) && rows.has()) {
       el.dataset.rows = 'apart';
-      if (setRows()) {
-        apart = true;
-        return;
-      }
-      delete el.dataset.rows;
+      rows.set();
+      apart = true;
+      return;
     }
     if (scrolls !== el.hasAttribute('tabindex')) {
       if (scrolls) el.setAttribute('tabindex', '0');
@@ -102,15 +100,20 @@ export function fitToWidth(root: ParentNode): void {
 }
 
 /**
- * How a formula of aligned rows is typeset again, its rows apart or aligned
- * as `rowsAreApart` says; it says whether it had rows to set apart, and
- * marks itself for fitting. Given by the formula (formula.ts), used by the fit.
+ * A formula's rows, as the fit sets them (given by the formula, formula.ts):
+ * whether it has aligned rows to set apart, and its typesetting again, its
+ * rows apart or aligned as `rowsAreApart` says, marked for fitting.
  */
-const rowsSetter = new WeakMap<HTMLElement, () => boolean>();
+export interface RowsSetter {
+  has(): boolean;
+  set(): void;
+}
+
+const rowsSetter = new WeakMap<HTMLElement, RowsSetter>();
 
 /** Lets the fit set `el`'s aligned rows apart when it is too wide for its box even at 12 px. */
-export function canSetRowsApart(el: HTMLElement, setRows: () => boolean): void {
-  rowsSetter.set(el, setRows);
+export function canSetRowsApart(el: HTMLElement, rows: RowsSetter): void {
+  rowsSetter.set(el, rows);
 }
 
 /** Whether `el`'s rows are to be typeset apart (the fit found them too wide aligned). */
@@ -228,7 +231,7 @@ export function refitAll(root: ParentNode): void {
   // Its box may now hold its rows aligned: tried again (and set apart again in the same pass if not).
   for (const el of root.querySelectorAll<HTMLElement>('[data-rows="apart"]')) {
     delete el.dataset.rows;
-    rowsSetter.get(el)?.();
+    rowsSetter.get(el)?.set();
   }
   for (const el of root.querySelectorAll<HTMLElement>('[data-fit]')) el.dataset.fit = 'pending';
   freeAllBoxes(root);

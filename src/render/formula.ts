@@ -29,12 +29,15 @@ export function renderFormula(el: HTMLElement, tex: string, display = false): vo
     if (display) markForFit(el);
   });
   if (display)
-    canSetRowsApart(el, () => {
-      const now = el.dataset.tex ?? '';
-      if (rowsApart(now) === null) return false;
-      katex.render(sayTex(asFitted(el, now, display)), el, { ...OPTIONS, displayMode: true });
-      markForFit(el);
-      return true;
+    canSetRowsApart(el, {
+      has: () => rowsApart(el.dataset.tex ?? '') !== null,
+      set: () => {
+        katex.render(sayTex(asFitted(el, el.dataset.tex ?? '', true)), el, {
+          ...OPTIONS,
+          displayMode: true,
+        });
+        markForFit(el);
+      },
     });
 }
 
@@ -89,11 +92,13 @@ export class LiveFormula {
     setClass(this.element, display ? 'formula display live' : 'formula live');
     watchSeen(this.element, this);
     if (display)
-      canSetRowsApart(this.element, () => {
-        if (this.shape === null || rowsApart(this.shape) === null) return false;
-        this.typeset(this.shape);
-        this.fill(this.latest);
-        return true;
+      canSetRowsApart(this.element, {
+        has: () => this.shape !== null && rowsApart(this.shape) !== null,
+        set: () => {
+          if (this.shape === null) return;
+          this.typeset(this.shape);
+          this.fill(this.latest);
+        },
       });
   }
 

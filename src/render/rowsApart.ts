@@ -1,3 +1,6 @@
+/** A formula's tokens: an environment's start or end (its name caught), a command, or one character. */
+const TOKENS = /\\begin\{([a-zA-Z*]+)\}|\\end\{([a-zA-Z*]+)\}|\\(?:[a-zA-Z]+|[\s\S])?|[^\\]/g;
+
 /**
  * A formula of aligned rows (`\begin{aligned} a &= b \\ c &= d \end{aligned}`)
  * written as the same rows one under another, each free to break after an
@@ -15,6 +18,8 @@
  * the formula has no such block.
  */
 export function rowsApart(tex: string): string | null {
+  // Most formulas have none: no scan (the fit asks of every formula too wide to fit).
+  if (!tex.includes('\\begin{aligned}')) return null;
   let out = '';
   let found = false;
   // Depth in braces, \left … \right and environments, outside the block being taken apart.
@@ -28,13 +33,10 @@ export function rowsApart(tex: string): string | null {
     if (inBlock) inner += step;
     else depth += step;
   };
-  let i = 0;
-  while (i < tex.length) {
-    const rest = tex.slice(i);
-    const begin = /^\\begin\{([a-zA-Z*]+)\}/.exec(rest);
-    const end = /^\\end\{([a-zA-Z*]+)\}/.exec(rest);
-    if (begin) {
-      if (!inBlock && depth === 0 && begin[1] === 'aligned') {
+  // One pass over its tokens: \begin{…}, \end{…}, a command, or one character.
+  for (const [token, begin, end] of tex.matchAll(TOKENS)) {
+    if (begin !== undefined) {
+      if (!inBlock && depth === 0 && begin === 'aligned') {
         inBlock = true;
         found = true;
         // A space, so a command before it keeps its name (\quad\begin… is not \quadM).
@@ -42,42 +44,31 @@ export function rowsApart(tex: string): string | null {
         inner = 0;
         column = 0;
       } else {
-        out += begin[0];
+        out += token;
         nest(1);
       }
-      i += begin[0].length;
-      continue;
-    }
-    if (end) {
-      if (inBlock && inner === 0 && end[1] === 'aligned') {
+    } else if (end !== undefined) {
+      if (inBlock && inner === 0 && end === 'aligned') {
         inBlock = false;
         out += ' ';
       } else {
-        out += end[0];
+        out += token;
         nest(-1);
       }
-      i += end[0].length;
-      continue;
+    } else if (token.length > 1 || token === '\\') {
+      if (token === '\\\\' && inBlock && inner === 0) column = 0;
+      if (token === '\\left') nest(1);
+      if (token === '\\right') nest(-1);
+      out += token;
+    } else {
+      if (token === '{') nest(1);
+      if (token === '}') nest(-1);
+      if (token === '&' && inBlock && inner === 0) {
+        column++;
+        // The odd & of a row marks where it aligns; the even one parts two equations.
+        out += column % 2 === 0 ? '\\quad ' : ' ';
+      } else out += token;
     }
-    const command = /^\\(?:[a-zA-Z]+|.)/.exec(rest);
-    if (command) {
-      const name = command[0];
-      if (name === '\\\\' && inBlock && inner === 0) column = 0;
-      if (name === '\\left') nest(1);
-      if (name === '\\right') nest(-1);
-      out += name;
-      i += name.length;
-      continue;
-    }
-    const char = tex[i];
-    if (char === '{') nest(1);
-    if (char === '}') nest(-1);
-    if (char === '&' && inBlock && inner === 0) {
-      column++;
-      // The odd & of a row marks where it aligns; the even one parts two equations.
-      out += column % 2 === 0 ? '\\quad ' : ' ';
-    } else out += char;
-    i++;
   }
   return found ? out : null;
 }
