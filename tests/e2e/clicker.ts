@@ -141,6 +141,38 @@ export function textsUnder(page: Page, px: number): Promise<string[]> {
 }
 
 /**
+ * The caption's words and glyphs that lie under the lecturer's corner button
+ * (☰) in presenter view, read from the laid-out text (KaTeX's MathML copy and
+ * zero-width struts left out): the button is drawn over them, so the room
+ * cannot read them.
+ */
+export function captionUnderCorner(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const button = document.querySelector('.controls-toggle')?.getBoundingClientRect();
+    const caption = document.querySelector('[data-caption]');
+    if (!button || button.width === 0 || !caption) return [];
+    const found: string[] = [];
+    const walker = document.createTreeWalker(caption, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+      const el = node.parentElement;
+      if (!el || !/[^\s\u200b-\u200f\u2060\ufeff]/.test(node.textContent ?? '')) continue;
+      if (el.closest('.katex-mathml')) continue;
+      const range = document.createRange();
+      range.selectNodeContents(node);
+      for (const box of range.getClientRects()) {
+        const across = Math.min(box.right, button.right) - Math.max(box.left, button.left);
+        const down = Math.min(box.bottom, button.bottom) - Math.max(box.top, button.top);
+        if (across > 0.5 && down > 0.5)
+          found.push(
+            `“${(node.textContent ?? '').trim().slice(0, 30)}” (${across.toFixed(0)} × ${down.toFixed(0)} px)`,
+          );
+      }
+    }
+    return found;
+  });
+}
+
+/**
  * Presenter view at 1920×1080 (already on) is legible from the back row: the
  * caption on screen, no text under 28 px; B blanks the screen and a clicker
  * key brings it back without stepping.

@@ -22,7 +22,7 @@
  */
 import type { Page } from '@playwright/test';
 import { exportedDrawing, tickProblems } from './axes';
-import { legibleFromTheBackRow, textsUnder } from './clicker';
+import { captionUnderCorner, legibleFromTheBackRow, textsUnder } from './clicker';
 import {
   expect,
   figureSizes,
@@ -130,6 +130,9 @@ for (const slug of slugs) {
             // formula's subscripts, or a formula shrunk to fit the caption.
             for (const small of await textsUnder(page, 28))
               problems.push(`${id}: step ${k} sets ${small}`);
+            // Nothing of the caption under the lecturer's corner button (☰).
+            for (const hidden of await captionUnderCorner(page))
+              problems.push(`${id}: step ${k}'s caption has ${hidden} under the corner button`);
             if (await captionOverReserve(page))
               problems.push(`${id}: step ${k}'s caption is taller than its reserve`);
           }
