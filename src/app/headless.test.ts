@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { makeTheme } from '../render/theme';
 import { Viewport } from '../render/viewport';
-import { fitFigure, headlineBand } from './headless';
+import { drawHeadless, fitFigure, fitPadding, headlineBand } from './headless';
 import type { FigureSpec } from './lesson';
 
 const bounds = { minX: 0, minY: 0, maxX: 4, maxY: 1 };
@@ -112,5 +112,46 @@ describe('a plot fitted with rows of values above it', () => {
     expect(fitted(300, 400, 4)).toMatchObject({ kept: room(4), rows: 4 });
     // 340 px tall would leave it 141 px < 180, and a quarter is 85 px: none.
     expect(fitted(300, 340, 4)).toMatchObject({ kept: 0, rows: 0 });
+  });
+});
+
+describe('a plot’s numbers at its foot', () => {
+  // A curve along the plot's floor from end to end: a number pushed up into
+  // the plot by too small a foot would lie on it and be left out.
+  const floorPlot: FigureSpec<null, null> = {
+    id: 'strip',
+    title: 'strip',
+    kind: 'plot',
+    bounds: () => ({ minX: 0, minY: -0.5, maxX: 1, maxY: 1 }),
+    draw: (painter) => {
+      painter.plotAxes({ minX: 0, minY: -0.5, maxX: 1, maxY: 1 }, 0.1, 0.5);
+      painter.polyline(
+        [
+          [0, -0.5],
+          [1, -0.5],
+        ],
+        { width: 4 },
+      );
+    },
+  };
+  const numbersDrawn = (width: number, height: number, projector: boolean) => {
+    const theme = makeTheme(false, projector);
+    const { svg } = drawHeadless(floorPlot, null, { width, height, theme });
+    return svg.texts.filter((t) => /^0\.\d$|^1$|^0$/.test(t));
+  };
+
+  it('are all drawn on a 220 px presenter strip (a 1366 × 768 projector), under the curves, not on them', () => {
+    // 0.1 … 0.9 by hand ("0" and "1" are y numbers too).
+    const texts = numbersDrawn(1340, 220, true);
+    for (const n of ['0.1', '0.2', '0.3', '0.4', '0.5', '0.6', '0.7', '0.8', '0.9'])
+      expect(texts, n).toContain(n);
+  });
+
+  it('leave a phone’s short strip its height: 12% of it at the foot', () => {
+    // Type 12 px: 3.2 lines of it (38.4) at the sides; the strip is under six
+    // lines (72 px) tall, so its foot and head are 12% of its 60 px.
+    const [side, foot] = fitPadding('plot', makeTheme(false, false), 340, 60) as number[];
+    expect(side).toBeCloseTo(38.4, 9);
+    expect(foot).toBeCloseTo(7.2, 9);
   });
 });

@@ -50,9 +50,22 @@ export function fitPadding(
   // A plot's sides hold its y axis' numbers ("0.25" at the type's size), its
   // foot and head the x axis' numbers: each by its own length, so a short,
   // wide strip keeps the room its numbers need beside the axis (#19).
-  const room = theme.sizes.small * 3.2;
-  return [Math.min(room, 0.12 * width), Math.min(room, 0.12 * Math.min(width, height))];
+  const small = theme.sizes.small;
+  const room = small * 3.2;
+  return [Math.min(room, 0.12 * width), Math.min(room, footRoom(small, width, height))];
 }
+
+/**
+ * A plot's room at its foot and head: 12% of it, and on a plot at least six
+ * lines of its numbers tall, never less than the line and a half its x
+ * numbers take under it (and its y name over it). A 220 px strip at a 1366 ×
+ * 768 projector, 12% of it, pushed the numbers up onto its curves, which then
+ * left 0.1 and 0.9 out. A shorter strip (a phone's) keeps its height for its curves.
+ */
+const footRoom = (small: number, width: number, height: number) => {
+  const share = 0.12 * Math.min(width, height);
+  return height >= 6 * small ? Math.max(share, 1.5 * small) : share;
+};
 
 /**
  * The most a plot of this size gives up above it for its values
