@@ -1,6 +1,6 @@
 import { type Box, boxesMeet } from '../render/ink';
 import { firstClear, leastHidden } from '../render/boxPlaces';
-import { drawScreenLabel } from '../render/labelPlacer';
+import { drawScreenLabel } from '../render/screenLabel';
 import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
 import { Viewport } from '../render/viewport';

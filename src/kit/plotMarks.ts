@@ -1,7 +1,7 @@
 import { type Box, boxesMeet } from '../render/ink';
 import { clearestPlace } from '../render/boxPlaces';
 import type { LabelStyle } from '../render/labels';
-import { drawScreenLabel } from '../render/labelPlacer';
+import { drawScreenLabel } from '../render/screenLabel';
 import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
 

@@ -1,5 +1,5 @@
 import { boxesMeet } from '../render/ink';
-import { drawScreenLabel } from '../render/labelPlacer';
+import { drawScreenLabel } from '../render/screenLabel';
 import { labelWidth, measureLabelOn, measuringSurface } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
 import type { Theme } from '../render/theme';

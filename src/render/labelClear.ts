@@ -3,7 +3,7 @@
  * must keep away from, then placed as every label is.
  */
 import type { LabelStyle } from './labels';
-import { drawScreenLabel } from './labelPlacer';
+import { drawScreenLabel } from './screenLabel';
 import type { Painter } from './painter';
 
 /**

@@ -7,33 +7,13 @@
 import { minusSigns, say } from './notation';
 import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import { type LabelStyle, glyphBox, labelFrame } from './labels';
-import { labelLines, measureLabel } from './labelWidth';
+import { measureLabel } from './labelWidth';
 import { farSpots, nearestIsOwn, nearestOnBox, spotsAround } from './labelSpots';
 import type { Painter } from './painter';
+import { drawLabelBox, drawLeader } from './labelDrawing';
 
 /** How far a leader keeps from another label's letters (its stroke's width, and a pixel). */
 const LEADER_CLEAR = 2;
-
-/** A thin line from a label's anchor to the nearest point of its box (when it had to move away). */
-function drawLeader(painter: Painter, [ax, ay]: [number, number], box: Box, color?: string): void {
-  const [ex, ey] = nearestOnBox(ax, ay, box);
-  // It stops a little short of the label's box.
-  const length = Math.hypot(ex - ax, ey - ay);
-  const k = length > 4 ? (length - 4) / length : 0;
-  const [bx, by] = [ax + (ex - ax) * k, ay + (ey - ay) * k];
-  const c = painter.ctx;
-  c.save();
-  c.setLineDash([]);
-  c.globalAlpha = 0.7;
-  c.strokeStyle = color ?? painter.theme.ink;
-  c.lineWidth = Math.max(1, painter.theme.sizes.thin * 0.6);
-  c.beginPath();
-  c.moveTo(ax, ay);
-  c.lineTo(bx, by);
-  c.stroke();
-  c.restore();
-  painter.ink.segment(ax, ay, bx, by, c.lineWidth / 2);
-}
 
 /**
  * A label's letters with a hair of room above them, for a mark over a
@@ -46,8 +26,30 @@ const markRoom = (box: Box, size: number): Box => ({
   height: box.height + size * 0.06,
 });
 
-/** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
-export function drawScreenLabel(
+/** Whether a stroke drawn so far runs through a label's letters at (left, middle), or its box's. */
+export const struckThrough = (
+  painter: Painter,
+  text: string,
+  left: number,
+  middle: number,
+  total: number,
+  size: number,
+  boxed: boolean,
+) =>
+  painter.ink.crosses(
+    markRoom(
+      glyphBox({ text, x: left, y: middle - size * 0.65, width: total, height: size * 1.3 }),
+      size,
+    ),
+    boxed,
+  );
+
+/**
+ * One line of a label at screen coordinates, kept whole inside the figure
+ * and clear of the labels placed before it (a label wider than its figure is
+ * set on lines first: screenLabel.ts).
+ */
+export function placeLine(
   painter: Painter,
   text: string,
   x: number,
@@ -57,19 +59,6 @@ export function drawScreenLabel(
   const theme = painter.theme;
   const view = painter.view;
   const { size, runs, mainFont, subFont, widths, total } = measureLabel(painter, text, style);
-  // Wider than the figure (a sentence on a laptop's projector): set on lines
-  // broken between words, each kept inside, stacked away from the nearer edge.
-  const room = view.width - 2 * size * 0.6;
-  const lines = total > room && !style.around ? labelLines(painter, text, style, room) : null;
-  if (lines && lines.length > 1) {
-    const step = size * 1.45 * (y > view.height / 2 ? -1 : 1);
-    const order = step < 0 ? [...lines].reverse() : lines;
-    let widest = 0;
-    order.forEach((line, i) => {
-      widest = Math.max(widest, drawScreenLabel(painter, line, x, y + i * step, style).width);
-    });
-    return { width: widest };
-  }
   text = minusSigns(say(text));
   const align = style.align ?? 'left';
   const baseline = style.baseline ?? 'middle';
@@ -119,12 +108,7 @@ export function drawScreenLabel(
   const open = (l: number, m: number) =>
     painter.ink.handlesUnder(labelFrame(...inside(l, m), total, size)) === 0;
   const unmarked = (l: number, m: number) =>
-    free(l, m) &&
-    !painter.ink.crosses(
-      markRoom(glyphBox({ text, x: l, y: m - size * 0.65, width: total, height }), size),
-      boxed,
-    ) &&
-    (!boxed || open(l, m));
+    free(l, m) && !struckThrough(painter, text, l, m, total, size, boxed) && (!boxed || open(l, m));
   // A name kept nearer its point than its rivals is kept nearer it than every
   // named point of the figure too (P(u), B₂) and every handle drawn (a line's
   // L₁ beside AP₀), wherever in the drawing they are.
@@ -252,18 +236,7 @@ export function drawScreenLabel(
       ...(leaderDrawn ? { leader: true } : {}),
       ...(frame ? { frame } : {}),
     });
-  if (frame) {
-    const box = [frame.x, frame.y, frame.width, frame.height] as const;
-    c.fillStyle = theme.labelHalo;
-    c.globalAlpha = 0.92;
-    c.fillRect(...box);
-    c.globalAlpha = 1;
-    c.strokeStyle = style.color ?? theme.ink;
-    c.lineWidth = Math.max(1, theme.sizes.thin);
-    c.beginPath();
-    c.rect(...box);
-    c.stroke();
-  }
+  if (frame) drawLabelBox(painter, frame, style.color);
   c.textAlign = 'left';
   c.textBaseline = 'middle';
   runs.forEach((run, i) => {

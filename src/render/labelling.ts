@@ -8,7 +8,7 @@ import { onFigure } from './figureRect';
 import type { LabelStyle } from './labels';
 import { drawLabelClear } from './labelClear';
 import type { LabelOrder } from './labelOrder';
-import { drawScreenLabel } from './labelPlacer';
+import { drawScreenLabel } from './screenLabel';
 import { labelWidth } from './labelWidth';
 import type { P, Painter } from './painter';
 
