@@ -106,10 +106,10 @@ export const spaceFigure: KitFigure<CurvatureState, CurvatureModel> = {
           `A plane curve: B = T × N = ${up}, τ = 0`,
           12,
           painter.view.height - 12,
-          {
-            color: theme.muted,
-            halo: true,
-          },
+          // A remark beside the subject: where no place is clear of the
+          // curve (a 1366 × 768 projector's small space figure), left out
+          // whole rather than boxed over the curve and T.
+          { color: theme.muted, halo: true, optional: true },
         );
     }
   },
