@@ -9,14 +9,24 @@ const plot = (page: Page) => page.locator('canvas[data-figure="blending"]');
 const pixels = (page: Page, which: 'curve' | 'blending') =>
   page.locator(`canvas[data-figure="${which}"]`).evaluate((c: HTMLCanvasElement) => c.toDataURL());
 
-/** The weights as listed in the table, at full precision. */
-async function listedWeights(page: Page): Promise<number[]> {
-  const values = await page
-    .getByRole('table', { name: 'Weights at μ', exact: true })
-    .locator('tbody tr')
-    .evaluateAll((rows) => rows.map((row) => (row as HTMLElement).dataset.value ?? 'NaN'));
+const weightRows = (page: Page) =>
+  page.getByRole('table', { name: 'Weights at μ', exact: true }).locator('tbody tr');
+
+/** The weights as listed in the table, at full precision, once the table has its `count` rows
+ * (the panel is written after the figure, so a read straight after a load can find no rows). */
+async function listedWeights(page: Page, count: number): Promise<number[]> {
+  await expect(weightRows(page)).toHaveCount(count);
+  const values = await weightRows(page).evaluateAll((rows) =>
+    rows.map((row) => (row as HTMLElement).dataset.value ?? 'NaN'),
+  );
   return values.map(Number);
 }
+
+/** The largest gap between the listed weights and `expected`, for a poll until the table caught up. */
+const weightGap = async (page: Page, expected: number[]) => {
+  const listed = await listedWeights(page, expected.length);
+  return Math.max(...listed.map((w, i) => Math.abs(w - expected[i])));
+};
 
 // The whole construction of the lecture cubic (step 6 of 6): the weights, P(μ) and the curve.
 test.beforeEach(async ({ page }) => {
@@ -27,7 +37,7 @@ test.beforeEach(async ({ page }) => {
 
 test('the lecture cubic at μ = 0.5 lists the weights 1/8, 3/8, 3/8, 1/8', async ({ page }) => {
   await expectHash(page, 'mu', (v) => v === '0.5');
-  expect(await listedWeights(page)).toEqual([0.125, 0.375, 0.375, 0.125]);
+  await expect.poll(() => listedWeights(page, 4)).toEqual([0.125, 0.375, 0.375, 0.125]);
   await expect(page.getByText(/centre-weighted centroid/)).toBeVisible();
   // P(0.5) of (0,0), (1,2), (3,2), (4,0) is (2, 1.5).
   await expect(page.getByText('Worked example: P(0.5) for the cubic')).toBeVisible();
@@ -44,7 +54,7 @@ test('the lecture cubic at μ = 0.5 lists the weights 1/8, 3/8, 3/8, 1/8', async
 test('dragging the plot cursor changes μ, the weights and the curve figure; the weights sum to 1', async ({
   page,
 }) => {
-  const before = await listedWeights(page);
+  const before = await listedWeights(page, 4);
   const curveBefore = await pixels(page, 'curve');
   const handle = page.getByRole('button', { name: /^μ at/ });
   const box = (await handle.boundingBox())!;
@@ -57,11 +67,11 @@ test('dragging the plot cursor changes μ, the weights and the curve figure; the
   await expectHash(page, 'mu', (v) => Number(v) > 0.55);
   const mu = Number((await linkState(page)).mu);
   await expect(page.getByRole('slider', { name: 'μ' })).toHaveValue(String(Number(mu.toFixed(2))));
-  const after = await listedWeights(page);
-  expect(after).not.toEqual(before);
   // W(3, i, μ) = C(3, i) μ^i (1 − μ)^(3 − i), read back from the page.
   const expected = [1, 3, 3, 1].map((c, i) => c * mu ** i * (1 - mu) ** (3 - i));
-  after.forEach((w, i) => expect(w).toBeCloseTo(expected[i], 12));
+  await expect.poll(() => weightGap(page, expected)).toBeLessThan(1e-12);
+  const after = await listedWeights(page, 4);
+  expect(after).not.toEqual(before);
   expect(Math.abs(after.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
   expect(await pixels(page, 'curve')).not.toBe(curveBefore);
 
@@ -73,7 +83,11 @@ test('dragging the plot cursor changes μ, the weights and the curve figure; the
   await page.mouse.move(lineX - 200, plotBox.y + plotBox.height * 0.6, { steps: 6 });
   await page.mouse.up();
   await expectHash(page, 'mu', (v) => Number(v) < mu - 0.2);
-  const weights = await listedWeights(page);
+  const left = Number((await linkState(page)).mu);
+  await expect
+    .poll(() => weightGap(page, [1, 3, 3, 1].map((c, i) => c * left ** i * (1 - left) ** (3 - i))))
+    .toBeLessThan(1e-12);
+  const weights = await listedWeights(page, 4);
   expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
   await snapshot(page, 'blending-dragged');
 });
@@ -92,8 +106,7 @@ test('the cursor moves with the keyboard, and the weights of every degree sum to
   const add = page.getByRole('button', { name: 'N + 1: add a control point' });
   const check = async (n: number) => {
     await expect(page.getByRole('heading', { name: new RegExp(`\\(N = ${n}\\)`) })).toBeVisible();
-    const weights = await listedWeights(page);
-    expect(weights).toHaveLength(n + 1);
+    const weights = await listedWeights(page, n + 1);
     expect(weights.every((w) => w >= 0)).toBe(true);
     expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
   };
@@ -162,7 +175,8 @@ test('a link with a bad comparison or too many points keeps the rest and says wh
   await expect(page.getByRole('heading', { name: 'Weights at μ = 0.25 (N = 2)' })).toBeVisible();
   // Coincident control points are legal: the curve is a point, the weights still sum to 1.
   await page.goto('./#/blending?p=1,1;1,1;1,1;1,1&mu=0.3');
-  const weights = await listedWeights(page);
+  await expect(page.getByRole('heading', { name: 'Weights at μ = 0.3 (N = 3)' })).toBeVisible();
+  const weights = await listedWeights(page, 4);
   expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
 });
 
