@@ -55,10 +55,11 @@ export function placeLine(
   x: number,
   y: number,
   style: LabelStyle = {},
+  measured = measureLabel(painter, text, style),
 ): { width: number } {
   const theme = painter.theme;
   const view = painter.view;
-  const { size, runs, mainFont, subFont, widths, total } = measureLabel(painter, text, style);
+  const { size, runs, mainFont, subFont, widths, total } = measured;
   text = minusSigns(say(text));
   const align = style.align ?? 'left';
   const baseline = style.baseline ?? 'middle';

@@ -14,12 +14,14 @@ import type { Painter } from './painter';
 
 /** A label at screen coordinates, kept whole inside the figure and clear of the labels placed before it. */
 export const drawScreenLabel: typeof placeLine = (painter, text, x, y, style = {}) => {
-  const { size, total } = measureLabel(painter, text, style);
+  // Measured once: a single line (nearly every label, every drag frame) is placed with it.
+  const measured = measureLabel(painter, text, style);
+  const { size, total } = measured;
   const room = painter.view.width - 2 * size * 0.6;
   const lines = total > room && !style.around ? labelLines(painter, text, style, room) : null;
   return lines && lines.length > 1
     ? drawLines(painter, lines, x, y, style, size)
-    : placeLine(painter, text, x, y, style);
+    : placeLine(painter, text, x, y, style, measured);
 };
 
 /**
