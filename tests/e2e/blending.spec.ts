@@ -1,5 +1,13 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, snapshot, test, linkState, inLecturesLetter } from './fixtures';
+import {
+  expect,
+  expectHash,
+  snapshot,
+  test,
+  linkState,
+  inLecturesLetter,
+  sceneIds,
+} from './fixtures';
 
 // This lesson follows the lecture notes, and its tests read its text in their letter, μ.
 test.beforeEach(({ page }) => inLecturesLetter(page));
@@ -85,7 +93,12 @@ test('dragging the plot cursor changes μ, the weights and the curve figure; the
   await expectHash(page, 'mu', (v) => Number(v) < mu - 0.2);
   const left = Number((await linkState(page)).mu);
   await expect
-    .poll(() => weightGap(page, [1, 3, 3, 1].map((c, i) => c * left ** i * (1 - left) ** (3 - i))))
+    .poll(() =>
+      weightGap(
+        page,
+        [1, 3, 3, 1].map((c, i) => c * left ** i * (1 - left) ** (3 - i)),
+      ),
+    )
     .toBeLessThan(1e-12);
   const weights = await listedWeights(page, 4);
   expect(Math.abs(weights.reduce((a, b) => a + b, 0) - 1)).toBeLessThan(1e-12);
@@ -221,9 +234,7 @@ test('the script steps from the points through each weight to the curve, then op
 test('every scene opens at step 0 and ends with everything drawn, walked with the clicker in presenter view', async ({
   page,
 }) => {
-  const ids = await page
-    .locator('button[data-scene]')
-    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
+  const ids = await sceneIds(page);
   expect(ids.length).toBeGreaterThanOrEqual(7);
   await page.goto('./#/blending?step=0');
   await page.keyboard.press('p');

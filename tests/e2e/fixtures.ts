@@ -158,6 +158,20 @@ export async function lessonSlugs(page: Page): Promise<string[]> {
 }
 
 /**
+ * The lesson's scenes in teaching order, read once the page has settled. Read
+ * straight after a load the panel may have no scene buttons yet, and a walk
+ * over an empty list passes having checked nothing.
+ */
+export async function sceneIds(page: Page): Promise<string[]> {
+  await settled(page);
+  const buttons = page.locator('button[data-scene]');
+  await expect(buttons.first()).toBeAttached();
+  return buttons.evaluateAll((els) => [
+    ...new Set(els.map((e) => (e as HTMLElement).dataset.scene!)),
+  ]);
+}
+
+/**
  * The state in the link once the page has settled. The link is written
  * shortly after a change: read straight after an action it may still hold the
  * state before it (stop 17's CI failed on exactly that).

@@ -9,6 +9,7 @@ import {
   inLecturesLetter,
   settled,
   readNumber,
+  sceneIds,
 } from './fixtures';
 
 // This lesson follows the lecture notes, and its tests read its text in their letter, μ.
@@ -316,9 +317,7 @@ test('the script builds the patch from its points, and every scene steps from no
   // Away and back: the lesson opens afresh at the first scene.
   await page.goto('./#/');
   await page.goto('./#/hermite?scene=one&step=0');
-  const ids = await page
-    .locator('button[data-scene]')
-    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
+  const ids = await sceneIds(page);
   if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
     await page.keyboard.press('p');
   for (const id of ids) {

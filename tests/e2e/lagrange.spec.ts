@@ -1,5 +1,5 @@
 import type { Page } from '@playwright/test';
-import { expect, expectHash, hashState, snapshot, test, linkState } from './fixtures';
+import { expect, expectHash, hashState, snapshot, test, linkState, sceneIds } from './fixtures';
 
 const curve = (page: Page) => page.locator('canvas[data-figure="curve"]');
 const basis = (page: Page) => page.locator('canvas[data-figure="basis"]');
@@ -182,9 +182,7 @@ test('the script reveals each Lₖ, then the polynomial, then opens the next sce
   // Away and back: the lesson opens afresh at the first scene.
   await page.goto('./#/');
   await page.goto('./#/lagrange?scene=five&step=0');
-  const ids = await page
-    .locator('button[data-scene]')
-    .evaluateAll((els) => [...new Set(els.map((e) => (e as HTMLElement).dataset.scene!))]);
+  const ids = await sceneIds(page);
   if (!(await page.evaluate(() => document.documentElement.classList.contains('projector'))))
     await page.keyboard.press('p');
   for (const id of ids) {
