@@ -86,12 +86,19 @@ async function orNote(lesson: string, control: string, run: () => Promise<DragRo
   }
 }
 
+/**
+ * Every lesson's drags, each beside the reference page measured just before and
+ * just after them, pooled: one reference run of 100 frames put its p95 anywhere
+ * from 14.2 to 20.7 ms within a run, and the machine drifting during a lesson's
+ * drags moved the ratio with it. Bracketed, the lesson's frames sit between the
+ * two halves of the figure they are divided by.
+ */
 async function measureDrags(browser: Browser, base: string, slugs: readonly string[]) {
   const rows: DragRow[] = [];
+  const reference = () => referenceDrag(browser, base, CHECK_LIMITS);
+  let before = slugs.length > 0 ? await reference() : null;
   for (const slug of slugs) {
-    progress(`the reference page, then dragging in ${slug}`);
-    const reference = await referenceDrag(browser, base, CHECK_LIMITS);
-    const referenceP95 = quantile(reference.perFrame, 0.95);
+    progress(`dragging in ${slug}, then the reference page`);
     const lessonRows = await orNote(slug, 'point', () => dragLesson(browser, base, slug, LIMITS));
     for (const preset of PRESETS.filter((p) => p.lesson === slug)) {
       progress(`${slug}: preset ${preset.button}`);
@@ -99,7 +106,10 @@ async function measureDrags(browser: Browser, base: string, slugs: readonly stri
         ...(await orNote(slug, preset.button, () => dragPreset(browser, base, preset, LIMITS))),
       );
     }
+    const after = await reference();
+    const referenceP95 = quantile([...before!.perFrame, ...after.perFrame], 0.95);
     rows.push(...lessonRows.map((row) => ({ ...row, referenceP95 })));
+    before = after;
   }
   for (const preset of PRESETS.filter((p) => !slugs.includes(p.lesson)))
     rows.push({ lesson: preset.lesson, control: preset.button, note: 'lesson not in the gallery' });

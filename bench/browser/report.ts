@@ -63,7 +63,7 @@ export function printChecks(checks: readonly MethodCheck[]): void {
 
 /**
  * The drags, each with its p95 as a multiple of the reference page's p95
- * measured just before its lesson's drags (else `referenceP95`): target ≤ 1.0×.
+ * measured just before and after its lesson's drags (else `referenceP95`): target ≤ 1.0×.
  */
 export function printDrags(rows: readonly DragRow[], referenceP95: number): void {
   printTable(
@@ -183,8 +183,9 @@ export function printReport(report: Report): void {
   console.log(
     `\nDrag: main-thread time per frame; the ratio is to the reference page's p95, a canvas of the ` +
       `same size stroking one ${REFERENCE_SEGMENTS}-segment path per move, measured again ` +
-      `(${report.checkFrames} frames) just before each lesson's drags, so that a machine slowing or ` +
-      `speeding up through the run moves both figures of a ratio (${ms(reference)} ms in the check above)`,
+      `(${report.checkFrames} frames) just before and just after each lesson's drags and pooled ` +
+      `(${2 * report.checkFrames} frames), so that a machine slowing or speeding up through the run ` +
+      `moves both figures of a ratio (${ms(reference)} ms in the check above)`,
   );
   printDrags(report.drags, reference);
   console.log('');
