@@ -91,9 +91,13 @@ describe('a plot fitted with rows of values above it', () => {
   /** The room `rows` rows take, by hand: the foot's gap 0.25, a box 1.3 + 0.7, a row's pitch 1.95, 2 px; less the padding's 30. */
   const room = (rows: number) => Math.ceil(28 * (0.25 + 2) + (rows - 1) * 28 * 1.95 + 2 - 30);
 
-  it('keeps the rows they take at the plot’s width: three values one row, four two', () => {
+  it('keeps the rows they take: three values one row over the plot, four one across the figure, five two', () => {
     expect(fitted(900, 500, 3)).toMatchObject({ kept: room(1), rows: 1 });
-    const two = fitted(900, 500, 4);
+    // Four take 4 × 184.7 + 3 × 33.6 = 839.6 px: two rows over the plot's
+    // 817.6, one across the figure's 900 − 2 × 11.2 = 877.6.
+    expect(fitted(900, 500, 4)).toMatchObject({ kept: room(1), rows: 1 });
+    // Five take 1,057.9 px: two rows either way.
+    const two = fitted(900, 500, 5);
     expect(two).toMatchObject({ kept: room(2), rows: 2 });
     expect(two.top).toBeCloseTo(30 + room(2), 6);
     expect(two.foot).toBeCloseTo(500 - 30, 6);

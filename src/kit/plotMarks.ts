@@ -4,6 +4,7 @@ import type { LabelStyle } from '../render/labels';
 import { drawScreenLabel } from '../render/screenLabel';
 import { labelWidth } from '../render/labelWidth';
 import type { Painter } from '../render/painter';
+import { Viewport } from '../render/viewport';
 
 // Names a function plot writes beside its curves: the y-axis name and the
 // names of the lines drawn across it, each where no curve runs under it.
@@ -42,7 +43,11 @@ export function plotYName(
       last <= first ? first : first + ((last - first) * i) / (NAME_SPOTS - 1),
     );
     const x = spots[clearestPlace(painter, spots.map(boxAt))];
-    drawScreenLabel(painter, name, x, middle, style);
+    // Where the fit kept rows above the plot for the values at its cursor,
+    // the name stays in the plot: moved up, it took their row (a 1366
+    // presenter strip, all five L_k(t) then left out).
+    const rows = painter.view instanceof Viewport && painter.view.valueRows > 0;
+    drawScreenLabel(painter, name, x, middle, { ...style, stays: rows });
   });
   return top + small * 2.2;
 }

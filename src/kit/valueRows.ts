@@ -53,6 +53,25 @@ const rowEnds = (left: number, far: number, width: number, size: number) => ({
 });
 
 /**
+ * The rows' ends: over the plot, or over the figure's whole width where that
+ * takes fewer rows (a 1366 presenter strip: five L_k(t) wanted two rows over
+ * the plot, more room than the strip has, and were all left out; across the
+ * figure they take one). The fit's reserve and the drawing share it.
+ */
+function rowSpan(
+  widths: readonly number[],
+  plot: { left: number; far: number },
+  width: number,
+  size: number,
+): { start: number; end: number } {
+  const over = rowEnds(plot.left, plot.far, width, size);
+  const across = rowEnds(0, width, width, size);
+  const rows = (ends: { start: number; end: number }) =>
+    valueSpots(widths, ends.start, ends.end, size)?.at(-1)?.row ?? Infinity;
+  return rows(across) < rows(over) ? across : over;
+}
+
+/**
  * How many rows `values` take over a plot fitted `padX` in from each side of
  * a view `width` wide (a plot spans its view's width): 0 where one is wider
  * than the plot (they go in a column then).
@@ -67,8 +86,9 @@ export function valueRowsOver(
   const size = theme.sizes.small;
   const style = { size, bold: true, box: true, fixed: true } as const;
   const one = measureLabelOn(measuringSurface(), theme, values.widest, style).total;
-  const { start, end } = rowEnds(padX, width - padX, width, size);
-  const spots = valueSpots(Array(values.count).fill(one), start, end, size);
+  const widths = Array<number>(values.count).fill(one);
+  const { start, end } = rowSpan(widths, { left: padX, far: width - padX }, width, size);
+  const spots = valueSpots(widths, start, end, size);
   return spots ? spots[spots.length - 1].row + 1 : 0;
 }
 
@@ -108,12 +128,17 @@ export function valuesAbove(
   const [left, plotTop] = view.toScreen([range.minX, range.maxY]);
   const [far] = view.toScreen([range.maxX, range.maxY]);
   const shown = entries.filter((entry) => !painter.labelHidden(entry.text));
-  const ends = rowEnds(left, far, view.width, size);
-  // Right of any label already up there at its start (its y name at the axis' top).
-  const names = painter.labels.filter((b) => b.y < plotTop && b.x < ends.start + size);
+  const widths = shown.map((entry) => labelWidth(painter, entry.text, style));
+  const ends = rowSpan(widths, { left, far }, view.width, size);
+  // Right of any label already up there at its start, reaching into the rows'
+  // band (a y name set above the axis' top). The y name plotYName sets just
+  // inside the plot ends below the rows' foot, and pushed the rows right of
+  // it: at a 1366 presenter strip they no longer fitted in one row, and all
+  // five L_k(t) were left out.
+  const foot = plotTop - size * ROW.foot;
+  const names = painter.labels.filter((b) => b.y < foot && b.x < ends.start + size);
   const start = Math.max(ends.start, ...names.map((b) => b.x + b.width + size * 0.6));
   // Left to right, wrapped to rows as a paragraph is, in the order given.
-  const widths = shown.map((entry) => labelWidth(painter, entry.text, style));
   const spots = valueSpots(widths, start, ends.end, size);
   if (!spots || !spots.length) return false;
   const row = spots[spots.length - 1].row;

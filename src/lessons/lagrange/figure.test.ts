@@ -38,3 +38,46 @@ describe('P(t) of the Runge polynomial', () => {
       if (where === 'presenter view') expect(y).toBeLessThan(0);
     });
 });
+
+// A 1366 × 768 projector: the basis strip is 1348 × 220 px. The five values
+// at the cursor fit in one row across it (not over the plot alone), and stood
+// nowhere before: the y name moved up into their row, and they were left out.
+describe('the values L_k(t) at the cursor on a 1366 presenter strip', () => {
+  const figure = lesson.figures.find((f) => f.id === 'basis')!;
+  const five = lesson.scenes!.find((s) => s.id === 'five')!;
+  const start = five.apply(defaultsOf(schema) as LagrangeState) as LagrangeState;
+  const state: LagrangeState = { ...start, step: lesson.steps!.count(start), t: 0.4 };
+  const model = lesson.derive(state);
+
+  it('are all written, above the plot, clear of each other and of its y name', () => {
+    const { painter, view } = drawHeadless(figure, model, {
+      width: 1348,
+      height: 220,
+      theme: makeTheme(false, true),
+    });
+    const ts = model.ts;
+    // L_k(t) = Π_{j≠k} (t − t_j) / (t_k − t_j), worked from the parameter values.
+    const lk = (k: number) =>
+      ts.reduce((p, tj, j) => (j === k ? p : (p * (0.4 - tj)) / (ts[k] - tj)), 1);
+    const [, plotTop] = view.toScreen([0, model.plotBounds.maxY]);
+    const values = ts.map((_, k) => {
+      const label = painter.labels.find((l) => l.text.startsWith(`L_{${k}}(t) = `));
+      expect(label, `L_${k}(t)`).toBeDefined();
+      const written = Number(label!.text.split(' = ')[1].replace('−', '-'));
+      expect(written).toBeCloseTo(lk(k), 2);
+      const box = label!.frame ?? glyphBox(label!);
+      expect(box.y + box.height).toBeLessThanOrEqual(plotTop);
+      return box;
+    });
+    const name = painter.labels.find((l) => l.text === 'L_k(t)')!;
+    for (const box of [...values, name.frame ?? glyphBox(name)])
+      for (const other of values)
+        if (other !== box)
+          expect(
+            box.x + box.width <= other.x ||
+              other.x + other.width <= box.x ||
+              box.y + box.height <= other.y ||
+              other.y + other.height <= box.y,
+          ).toBe(true);
+  });
+});
