@@ -9,12 +9,17 @@ import { type LagrangeState, schema } from './state';
 // Runge's polynomial swings far above its points near the ends; the view keeps
 // to the points, so at t = 0.05 P(t) is off a wide figure (presenter view's,
 // 1880 × 560 px); a phone's (342 × 230 px) is taller for its width.
+/** The figure `id` and the model of scene `scene`'s last step, the cursor at `t`. */
+function lastStep(id: string, scene: string, t: number) {
+  const figure = lesson.figures.find((f) => f.id === id)!;
+  const opened = lesson.scenes!.find((s) => s.id === scene)!;
+  const start = opened.apply(defaultsOf(schema) as LagrangeState) as LagrangeState;
+  const state: LagrangeState = { ...start, step: lesson.steps!.count(start), t };
+  return { figure, model: lesson.derive(state) };
+}
+
 describe('P(t) of the Runge polynomial', () => {
-  const figure = lesson.figures.find((f) => f.id === 'curve')!;
-  const runge = lesson.scenes!.find((s) => s.id === 'runge')!;
-  const start = runge.apply(defaultsOf(schema) as LagrangeState) as LagrangeState;
-  const state: LagrangeState = { ...start, step: lesson.steps!.count(start), t: 0.05 };
-  const model = lesson.derive(state);
+  const { figure, model } = lastStep('curve', 'runge', 0.05);
 
   for (const [where, width, height, projector] of [
     ['presenter view', 1880, 560, true],
@@ -43,11 +48,7 @@ describe('P(t) of the Runge polynomial', () => {
 // at the cursor fit in one row across it (not over the plot alone), and stood
 // nowhere before: the y name moved up into their row, and they were left out.
 describe('the values L_k(t) at the cursor on a 1366 presenter strip', () => {
-  const figure = lesson.figures.find((f) => f.id === 'basis')!;
-  const five = lesson.scenes!.find((s) => s.id === 'five')!;
-  const start = five.apply(defaultsOf(schema) as LagrangeState) as LagrangeState;
-  const state: LagrangeState = { ...start, step: lesson.steps!.count(start), t: 0.4 };
-  const model = lesson.derive(state);
+  const { figure, model } = lastStep('basis', 'five', 0.4);
 
   it('are all written, above the plot, clear of each other and of its y name', () => {
     const { painter, view } = drawHeadless(figure, model, {
