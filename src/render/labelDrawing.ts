@@ -5,6 +5,23 @@
 import { type Box } from './ink';
 import { nearestOnBox } from './labelSpots';
 import type { Painter } from './painter';
+import type { Projection } from './projection';
+
+/**
+ * Where a label of type `size` stays whole inside the figure, its box too
+ * where it has one: its margin, the highest and lowest middles of a line,
+ * and a line's left edge kept in for its width `total`. The single-line
+ * placer and the block of lines share it.
+ */
+export function insideFigure(view: Projection, size: number, boxed: boolean) {
+  const margin = 2 + (boxed ? size * 0.35 : 0);
+  return {
+    margin,
+    top: size * 0.7 + margin,
+    foot: view.height - size * 0.7 - margin,
+    left: (l: number, total: number) => Math.max(margin, Math.min(l, view.width - total - margin)),
+  };
+}
 
 /** A thin line from a label's anchor to the nearest point of its box (when it had to move away). */
 export function drawLeader(

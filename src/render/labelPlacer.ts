@@ -10,7 +10,7 @@ import { type LabelStyle, glyphBox, labelFrame } from './labels';
 import { measureLabel } from './labelWidth';
 import { farSpots, nearestIsOwn, nearestOnBox, spotsAround } from './labelSpots';
 import type { Painter } from './painter';
-import { drawLabelBox, drawLeader } from './labelDrawing';
+import { drawLabelBox, drawLeader, insideFigure } from './labelDrawing';
 
 /** How far a leader keeps from another label's letters (its stroke's width, and a pixel). */
 const LEADER_CLEAR = 2;
@@ -82,11 +82,8 @@ export function placeLine(
   // Keep the whole label inside the figure rather than cut at its edge, and
   // its box with it when it has one (asked for, or given where nothing is clear).
   const inside = (l: number, m: number): [number, number] => {
-    const margin = 2 + (boxed ? size * 0.35 : 0);
-    return [
-      Math.max(margin, Math.min(l, view.width - total - margin)),
-      Math.max(size * 0.7 + margin, Math.min(m, view.height - size * 0.7 - margin)),
-    ];
+    const room = insideFigure(view, size, boxed);
+    return [room.left(l, total), Math.max(room.top, Math.min(m, room.foot))];
   };
   [left, middleY] = inside(left, middleY);
   // A label never lands on one already placed this frame: it moves to the

@@ -7,7 +7,7 @@ import { type Box, boxesMeet } from './ink';
 import { leastHidden } from './boxPlaces';
 import { type LabelStyle, labelFrame } from './labels';
 import { labelLines, measureLabel } from './labelWidth';
-import { drawLabelBox } from './labelDrawing';
+import { drawLabelBox, insideFigure } from './labelDrawing';
 import { placeLine, struckThrough } from './labelPlacer';
 import { minusSigns, say } from './notation';
 import type { Painter } from './painter';
@@ -49,17 +49,19 @@ function drawLines(
   // one: its lines stay a pitch apart.
   const first = Math.min(y, y + (order.length - 1) * step);
   const last = Math.max(y, y + (order.length - 1) * step);
+  // Each line measured once, for every place the block is tried at.
+  const measured = order.map((line) => ({
+    line,
+    text: minusSigns(say(line)),
+    total: measureLabel(painter, line, style).total,
+  }));
   const spots = (dy: number, boxed = style.box === true) => {
-    const margin = 2 + (boxed ? size * 0.35 : 0);
-    const [top, foot] = [size * 0.7 + margin, view.height - size * 0.7 - margin];
-    const up = Math.min(0, foot - (last + dy));
-    const into = first + dy + up < top ? top - (first + dy) : up;
-    return order.map((line, i) => {
-      const text = minusSigns(say(line));
-      const { total } = measureLabel(painter, line, style);
+    const room = insideFigure(view, size, boxed);
+    const up = Math.min(0, room.foot - (last + dy));
+    const into = first + dy + up < room.top ? room.top - (first + dy) : up;
+    return measured.map(({ line, text, total }, i) => {
       const at = align === 'center' ? x - total / 2 : align === 'left' ? x : x - total;
-      const left = Math.max(margin, Math.min(at, view.width - total - margin));
-      return { line, text, total, left, middle: y + dy + into + i * step };
+      return { line, text, total, left: room.left(at, total), middle: y + dy + into + i * step };
     });
   };
   const clear = (placed: ReturnType<typeof spots>) =>
