@@ -81,8 +81,9 @@ export function placeLine(
   let boxed = style.box === true;
   // Keep the whole label inside the figure rather than cut at its edge, and
   // its box with it when it has one (asked for, or given where nothing is clear).
+  const rooms = { plain: insideFigure(view, size, false), boxed: insideFigure(view, size, true) };
   const inside = (l: number, m: number): [number, number] => {
-    const room = insideFigure(view, size, boxed);
+    const room = boxed ? rooms.boxed : rooms.plain;
     return [room.left(l, total), Math.max(room.top, Math.min(m, room.foot))];
   };
   [left, middleY] = inside(left, middleY);

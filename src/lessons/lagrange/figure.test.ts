@@ -6,9 +6,6 @@ import { makeTheme } from '../../render/theme';
 import lesson from './lesson';
 import { type LagrangeState, schema } from './state';
 
-// Runge's polynomial swings far above its points near the ends; the view keeps
-// to the points, so at t = 0.05 P(t) is off a wide figure (presenter view's,
-// 1880 × 560 px); a phone's (342 × 230 px) is taller for its width.
 /** The figure `id` and the model of scene `scene`'s last step, the cursor at `t`. */
 function lastStep(id: string, scene: string, t: number) {
   const figure = lesson.figures.find((f) => f.id === id)!;
@@ -18,6 +15,9 @@ function lastStep(id: string, scene: string, t: number) {
   return { figure, model: lesson.derive(state) };
 }
 
+// Runge's polynomial swings far above its points near the ends; the view keeps
+// to the points, so at t = 0.05 P(t) is off a wide figure (presenter view's,
+// 1880 × 560 px); a phone's (342 × 230 px) is taller for its width.
 describe('P(t) of the Runge polynomial', () => {
   const { figure, model } = lastStep('curve', 'runge', 0.05);
 
