@@ -25,7 +25,12 @@ export interface DragLimits {
 export interface Watched {
   readonly selector: string;
   readonly index: number;
-  readonly property: 'value' | 'transform';
+  /**
+   * `value` of an input, `transform` of an element, or `handle`: where the
+   * app says the point of that keyboard stand-in is (`splineLab.probe`), as a
+   * stand-in waits for the drag's end before it moves.
+   */
+  readonly property: 'value' | 'transform' | 'handle';
 }
 
 export interface DragResult {
@@ -91,6 +96,11 @@ export async function tracedDrag(
   return { perFrame, cpuPerFrame, moves, dispatched: dispatchedMoves, changed, appPerFrame };
 }
 
+/** The page's hook for tools (src/app/main.ts): where handle `id` of a figure is. */
+interface SplineLabProbe {
+  probe(figure: string, point: null, id: string): { handle: readonly number[] | null } | null;
+}
+
 /** Waits for the next animation frame, then reads the watched element's state (no layout). */
 function readAfterFrame(page: Page, watched: Watched): Promise<string> {
   return page.evaluate(
@@ -99,7 +109,14 @@ function readAfterFrame(page: Page, watched: Watched): Promise<string> {
         requestAnimationFrame(() => {
           const element = document.querySelectorAll<HTMLInputElement>(selector)[index];
           if (!element) resolve('');
-          else resolve(property === 'value' ? element.value : element.style.transform);
+          else if (property === 'value') resolve(element.value);
+          else if (property === 'transform') resolve(element.style.transform);
+          else {
+            const figure = element.closest<HTMLElement>('.figure')?.dataset.figure ?? '';
+            const lab = (window as unknown as { splineLab?: SplineLabProbe }).splineLab;
+            const at = lab?.probe(figure, null, element.dataset.handle ?? '')?.handle;
+            resolve(JSON.stringify(at ?? null));
+          }
         }),
       ),
     watched,

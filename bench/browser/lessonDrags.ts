@@ -115,7 +115,7 @@ async function dragPoint(
     browser,
     page,
     circlePath(handle.centre, handle.canvasCentre, limits.frames),
-    { selector: HANDLE, index: handle.index, property: 'transform' },
+    { selector: HANDLE, index: handle.index, property: 'handle' },
     limits,
   );
   return { lesson: slug, control: `${kind} ${handle.name}`, result };

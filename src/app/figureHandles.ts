@@ -90,8 +90,15 @@ export class FigureHandles<S, M> {
     );
   }
 
-  /** Puts the keyboard's stand-ins where the handles last drawn are on screen now. */
+  /**
+   * Puts the keyboard's stand-ins where the handles last drawn are on screen
+   * now. While a pointer holds a handle they wait for the drag's end (which
+   * draws again): the pointer is what the user works then, and moving a
+   * stand-in on every frame had Chromium rebuild its compositing layers for
+   * the page's every stand-in (road, 500 villages: 0.8 ms of a 16 ms frame).
+   */
   syncKeys(): void {
+    if (this.dragging) return;
     this.keys.sync(
       this.handles.map((handle, i) => {
         const [x, y] = this.view.toScreen(handle.position);

@@ -20,11 +20,13 @@ export function probeFigure<S, M>(
 ) {
   const view = figures.find((f) => f.spec.id === figure);
   if (!view) return null;
-  const box = view.canvas.getBoundingClientRect();
+  // Only a point asks for the page's layout: a handle alone is read without
+  // one (the bench reads it after every drag frame).
   const screen = point ? view.view.toScreen(point as Point) : null;
+  const box = screen ? view.canvas.getBoundingClientRect() : null;
   const handle = id ? view.handlePosition(id) : null;
   return {
-    screen: screen ? [box.left + screen[0], box.top + screen[1]] : null,
+    screen: screen && box ? [box.left + screen[0], box.top + screen[1]] : null,
     handle,
   };
 }

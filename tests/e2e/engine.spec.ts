@@ -154,6 +154,43 @@ test('while a point is held, the panel writes the numbers in view; the rest foll
   expect((await texts()).map((f) => f.text)).toEqual(after);
 });
 
+test('while a point is held, its keyboard stand-in waits; let go, it is where the point went', async ({
+  page,
+}) => {
+  await page.goto('./#/de-casteljau?p=0,0;1,2;3,2;4,0');
+  await settled(page);
+  const standIn = page.getByRole('button', { name: /^P0 at/ });
+  const centre = async () => {
+    const box = (await standIn.boundingBox())!;
+    return [box.x + box.width / 2, box.y + box.height / 2];
+  };
+  const [x, y] = await centre();
+  const named = await standIn.getAttribute('aria-label');
+  const p0 = () =>
+    page.evaluate(
+      () =>
+        (
+          window as unknown as {
+            splineLab: { probe(f: string, p: null, id: string): { handle: number[] } | null };
+          }
+        ).splineLab.probe('construction', null, 'p0')?.handle,
+    );
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 60, y - 40, { steps: 4 });
+  // Held: the point has moved, and its stand-in (moved on every frame, it had
+  // Chromium rebuild the page's layers for every stand-in) waits.
+  await expect.poll(p0).not.toEqual([0, 0]);
+  expect(await centre()).toEqual([x, y]);
+  await page.mouse.up();
+  await settled(page);
+  // Let go: the stand-in is on the point, 60 px right and 40 up, and says so.
+  const [x1, y1] = await centre();
+  expect(Math.abs(x1 - (x + 60)), 'across').toBeLessThanOrEqual(1);
+  expect(Math.abs(y1 - (y - 40)), 'up').toBeLessThanOrEqual(1);
+  expect(await standIn.getAttribute('aria-label')).not.toBe(named);
+});
+
 test('a live number is a box of its text’s size, measured again when its text changes width', async ({
   page,
 }) => {
