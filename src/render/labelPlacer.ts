@@ -8,7 +8,14 @@ import { minusSigns, say } from './notation';
 import { type Box, boxesMeet, segmentMeetsBox } from './ink';
 import { type LabelStyle, glyphBox, labelFrame } from './labels';
 import { measureLabel } from './labelWidth';
-import { farSpots, nearestIsOwn, nearestOnBox, spotsAround } from './labelSpots';
+import {
+  farSpots,
+  LEADER_RINGS,
+  NEAR_RINGS,
+  nearestIsOwn,
+  nearestOnBox,
+  spotsAround,
+} from './labelSpots';
 import type { Painter } from './painter';
 import { drawLabelBox, drawLeader, insideFigure } from './labelDrawing';
 
@@ -172,7 +179,7 @@ export function placeLine(
     // A heading or a value names no point: farther out it goes without one.
     const leads = around !== null || style.names === true;
     const far = (fits: (l: number, m: number) => boolean) => {
-      const found = farSpots(ax, ay, total, height)
+      const found = farSpots(ax, ay, total, height, leads ? LEADER_RINGS : NEAR_RINGS)
         .map(([l, m]) => inside(l, m))
         .find(([l, m]) => fits(l, m) && (!leads || leaderClear(l, m)));
       if (found && leads) leader = [ax, ay];

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import { drawHeadless } from '../../app/headless';
 import { defaultsOf } from '../../app/urlState';
+import { glyphBox } from '../../render/labels';
 import { Painter } from '../../render/painter';
 import { SvgContext } from '../../render/svgContext';
 import { makeTheme } from '../../render/theme';
@@ -43,5 +45,28 @@ describe('the experiment figure', () => {
     );
     // Shown whole, the scene lists P1 six times (five extra copies): the ring says so.
     expect(draw('repeat').texts).toContain('×6');
+  });
+});
+
+// A 1366 × 768 projector: the figure is 1348 × 600 px. Over the affine image
+// the two names had no clear place within 3.4 label heights: "curve of the
+// mapped points" was boxed over both curves, with a clear band under them.
+describe('the affine scene’s names on a 1366 presenter figure', () => {
+  it('stand where no stroke runs through them, the far one on a leader', () => {
+    const figure = lesson.figures.find((f) => f.id === propertiesFigure.id)!;
+    const scene = lesson.scenes!.find((s) => s.id === 'affine')!;
+    const start = scene.apply(defaultsOf(schema) as never) as never;
+    const state = { ...(start as object), step: lesson.steps!.count(start) } as never;
+    const { painter } = drawHeadless(figure, lesson.derive(state), {
+      width: 1348,
+      height: 600,
+      theme: makeTheme(false, true),
+    });
+    for (const text of ['map of the curve', 'curve of the mapped points']) {
+      const label = painter.labels.find((l) => l.text === text);
+      expect(label, text).toBeDefined();
+      expect(label!.boxed, `${text} boxed`).toBeFalsy();
+      expect(painter.ink.crossing(glyphBox(label!)), `through ${text}`).toBeNull();
+    }
   });
 });
