@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { drawHeadless } from '../../app/headless';
 import { defaultsOf } from '../../app/urlState';
+import { glyphBox } from '../../render/labels';
 import { makeTheme } from '../../render/theme';
 import lesson from './lesson';
 import type { RasterModel } from './model';
@@ -17,6 +18,8 @@ describe('the magnified segment’s coverage shares', () => {
     for (let step = 0; step <= lesson.steps!.count(base); step++)
       for (const [width, height, presenter] of [
         [850, 900, true],
+        // A 1366 × 768 projector's side figure.
+        [594, 580, true],
         [400, 600, false],
         [344, 230, false],
       ] as const) {
@@ -43,6 +46,15 @@ describe('the magnified segment’s coverage shares', () => {
             inside,
             `step ${step} at ${width} × ${height}: ${text} of pixel (${i}, ${j})`,
           ).toBe(true);
+        }
+        // No share covers another: each (its box, if boxed) stays inside its
+        // pixel, whose side on screen is 1 raster unit.
+        const side = 1 / view.worldLength(1);
+        const shares = painter.labels.filter((l) => /^\d\.\d\d$/.test(l.text));
+        for (const l of shares) {
+          const box = l.frame ?? glyphBox(l);
+          expect(box.width, `step ${step} at ${width} × ${height}: ${l.text}`).toBeLessThan(side);
+          expect(box.height, `step ${step} at ${width} × ${height}: ${l.text}`).toBeLessThan(side);
         }
       }
     expect(checked).toBeGreaterThan(10);

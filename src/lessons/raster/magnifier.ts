@@ -1,3 +1,5 @@
+import { labelFrame, type LabelStyle } from '../../render/labels';
+import { labelWidth } from '../../render/labelWidth';
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import type { RasterModel } from './model';
@@ -78,20 +80,13 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
       shares ? 0.12 : 0.3,
       { color: painter.color(0), width: theme.sizes.line },
     );
-    if (shares && labels && 1 / painter.view.worldLength(1) >= theme.sizes.small * 1.9) {
-      // Each share in its own pixel, boxed over the strip's edge where that
-      // crosses it: moved clear of the edge, a share was read as its
-      // neighbour's (0.70 on a white pixel above the dark one it belongs to).
+    const look = shares && labels ? shareLook(painter) : null;
+    // Each share in its own pixel, over the strip's edge where that crosses
+    // it: moved clear of the edge, a share was read as its neighbour's (0.70
+    // on a white pixel above the dark one it belongs to).
+    if (look)
       for (const { i, j, value } of pixels.filter((pixel) => pixel.value >= 0.005))
-        painter.label(value.toFixed(2), [i, j], {
-          size: theme.sizes.small * 0.8,
-          align: 'center',
-          baseline: 'middle',
-          box: true,
-          color: theme.ink,
-          stays: true,
-        });
-    }
+        painter.label(value.toFixed(2), [i, j], look);
     return;
   }
   const all = shown.has('everySegment');
@@ -126,4 +121,30 @@ export function drawMagnifier(painter: Painter, m: RasterModel, labels: boolean)
       box: true,
     });
   }
+}
+
+/**
+ * How a pixel's share is written: boxed where the box fits in the pixel, on a
+ * halo where only the digits do, else not at all. A fixed ratio of pixel to
+ * type said it fitted at a 1366 × 768 projector (57 px pixels), and each box,
+ * 64 px wide, hid the last digit of the one before ("0.0", "0.3").
+ */
+function shareLook(painter: Painter): LabelStyle | null {
+  const theme = painter.theme;
+  const size = theme.sizes.small * 0.8;
+  const cell = 1 / painter.view.worldLength(1);
+  const style: LabelStyle = {
+    size,
+    align: 'center',
+    baseline: 'middle',
+    color: theme.ink,
+    stays: true,
+  };
+  // Every share has the same digits' width: "0.00".
+  const digits = labelWidth(painter, '0.00', style);
+  const gap = size * 0.2;
+  const frame = labelFrame(0, 0, digits, size);
+  if (frame.width + gap <= cell && frame.height + gap <= cell) return { ...style, box: true };
+  if (digits + 2 * gap <= cell) return { ...style, halo: true };
+  return null;
 }
