@@ -1,6 +1,7 @@
 import type { Handle } from '../../app/lesson';
 import type { KitFigure } from '../../kit/lesson';
 import { drawLegend } from '../../kit/legend';
+import { labelWidth } from '../../render/labelWidth';
 import type { Painter } from '../../render/painter';
 import type { Bounds } from '../../render/projection';
 import { knotIds } from './ids';
@@ -63,20 +64,32 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
     const uniform = isUniformPart(m.state.part);
     if (m.shown.is('points') && !uniform) return;
     const size = theme.sizes.label * 0.75;
-    let lastX = -Infinity;
     stripMarks(painter, m);
+    // A name per run of knots, below the line or, where the one before is in
+    // the way, above it: in one row at a 1366 × 768 projector, u₄ and the
+    // clamped end's u₇…₁₀ ×4 went unnamed.
+    // (Not above where the uniform knots' legend stands.)
+    const legend = !info.thumbnail && uStep(m) > 0 && uniform;
+    const clear = theme.sizes.handle * 1.3 + size * 0.8;
+    const rows = [
+      { dy: clear, right: -Infinity },
+      ...(legend ? [] : [{ dy: -clear, right: -Infinity }]),
+    ];
     for (const [j, count] of knotRuns(m.knots)) {
       const u = m.knots[j];
       if (fixedKnots(m)) painter.dot([u, 0], theme.ink, theme.sizes.point);
-      // A label per run of knots, where there is room: stacked ones say how many.
-      const x = painter.view.toScreen([u, 0])[0];
-      if (info.thumbnail || x - lastX < size * (count > 1 ? 4.5 : 2.5)) continue;
-      lastX = x;
+      if (info.thumbnail) continue;
       const text = count > 1 ? `u_{${j}…${j + count - 1}} ×${count}` : `u_{${j}}`;
-      // Below the line, clear of the knot's diamond.
+      const x = painter.view.toScreen([u, 0])[0];
+      // Centred under its knot, or as near it as the figure's edges allow.
+      const half = labelWidth(painter, text, { size }) / 2;
+      const centre = Math.min(Math.max(x, half + 2), painter.view.width - half - 2);
+      const row = rows.find((r) => centre - half >= r.right + size * 0.6);
+      if (!row) continue;
+      row.right = centre + half;
       painter.label(text, [u, 0], {
-        dx: 0,
-        dy: theme.sizes.handle * 1.3 + size * 0.8,
+        dx: centre - x,
+        dy: row.dy,
         color: count > 1 ? theme.accent : theme.muted,
         align: 'center',
         size,
@@ -84,7 +97,7 @@ export const knotFigure: KitFigure<BSplineState, BSplineModel> = {
         fixed: true,
       });
     }
-    if (!info.thumbnail && uStep(m) > 0 && uniform) {
+    if (legend) {
       drawLegend(
         painter,
         [{ text: 'uniform knots (the slides’ matrix form)', color: theme.muted }],
