@@ -1,5 +1,6 @@
 import type { DrawInfo } from '../../app/lesson';
 import { bezierPoint } from '../../math';
+import type { Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import type { BezierSplinesModel } from './model';
 import { piecesOf } from './pieces';
@@ -20,8 +21,10 @@ export const worked: Draw = (painter, m, info) => {
   const quadratic = m.degree.row.c1;
   const cubic = shown.has('c2Count');
   if (cubic) {
-    // The C¹ spline stays behind, faint, for comparison.
+    // The C¹ spline stays behind, faint, for comparison, and named: unnamed,
+    // a grey curve beside "they agree to 12 digits" read as the C² spline's.
     painter.cubicSegments(quadratic, { color: theme.curveFaint, width: theme.sizes.line });
+    if (labels) nameFaint(painter, quadratic, piecesOf(c2.controls), 'C¹ spline');
   } else {
     painter.polyline(p, { ...dashed(painter), color: theme.curveFaint });
     const count = shown.has('c1First') ? 1 + itemsShown(n - 1, shown.count('c1Mirror')) : 0;
@@ -75,6 +78,7 @@ export const degree: Draw = (painter, m, info) => {
     const current = all || shown.is(name) || (name === 'degree3' && shown.has('notCd'));
     if (!current) {
       painter.cubicSegments(segments, { color: theme.curveFaint, width: theme.sizes.line });
+      if (!info.thumbnail) nameFaint(painter, segments, row.c2, `d = ${column + 1}`);
       return;
     }
     painter.cubicSegments(segments, { role: 'curve', color: painter.color(column) });
@@ -100,3 +104,24 @@ export const degree: Draw = (painter, m, info) => {
     labelAt(painter, 'P_0(2)', continued[3], theme.accent);
   }
 };
+
+/**
+ * Names a faint curve kept for comparison at the middle of its piece that
+ * stands farthest from the same piece of `other`, where it is seen apart.
+ */
+function nameFaint(
+  painter: Painter,
+  faint: readonly (readonly Point[])[],
+  other: readonly (readonly Point[])[],
+  text: string,
+): void {
+  let at: Point | null = null;
+  let apart = -1;
+  faint.forEach((piece, i) => {
+    const a = bezierPoint(piece, 0.5);
+    const b = other[i] ? bezierPoint(other[i], 0.5) : a;
+    const d = Math.hypot(a[0] - b[0], a[1] - b[1]);
+    if (d > apart) [at, apart] = [a, d];
+  });
+  if (at) labelAt(painter, text, at, painter.theme.muted);
+}

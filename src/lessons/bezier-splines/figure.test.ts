@@ -38,3 +38,26 @@ describe('the continuity inspector', () => {
     }
   });
 });
+
+// A curve kept faint for comparison is named: in "C¹ and C² by hand" the C¹
+// spline stays behind the C² one, and unnamed, beside "they agree to 12
+// digits", it read as the C² spline's second curve.
+describe('the faint curves kept for comparison', () => {
+  const figure = lesson.figures.find((f) => f.id === 'main')!;
+  const theme = makeTheme(false, true);
+  for (const [scene, names] of [
+    ['worked', ['C¹ spline']],
+    ['degree', ['d = 1', 'd = 2']],
+  ] as const)
+    it(`${scene}: each is named at the scene's last step`, () => {
+      const opened = lesson
+        .scenes!.find((s) => s.id === scene)!
+        .apply(defaultsOf(schema) as BezierSplinesState) as BezierSplinesState;
+      const model = lesson.derive({ ...opened, step: lesson.steps!.count(opened) });
+      const { painter, svg } = drawHeadless(figure, model, { width: 1348, height: 560, theme });
+      // The faint strokes are there, and each is named.
+      expect(svg.elements.some((e) => e.includes(theme.curveFaint))).toBe(true);
+      const texts = painter.labels.map((l) => l.text);
+      for (const name of names) expect(texts, name).toContain(name);
+    });
+});
