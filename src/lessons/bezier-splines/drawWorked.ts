@@ -78,7 +78,6 @@ export const degree: Draw = (painter, m, info) => {
     const current = all || shown.is(name) || (name === 'degree3' && shown.has('notCd'));
     if (!current) {
       painter.cubicSegments(segments, { color: theme.curveFaint, width: theme.sizes.line });
-      if (!info.thumbnail) nameFaint(painter, segments, row.c2, `d = ${column + 1}`);
       return;
     }
     painter.cubicSegments(segments, { role: 'curve', color: painter.color(column) });
