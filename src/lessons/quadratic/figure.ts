@@ -76,6 +76,18 @@ function drawParametric(painter: Painter, m: QuadraticModel, thumbnail: boolean,
     });
   }
   painter.polyline(current.curve, { color: theme.curve, role: 'curve' });
+  // A member that is the chosen curve (uniform's μ₁ = 0.5 chosen) goes over
+  // it, dashed: drawn beneath, the legend named a curve no one could see.
+  const dash = theme.sizes.line * 3;
+  const same = members.filter((member) => Math.abs(member.mu - current.mu) < 1e-9);
+  same.forEach((member, k) =>
+    painter.polyline(member.curve, {
+      color: colour(member),
+      width: theme.sizes.line * 1.3,
+      // Where two rules agree too, each dashed at its own period: both seen.
+      dash: [dash, dash * (k + 1)],
+    }),
+  );
   if (thumbnail) return;
   if (dots) {
     for (const member of members)

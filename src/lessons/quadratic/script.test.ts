@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { decodeState, defaultsOf, encodeState } from '../../app/urlState';
 import { drawHeadless } from '../../app/headless';
 import { checkScript, drawState } from '../../kit/scriptChecks';
+import { seriesColour } from '../../kit/seriesColours';
 import { makeTheme } from '../../render/theme';
 import lesson from './lesson';
 import { construction } from './script';
@@ -209,6 +210,29 @@ describe('the members of the family, named on screen', () => {
     const member = (text: string) => /^(Uniform|Chord length|Centripetal|chosen): /.test(text);
     return { tags: painter.labels.filter((l) => member(l.text)), named: svg.texts.filter(member) };
   };
+
+  it('draw a rule that is the chosen μ₁ over the chosen curve, dashed, so its colour is seen', () => {
+    // The default μ₁ is 0.5, uniform's: drawn beneath the chosen curve, the
+    // blue the key names was nowhere on the figure.
+    const s = state({ step: LAST_STEP });
+    expect(s.mu).toBe(0.5);
+    const theme = makeTheme(false, false);
+    const m = lesson.derive(s);
+    const uniform = m.parametric.members.find((member) => member.text.startsWith('Uniform'))!;
+    const blue = seriesColour(theme.palette, uniform.colour!);
+    const { svg } = drawHeadless(lesson.figures[0], m, { width: 900, height: 560, theme });
+    const strokes = svg.elements.filter((e) => e.startsWith('<path') && e.includes('fill="none"'));
+    // The chosen curve: the ink stroke of 100 pieces (μ = 0, 1/100, …, 1), not a key's sample.
+    const pieces = (e: string) => (e.match(/L/g) ?? []).length;
+    const chosen = strokes.findIndex(
+      (e) => e.includes(`stroke="${theme.curve}"`) && pieces(e) === 100,
+    );
+    const over = strokes.findLastIndex(
+      (e) => e.includes(`stroke="${blue}"`) && e.includes('stroke-dasharray'),
+    );
+    expect(chosen).toBeGreaterThanOrEqual(0);
+    expect(over).toBeGreaterThan(chosen);
+  });
 
   it('beside their curves where the figure has room, in a key where it has not (a phone)', () => {
     // A laptop's figure: four tags, at their curves' own spots, not in a column.
