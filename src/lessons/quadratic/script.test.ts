@@ -227,8 +227,9 @@ describe('the members of the family, named on screen', () => {
     const chosen = strokes.findIndex(
       (e) => e.includes(`stroke="${theme.curve}"`) && pieces(e) === 100,
     );
-    const over = strokes.findLastIndex(
-      (e) => e.includes(`stroke="${blue}"`) && e.includes('stroke-dasharray'),
+    const over = strokes.reduce(
+      (last, e, i) => (e.includes(`stroke="${blue}"`) && e.includes('stroke-dasharray') ? i : last),
+      -1,
     );
     expect(chosen).toBeGreaterThanOrEqual(0);
     expect(over).toBeGreaterThan(chosen);
