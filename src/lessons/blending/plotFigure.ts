@@ -39,7 +39,10 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
     if (!info.thumbnail) {
       const yStep = niceStep((bounds.maxY - bounds.minY) / 5);
       painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
-      plotYName(painter, bounds, 'W(N, i, μ)');
+      // Beside another basis, the plot names both (B_i's dashed curves
+      // under "W(N, i, μ)" alone read as Bernstein's).
+      const other = comparing ? compared.labels[0]?.match(/^([A-Z])_/)?.[1] : undefined;
+      plotYName(painter, bounds, other ? `W(N, i, μ) and ${other}_{i}(μ)` : 'W(N, i, μ)');
     }
 
     drawFamily(painter, m.bernstein, {
