@@ -81,12 +81,29 @@ export function drawCircle(painter: Painter, m: CircleModel, info: DrawInfo): vo
     });
     m.circle.samples.forEach((point) => painter.dot(point, theme.ink, theme.sizes.point * 0.8));
   }
-  if (shown.has('plain'))
-    painter.polylineFlat(m.rational.plain, {
+  if (shown.has('plain')) {
+    const plain = m.rational.plain;
+    painter.polylineFlat(plain, {
       color: theme.muted,
       width: theme.sizes.line * 1.3,
       dash: [6, 4],
     });
+    // Named where it strays farthest from the circle: unnamed, beside "with
+    // every weight 1 instead", it was one more dark ring round the circle.
+    if (!info.thumbnail) {
+      const [cx, cy] = CIRCLE.centre;
+      let far = 0;
+      for (let k = 2; k < plain.length; k += 2) {
+        const off = (k: number) =>
+          Math.abs(Math.hypot(plain[k] - cx, plain[k + 1] - cy) - CIRCLE.radius);
+        if (off(k) > off(far)) far = k;
+      }
+      painter.label('all w_{i} = 1', [plain[far], plain[far + 1]], {
+        color: theme.muted,
+        halo: true,
+      });
+    }
+  }
 }
 
 /** The perspective map: the mapped points with their new weights, then with the old ones. */
