@@ -1,3 +1,4 @@
+import katex from 'katex';
 import { describe, expect, it } from 'vitest';
 import {
   continuityName,
@@ -9,6 +10,7 @@ import {
   subscriptNames,
   texResidue,
   texPoint,
+  termRow,
   texT,
   texTogether,
   together,
@@ -122,5 +124,22 @@ describe('smallNumber', () => {
     expect(continuityName('C1')).toBe('C¹');
     expect(continuityName('G2')).toBe('G²');
     expect(continuityName('none')).toBe('none');
+  });
+});
+
+describe('termRow', () => {
+  // KaTeX sets a formula as "bases", the pieces a line may break between:
+  // one after each top-level = or +, and one at each \allowbreak.
+  const bases = (tex: string) =>
+    (katex.renderToString(tex, { displayMode: true }).match(/class="base"/g) ?? []).length;
+
+  it('breaks only between its equations, after their commas', () => {
+    const terms = ['B_0(0.3) = 0.0572', 'B_1(0.3) = 0.5902', 'B_2(0.3) = 0.3482'];
+    expect(termRow(terms)).toBe(
+      '{B_0(0.3) = 0.0572},\\allowbreak\\ {B_1(0.3) = 0.5902},\\allowbreak\\ {B_2(0.3) = 0.3482}',
+    );
+    // Three equations, three pieces; joined plainly, each "=" also starts one.
+    expect(bases(termRow(terms))).toBe(3);
+    expect(bases(terms.join(',\\ '))).toBeGreaterThan(3);
   });
 });

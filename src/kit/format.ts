@@ -79,3 +79,13 @@ export function smallNumber(v: number): string {
   const [mantissa, exponent] = v.toExponential(1).split('e');
   return `${mantissa.replace('-', '−')} × 10${superscript(Number(exponent))}`;
 }
+
+/**
+ * Equations in a row, `a = 1,\ b = 2`, that a narrow box breaks only between
+ * them, after a comma: each is a group no break goes into. Broken after any
+ * "=", "B₂(0.3) =" ended one line and "0.3482" began the next (a 1366 × 768
+ * projector), and a last value stood on a line of its own.
+ */
+export function termRow(terms: readonly string[], space = '\\ '): string {
+  return terms.map((term) => `{${term}}`).join(`,\\allowbreak${space}`);
+}

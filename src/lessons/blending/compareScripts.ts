@@ -1,4 +1,4 @@
-import { texT, words } from '../../kit/format';
+import { termRow, texT, words } from '../../kit/format';
 import { repeat, script, step } from '../../kit/script';
 import { texNumber, texPoint } from '../../render/formula';
 import { peakOf } from './bernsteinScript';
@@ -33,11 +33,12 @@ const valuesAtMu = (m: BlendingModel, weightingPoints = m.compared!.atMu.length)
   const c = m.compared!;
   const mu = texT(m.state.mu);
   const values = c.atMu.map((v, k) => `${c.labels[k]}(${mu}) = ${texNumber(v, 4)}`);
+  const row = termRow(values);
   if (weightingPoints === c.atMu.length)
-    return `${values.join(',\\ ')},\\quad \\textstyle\\sum = ${words(c.sum)}`;
+    return `${row},\\allowbreak\\quad {\\textstyle\\sum = ${words(c.sum)}}`;
   const points = c.atMu.slice(0, weightingPoints);
   const sum = points.reduce((a, b) => a + b, 0);
-  return `${values.join(',\\ ')},\\quad ${c.labels.slice(0, weightingPoints).join(' + ')} = ${words(sum)}`;
+  return `${row},\\allowbreak\\quad {${c.labels.slice(0, weightingPoints).join(' + ')} = ${words(sum)}}`;
 };
 
 const HERMITE_ROLES = [

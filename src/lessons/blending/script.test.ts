@@ -83,7 +83,8 @@ describe('the blending script, step by named step', () => {
     // H₀(0.3) = 2 · 0.027 − 3 · 0.09 + 1 = 0.784, H₁ = −0.054 + 0.27 = 0.216,
     // H₂ = 0.027 − 0.18 + 0.3 = 0.147, H₃ = 0.027 − 0.09 = −0.063; 0.784 + 0.216 = 1.
     expect(lesson.steps!.formula!(derive(last), last)).toBe(
-      'H_0(0.3) = 0.7840,\\ H_1(0.3) = 0.2160,\\ H_2(0.3) = 0.1470,\\ H_3(0.3) = -0.0630,\\quad H_0 + H_1 = 1',
+      // Each equation a group, broken only between them (termRow).
+      '{H_0(0.3) = 0.7840},\\allowbreak\\ {H_1(0.3) = 0.2160},\\allowbreak\\ {H_2(0.3) = 0.1470},\\allowbreak\\ {H_3(0.3) = -0.0630},\\allowbreak\\quad {H_0 + H_1 = 1}',
     );
   });
 

@@ -113,7 +113,8 @@ describe('the script of the quadratic lesson', () => {
     // d0 = |(2, 2)| = 2.828, d1 = |(2, −1)| = 2.236; chord 2.828 / 5.064 = 0.558;
     // centripetal 1.682 / (1.682 + 1.495) = 0.529.
     expect(formulaAt({ step: 5 })).toBe(
-      '\\text{uniform } \\tfrac12,\\quad \\text{chord } \\frac{d_0}{d_0 + d_1} = \\frac{2.828}{5.064} = 0.558,\\quad \\text{centripetal } \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = 0.529',
+      // Each rule a group, broken only between them (termRow).
+      '{\\text{uniform } \\tfrac12},\\allowbreak\\quad {\\text{chord } \\frac{d_0}{d_0 + d_1} = \\frac{2.828}{5.064} = 0.558},\\allowbreak\\quad {\\text{centripetal } \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = 0.529}',
     );
   });
 

@@ -1,5 +1,5 @@
 import { parametricQuadraticPoint } from '../../math';
-import { texNumber, texPoint, trimmed } from '../../kit/format';
+import { termRow, texNumber, texPoint, trimmed } from '../../kit/format';
 import { script, step } from '../../kit/script';
 import { sameXWords } from './explicit';
 import type { QuadraticModel } from './model';
@@ -72,7 +72,14 @@ export const construction = script<QuadraticState, QuadraticModel, Reveal>(
     ({ model: { parametric } }) => {
       const { d0, d1, rules } = parametric;
       const [, chord, centripetal] = rules;
-      return `\\text{uniform } \\tfrac12,\\quad \\text{chord } \\frac{d_0}{d_0 + d_1} = \\frac{${texNumber(d0, 3)}}{${texNumber(d0 + d1, 3)}} = ${texNumber(chord.mu, 3)},\\quad \\text{centripetal } \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${texNumber(centripetal.mu, 3)}`;
+      return termRow(
+        [
+          `\\text{uniform } \\tfrac12`,
+          `\\text{chord } \\frac{d_0}{d_0 + d_1} = \\frac{${texNumber(d0, 3)}}{${texNumber(d0 + d1, 3)}} = ${texNumber(chord.mu, 3)}`,
+          `\\text{centripetal } \\frac{\\sqrt{d_0}}{\\sqrt{d_0} + \\sqrt{d_1}} = ${texNumber(centripetal.mu, 3)}`,
+        ],
+        '\\quad ',
+      );
     },
   ),
 );
