@@ -134,6 +134,12 @@ export interface FigureSpec<S, M = S> {
    * otherwise. Plots stretch freely and geometry never.
    */
   widen?: number;
+  /**
+   * Room kept at a drawing's edges for its handles' names, in label heights
+   * (default 1.6). A drawing whose bounds hold its own names (the surface's
+   * heat map, its factors round it) gives it to its subject instead.
+   */
+  edgeRoom?: number;
   /** The camera a `space` figure starts with. */
   camera?: CameraSettings;
   /**

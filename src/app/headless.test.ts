@@ -154,7 +154,7 @@ describe('a plot’s numbers at its foot', () => {
   it('leave a phone’s short strip its height: 12% of it at the foot', () => {
     // Type 12 px: 3.2 lines of it (38.4) at the sides; the strip is under six
     // lines (72 px) tall, so its foot and head are 12% of its 60 px.
-    const [side, foot] = fitPadding('plot', makeTheme(false, false), 340, 60) as number[];
+    const [side, foot] = fitPadding({ kind: 'plot' }, makeTheme(false, false), 340, 60) as number[];
     expect(side).toBeCloseTo(38.4, 9);
     expect(foot).toBeCloseTo(7.2, 9);
   });

@@ -38,13 +38,14 @@ export function fitShape(figure: Pick<FigureSpec<unknown>, 'kind' | 'widen'>): b
 
 /** Room for handles and labels at the edge, as the page fits a figure (never more than a share of a small one). */
 export function fitPadding(
-  kind: FigureSpec<unknown>['kind'],
+  figure: Pick<FigureSpec<unknown>, 'kind' | 'edgeRoom'>,
   theme: Theme,
   width: number,
   height: number,
 ): number | [number, number] {
+  const kind = figure.kind;
   if (kind !== 'plot') {
-    const room = theme.sizes.handle * 2 + theme.sizes.label * 1.6;
+    const room = theme.sizes.handle * 2 + theme.sizes.label * (figure.edgeRoom ?? 1.6);
     return Math.min(room, 0.12 * Math.min(width, height));
   }
   // A plot's sides hold its y axis' numbers ("0.25" at the type's size), its
@@ -125,7 +126,7 @@ export function drawHeadless<S, M>(
     figure.kind === 'space' ? new OrbitCamera(figure.camera) : new Viewport(width, height);
   view.resize(width, height);
   if (options.view && view instanceof OrbitCamera) view.decode(options.view);
-  const padding = thumbnail ? 18 : fitPadding(figure.kind, theme, width, height);
+  const padding = thumbnail ? 18 : fitPadding(figure, theme, width, height);
   fitFigure(view, figure, model, theme, padding);
   const svg = new SvgContext();
   const painter = new Painter(svg, view, theme);

@@ -88,6 +88,6 @@ export function fittedScale<S, M>(
   theme: Theme,
 ): number {
   const view = new Viewport(width, height);
-  fitFigure(view, figure, model, theme, fitPadding(figure.kind, theme, width, height));
+  fitFigure(view, figure, model, theme, fitPadding(figure, theme, width, height));
   return Math.min(view.scaleX, view.scaleY);
 }

@@ -99,7 +99,7 @@ export class ViewFit<S, M> {
   }
 
   private applyFit(model: M, theme: Theme): void {
-    const padding = fitPadding(this.spec.kind, theme, this.view.width, this.view.height);
+    const padding = fitPadding(this.spec, theme, this.view.width, this.view.height);
     fitFigure(this.view, this.spec, model, theme, padding);
     this.fitted = true;
   }
