@@ -1,21 +1,16 @@
 import { describe, expect, it } from 'vitest';
 import { drawHeadless } from '../../app/headless';
-import { defaultsOf } from '../../app/urlState';
 import { glyphBox } from '../../render/labels';
 import { makeTheme } from '../../render/theme';
+import { sceneStep } from '../../../tests/sceneStep';
 import lesson from './lesson';
-import type { BSplineModel } from './model';
-import { type BSplineState, schema } from './state';
 
 // "The exact circle", last step: "with every weight 1 instead: not a circle".
 // The plain B-spline of the same nine points is drawn round the circle, and
 // unnamed it was one more dark ring: it is named where it strays farthest.
 describe('the circle scene’s curve with every weight 1', () => {
   it('is named, beside its corner bulge (farther from the centre than the radius)', () => {
-    const figure = lesson.figures.find((f) => f.id === 'curve')!;
-    const scene = lesson.scenes!.find((s) => s.id === 'circle')!;
-    const start = scene.apply(defaultsOf(schema) as BSplineState) as BSplineState;
-    const model = lesson.derive({ ...start, step: lesson.steps!.count(start) }) as BSplineModel;
+    const { figure, model } = sceneStep(lesson, 'circle', 'curve');
     const { painter, view } = drawHeadless(figure, model, {
       width: 862,
       height: 600,

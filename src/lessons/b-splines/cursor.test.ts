@@ -1,11 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { drawHeadless } from '../../app/headless';
-import { defaultsOf } from '../../app/urlState';
 import { glyphBox } from '../../render/labels';
 import { makeTheme } from '../../render/theme';
+import { sceneStep } from '../../../tests/sceneStep';
 import lesson from './lesson';
-import type { BSplineModel } from './model';
-import { type BSplineState, schema } from './state';
 
 // Presenter view's curve figure (1228 × 820 px) at the last step of "Repeated
 // knots": P(u) sits on the curve's crest under P₁P₂, where the name's first
@@ -13,10 +11,7 @@ import { type BSplineState, schema } from './state';
 // from its point; it must stay beside the point it names.
 describe('the name of P(u)', () => {
   it('stays beside its point', () => {
-    const figure = lesson.figures.find((f) => f.id === 'curve')!;
-    const scene = lesson.scenes!.find((s) => s.id === 'repeated')!;
-    const start = scene.apply(defaultsOf(schema) as BSplineState) as BSplineState;
-    const model = lesson.derive({ ...start, step: lesson.steps!.count(start) }) as BSplineModel;
+    const { figure, model } = sceneStep(lesson, 'repeated', 'curve');
     const theme = makeTheme(false, true);
     const { painter, view } = drawHeadless(figure, model, { width: 1228, height: 820, theme });
     const name = painter.labels.find((l) => l.text === 'P(u)');

@@ -1,11 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { drawHeadless } from '../../app/headless';
-import { defaultsOf } from '../../app/urlState';
 import { glyphBox } from '../../render/labels';
 import { makeTheme } from '../../render/theme';
+import { sceneStep } from '../../../tests/sceneStep';
 import lesson from './lesson';
-import type { BSplineModel } from './model';
-import { type BSplineState, schema } from './state';
 
 // A 1366 × 768 projector: the knot strip is 476 × 138 px. "Clamped ends" has
 // 7 points of degree 3, so 7 + 3 + 1 = 11 knots, u₀ … u₁₀: four equal at each
@@ -13,10 +11,7 @@ import { type BSplineState, schema } from './state';
 // u₄ and the right end's u₇…₁₀ ×4 (what the step is about) went unnamed.
 describe('the knot strip of the clamped ends on a 1366 projector', () => {
   it('names every run of knots, inside the strip, no name on another', () => {
-    const figure = lesson.figures.find((f) => f.id === 'knots')!;
-    const scene = lesson.scenes!.find((s) => s.id === 'clamped')!;
-    const start = scene.apply(defaultsOf(schema) as BSplineState) as BSplineState;
-    const model = lesson.derive({ ...start, step: lesson.steps!.count(start) }) as BSplineModel;
+    const { figure, model } = sceneStep(lesson, 'clamped', 'knots');
     const { painter } = drawHeadless(figure, model, {
       width: 476,
       height: 138,
