@@ -93,10 +93,10 @@ export function drawCircle(painter: Painter, m: CircleModel, info: DrawInfo): vo
     if (!info.thumbnail) {
       const [cx, cy] = CIRCLE.centre;
       let far = 0;
-      for (let k = 2; k < plain.length; k += 2) {
-        const off = (k: number) =>
-          Math.abs(Math.hypot(plain[k] - cx, plain[k + 1] - cy) - CIRCLE.radius);
-        if (off(k) > off(far)) far = k;
+      let farthest = -1;
+      for (let k = 0; k < plain.length; k += 2) {
+        const off = Math.abs(Math.hypot(plain[k] - cx, plain[k + 1] - cy) - CIRCLE.radius);
+        if (off > farthest) [far, farthest] = [k, off];
       }
       painter.label('all w_{i} = 1', [plain[far], plain[far + 1]], {
         color: theme.muted,

@@ -1,6 +1,5 @@
 import type { DrawInfo } from '../../app/lesson';
-import { bezierPoint } from '../../math';
-import type { Point } from '../../math';
+import { bezierPoint, type Point } from '../../math';
 import type { Painter } from '../../render/painter';
 import type { BezierSplinesModel } from './model';
 import { piecesOf } from './pieces';
@@ -20,11 +19,13 @@ export const worked: Draw = (painter, m, info) => {
   const { c1, c2 } = m.worked;
   const quadratic = m.degree.row.c1;
   const cubic = shown.has('c2Count');
+  // The C² spline's pieces, as computeSplineC2 returns them.
+  const solved = cubic ? piecesOf(c2.controls) : [];
   if (cubic) {
     // The C¹ spline stays behind, faint, for comparison, and named: unnamed,
     // a grey curve beside "they agree to 12 digits" read as the C² spline's.
     painter.cubicSegments(quadratic, { color: theme.curveFaint, width: theme.sizes.line });
-    if (labels) nameFaint(painter, quadratic, piecesOf(c2.controls), 'C¹ spline');
+    if (labels) nameFaint(painter, quadratic, solved, 'C¹ spline');
   } else {
     painter.polyline(p, { ...dashed(painter), color: theme.curveFaint });
     const count = shown.has('c1First') ? 1 + itemsShown(n - 1, shown.count('c1Mirror')) : 0;
@@ -51,7 +52,6 @@ export const worked: Draw = (painter, m, info) => {
         : [];
   for (const q of ringed) painter.ring(q, theme.sizes.handle * 2.2, { color: theme.accent });
   if (!shown.has('c2End')) return;
-  const solved = piecesOf(c2.controls);
   if (shown.has('c2Back')) polygons(painter, solved);
   painter.dot(c2.B, theme.accent, theme.sizes.point * 1.3);
   if (labels)

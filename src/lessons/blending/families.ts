@@ -15,6 +15,8 @@ export const SAMPLES = 400;
 export interface Family {
   /** Lecture names with subscripts, one per function: `H_0`, `W_{3,1}`, `L_{2}`. */
   labels: string[];
+  /** The family's name on the plot's axis: `W(N, i, μ)`, `B_{i}(μ)`. */
+  name: string;
   /** What each function weights: `P_{0}`, `D_0`. */
   weights: string[];
   /** Palette index of each function. */
@@ -44,6 +46,7 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
     case 'bernstein':
       return {
         labels: each((i) => `W_{${n},${i}}`),
+        name: 'W(N, i, μ)',
         weights: each((i) => `P_{${i}}`),
         colors: indices(n + 1),
         values: (mu) => bernsteinBasis(n, mu),
@@ -52,6 +55,7 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
       // The patch's data: its end points and their gradients D, as the Hermite lesson names them.
       return {
         labels: ['H_0', 'H_1', 'H_2', 'H_3'],
+        name: 'H_{i}(μ)',
         weights: ['P_0', `P_{${n}}`, 'D_0', `D_{${n}}`],
         colors: hermiteColors(n),
         values: hermiteBasis,
@@ -59,6 +63,7 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
     case 'bspline':
       return {
         labels: ['B_0', 'B_1', 'B_2', 'B_3'],
+        name: 'B_{i}(μ)',
         weights: ['P_i', 'P_{i+1}', 'P_{i+2}', 'P_{i+3}'],
         colors: indices(4),
         values: uniformBSplineBasis,
@@ -69,6 +74,7 @@ function spec(kind: Comparison | 'bernstein', n: number): FamilySpec | null {
       const nodes = equallySpacedNodes(n);
       return {
         labels: each((i) => `L_{${i}}`),
+        name: 'L_{i}(μ)',
         weights: each((i) => `P_{${i}}`),
         colors: indices(n + 1),
         values: (mu) => lagrangeBasis(nodes, mu),

@@ -41,8 +41,8 @@ export const plotFigure: KitFigure<BlendingState, BlendingModel> = {
       painter.plotAxes(bounds, 0.2, yStep, 'μ', '');
       // Beside another basis, the plot names both (B_i's dashed curves
       // under "W(N, i, μ)" alone read as Bernstein's).
-      const other = comparing ? compared.labels[0]?.match(/^([A-Z])_/)?.[1] : undefined;
-      plotYName(painter, bounds, other ? `W(N, i, μ) and ${other}_{i}(μ)` : 'W(N, i, μ)');
+      const name = m.bernstein.name;
+      plotYName(painter, bounds, comparing ? `${name} and ${compared.name}` : name);
     }
 
     drawFamily(painter, m.bernstein, {
